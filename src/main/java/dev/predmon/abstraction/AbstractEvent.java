@@ -1,0 +1,14 @@
+package dev.predmon.abstraction;
+
+import dev.predmon.parse.LogRecord;
+
+/**
+ * A record of the skill-component interface turned into a symbol of the abstraction.
+ *
+ * @param direction input (a skill's command) or output (a component's reply)
+ * @param symbol    the abstract symbol, safe in DOT: {@code goTo_ki_i}, {@code o_level_medium_four}
+ * @param channel   the connection, used to pair a reply with its command
+ * @param record    the record it came from
+ */
+public record AbstractEvent(Direction direction, String symbol, Channel channel, LogRecord record) {
+}

@@ -1,0 +1,37 @@
+package dev.predmon.abstraction;
+
+import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordKind;
+
+/**
+ * The built-in safety monitor's property: a numeric reply on one channel must not fall below a bound
+ * (default: {@code level} replies from {@code /BatteryComponent} to {@code /BatteryReaderBatteryLevelClient}
+ * below 20.0, the thesis's SCXML monitor of Section 3.3.1).
+ *
+ * @param name     shown to users, e.g. {@code battery level >= 20%}
+ * @param protocol Thrift service of the watched reply
+ * @param command  method of the watched reply
+ * @param from     the reply's sending port (the server); empty matches any
+ * @param to       the reply's receiving port (the client); empty matches any
+ * @param below    the property is violated by the first value strictly below this
+ */
+public record SafetyRule(String name, String protocol, String command, String from, String to, double below) {
+
+    /** The watched numeric value carried by {@code r}, or NaN when {@code r} is not a watched reply. */
+    public double valueOf(LogRecord r) {
+        if (r.kind() != RecordKind.REPLY || !protocol.equals(r.protocol()) || !command.equals(r.command())
+                || (!from.isEmpty() && !from.equals(r.from())) || (!to.isEmpty() && !to.equals(r.to()))) {
+            return Double.NaN;
+        }
+        try {
+            return Double.parseDouble(r.reply().trim());
+        } catch (NumberFormatException e) {
+            return Double.NaN;
+        }
+    }
+
+    /** Whether {@code value} (from {@link #valueOf}) violates the property. */
+    public boolean violatedBy(double value) {
+        return value < below;
+    }
+}
