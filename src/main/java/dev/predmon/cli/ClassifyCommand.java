@@ -1,0 +1,91 @@
+package dev.predmon.cli;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.Classifier;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Traces;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+
+/** {@code predmon classify}: Algorithm 7 on a complete log. */
+@Command(name = "classify", mixinStandardHelpOptions = true,
+        description = {"Classify a complete log against every model (thesis Algorithm 7): discrepancies per model, "
+                + "models that could not take the trace, the best match and whether it is faulty.",
+                "Exit 1 when the best match is a faulty scenario, 0 otherwise."})
+final class ClassifyCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to classify.")
+    Path log;
+
+    @Option(names = "--threshold", paramLabel = "N", defaultValue = "0",
+            description = "Most output discrepancies a matching model may have (default: ${DEFAULT-VALUE}).")
+    int threshold;
+
+    @Option(names = "--json", description = "Print the result as one JSON object.")
+    boolean json;
+
+    @Mixin
+    ModelOptions models;
+
+    @Mixin
+    AbstractionOption abstractionOption;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        Abstraction abstraction = abstractionOption.load();
+        ModelSet set = models.load(abstraction);
+        LogTrace trace = Traces.read(log, abstraction);
+        Problems.print(spec.commandLine().getErr(), log, trace);
+        Classifier.Result r = Classifier.classify(set, trace.mealy(), threshold);
+        if (json) {
+            List<Map<String, Object>> scores = new ArrayList<>();
+            for (Classifier.Score s : r.scores()) {
+                Map<String, Object> m = new LinkedHashMap<>();
+                m.put("model", s.model().id());
+                m.put("scenario", s.model().scenario());
+                m.put("faulty", s.model().faulty());
+                m.put("deleted", s.deleted());
+                m.put("discrepancies", s.discrepancies());
+                m.put("reason", s.failure() == null ? null : s.failure().describe());
+                scores.add(m);
+            }
+            Map<String, Object> o = new LinkedHashMap<>();
+            o.put("log", log.toString());
+            o.put("pairs", trace.pairs().size());
+            o.put("models", scores);
+            o.put("best", r.best().map(s -> s.model().id()).orElse(null));
+            o.put("scenario", r.best().map(s -> s.model().scenario()).orElse(null));
+            o.put("faulty", r.faulty());
+            out.println(new ObjectMapper().writeValueAsString(o));
+        } else {
+            out.println(log + ": " + trace.pairs().size() + " compacted pairs");
+            for (Classifier.Score s : r.scores()) {
+                out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
+                        s.deleted() ? "deleted: " + s.failure().describe()
+                                : s.discrepancies() + " discrepancies" + (s.failure() == null ? "" : "; first: " + s.failure().describe()));
+            }
+            out.println(r.best().map(s -> "best match: " + s.model().scenario() + " (" + s.model().id() + ", "
+                    + s.discrepancies() + " discrepancies)" + (s.model().faulty() ? ": FAULTY" : ""))
+                    .orElse("no model matches within threshold " + threshold));
+        }
+        out.flush();
+        return r.faulty() ? ExitCodes.WARNING : ExitCodes.OK;
+    }
+}

@@ -1,0 +1,123 @@
+package dev.predmon.cli;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import dev.predmon.monitor.MonitorEvent;
+
+import java.io.PrintWriter;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.Consumer;
+
+/**
+ * Prints monitor events as they happen: one readable line each, or with {@code --json} one JSON object per
+ * line ({@code {"event":"warning","time":...,"scenario":...,"battery":...}}), flushed at once so a pipe sees
+ * each warning immediately.
+ */
+final class EventPrinter implements Consumer<MonitorEvent> {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private final PrintWriter out;
+    private final boolean json;
+    private final boolean verbose;
+    private MonitorEvent.Warning warning;
+
+    /** @param eliminations also print each model's elimination (JSON always does) */
+    EventPrinter(PrintWriter out, boolean json, boolean eliminations) {
+        this.out = out;
+        this.json = json;
+        this.verbose = eliminations;
+    }
+
+    @Override
+    public void accept(MonitorEvent e) {
+        if (json) {
+            out.println(toJson(e));
+        } else {
+            String text = toText(e);
+            if (text != null) {
+                out.println(text);
+            }
+        }
+        out.flush();
+    }
+
+    /** The JSON object of an event. */
+    static String toJson(MonitorEvent e) {
+        Map<String, Object> o = new LinkedHashMap<>();
+        if (e instanceof MonitorEvent.Warning w) {
+            o.put("event", "warning");
+            o.put("time", w.time());
+            o.put("line", w.line());
+            o.put("scenario", w.scenarios().get(0));
+            o.put("scenarios", w.scenarios());
+            o.put("battery", w.battery());
+            o.put("pairs", w.pairs());
+        } else if (e instanceof MonitorEvent.Violation v) {
+            o.put("event", "violation");
+            o.put("time", v.time());
+            o.put("line", v.line());
+            o.put("property", v.property());
+            o.put("battery", v.value());
+        } else if (e instanceof MonitorEvent.Eliminated x) {
+            o.put("event", "eliminated");
+            o.put("time", x.time());
+            o.put("line", x.line());
+            o.put("model", x.model());
+            o.put("scenario", x.scenario());
+            o.put("faulty", x.faulty());
+            o.put("reason", x.reason());
+        } else if (e instanceof MonitorEvent.NoMatch n) {
+            o.put("event", "no-match");
+            o.put("time", n.time());
+            o.put("line", n.line());
+        } else if (e instanceof MonitorEvent.Restarted r) {
+            o.put("event", "restarted");
+            o.put("reason", r.reason());
+        }
+        return write(o);
+    }
+
+    static String write(Map<String, Object> o) {
+        try {
+            return JSON.writeValueAsString(o);
+        } catch (JsonProcessingException ex) {
+            throw new IllegalStateException("maps of plain values always serialise", ex);
+        }
+    }
+
+    private String toText(MonitorEvent e) {
+        if (e instanceof MonitorEvent.Warning w) {
+            warning = w;
+            return String.format(Locale.ROOT, "t=%.3f line %d: WARNING: the run can only be faulty scenario %s "
+                    + "(every nominal model eliminated); battery %s", w.time(), w.line(),
+                    String.join(", ", w.scenarios()), battery(w.battery()));
+        }
+        if (e instanceof MonitorEvent.Violation v) {
+            String lead = warning == null ? "no warning came before it"
+                    : String.format(Locale.ROOT, "lead of the warning: %.3f s, battery %s at the warning vs %s now",
+                    v.time() - warning.time(), battery(warning.battery()), battery(v.value()));
+            return String.format(Locale.ROOT, "t=%.3f line %d: VIOLATION of '%s': %s; %s", v.time(), v.line(),
+                    v.property(), battery(v.value()), lead);
+        }
+        if (e instanceof MonitorEvent.Eliminated x) {
+            return verbose ? String.format(Locale.ROOT, "t=%.3f line %d: model %s (%s) eliminated: %s", x.time(),
+                    x.line(), x.model(), x.faulty() ? "faulty" : "nominal", x.reason()) : null;
+        }
+        if (e instanceof MonitorEvent.NoMatch n) {
+            return String.format(Locale.ROOT, "t=%.3f line %d: no learned scenario matches this run any more",
+                    n.time(), n.line());
+        }
+        if (e instanceof MonitorEvent.Restarted r) {
+            warning = null;
+            return "log " + r.reason() + ": monitoring starts over";
+        }
+        return null;
+    }
+
+    private static String battery(Double b) {
+        return b == null ? "unknown" : String.format(Locale.ROOT, "%.2f", b);
+    }
+}

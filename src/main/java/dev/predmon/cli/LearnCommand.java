@@ -1,0 +1,97 @@
+package dev.predmon.cli;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.learn.Conflict;
+import dev.predmon.learn.LearnedModels;
+import dev.predmon.learn.LearnedScenario;
+import dev.predmon.learn.ScenarioLayout;
+import dev.predmon.learn.ScenarioLearner;
+import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.model.ModelStore;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.Callable;
+
+/** {@code predmon learn}: one Mealy machine per scenario (more when its runs conflict), written as DOT. */
+@Command(name = "learn", mixinStandardHelpOptions = true,
+        description = {"Learn one Mealy machine per scenario from logs with LearnLib's BlueFringeRPNIMealy.",
+                "--logs holds one directory per scenario with its *.log files and a scenario.json "
+                        + "{\"faulty\": true|false, \"description\": \"...\"}. Runs of a scenario that disagree "
+                        + "after the same inputs are split into conflict-free groups, one machine each "
+                        + "(<scenario>-<k>.dot). Writes <models>/*.dot and <models>/index.json atomically."})
+final class LearnCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--logs", paramLabel = "DIR", defaultValue = "sample-logs", description = "Log directory (default: ${DEFAULT-VALUE}).")
+    Path logs;
+
+    @Option(names = "--models", paramLabel = "DIR", defaultValue = "models", description = "Model directory to write (default: ${DEFAULT-VALUE}).")
+    Path models;
+
+    @Mixin
+    AbstractionOption abstractionOption;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        Abstraction abstraction = abstractionOption.load();
+        List<ScenarioSpec> specs = ScenarioLayout.scan(logs);
+        List<LearnedScenario> learned = new ArrayList<>();
+        Map<String, Long> unmapped = new TreeMap<>();
+        for (ScenarioSpec s : specs) {
+            LearnedScenario l = ScenarioLearner.learn(s, abstraction);
+            learned.add(l);
+            l.problems().forEach(err::println);
+            l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));
+            l.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
+            report(out, l);
+        }
+        if (!unmapped.isEmpty()) {
+            err.println("predmon: interface messages that no abstraction rule maps (not learned):");
+            unmapped.forEach((k, n) -> err.println("  " + n + " x " + k));
+        }
+        if (learned.stream().noneMatch(l -> l.spec().faulty())) {
+            err.println("predmon: note: no scenario is faulty, so 'watch' can never warn with these models");
+        }
+        if (learned.stream().allMatch(l -> l.spec().faulty())) {
+            err.println("predmon: note: no scenario is nominal, so 'watch' warns at the first faulty match");
+        }
+        ModelStore.write(models, LearnedModels.index(learned, abstraction),
+                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)));
+        int machines = learned.stream().mapToInt(l -> l.machines().size()).sum();
+        out.println("wrote " + models + ": " + machines + " machine(s) for " + learned.size() + " scenario(s), "
+                + "abstraction '" + abstraction.name() + "'");
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private static void report(PrintWriter out, LearnedScenario l) {
+        int samples = l.machines().stream().mapToInt(m -> m.samples().size()).sum();
+        StringBuilder sb = new StringBuilder();
+        sb.append("scenario ").append(l.spec().name()).append(l.spec().faulty() ? " (faulty)" : " (nominal)")
+                .append(": ").append(samples).append(" run(s) -> ");
+        for (int i = 0; i < l.machines().size(); i++) {
+            LearnedScenario.Machine m = l.machines().get(i);
+            sb.append(i == 0 ? "" : ", ").append(m.id()).append(".dot ").append(m.machine().size())
+                    .append(" states from ").append(m.samples().size()).append(" run(s)");
+        }
+        out.println(sb);
+        for (Conflict c : l.splits()) {
+            out.println("  split: " + c.describe());
+        }
+    }
+
+}

@@ -1,0 +1,71 @@
+package dev.predmon.learn;
+
+import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.mealy.MealyTrace;
+import dev.predmon.model.ModelStore;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Traces;
+import net.automatalib.alphabet.Alphabet;
+import net.automatalib.automaton.transducer.CompactMealy;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Learns one scenario: every log through the shared pipeline, conflicting runs split into groups
+ * ({@link ConflictGrouping}), one machine per group ({@link MealyLearner}).
+ */
+public final class ScenarioLearner {
+
+    private ScenarioLearner() {
+    }
+
+    /** Reads the scenario's logs and learns it. */
+    public static LearnedScenario learn(ScenarioSpec spec, Abstraction abstraction) throws BadInputException {
+        List<MealyTrace> samples = new ArrayList<>();
+        List<String> skipped = new ArrayList<>();
+        List<String> problems = new ArrayList<>();
+        java.util.Map<String, Long> unmapped = new java.util.TreeMap<>();
+        for (Path log : spec.logs()) {
+            LogTrace trace;
+            try {
+                trace = Traces.read(log, abstraction);
+            } catch (IOException e) {
+                throw new BadInputException(log + ": cannot read: " + e.getMessage());
+            }
+            trace.problems().forEach(p -> problems.add(p.format(log.toString())));
+            trace.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
+            if (trace.pairs().isEmpty()) {
+                skipped.add(log + ": no skill-component interface message (" + trace.records() + " records)");
+            } else {
+                samples.add(trace.mealy());
+            }
+        }
+        if (samples.isEmpty()) {
+            throw new BadInputException(spec.logs().get(0).getParent() + ": no log of scenario '" + spec.name()
+                    + "' holds a skill-component interface message; nothing to learn");
+        }
+        LearnedScenario learned = learnSamples(spec, samples, ModelStore.alphabetOf(abstraction));
+        return new LearnedScenario(spec, learned.machines(), learned.splits(), List.copyOf(skipped),
+                List.copyOf(problems), java.util.Collections.unmodifiableMap(unmapped));
+    }
+
+    /** Learns from samples already mapped (used by {@code learn} and by cross-validation). */
+    public static LearnedScenario learnSamples(ScenarioSpec spec, List<MealyTrace> samples, Alphabet<String> alphabet) {
+        ConflictGrouping.Result grouping = ConflictGrouping.group(samples);
+        List<LearnedScenario.Machine> machines = new ArrayList<>();
+        int k = 1;
+        for (List<MealyTrace> group : grouping.groups()) {
+            String id = grouping.groups().size() == 1 ? spec.name() : spec.name() + "-" + k;
+            long start = System.nanoTime();
+            CompactMealy<String, String> m = MealyLearner.learn(alphabet, group);
+            long millis = (System.nanoTime() - start) / 1_000_000;
+            machines.add(new LearnedScenario.Machine(id, m, group, millis));
+            k++;
+        }
+        return new LearnedScenario(spec, List.copyOf(machines), grouping.splits(), List.of(), List.of(), java.util.Map.of());
+    }
+}

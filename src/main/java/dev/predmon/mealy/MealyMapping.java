@@ -1,0 +1,35 @@
+package dev.predmon.mealy;
+
+import dev.predmon.compact.IoPair;
+import net.automatalib.word.Word;
+import net.automatalib.word.WordBuilder;
+
+import java.util.List;
+
+/**
+ * The I/O-automaton to Mealy mapping of the thesis (Section 2.3.2, Figure 4.9): every input symbol of the
+ * interface is a Mealy input answered {@value #OK}, and every output symbol is the answer to the dummy input
+ * {@value #DELTA}. A query/reply pair {@code (i, o)} is thus the two steps {@code i/OK, Delta/o}.
+ */
+public final class MealyMapping {
+
+    /** The dummy input whose answer is the component's reply. */
+    public static final String DELTA = "Delta";
+    /** The dummy output that answers every real input. */
+    public static final String OK = "OK";
+
+    private MealyMapping() {
+    }
+
+    /** Maps a compacted trace to its Mealy sample. */
+    public static MealyTrace toTrace(List<IoPair> pairs, String source) {
+        WordBuilder<String> in = new WordBuilder<>(pairs.size() * 2);
+        WordBuilder<String> out = new WordBuilder<>(pairs.size() * 2);
+        for (IoPair p : pairs) {
+            in.append(p.input()).append(DELTA);
+            out.append(OK).append(p.output());
+        }
+        Word<String> inputs = in.toWord();
+        return new MealyTrace(inputs, out.toWord(), source);
+    }
+}

@@ -1,0 +1,39 @@
+package dev.predmon.model;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+import java.util.List;
+
+/**
+ * The contents of {@code models/index.json}: what was learned, from what, with which abstraction.
+ *
+ * @param format      file format version, {@value #FORMAT}
+ * @param abstraction the abstraction the models were learned with
+ * @param alphabet    the Mealy input alphabet (abstraction inputs plus {@code Delta}), sorted
+ * @param scenarios   the scenarios, sorted by name
+ */
+public record ModelIndex(int format, AbstractionInfo abstraction, List<String> alphabet, List<Scenario> scenarios) {
+
+    /** Current index format. */
+    public static final int FORMAT = 1;
+
+    /** The abstraction, embedded so that a model directory is self-describing. */
+    public record AbstractionInfo(String name, String fingerprint, JsonNode definition) {
+    }
+
+    /** One scenario and its machines. */
+    public record Scenario(String name, boolean faulty, String description, int samples, List<Model> models) {
+    }
+
+    /**
+     * One machine.
+     *
+     * @param file           DOT file name inside the model directory
+     * @param states         number of states
+     * @param samples        number of logs it was learned from
+     * @param logs           those logs' file names
+     * @param learningMillis time LearnLib took (varies between runs; the DOT files do not)
+     */
+    public record Model(String file, int states, int samples, List<String> logs, long learningMillis) {
+    }
+}

@@ -1,0 +1,61 @@
+package dev.predmon.monitor;
+
+import dev.predmon.mealy.MealyTrace;
+import dev.predmon.model.LearnedModel;
+import dev.predmon.model.ModelSet;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * Algorithm 7 of the thesis (MatchTraces), off-line: every model runs the whole trace; a model that cannot take
+ * some input is deleted; the others get their discrepancy count; the best match is the model with the fewest
+ * discrepancies within the threshold.
+ */
+public final class Classifier {
+
+    /**
+     * One model's score.
+     *
+     * @param model         the model
+     * @param deleted       it could not take some input (the thesis's KeyError)
+     * @param discrepancies outputs that differed (over the steps it walked)
+     * @param failure       the input it could not take, or its first difference, or null
+     */
+    public record Score(LearnedModel model, boolean deleted, int discrepancies, ModelTracker.Failure failure) {
+    }
+
+    /**
+     * The classification.
+     *
+     * @param scores every model, in model order
+     * @param best   the best match within the threshold (ties: nominal before faulty, then model order), if any
+     */
+    public record Result(List<Score> scores, Optional<Score> best) {
+
+        /** Whether the best match is a faulty scenario: the thesis's Warning_Procedure. */
+        public boolean faulty() {
+            return best.map(s -> s.model().faulty()).orElse(false);
+        }
+    }
+
+    private Classifier() {
+    }
+
+    /** Classifies a complete trace. {@code threshold}: most discrepancies a match may have. */
+    public static Result classify(ModelSet models, MealyTrace trace, int threshold) {
+        List<Score> scores = new ArrayList<>();
+        for (LearnedModel m : models.models()) {
+            Verification v = Verification.of(m, trace);
+            boolean deleted = v.verdict() == Verification.Verdict.INPUT_UNDEFINED;
+            scores.add(new Score(m, deleted, v.discrepancies(), v.failure()));
+        }
+        // A tie between a nominal and a faulty model is not evidence of a fault: prefer nominal.
+        Optional<Score> best = scores.stream()
+                .filter(s -> !s.deleted() && s.discrepancies() <= threshold)
+                .min(Comparator.comparingInt(Score::discrepancies).thenComparing(s -> s.model().faulty()));
+        return new Result(List.copyOf(scores), best);
+    }
+}

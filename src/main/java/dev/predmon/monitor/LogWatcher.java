@@ -1,0 +1,60 @@
+package dev.predmon.monitor;
+
+import dev.predmon.parse.LogFollower;
+import dev.predmon.parse.LogParser;
+import dev.predmon.parse.ParseProblem;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.function.Consumer;
+
+/**
+ * Wires a followed log file to the predictive monitor: {@link LogFollower} (tail -F) feeds lines to the
+ * {@link LogParser}, whose records go to the {@link PredictiveMonitor}; rotation restarts both. The caller owns
+ * the loop and its pace ({@link #poll()} never sleeps), so the same wiring serves {@code watch}, the demo and
+ * replayed evaluation.
+ */
+public final class LogWatcher implements AutoCloseable {
+
+    private final PredictiveMonitor monitor;
+    private final LogParser parser;
+    private final LogFollower follower;
+
+    public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
+        this.monitor = monitor;
+        this.parser = new LogParser(monitor::accept, problems);
+        this.follower = new LogFollower(log, new LogFollower.LineSink() {
+            @Override
+            public void line(String line) {
+                parser.acceptLine(line);
+            }
+
+            @Override
+            public void restarted(String reason) {
+                parser.reset();
+                monitor.restart(reason);
+            }
+        });
+    }
+
+    /** Processes whatever was appended since the last call; whether anything was. */
+    public boolean poll() throws IOException {
+        return follower.poll();
+    }
+
+    /** Reads to the end of the file, completes the trace and stops (for {@code --no-follow} and replay). */
+    public void drain() throws IOException {
+        follower.drainToEnd();
+        parser.endOfInput();
+        monitor.endOfInput();
+    }
+
+    public PredictiveMonitor monitor() {
+        return monitor;
+    }
+
+    @Override
+    public void close() throws IOException {
+        follower.close();
+    }
+}

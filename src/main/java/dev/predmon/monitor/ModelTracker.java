@@ -1,0 +1,115 @@
+package dev.predmon.monitor;
+
+import dev.predmon.model.LearnedModel;
+import net.automatalib.automaton.transducer.CompactMealy;
+
+/**
+ * Runs one model along a trace, one Mealy step at a time, keeping only its current state, its discrepancy
+ * count and whether it is still alive: constant work per step, constant memory.
+ *
+ * <p>It walks with {@code getSuccessor}/{@code getOutput} rather than AutomataLib's {@code computeOutput},
+ * which silently truncates its answer at an undefined transition. The two negative cases of the thesis
+ * (Section 5.1.1) stay apart: an output that differs is a <em>discrepancy</em> (the walk goes on, following
+ * the input); an input the model has no transition for ends the walk (the thesis's "Key exception").
+ */
+public final class ModelTracker {
+
+    /** What one step did. */
+    public enum Outcome { MATCH, DISCREPANCY, UNDEFINED }
+
+    /**
+     * Why a model stopped matching.
+     *
+     * @param step     0-based Mealy step
+     * @param input    the input at that step
+     * @param expected the model's output there, or null when the input was undefined
+     * @param seen     the observed output
+     */
+    public record Failure(int step, String input, String expected, String seen) {
+
+        /** One line for users. */
+        public String describe() {
+            return expected == null
+                    ? "cannot take input " + input + " at step " + step
+                    : "after " + input + " at step " + step + " expected " + expected + " but saw " + seen;
+        }
+    }
+
+    private final LearnedModel model;
+    private final int threshold;
+    private Integer state;
+    private int steps;
+    private int discrepancies;
+    private Failure firstDiscrepancy;
+    private Failure elimination;
+
+    /** @param threshold discrepancies tolerated; one more eliminates the model (0: exact matching) */
+    public ModelTracker(LearnedModel model, int threshold) {
+        this.model = model;
+        this.threshold = threshold;
+        reset();
+    }
+
+    /** Back to the initial state, alive, no discrepancy. */
+    public void reset() {
+        state = model.machine().getInitialState();
+        steps = 0;
+        discrepancies = 0;
+        firstDiscrepancy = null;
+        elimination = null;
+    }
+
+    /** Feeds one Mealy step; a model already eliminated stays so and answers {@link Outcome#UNDEFINED}. */
+    public Outcome step(String input, String observed) {
+        if (elimination != null) {
+            return Outcome.UNDEFINED;
+        }
+        int at = steps++;
+        CompactMealy<String, String> m = model.machine();
+        Integer next = model.alphabet().containsSymbol(input) ? m.getSuccessor(state, input) : null;
+        if (next == null) {
+            elimination = new Failure(at, input, null, observed);
+            return Outcome.UNDEFINED;
+        }
+        String expected = m.getOutput(state, input);
+        state = next;
+        if (observed.equals(expected)) {
+            return Outcome.MATCH;
+        }
+        discrepancies++;
+        Failure f = new Failure(at, input, expected, observed);
+        if (firstDiscrepancy == null) {
+            firstDiscrepancy = f;
+        }
+        if (discrepancies > threshold) {
+            elimination = f;
+        }
+        return Outcome.DISCREPANCY;
+    }
+
+    public LearnedModel model() {
+        return model;
+    }
+
+    public boolean alive() {
+        return elimination == null;
+    }
+
+    public int discrepancies() {
+        return discrepancies;
+    }
+
+    public int steps() {
+        return steps;
+    }
+
+    /** The step that eliminated the model, or null while it is alive. */
+    public Failure elimination() {
+        return elimination;
+    }
+
+    /** The first output that differed, or null. */
+    public Failure firstDiscrepancy() {
+        return firstDiscrepancy;
+    }
+}

@@ -1,0 +1,81 @@
+package dev.predmon.pipeline;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.Classification;
+import dev.predmon.compact.Compactor;
+import dev.predmon.parse.LogRecord;
+
+import java.util.Collections;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * The one path every log takes, offline ({@code learn}, {@code classify}, {@code evaluate}) and live
+ * ({@code watch}): records are abstracted to symbols, interface messages are compacted into query/reply
+ * pairs, and each pair is handed to the listener. Sharing this class is what makes a log abstract
+ * identically in both modes.
+ */
+public final class TracePipeline {
+
+    private final Abstraction abstraction;
+    private final PipelineListener listener;
+    private final Compactor compactor;
+    private final Map<String, Long> unmapped = new TreeMap<>();
+    private LogRecord current;
+    private long records;
+    private long interfaceRecords;
+
+    public TracePipeline(Abstraction abstraction, PipelineListener listener) {
+        this.abstraction = abstraction;
+        this.listener = listener;
+        this.compactor = new Compactor(pair -> listener.pair(pair, current));
+    }
+
+    /** Takes the next record of the log. */
+    public void accept(LogRecord record) {
+        current = record;
+        records++;
+        listener.record(record);
+        Classification c = abstraction.classify(record);
+        if (c instanceof Classification.Mapped m) {
+            interfaceRecords++;
+            compactor.push(m.event());
+        } else if (c instanceof Classification.Unmapped u) {
+            interfaceRecords++;
+            unmapped.merge(u.key(), 1L, Long::sum);
+        }
+    }
+
+    /** The log is complete: commands still waiting for replies are dropped, pending pairs are flushed. */
+    public void endOfInput() {
+        compactor.endOfInput();
+    }
+
+    /** Forgets the log read so far (it was truncated or replaced); counters restart too. */
+    public void reset() {
+        compactor.reset();
+        unmapped.clear();
+        current = null;
+        records = 0;
+        interfaceRecords = 0;
+    }
+
+    /** Interface messages no rule maps, by key, sorted: reported to the user, never silently dropped. */
+    public Map<String, Long> unmapped() {
+        return Collections.unmodifiableMap(new TreeMap<>(unmapped));
+    }
+
+    /** Records seen. */
+    public long records() {
+        return records;
+    }
+
+    /** Records of the skill-component interface (mapped or not). */
+    public long interfaceRecords() {
+        return interfaceRecords;
+    }
+
+    public Abstraction abstraction() {
+        return abstraction;
+    }
+}
