@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.parse.LineSink;
 import dev.predmon.parse.LogFollower;
 import dev.predmon.parse.LogParser;
 import dev.predmon.parse.ParseProblem;
@@ -23,15 +24,21 @@ public final class LogWatcher implements AutoCloseable {
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
         this.monitor = monitor;
         this.parser = new LogParser(monitor::accept, problems);
-        this.follower = new LogFollower(log, new LogFollower.LineSink() {
+        LineSink lines = parser.lineSink();
+        this.follower = new LogFollower(log, new LineSink() {
             @Override
             public void line(String line) {
-                parser.acceptLine(line);
+                lines.line(line);
+            }
+
+            @Override
+            public void overlongLine(long bytes) {
+                lines.overlongLine(bytes);
             }
 
             @Override
             public void restarted(String reason) {
-                parser.reset();
+                lines.restarted(reason); // reports a record the rotation cut, then starts the parser over
                 monitor.restart(reason);
             }
         });

@@ -1,0 +1,30 @@
+package dev.predmon.parse;
+
+/**
+ * Receives the lines of a log as {@link LogReader} or {@link LogFollower} cut them out of the file.
+ *
+ * <p>{@link LogParser#lineSink()} is the usual implementation; a caller that wants to see restarts too
+ * (to print them, say) wraps it.
+ */
+public interface LineSink {
+
+    /** One complete line, decoded from UTF-8 (malformed bytes replaced by U+FFFD), without its terminator. */
+    void line(String line);
+
+    /**
+     * The file was truncated ({@code "truncated"}) or replaced by another one ({@code "replaced"}); the lines
+     * that follow come from its beginning. Everything of the old content was delivered before this call.
+     */
+    void restarted(String reason);
+
+    /**
+     * A line longer than the cap was skipped without being held in memory. It still counts as a line.
+     * The default delivers an empty line in its place so that line numbers stay right;
+     * {@link LogParser#lineSink()} reports it as an error instead.
+     *
+     * @param bytes the length of the skipped line in bytes, without its terminator
+     */
+    default void overlongLine(long bytes) {
+        line("");
+    }
+}
