@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonMappingException;
 import com.fasterxml.jackson.databind.MapperFeature;
 import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.exc.MismatchedInputException;
 import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 import dev.predmon.abstraction.AbstractionSpec.DropSpec;
@@ -190,6 +191,8 @@ public final class Abstraction {
             if (e instanceof UnrecognizedPropertyException u) {
                 reason = "unknown key '" + u.getPropertyName() + "' (allowed: " + u.getKnownPropertyIds().stream()
                         .map(Object::toString).sorted().collect(Collectors.joining(", ")) + ")";
+            } else if (e instanceof MismatchedInputException m && m.getTargetType() != null) {
+                reason = "expected " + describe(m.getTargetType());
             } else {
                 reason = firstLine(e.getOriginalMessage());
             }
@@ -203,6 +206,19 @@ public final class Abstraction {
             throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
         }
         return new Abstraction(spec);
+    }
+
+    private static String describe(Class<?> type) {
+        if (Number.class.isAssignableFrom(type)) {
+            return "a number";
+        }
+        if (type == String.class) {
+            return "a string";
+        }
+        if (type == Boolean.class) {
+            return "true or false";
+        }
+        return java.util.Collection.class.isAssignableFrom(type) ? "an array" : "an object";
     }
 
     private static String at(String pointer) {
