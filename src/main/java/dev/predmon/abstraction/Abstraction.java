@@ -1,56 +1,383 @@
 package dev.predmon.abstraction;
 
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonMappingException;
+import com.fasterxml.jackson.databind.MapperFeature;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.exc.MismatchedInputException;
+import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
+import com.fasterxml.jackson.databind.json.JsonMapper;
+import dev.predmon.abstraction.AbstractionSpec.DropSpec;
+import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
+import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordKind;
 
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.ArrayList;
+import java.util.HexFormat;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.TreeSet;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 
-/** The abstraction of the skill-component interface, loaded from JSON (thesis Tables 4.1/4.2, Section 5.2). */
+/**
+ * The abstraction of the skill-component interface, loaded from JSON (thesis Tables 4.1/4.2, Section 5.2).
+ *
+ * <p>It maps each log record to one of three outcomes (see {@link #classify}): dropped on purpose (ticks,
+ * BT-to-skill traffic), mapped to an input symbol (a command) or an output symbol (a reply), or unmapped
+ * (interface traffic no rule covers, which the caller reports instead of losing). Everything is data: adding a
+ * location, changing the battery bands or adding a component means editing the JSON file only.
+ *
+ * <p>The file has the keys {@code name} (required), {@code description}, {@code drop} (filters on
+ * {@code kind}/{@code from}/{@code to}/{@code protocol}/{@code command}), {@code locations} (name to
+ * abbreviation, used for {@code {loc}} in symbols), {@code rules} (required: {@code protocol}, {@code command},
+ * {@code input}, {@code replies}, optional {@code description}; each reply has a {@code symbol} and exactly one
+ * of {@code any: true}, {@code equals: [strings]}, {@code range: {above|atLeast, below|atMost}}) and
+ * {@code safety} (see {@link SafetyRule}).
+ *
+ * <p>Band boundaries of the default: bands are upper-inclusive, {@code (lower, upper]}, like the thesis's
+ * notation and the behaviour tree's {@code level > 50} early-warning condition, so exactly 50.0 is already
+ * {@code o_level_medium_six} and exactly 45.0 {@code o_level_medium_five}; the exception is
+ * {@code o_level_medium_one = [20, 25]}, so that {@code o_level_low = (0, 20)} coincides exactly with the safety
+ * monitor's violation {@code level < 20.0}. {@code o_level_zero} is 0 and below. Validation guarantees the
+ * bands of one rule neither overlap nor leave gaps.
+ *
+ * <p>Instances are immutable and thread-safe.
+ */
 public final class Abstraction {
+
+    private static final String DEFAULT_RESOURCE = "default-abstraction.json";
+    private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
+
+    private static final JsonMapper MAPPER = JsonMapper.builder()
+            .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
+            .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
+            .disable(MapperFeature.ALLOW_COERCION_OF_SCALARS)
+            .enable(MapperFeature.SORT_PROPERTIES_ALPHABETICALLY)
+            .enable(SerializationFeature.ORDER_MAP_ENTRIES_BY_KEYS)
+            .build();
+
+    private final String name;
+    private final List<DropSpec> drop;
+    private final Map<String, String> locations;
+    private final List<Rule> rules;
+    private final Optional<SafetyRule> safety;
+    private final List<String> inputAlphabet;
+    private final List<String> outputAlphabet;
+    private final String canonicalJson;
+    private final String fingerprint;
+
+    /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
+    private record Rule(String protocol, String command, String input, List<Reply> replies) {
+        boolean usesLocation() {
+            return input.contains(AbstractionValidator.LOC)
+                    || replies.stream().anyMatch(r -> r.symbol.contains(AbstractionValidator.LOC));
+        }
+    }
+
+    /** A compiled reply: exactly one of {@code any}, {@code values}, {@code band} is set. */
+    private record Reply(boolean any, Set<String> values, Band band, String symbol) {
+        boolean matches(String value) {
+            if (any) {
+                return true;
+            }
+            if (values != null) {
+                return values.contains(value);
+            }
+            return NUMBER.matcher(value).matches() && band.contains(Double.parseDouble(value));
+        }
+    }
+
+    private Abstraction(AbstractionSpec spec) {
+        this.name = spec.name();
+        this.drop = spec.drop() == null ? List.of() : List.copyOf(spec.drop());
+        this.locations = spec.locations() == null ? Map.of() : Map.copyOf(spec.locations());
+        List<Rule> compiled = new ArrayList<>();
+        Set<String> inputs = new TreeSet<>();
+        Set<String> outputs = new TreeSet<>();
+        for (RuleSpec r : spec.rules()) {
+            List<Reply> replies = new ArrayList<>();
+            for (ReplySpec p : r.replies()) {
+                replies.add(new Reply(p.any() != null, p.values() == null ? null : Set.copyOf(p.values()),
+                        p.range() == null ? null : Band.of(p.range()), p.symbol()));
+                outputs.addAll(expand(p.symbol()));
+            }
+            compiled.add(new Rule(r.protocol(), r.command(), r.input(), List.copyOf(replies)));
+            inputs.addAll(expand(r.input()));
+        }
+        this.rules = List.copyOf(compiled);
+        this.inputAlphabet = List.copyOf(inputs);
+        this.outputAlphabet = List.copyOf(outputs);
+        this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
+                s.from() == null ? "" : s.from(), s.to() == null ? "" : s.to(), s.below()));
+        try {
+            this.canonicalJson = MAPPER.writeValueAsString(spec);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("cannot serialise a validated abstraction", e);
+        }
+        this.fingerprint = sha256(canonicalJson);
+    }
+
+    private List<String> expand(String template) {
+        if (!template.contains(AbstractionValidator.LOC)) {
+            return List.of(template);
+        }
+        return locations.values().stream().map(a -> template.replace(AbstractionValidator.LOC, a)).toList();
+    }
 
     /** The embedded default: Tables 4.1/4.2 with the refined battery bands of Section 5.2. */
     public static Abstraction defaults() {
-        throw new UnsupportedOperationException("TODO abstraction");
+        try (InputStream in = Abstraction.class.getResourceAsStream(DEFAULT_RESOURCE)) {
+            if (in == null) {
+                throw new IllegalStateException("resource " + DEFAULT_RESOURCE + " is missing from the build");
+            }
+            return fromJson("(embedded) " + DEFAULT_RESOURCE, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+        } catch (IOException | AbstractionException e) {
+            // The resource ships with the code and is tested, so this is a build defect, not user input.
+            throw new IllegalStateException("the embedded default abstraction is broken: " + e.getMessage(), e);
+        }
     }
 
     /** Loads and validates an abstraction file. */
     public static Abstraction load(Path file) throws AbstractionException {
-        throw new UnsupportedOperationException("TODO abstraction");
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new AbstractionException(file + ": cannot read: " + e, e);
+        }
+        return fromJson(file.toString(), text);
     }
 
-    /** Decides whether {@code r} belongs to the interface and, if so, which symbol it is. */
+    /**
+     * Parses and validates abstraction JSON text.
+     *
+     * @param source names the text in error messages, usually its file
+     * @throws AbstractionException one line, {@code source:line:column: reason}, on the first problem
+     */
+    public static Abstraction fromJson(String source, String json) throws AbstractionException {
+        LocatedJson tree;
+        try {
+            tree = LocatedJson.parse(MAPPER.getFactory(), json);
+        } catch (JsonProcessingException e) {
+            throw new AbstractionException(position(source, e.getLocation()) + "invalid JSON: "
+                    + firstLine(e.getOriginalMessage()), e);
+        } catch (IOException e) {
+            throw new AbstractionException(source + ": cannot read: " + e, e);
+        }
+        AbstractionSpec spec;
+        try {
+            if (!tree.root().isObject()) {
+                throw new AbstractionException(position(source, tree.locate("")) + "expected a JSON object at the top");
+            }
+            spec = MAPPER.treeToValue(tree.root(), AbstractionSpec.class);
+        } catch (JsonMappingException e) {
+            String pointer = pointer(e);
+            String reason;
+            if (e instanceof UnrecognizedPropertyException u) {
+                reason = "unknown key '" + u.getPropertyName() + "' (allowed: " + u.getKnownPropertyIds().stream()
+                        .map(Object::toString).sorted().collect(Collectors.joining(", ")) + ")";
+            } else if (e instanceof MismatchedInputException m && m.getTargetType() != null) {
+                reason = "expected " + describe(m.getTargetType());
+            } else {
+                reason = firstLine(e.getOriginalMessage());
+            }
+            throw new AbstractionException(position(source, tree.locate(pointer)) + at(pointer) + reason, e);
+        } catch (JsonProcessingException e) {
+            throw new AbstractionException(source + ": " + firstLine(e.getOriginalMessage()), e);
+        }
+        try {
+            AbstractionValidator.validate(spec);
+        } catch (AbstractionValidator.Invalid e) {
+            throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
+        }
+        return new Abstraction(spec);
+    }
+
+    private static String describe(Class<?> type) {
+        if (Number.class.isAssignableFrom(type)) {
+            return "a number";
+        }
+        if (type == String.class) {
+            return "a string";
+        }
+        if (type == Boolean.class) {
+            return "true or false";
+        }
+        return java.util.Collection.class.isAssignableFrom(type) ? "an array" : "an object";
+    }
+
+    private static String at(String pointer) {
+        return pointer.isEmpty() ? "" : LocatedJson.readable(pointer) + ": ";
+    }
+
+    private static String pointer(JsonMappingException e) {
+        StringBuilder b = new StringBuilder();
+        for (JsonMappingException.Reference ref : e.getPath()) {
+            if (ref.getFieldName() != null) {
+                b.append('/').append(LocatedJson.escape(ref.getFieldName()));
+            } else if (ref.getIndex() >= 0) {
+                b.append('/').append(ref.getIndex());
+            }
+        }
+        return b.toString();
+    }
+
+    private static String position(String source, JsonLocation l) {
+        if (l == null || l.getLineNr() < 1) {
+            return source + ": ";
+        }
+        return source + ":" + l.getLineNr() + ":" + l.getColumnNr() + ": ";
+    }
+
+    private static String firstLine(String message) {
+        String m = message == null ? "" : message.strip();
+        int nl = m.indexOf('\n');
+        return nl < 0 ? m : m.substring(0, nl).strip();
+    }
+
+    private static String sha256(String text) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256")
+                    .digest(text.getBytes(StandardCharsets.UTF_8)));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java platform has SHA-256", e);
+        }
+    }
+
+    /**
+     * Decides whether {@code r} belongs to the interface and, if so, which symbol it is.
+     *
+     * <p>Ticks, unknown records and records matching a drop filter are {@link Classification.Dropped}. Other
+     * records are matched to the rule with their command and protocol (a record without protocol, from the
+     * older log format, matches by command alone, first rule in file order). A command gives the rule's input
+     * symbol, a reply the symbol of its first matching reply entry. {@code {loc}} is the abbreviation of the
+     * location named by the arguments, else by the reply, else by the last segment of the client port.
+     */
     public Classification classify(LogRecord r) {
-        throw new UnsupportedOperationException("TODO abstraction");
+        if (r.kind() != RecordKind.COMMAND && r.kind() != RecordKind.REPLY) {
+            return new Classification.Dropped();
+        }
+        for (DropSpec d : drop) {
+            if (dropped(d, r)) {
+                return new Classification.Dropped();
+            }
+        }
+        String what = (r.protocol().isEmpty() ? "" : r.protocol() + "/") + r.command();
+        boolean command = r.kind() == RecordKind.COMMAND;
+        Rule rule = rules.stream()
+                .filter(x -> x.command.equals(r.command()) && (r.protocol().isEmpty() || x.protocol.equals(r.protocol())))
+                .findFirst().orElse(null);
+        if (rule == null) {
+            return new Classification.Unmapped(command ? what + " command" : what + " reply '" + r.reply() + "'");
+        }
+        String template;
+        if (command) {
+            template = rule.input;
+        } else {
+            template = rule.replies.stream().filter(p -> p.matches(r.reply())).map(Reply::symbol)
+                    .findFirst().orElse(null);
+            if (template == null) {
+                return new Classification.Unmapped(what + " reply '" + r.reply() + "'");
+            }
+        }
+        if (template.contains(AbstractionValidator.LOC)) {
+            String abbreviation = location(r);
+            if (abbreviation == null) {
+                return new Classification.Unmapped(what + (command ? " command" : " reply")
+                        + " about unknown location '" + locationCandidate(r) + "'");
+            }
+            template = template.replace(AbstractionValidator.LOC, abbreviation);
+        }
+        AbstractEvent event = new AbstractEvent(command ? Direction.INPUT : Direction.OUTPUT, template,
+                Channel.of(r), r);
+        return new Classification.Mapped(event);
+    }
+
+    private static boolean dropped(DropSpec d, LogRecord r) {
+        return (d.kind() == null || d.kind().toUpperCase(Locale.ROOT).equals(r.kind().name()))
+                && (d.from() == null || d.from().equals(r.from()))
+                && (d.to() == null || d.to().equals(r.to()))
+                && (d.protocol() == null || d.protocol().equals(r.protocol()))
+                && (d.command() == null || d.command().equals(r.command()));
+    }
+
+    /** The abbreviation of the location {@code r} is about, or {@code null}. */
+    private String location(LogRecord r) {
+        String args = r.arguments().trim();
+        String known = locations.get(args);
+        if (known == null && !args.isEmpty()) {
+            // The older format prints all arguments space separated; the location is the first.
+            known = locations.get(args.split("\\s+", 2)[0]);
+        }
+        if (known == null) {
+            known = locations.get(r.reply().trim());
+        }
+        if (known == null) {
+            known = locations.get(lastSegment(Channel.of(r).client()));
+        }
+        return known;
+    }
+
+    private static String locationCandidate(LogRecord r) {
+        return !r.arguments().isBlank() ? r.arguments().trim() : lastSegment(Channel.of(r).client());
+    }
+
+    private static String lastSegment(String port) {
+        return port.substring(port.lastIndexOf('/') + 1);
     }
 
     /** Every input symbol the rules can produce, sorted. */
     public List<String> inputAlphabet() {
-        throw new UnsupportedOperationException("TODO abstraction");
+        return inputAlphabet;
     }
 
     /** Every output symbol the rules can produce, sorted. */
     public List<String> outputAlphabet() {
-        throw new UnsupportedOperationException("TODO abstraction");
+        return outputAlphabet;
+    }
+
+    /** The location names this abbreviation knows, each with its abbreviation, sorted by name. */
+    public Map<String, String> locations() {
+        return new TreeMap<>(locations);
     }
 
     /** The built-in safety monitor's property, if the file defines one. */
     public Optional<SafetyRule> safety() {
-        throw new UnsupportedOperationException("TODO abstraction");
+        return safety;
     }
 
     /** The abstraction's name from the file. */
     public String name() {
-        throw new UnsupportedOperationException("TODO abstraction");
+        return name;
     }
 
     /** Canonical JSON text of this abstraction (stable key order), stored in models/index.json. */
     public String canonicalJson() {
-        throw new UnsupportedOperationException("TODO abstraction");
+        return canonicalJson;
     }
 
     /** SHA-256 hex of {@link #canonicalJson()}: tells whether models were learned with this abstraction. */
     public String fingerprint() {
-        throw new UnsupportedOperationException("TODO abstraction");
+        return fingerprint;
+    }
+
+    @Override
+    public String toString() {
+        return "Abstraction[" + name + ", " + fingerprint.substring(0, 12) + "]";
     }
 }

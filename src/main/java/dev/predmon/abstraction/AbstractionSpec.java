@@ -1,0 +1,49 @@
+package dev.predmon.abstraction;
+
+import com.fasterxml.jackson.annotation.JsonInclude;
+import com.fasterxml.jackson.annotation.JsonProperty;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The abstraction file as written, bound by Jackson before validation. Absent keys are {@code null};
+ * {@link AbstractionValidator} says which are required. Serialised back (without nulls, keys sorted) it is the
+ * canonical form that {@link Abstraction#fingerprint()} hashes.
+ *
+ * @param name        identifies the abstraction in models/index.json and reports
+ * @param description free text for readers, e.g. how band boundaries are assigned
+ * @param drop        filters for records outside the skill-component interface
+ * @param locations   location name, as in arguments and client ports, to its abbreviation in symbols
+ * @param rules       how each (protocol, command) becomes an input symbol and its replies output symbols
+ * @param safety      the property of the built-in safety monitor, optional
+ */
+@JsonInclude(JsonInclude.Include.NON_NULL)
+record AbstractionSpec(String name, String description, List<DropSpec> drop, Map<String, String> locations,
+                       List<RuleSpec> rules, SafetySpec safety) {
+
+    /** A record matching every given key is dropped; at least one key is required. */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record DropSpec(String kind, String from, String to, String protocol, String command) {
+    }
+
+    /** One message kind of the interface. {@code input} and reply symbols may contain {@code {loc}}. */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record RuleSpec(String protocol, String command, String input, String description, List<ReplySpec> replies) {
+    }
+
+    /** One reply symbol, given by exactly one of {@code any}, {@code equals} or {@code range}. */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record ReplySpec(Boolean any, @JsonProperty("equals") List<String> values, RangeSpec range, String symbol) {
+    }
+
+    /** A numeric interval; each end is open ({@code above}/{@code below}), closed or absent (unbounded). */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record RangeSpec(Double above, Double atLeast, Double below, Double atMost) {
+    }
+
+    /** See {@link SafetyRule}; {@code from} and {@code to} are optional. */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record SafetySpec(String name, String protocol, String command, String from, String to, Double below) {
+    }
+}

@@ -1,0 +1,53 @@
+package dev.predmon.abstraction;
+
+import java.util.Comparator;
+
+/**
+ * A numeric interval of reply values, each end open, closed or unbounded (an infinite bound is always open).
+ * Bands of one rule must tile a contiguous stretch of the line: no value may fall in two bands, and no value
+ * between the lowest and the highest band may fall in none. This is what makes a band table such as Section
+ * 5.2's unambiguous at its boundaries.
+ */
+record Band(double lower, boolean lowerClosed, double upper, boolean upperClosed) {
+
+    static Band of(AbstractionSpec.RangeSpec r) {
+        double lo = r.above() != null ? r.above() : r.atLeast() != null ? r.atLeast() : Double.NEGATIVE_INFINITY;
+        double hi = r.below() != null ? r.below() : r.atMost() != null ? r.atMost() : Double.POSITIVE_INFINITY;
+        return new Band(lo, r.atLeast() != null, hi, r.atMost() != null);
+    }
+
+    boolean isEmpty() {
+        return lower > upper || (lower == upper && !(lowerClosed && upperClosed));
+    }
+
+    boolean contains(double v) {
+        return (lowerClosed ? v >= lower : v > lower) && (upperClosed ? v <= upper : v < upper);
+    }
+
+    /** Interval notation, e.g. {@code (45, 50]}, {@code (-inf, 0]}. */
+    @Override
+    public String toString() {
+        return (lowerClosed ? "[" : "(") + num(lower) + ", " + num(upper) + (upperClosed ? "]" : ")");
+    }
+
+    private static String num(double d) {
+        if (Double.isInfinite(d)) {
+            return d > 0 ? "+inf" : "-inf";
+        }
+        return d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString((long) d) : Double.toString(d);
+    }
+
+    /** Orders by lower end, a closed lower end first (it starts earlier). */
+    static final Comparator<Band> BY_LOWER = Comparator.comparingDouble(Band::lower)
+            .thenComparing(b -> !b.lowerClosed());
+
+    /** Whether this band and {@code next}, which starts no earlier, share a value. */
+    boolean overlaps(Band next) {
+        return upper > next.lower || (upper == next.lower && upperClosed && next.lowerClosed);
+    }
+
+    /** Whether some value lies between this band and {@code next}, which starts no earlier. */
+    boolean leavesGapBefore(Band next) {
+        return upper < next.lower || (upper == next.lower && !upperClosed && !next.lowerClosed);
+    }
+}

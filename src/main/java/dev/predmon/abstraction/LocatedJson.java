@@ -1,0 +1,133 @@
+package dev.predmon.abstraction;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.JsonToken;
+import com.fasterxml.jackson.core.JsonParseException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import java.io.IOException;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * A JSON tree together with where each of its values starts in the text, keyed by JSON pointer
+ * ({@code /rules/4/replies/2}). A plain Jackson tree forgets positions, but validation errors found after
+ * binding must still say "line:column", so the tree is read token by token here.
+ */
+final class LocatedJson {
+    private final JsonNode root;
+    private final Map<String, JsonLocation> locations;
+
+    private LocatedJson(JsonNode root, Map<String, JsonLocation> locations) {
+        this.root = root;
+        this.locations = locations;
+    }
+
+    JsonNode root() {
+        return root;
+    }
+
+    /**
+     * Parses {@code text}; duplicate keys and trailing content are errors.
+     *
+     * @throws JsonProcessingException with the position of the first syntax error
+     */
+    static LocatedJson parse(JsonFactory factory, String text) throws IOException {
+        Map<String, JsonLocation> locations = new HashMap<>();
+        try (JsonParser p = factory.createParser(text)) {
+            p.enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
+            if (p.nextToken() == null) {
+                throw new JsonParseException(p, "empty file, expected a JSON object");
+            }
+            JsonNode root = read(p, "", locations);
+            if (p.nextToken() != null) {
+                throw new JsonParseException(p, "unexpected content after the top-level value");
+            }
+            return new LocatedJson(root, locations);
+        }
+    }
+
+    private static JsonNode read(JsonParser p, String pointer, Map<String, JsonLocation> locations)
+            throws IOException {
+        locations.putIfAbsent(pointer, p.currentTokenLocation());
+        JsonNodeFactory nodes = JsonNodeFactory.instance;
+        JsonToken t = p.currentToken();
+        switch (t) {
+            case START_OBJECT -> {
+                ObjectNode object = nodes.objectNode();
+                while (p.nextToken() == JsonToken.FIELD_NAME) {
+                    String name = p.currentName();
+                    String child = pointer + "/" + escape(name);
+                    locations.put(child, p.currentTokenLocation());
+                    p.nextToken();
+                    object.set(name, read(p, child, locations));
+                }
+                return object;
+            }
+            case START_ARRAY -> {
+                ArrayNode array = nodes.arrayNode();
+                int i = 0;
+                while (p.nextToken() != JsonToken.END_ARRAY) {
+                    array.add(read(p, pointer + "/" + i++, locations));
+                }
+                return array;
+            }
+            case VALUE_STRING -> {
+                return nodes.textNode(p.getText());
+            }
+            case VALUE_NUMBER_INT -> {
+                return p.getNumberType() == JsonParser.NumberType.BIG_INTEGER
+                        ? nodes.numberNode(p.getBigIntegerValue()) : nodes.numberNode(p.getLongValue());
+            }
+            case VALUE_NUMBER_FLOAT -> {
+                return nodes.numberNode(p.getDoubleValue());
+            }
+            case VALUE_TRUE, VALUE_FALSE -> {
+                return nodes.booleanNode(p.getBooleanValue());
+            }
+            case VALUE_NULL -> {
+                return nodes.nullNode();
+            }
+            default -> throw new JsonParseException(p, "unexpected token " + t);
+        }
+    }
+
+    /** The position of {@code pointer}, or of its nearest enclosing value, or {@code null} if unknown. */
+    JsonLocation locate(String pointer) {
+        String p = pointer;
+        while (true) {
+            JsonLocation l = locations.get(p);
+            if (l != null || p.isEmpty()) {
+                return l;
+            }
+            p = p.substring(0, p.lastIndexOf('/'));
+        }
+    }
+
+    static String escape(String name) {
+        return name.replace("~", "~0").replace("/", "~1");
+    }
+
+    /** {@code /rules/4/replies/2} as a reader writes it: {@code rules[4].replies[2]}; the root is {@code (top)}. */
+    static String readable(String pointer) {
+        if (pointer.isEmpty()) {
+            return "(top)";
+        }
+        StringBuilder b = new StringBuilder();
+        for (String segment : pointer.substring(1).split("/", -1)) {
+            String s = segment.replace("~1", "/").replace("~0", "~");
+            if (!s.isEmpty() && s.chars().allMatch(Character::isDigit)) {
+                b.append('[').append(s).append(']');
+            } else {
+                b.append(b.length() == 0 ? "" : ".").append(s);
+            }
+        }
+        return b.toString();
+    }
+}
