@@ -1,0 +1,152 @@
+package dev.predmon.monitor;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.learn.LearnedModels;
+import dev.predmon.learn.LearnedScenario;
+import dev.predmon.learn.ScenarioLearner;
+import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyMapping;
+import dev.predmon.mealy.MealyTrace;
+import dev.predmon.model.ModelSet;
+import dev.predmon.model.ModelStore;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.Traces;
+import dev.predmon.support.Records;
+import org.junit.jupiter.api.Test;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The predictive monitor on hand-written runs of the case study: a recharge run (nominal) and a depleted run
+ * (faulty) share their beginning and part when the depleted run's battery keeps falling on the way to the
+ * charging station (thesis Figure 5.6, with the refined bands of Section 5.2).
+ */
+class PredictiveMonitorTest {
+
+    private static final Abstraction A = Abstraction.defaults();
+
+    /** Both scenarios start alike: high battery, to the kitchen, battery drops under 50, to the station. */
+    private static Records start(Records r) {
+        return r.at(0).level(80).charging(false).isAt("kitchen", false).goTo("kitchen").status("kitchen", 1)
+                .at(10).level(70).at(20).level(48).isAt("charging_station", false).halt("kitchen")
+                .goTo("charging_station").status("charging_station", 1).at(30).level(43);
+    }
+
+    static Records recharge() {
+        return start(new Records()).at(40).level(38).isAt("charging_station", true).charging(true)
+                .at(50).level(60).at(60).level(100).charging(false).isAt("kitchen", false).goTo("kitchen")
+                .status("kitchen", 1).at(70).level(90).isAt("kitchen", true).halt("kitchen");
+    }
+
+    static Records depleted() {
+        return start(new Records()).at(40).level(38).at(50).level(33).at(60).level(28).at(70).level(23)
+                .at(80).level(18).at(90).level(0);
+    }
+
+    private static MealyTrace trace(Records r, String name) {
+        return MealyMapping.toTrace(Traces.compact(r.list(), A), name);
+    }
+
+    static ModelSet models() {
+        List<LearnedScenario> l = new ArrayList<>();
+        l.add(ScenarioLearner.learnSamples(new ScenarioSpec("recharge", false, "", List.of(Path.of("r.log"))),
+                List.of(trace(recharge(), "r.log")), ModelStore.alphabetOf(A)));
+        l.add(ScenarioLearner.learnSamples(new ScenarioSpec("depleted", true, "", List.of(Path.of("d.log"))),
+                List.of(trace(depleted(), "d.log")), ModelStore.alphabetOf(A)));
+        return LearnedModels.modelSet(l, A);
+    }
+
+    private static List<MonitorEvent> watch(ModelSet models, List<LogRecord> records) {
+        List<MonitorEvent> events = new ArrayList<>();
+        PredictiveMonitor m = new PredictiveMonitor(models, A, 0, events::add);
+        records.forEach(m::accept);
+        m.endOfInput();
+        return events;
+    }
+
+    @Test
+    void depletedRunWarnsBeforeItsViolationWithTheBatteryAtTheWarning() {
+        List<MonitorEvent> events = watch(models(), depleted().list());
+        MonitorEvent.Warning w = events.stream().filter(e -> e instanceof MonitorEvent.Warning)
+                .map(e -> (MonitorEvent.Warning) e).findFirst().orElseThrow();
+        MonitorEvent.Violation v = events.stream().filter(e -> e instanceof MonitorEvent.Violation)
+                .map(e -> (MonitorEvent.Violation) e).findFirst().orElseThrow();
+        assertEquals(List.of("depleted"), w.scenarios());
+        // Recharge reached the station at medium_four; the depleted run's next level (33, medium_three) is new.
+        assertEquals(33.0, w.battery(), 1e-9);
+        assertEquals(50.0, w.time(), 0.01);
+        assertEquals(18.0, v.value(), 1e-9);
+        assertTrue(w.time() < v.time());
+        assertTrue(events.indexOf(w) < events.indexOf(v));
+    }
+
+    @Test
+    void nominalRunNeverWarnsAndNeverViolates() {
+        List<MonitorEvent> events = watch(models(), recharge().list());
+        assertTrue(events.stream().noneMatch(e -> e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation),
+                events.toString());
+    }
+
+    @Test
+    void eliminationNamesTheModelAndWhatItExpected() {
+        List<MonitorEvent> events = watch(models(), depleted().list());
+        MonitorEvent.Eliminated x = events.stream().filter(e -> e instanceof MonitorEvent.Eliminated)
+                .map(e -> (MonitorEvent.Eliminated) e).findFirst().orElseThrow();
+        assertEquals("recharge", x.model());
+        assertTrue(x.reason().contains("o_level_medium_three") || x.reason().contains("cannot take"), x.reason());
+    }
+
+    /** Thesis Section 5.2: with the coarse bands of Section 4.2 the two runs part only at o_level_low: no lead. */
+    @Test
+    void coarseBandsOfSection42GiveNoLeadFigure56() throws Exception {
+        String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes());
+        Abstraction coarse = Abstraction.fromJson("coarse.json", coarsen(json));
+        List<LearnedScenario> l = new ArrayList<>();
+        l.add(ScenarioLearner.learnSamples(new ScenarioSpec("recharge", false, "", List.of()),
+                List.of(MealyMapping.toTrace(Traces.compact(recharge().list(), coarse), "r")), ModelStore.alphabetOf(coarse)));
+        l.add(ScenarioLearner.learnSamples(new ScenarioSpec("depleted", true, "", List.of()),
+                List.of(MealyMapping.toTrace(Traces.compact(depleted().list(), coarse), "d")), ModelStore.alphabetOf(coarse)));
+        List<MonitorEvent> events = new ArrayList<>();
+        PredictiveMonitor m = new PredictiveMonitor(LearnedModels.modelSet(l, coarse), coarse, 0, events::add);
+        depleted().list().forEach(m::accept);
+        MonitorEvent.Warning w = m.warning().orElseThrow();
+        MonitorEvent.Violation v = m.violation().orElseThrow();
+        assertEquals(v.time(), w.time(), 0.01, "the warning comes with the violation, not before");
+    }
+
+    /** Replaces the six medium bands by the thesis's single o_level_medium (20 to 50). */
+    private static String coarsen(String json) {
+        com.fasterxml.jackson.databind.ObjectMapper om = new com.fasterxml.jackson.databind.ObjectMapper();
+        try {
+            com.fasterxml.jackson.databind.node.ObjectNode root = (com.fasterxml.jackson.databind.node.ObjectNode) om.readTree(json);
+            root.put("name", "thesis-4.2-coarse");
+            for (com.fasterxml.jackson.databind.JsonNode rule : root.get("rules")) {
+                if (!"level".equals(rule.path("command").asText())) {
+                    continue;
+                }
+                com.fasterxml.jackson.databind.node.ArrayNode replies = (com.fasterxml.jackson.databind.node.ArrayNode) rule.get("replies");
+                com.fasterxml.jackson.databind.node.ArrayNode kept = om.createArrayNode();
+                for (com.fasterxml.jackson.databind.JsonNode r : replies) {
+                    String s = r.get("symbol").asText();
+                    if (!s.startsWith("o_level_medium")) {
+                        kept.add(r);
+                    } else if (s.equals("o_level_medium_one")) {
+                        com.fasterxml.jackson.databind.node.ObjectNode medium = om.createObjectNode();
+                        medium.put("symbol", "o_level_medium");
+                        medium.putObject("range").put("atLeast", 20).put("atMost", 50);
+                        kept.add(medium);
+                    }
+                }
+                ((com.fasterxml.jackson.databind.node.ObjectNode) rule).set("replies", kept);
+            }
+            return om.writeValueAsString(root);
+        } catch (java.io.IOException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+}
