@@ -11,6 +11,7 @@ import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.support.HandRuns;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.Test;
 
@@ -30,22 +31,12 @@ class PredictiveMonitorTest {
 
     private static final Abstraction A = Abstraction.defaults();
 
-    /** Both scenarios start alike: high battery, to the kitchen, battery drops under 50, to the station. */
-    private static Records start(Records r) {
-        return r.at(0).level(80).charging(false).isAt("kitchen", false).goTo("kitchen").status("kitchen", 1)
-                .at(10).level(70).at(20).level(48).isAt("charging_station", false).halt("kitchen")
-                .goTo("charging_station").status("charging_station", 1).at(30).level(43);
-    }
-
     static Records recharge() {
-        return start(new Records()).at(40).level(38).isAt("charging_station", true).charging(true)
-                .at(50).level(60).at(60).level(100).charging(false).isAt("kitchen", false).goTo("kitchen")
-                .status("kitchen", 1).at(70).level(90).isAt("kitchen", true).halt("kitchen");
+        return HandRuns.recharge();
     }
 
     static Records depleted() {
-        return start(new Records()).at(40).level(38).at(50).level(33).at(60).level(28).at(70).level(23)
-                .at(80).level(18).at(90).level(0);
+        return HandRuns.depleted();
     }
 
     private static MealyTrace trace(Records r, String name) {
