@@ -19,7 +19,7 @@ import java.util.SplittableRandom;
  *
  * <p>Ranges: tick period 0.2-1.0 s; speed 0.3-1.0 m/s; drain 0.4-2.5 %/s moving, 0-0.03 %/s idle, with
  * +-0-30% noise per tick; charge 0.8-5 %/s; battery sensor period tick-4 s; start level 70-100 (at least
- * early warning + 5); tolerance 0.05-0.25 m. {@code direct}: arrival level early warning + 2 .. start - 1.
+ * early warning + 5); tolerance 0.05-0.25 m. {@code direct}: arrival level early warning + 2 .. start - 3.
  * {@code recharge}: planned station arrival level 21 .. early warning - 2, kitchen up to half a full
  * battery's range past the turn. {@code depleted}: station (early warning + 5..60)% of range past the turn.
  */
@@ -93,10 +93,10 @@ public final class Simulator {
         Point station;
         switch (scenario) {
             case DIRECT -> {
-                if (ew + 2.0 >= start - 1.0) {
+                if (ew + 2.0 >= start - 3.0) {
                     return null;
                 }
-                double arrival = r.nextDouble(ew + 2.0, start - 1.0);
+                double arrival = r.nextDouble(ew + 2.0, start - 3.0);
                 kitchen = polar(Point.ORIGIN, (start - arrival) / perMetre, heading);
                 station = polar(Point.ORIGIN, r.nextDouble(3.0, 25.0), heading + r.nextDouble(1.0, 5.3));
             }
