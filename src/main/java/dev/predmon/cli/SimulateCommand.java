@@ -15,6 +15,7 @@ import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -30,7 +31,7 @@ import java.util.concurrent.Callable;
         description = {"Simulate the robot case study (behaviour tree, skills, battery and navigation components) "
                 + "and write the YARP monitor log of a run of the chosen scenario.",
                 "Scenarios: direct (nominal), recharge (nominal, recharges on the way), depleted (faulty: "
-                        + "the battery falls below 20% before the charging station)."})
+                        + "the battery falls below 20%% before the charging station)."})
 public final class SimulateCommand implements Callable<Integer> {
 
     @Spec
@@ -106,6 +107,9 @@ public final class SimulateCommand implements Callable<Integer> {
             return 0;
         } catch (IOException e) {
             spec.commandLine().getErr().println("simulate: cannot write: " + e.getMessage());
+            return 1;
+        } catch (UncheckedIOException e) {
+            spec.commandLine().getErr().println("simulate: cannot write: " + e.getCause().getMessage());
             return 1;
         } catch (IllegalStateException e) {
             spec.commandLine().getErr().println("simulate: " + e.getMessage());

@@ -37,6 +37,7 @@ final class Components {
     private int status = NOT_STARTED;
     private int ticksSinceEmpty = -1;
     private boolean stoppedEmpty;
+    private int goToStationCount;
 
     Components(SimParameters p, SplittableRandom noise) {
         this.p = p;
@@ -115,6 +116,9 @@ final class Components {
     void goTo(String destination) {
         target = destination;
         status = level > 0.0 ? RUNNING : ABORT;
+        if (CHARGING_STATION.equals(destination)) {
+            goToStationCount++;
+        }
         charging = false;
     }
 
@@ -133,6 +137,11 @@ final class Components {
     /** {@code GoTo.isAtLocation(destination)}: within the tolerance of it. */
     boolean isAtLocation(String destination) {
         return position.distance(locations.get(destination)) <= p.tolerance();
+    }
+
+    /** How often the robot was sent to the charging station. */
+    int goToStationCount() {
+        return goToStationCount;
     }
 
     /** Whether the robot has stopped because the battery ran out. */

@@ -55,7 +55,7 @@ public final class Simulator {
             if (p == null) {
                 continue;
             }
-            List<SimEvent> events = simulate(p, options.earlyWarning(), startMicros, noise);
+            List<SimEvent> events = simulate(scenario, p, options.earlyWarning(), startMicros, noise);
             if (events == null) {
                 continue;
             }
@@ -121,12 +121,25 @@ public final class Simulator {
                 kitchen, station, echoes, startMicros / 1e6, tail);
     }
 
+    /** Cheap early rejection; {@link RunFacts#tell} remains the judge of a finished run. */
+    private static boolean storyBroken(Scenario scenario, Components c) {
+        return switch (scenario) {
+            case DIRECT -> c.goToStationCount() > 0;
+            case RECHARGE -> c.goToStationCount() > 1 || c.level() < RunFacts.RECHARGE_MIN_LEVEL;
+            case DEPLETED -> c.isAtLocation(Components.CHARGING_STATION);
+        };
+    }
+
     private static Point polar(Point from, double distance, double angle) {
         return new Point(from.x() + distance * Math.cos(angle), from.y() + distance * Math.sin(angle));
     }
 
-    /** Ticks the tree until it succeeds or the robot stops on an empty battery; null past the time cap. */
-    private static List<SimEvent> simulate(SimParameters p, double ew, long startMicros, SplittableRandom noise) {
+    /**
+     * Ticks the tree until it succeeds or the robot stops on an empty battery; null past the time cap or as soon
+     * as the run can no longer tell the story (which keeps rejected samples cheap).
+     */
+    private static List<SimEvent> simulate(Scenario scenario, SimParameters p, double ew, long startMicros,
+                                           SplittableRandom noise) {
         Components c = new Components(p, noise.split());
         Recorder r = new Recorder(noise.split());
         Node root = BehaviorTree.build(c, r, ew, p.goToEchoesDestination());
@@ -137,6 +150,9 @@ public final class Simulator {
             }
             r.tick(startMicros + Math.round(k * p.tickPeriod() * 1e6), k);
             Status s = root.tick();
+            if (storyBroken(scenario, c)) {
+                return null;
+            }
             if (remaining > 0) {
                 if (--remaining == 0) {
                     return r.events();
