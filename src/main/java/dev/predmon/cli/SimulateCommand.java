@@ -1,0 +1,173 @@
+package dev.predmon.cli;
+
+import dev.predmon.simulate.LogWriter;
+import dev.predmon.simulate.RealtimeWriter;
+import dev.predmon.simulate.Scenario;
+import dev.predmon.simulate.SimOptions;
+import dev.predmon.simulate.SimRun;
+import dev.predmon.simulate.Simulator;
+import dev.predmon.simulate.TruthWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+
+/**
+ * {@code predmon simulate}: writes YARP monitor logs of the case study, one run per seed, for learning
+ * ({@code --runs N --out-dir DIR}), for evaluation ({@code --out FILE} plus its {@code .truth.json}) or for a
+ * live monitor to tail ({@code --realtime}).
+ */
+@Command(name = "simulate", mixinStandardHelpOptions = true,
+        description = {"Simulate the robot case study (behaviour tree, skills, battery and navigation components) "
+                + "and write the YARP monitor log of a run of the chosen scenario.",
+                "Scenarios: direct (nominal), recharge (nominal, recharges on the way), depleted (faulty: "
+                        + "the battery falls below 20%% before the charging station)."})
+public final class SimulateCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--scenario", required = true, paramLabel = "direct|recharge|depleted",
+            description = "The story to simulate.")
+    String scenario;
+
+    @Option(names = "--seed", defaultValue = "1", description = "Seed of the run (first seed with --runs); "
+            + "the same seed gives the same log byte for byte. Default: ${DEFAULT-VALUE}.")
+    long seed;
+
+    @Option(names = "--out", paramLabel = "FILE",
+            description = "Write the log here (and FILE.truth.json beside it) instead of to standard output.")
+    Path out;
+
+    @Option(names = "--runs", paramLabel = "N", description = "With --out-dir: simulate N runs, seeds seed..seed+N-1.")
+    Integer runs;
+
+    @Option(names = "--out-dir", paramLabel = "DIR",
+            description = "Write DIR/<scenario>-<seed>.log for each run and DIR/scenario.json.")
+    Path outDir;
+
+    @Option(names = "--realtime", description = "Append records at the pace of the simulated clock, flushing "
+            + "after each, so a live monitor can tail the log.")
+    boolean realtime;
+
+    @Option(names = "--speed", defaultValue = "1", paramLabel = "X",
+            description = "With --realtime: simulated seconds per wall-clock second. Default: ${DEFAULT-VALUE}.")
+    double speed;
+
+    @Option(names = "--early-warning", defaultValue = "50", paramLabel = "PERCENT",
+            description = "Battery level at or below which the robot goes to charge. Default: ${DEFAULT-VALUE}.")
+    double earlyWarning;
+
+    @Option(names = "--epoch", description = "Unix epoch time stamps instead of seconds since the start.")
+    boolean epoch;
+
+    @Option(names = "--raw-lines", description = "Print the INFO raw-bottle line before each record.")
+    boolean rawLines;
+
+    @Option(names = "--late-replies", defaultValue = "0", paramLabel = "P",
+            description = "Probability that a reply is printed after later records of other connections.")
+    double lateReplies;
+
+    @Option(names = "--vocab", description = "Print isAtLocation replies as YARP vocabs 27503/1818845542.")
+    boolean vocab;
+
+    @Option(names = "--spaces", description = "Separate the columns by spaces instead of a tab.")
+    boolean spaces;
+
+    @Option(names = "--crlf", description = "End lines with CR LF.")
+    boolean crlf;
+
+    @Override
+    public Integer call() {
+        Scenario s;
+        SimOptions options;
+        try {
+            s = Scenario.fromId(scenario);
+            options = new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage(), e);
+        }
+        checkCombination();
+        try {
+            if (outDir != null) {
+                writeBatch(s, options);
+            } else {
+                writeOne(s, options);
+            }
+            return 0;
+        } catch (IOException e) {
+            spec.commandLine().getErr().println("simulate: cannot write: " + e.getMessage());
+            return 1;
+        } catch (UncheckedIOException e) {
+            spec.commandLine().getErr().println("simulate: cannot write: " + e.getCause().getMessage());
+            return 1;
+        } catch (IllegalStateException e) {
+            spec.commandLine().getErr().println("simulate: " + e.getMessage());
+            return 1;
+        }
+    }
+
+    private void checkCombination() {
+        if (runs != null && outDir == null) {
+            throw new ParameterException(spec.commandLine(), "--runs needs --out-dir");
+        }
+        if (runs != null && runs < 1) {
+            throw new ParameterException(spec.commandLine(), "--runs must be at least 1, got " + runs);
+        }
+        if (outDir != null && (out != null || realtime)) {
+            throw new ParameterException(spec.commandLine(), "--out-dir cannot be combined with --out or --realtime");
+        }
+        if (!(speed > 0) || Double.isInfinite(speed)) {
+            throw new ParameterException(spec.commandLine(), "--speed must be a positive number, got " + speed);
+        }
+    }
+
+    private void writeBatch(Scenario s, SimOptions options) throws IOException {
+        Files.createDirectories(outDir);
+        int n = runs == null ? 1 : runs;
+        for (long k = seed; k < seed + n; k++) {
+            SimRun run = Simulator.run(s, k, options);
+            try (Writer w = Files.newBufferedWriter(outDir.resolve(s.id() + "-" + k + ".log"), StandardCharsets.UTF_8)) {
+                LogWriter.write(run, options, w);
+            }
+        }
+        TruthWriter.writeScenario(s, outDir);
+        spec.commandLine().getErr().println("simulate: wrote " + n + " " + s.id() + " runs to " + outDir);
+    }
+
+    private void writeOne(Scenario s, SimOptions options) throws IOException {
+        SimRun run = Simulator.run(s, seed, options);
+        if (out == null) {
+            PrintWriter w = spec.commandLine().getOut();
+            emit(run, options, w);
+            w.flush();
+            return;
+        }
+        Path parent = out.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        TruthWriter.writeTruth(run.truth(), TruthWriter.sidecarOf(out));
+        try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+            emit(run, options, w);
+        }
+    }
+
+    private void emit(SimRun run, SimOptions options, Writer w) throws IOException {
+        if (realtime) {
+            new RealtimeWriter(run, options, w, speed).run();
+        } else {
+            LogWriter.write(run, options, w);
+        }
+    }
+}

@@ -1,0 +1,151 @@
+package dev.predmon.simulate;
+
+import dev.predmon.simulate.SimParameters.Point;
+
+import java.util.Map;
+import java.util.SplittableRandom;
+
+/**
+ * The two components of the case study (thesis Section 3.2.3) and the physics that links them: the robot
+ * drains the battery while it moves, and charges it when it stops at the charging station.
+ *
+ * <p>The world only changes between ticks ({@link #advance}); within a tick every call sees the same state,
+ * which is what a tick period much longer than an RPC round trip gives on the real robot.
+ */
+final class Components {
+
+    static final String KITCHEN = "kitchen";
+    static final String CHARGING_STATION = "charging_station";
+
+    static final int NOT_STARTED = 0;
+    static final int RUNNING = 1;
+    static final int SUCCESS = 2;
+    static final int ABORT = 3;
+
+    private final SimParameters p;
+    private final Map<String, Point> locations;
+    private final SplittableRandom noise;
+    private final int stopDelayTicks;
+
+    private double time;
+    private double level;
+    private double reportedLevel;
+    private double lastSample;
+    private boolean charging;
+    private Point position = Point.ORIGIN;
+    private String target;
+    private int status = NOT_STARTED;
+    private int ticksSinceEmpty = -1;
+    private boolean stoppedEmpty;
+    private int goToStationCount;
+
+    Components(SimParameters p, SplittableRandom noise) {
+        this.p = p;
+        this.noise = noise;
+        this.locations = Map.of(KITCHEN, p.kitchen(), CHARGING_STATION, p.chargingStation(), "start", Point.ORIGIN);
+        this.stopDelayTicks = noise.nextInt(1, 4);
+        this.level = p.startLevel();
+        this.reportedLevel = level;
+    }
+
+    /** Moves the world on by {@code dt} seconds: motion, drain, charge and the battery sensor. */
+    void advance(double dt) {
+        time += dt;
+        if (status == RUNNING) {
+            move(dt);
+            level -= p.drainRate() * dt * (1 + p.drainNoise() * (2 * noise.nextDouble() - 1));
+        } else if (charging) {
+            level += p.chargeRate() * dt * (1 + p.drainNoise() * (2 * noise.nextDouble() - 1));
+            if (level >= 100.0) {
+                level = 100.0;
+                charging = false;
+                sample();
+            }
+        } else {
+            level -= p.idleDrainRate() * dt;
+        }
+        if (level <= 0.0) {
+            level = 0.0;
+            if (ticksSinceEmpty < 0) {
+                // The battery driver reports an empty battery at once; the robot coasts a little longer.
+                ticksSinceEmpty = 0;
+                sample();
+            } else if (++ticksSinceEmpty >= stopDelayTicks && status == RUNNING) {
+                status = ABORT;
+                stoppedEmpty = true;
+            }
+        }
+        if (time - lastSample >= p.sensorPeriod() - 1e-9) {
+            sample();
+        }
+    }
+
+    private void move(double dt) {
+        Point goal = locations.get(target);
+        double remaining = position.distance(goal);
+        double step = p.speed() * dt;
+        if (step >= remaining) {
+            position = goal;
+            status = SUCCESS;
+            if (CHARGING_STATION.equals(target) && level < 100.0) {
+                charging = true;
+            }
+        } else {
+            double f = step / remaining;
+            position = new Point(position.x() + f * (goal.x() - position.x()),
+                    position.y() + f * (goal.y() - position.y()));
+        }
+    }
+
+    private void sample() {
+        reportedLevel = level;
+        lastSample = time;
+    }
+
+    /** {@code BatteryReader.level()}: the last sensor reading, a percentage. */
+    double level() {
+        return reportedLevel;
+    }
+
+    /** {@code BatteryReader.charging_status()}: 1 while charging, else 0. */
+    int chargingStatus() {
+        return charging ? 1 : 0;
+    }
+
+    /** {@code GoTo.goTo(destination)}: starts moving there, unless the battery is empty. */
+    void goTo(String destination) {
+        target = destination;
+        status = level > 0.0 ? RUNNING : ABORT;
+        if (CHARGING_STATION.equals(destination)) {
+            goToStationCount++;
+        }
+        charging = false;
+    }
+
+    /** {@code GoTo.getStatus(destination)}: the navigation status if it is the current target, else NOT_STARTED. */
+    int getStatus(String destination) {
+        return destination.equals(target) ? status : NOT_STARTED;
+    }
+
+    /** {@code GoTo.halt(destination)}: stops the robot if it is heading there. */
+    void halt(String destination) {
+        if (destination.equals(target) && status == RUNNING) {
+            status = ABORT;
+        }
+    }
+
+    /** {@code GoTo.isAtLocation(destination)}: within the tolerance of it. */
+    boolean isAtLocation(String destination) {
+        return position.distance(locations.get(destination)) <= p.tolerance();
+    }
+
+    /** How often the robot was sent to the charging station. */
+    int goToStationCount() {
+        return goToStationCount;
+    }
+
+    /** Whether the robot has stopped because the battery ran out. */
+    boolean stoppedEmpty() {
+        return stoppedEmpty;
+    }
+}

@@ -1,0 +1,83 @@
+package dev.predmon.simulate;
+
+import dev.predmon.parse.RecordKind;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * What a run's messages show, read off the events the way a reader of the log would see them: the
+ * {@code level} replies, where the robot was sent and where it arrived. The simulator keeps a sample only
+ * if these facts tell its scenario's story.
+ */
+record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Double turnLevel, Double violationTime,
+                Double violationLevel, int goToStationCount, Double stationTime, Double stationLevel,
+                boolean chargedFull, Double kitchenTime, boolean emptied, double endTime) {
+
+    /** The level below which the safety monitor fires. */
+    static final double SAFETY_BOUND = 20.0;
+    /** {@code recharge} keeps this margin above the safety bound, so that no run is a near miss. */
+    static final double RECHARGE_MIN_LEVEL = 21.0;
+
+    static RunFacts of(List<SimEvent> events, double earlyWarning) {
+        List<double[]> timeline = new ArrayList<>();
+        double min = Double.POSITIVE_INFINITY;
+        double last = Double.NaN;
+        Double turnTime = null;
+        Double turnLevel = null;
+        Double violationTime = null;
+        Double violationLevel = null;
+        int goToStation = 0;
+        Double stationTime = null;
+        Double stationLevel = null;
+        boolean full = false;
+        Double kitchenTime = null;
+        boolean emptied = false;
+        for (SimEvent e : events) {
+            if (e.kind() == RecordKind.COMMAND && e.command().equals("goTo")
+                    && e.argument().equals(Components.CHARGING_STATION)) {
+                goToStation++;
+            }
+            if (e.kind() != RecordKind.REPLY) {
+                continue;
+            }
+            if (e.command().equals("level")) {
+                double v = Double.parseDouble(e.reply());
+                timeline.add(new double[] {e.time(), v});
+                min = Math.min(min, v);
+                last = v;
+                if (turnTime == null && v <= earlyWarning) {
+                    turnTime = e.time();
+                    turnLevel = v;
+                }
+                if (violationTime == null && v < SAFETY_BOUND) {
+                    violationTime = e.time();
+                    violationLevel = v;
+                }
+                full |= stationTime != null && v == 100.0;
+                emptied |= v == 0.0;
+            } else if (e.command().equals("isAtLocation") && e.reply().equals("1")) {
+                if (e.argument().equals(Components.CHARGING_STATION) && stationTime == null) {
+                    stationTime = e.time();
+                    stationLevel = Double.isNaN(last) ? null : last;
+                } else if (e.argument().equals(Components.KITCHEN) && kitchenTime == null) {
+                    kitchenTime = e.time();
+                }
+            }
+        }
+        double end = events.isEmpty() ? 0 : events.get(events.size() - 1).time();
+        return new RunFacts(timeline, min, turnTime, turnLevel, violationTime, violationLevel, goToStation,
+                stationTime, stationLevel, full, kitchenTime, emptied, end);
+    }
+
+    /** Whether these facts are the story of {@code scenario} (see {@link Scenario}). */
+    boolean tell(Scenario scenario, double earlyWarning) {
+        return switch (scenario) {
+            case DIRECT -> kitchenTime != null && goToStationCount == 0 && minLevel > earlyWarning;
+            case RECHARGE -> turnTime != null && goToStationCount == 1 && stationTime != null && chargedFull
+                    && kitchenTime != null && kitchenTime > stationTime && minLevel >= RECHARGE_MIN_LEVEL;
+            case DEPLETED -> turnTime != null && turnLevel >= SAFETY_BOUND && goToStationCount >= 1
+                    && stationTime == null && kitchenTime == null && violationTime != null && emptied;
+        };
+    }
+}

@@ -1,0 +1,66 @@
+package dev.predmon.simulate;
+
+/**
+ * How to simulate and how to print a run.
+ *
+ * <p>{@code earlyWarning} and {@code epoch} change the simulated events (the tree's threshold and the time
+ * base); the other fields only change how {@link LogWriter} prints them, so the same run can be written in
+ * every layout a real yarplogger export may have.
+ *
+ * @param earlyWarning percentage at or below which the tree sends the robot to the charging station
+ * @param epoch        time stamps are Unix epoch seconds from a seeded start instead of seconds since start
+ * @param rawLines     print yarp's INFO raw-bottle line before each DEBUG record
+ * @param lateReplies  probability that a reply is printed after the next record(s) of other channels
+ * @param vocab        print {@code isAtLocation} replies as YARP vocabs {@code 27503}/{@code 1818845542}
+ * @param spaces       separate the time, level and text columns by a space instead of a tab
+ * @param crlf         end lines with {@code \r\n} instead of {@code \n}
+ */
+public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, double lateReplies, boolean vocab,
+                         boolean spaces, boolean crlf) {
+
+    /** The thesis's final Early Warning (Section 5.2). */
+    public static final double DEFAULT_EARLY_WARNING = 50.0;
+
+    public SimOptions {
+        if (!(earlyWarning > 20.0 && earlyWarning < 100.0)) {
+            throw new IllegalArgumentException("early warning must be between 20 and 100 (exclusive), got "
+                    + earlyWarning);
+        }
+        if (!(lateReplies >= 0.0 && lateReplies <= 1.0)) {
+            throw new IllegalArgumentException("late-reply probability must be in [0, 1], got " + lateReplies);
+        }
+    }
+
+    /** Early warning 50, relative times, tab columns, {@code \n}, replies in order, {@code 1}/{@code 0}. */
+    public static SimOptions defaults() {
+        return new SimOptions(DEFAULT_EARLY_WARNING, false, false, 0.0, false, false, false);
+    }
+
+    public SimOptions withEarlyWarning(double value) {
+        return new SimOptions(value, epoch, rawLines, lateReplies, vocab, spaces, crlf);
+    }
+
+    public SimOptions withEpoch(boolean value) {
+        return new SimOptions(earlyWarning, value, rawLines, lateReplies, vocab, spaces, crlf);
+    }
+
+    public SimOptions withRawLines(boolean value) {
+        return new SimOptions(earlyWarning, epoch, value, lateReplies, vocab, spaces, crlf);
+    }
+
+    public SimOptions withLateReplies(double value) {
+        return new SimOptions(earlyWarning, epoch, rawLines, value, vocab, spaces, crlf);
+    }
+
+    public SimOptions withVocab(boolean value) {
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, value, spaces, crlf);
+    }
+
+    public SimOptions withSpaces(boolean value) {
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, value, crlf);
+    }
+
+    public SimOptions withCrlf(boolean value) {
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, value);
+    }
+}

@@ -1,0 +1,35 @@
+package dev.predmon.simulate;
+
+/**
+ * The physical parameters of one run, sampled from the seed (see {@link Simulator} for the ranges).
+ *
+ * @param attempt        how many samples were rejected before this one told the scenario's story
+ * @param tickPeriod     seconds between two ticks of the tree
+ * @param speed          robot speed in m/s
+ * @param drainRate      battery percentage lost per second while moving
+ * @param idleDrainRate  percentage lost per second while standing still
+ * @param drainNoise     relative amplitude of the per-tick drain noise (0.1 = +-10%)
+ * @param chargeRate     percentage gained per second while charging
+ * @param sensorPeriod   seconds between two readings of the battery sensor ({@code level} repeats its last one)
+ * @param startLevel     battery percentage at the start
+ * @param tolerance      metres within which {@code isAtLocation} answers true
+ * @param kitchen        position of the destination, metres (the robot starts at the origin)
+ * @param chargingStation position of the charging station, metres
+ * @param goToEchoesDestination whether the {@code goTo} reply prints the destination (else it is empty)
+ * @param startTime      log time of the first record, seconds
+ * @param tailTicks      ticks run after the tree succeeds or after the robot stops
+ */
+public record SimParameters(int attempt, double tickPeriod, double speed, double drainRate, double idleDrainRate,
+                            double drainNoise, double chargeRate, double sensorPeriod, double startLevel,
+                            double tolerance, Point kitchen, Point chargingStation, boolean goToEchoesDestination,
+                            double startTime, int tailTicks) {
+
+    /** A 2D position in metres. */
+    public record Point(double x, double y) {
+        public static final Point ORIGIN = new Point(0, 0);
+
+        public double distance(Point other) {
+            return Math.hypot(other.x - x, other.y - y);
+        }
+    }
+}

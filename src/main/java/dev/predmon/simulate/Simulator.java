@@ -1,0 +1,166 @@
+package dev.predmon.simulate;
+
+import dev.predmon.simulate.BehaviorTree.Node;
+import dev.predmon.simulate.BehaviorTree.Status;
+import dev.predmon.simulate.SimParameters.Point;
+
+import java.util.List;
+import java.util.SplittableRandom;
+
+/**
+ * Simulates the case study (thesis Chapter 3): the behaviour tree ticks its skills, the skills call the
+ * battery and navigation components, and every call is recorded as the YARP monitor would intercept it.
+ *
+ * <p>A run is a pure function of scenario, seed and options. The physical parameters are drawn from the
+ * seed within wide ranges, because a real robot varies a lot; the geometry is then placed so that the
+ * scenario's story is likely (e.g. the charging station {@code (earlyWarning - arrivalLevel) / drainPerMetre}
+ * metres from where the robot should turn), the run is simulated, and if its messages do not tell the story
+ * (checked on the events, as a reader of the log would) the next sample of the same random stream is tried.
+ *
+ * <p>Ranges: tick period 0.2-1.0 s; speed 0.3-1.0 m/s; drain 0.4-2.5 %/s moving, 0-0.03 %/s idle, with
+ * +-0-30% noise per tick; charge 0.8-5 %/s; battery sensor period tick-4 s; start level 70-100 (at least
+ * early warning + 5); tolerance 0.05-0.25 m. {@code direct}: arrival level early warning + 2 .. start - 3.
+ * {@code recharge}: planned station arrival level 21 .. early warning - 2, kitchen up to half a full
+ * battery's range past the turn. {@code depleted}: station (early warning + 5..60)% of range past the turn.
+ */
+public final class Simulator {
+
+    /** Samples tried before giving up on a scenario (typically fewer than 5 are needed). */
+    static final int MAX_ATTEMPTS = 2000;
+    /** Simulated seconds after which a run is abandoned as not telling its story. */
+    static final double TIME_CAP = 3600.0;
+
+    private static final long EPOCH_BASE = 1_600_000_000L;
+    private static final long EPOCH_SPREAD = 100_000_000L;
+
+    private Simulator() {
+    }
+
+    /**
+     * Simulates one run of {@code scenario}.
+     *
+     * @throws IllegalStateException if no sample tells the story (only with extreme early warnings)
+     */
+    public static SimRun run(Scenario scenario, long seed, SimOptions options) {
+        // The time base has its own stream so that --epoch shifts the same run instead of sampling another.
+        SplittableRandom clock = new SplittableRandom(seed ^ 0x9E3779B97F4A7C15L);
+        long startMicros = clock.nextLong(200_000, 3_000_000);
+        if (options.epoch()) {
+            startMicros += (EPOCH_BASE + clock.nextLong(EPOCH_SPREAD)) * 1_000_000L;
+        }
+        SplittableRandom master = new SplittableRandom(seed);
+        for (int attempt = 0; attempt < MAX_ATTEMPTS; attempt++) {
+            SimParameters p = sample(scenario, options.earlyWarning(), master, attempt, startMicros);
+            SplittableRandom noise = master.split();
+            if (p == null) {
+                continue;
+            }
+            List<SimEvent> events = simulate(scenario, p, options.earlyWarning(), startMicros, noise);
+            if (events == null) {
+                continue;
+            }
+            RunFacts f = RunFacts.of(events, options.earlyWarning());
+            if (f.tell(scenario, options.earlyWarning())) {
+                Truth truth = new Truth(scenario, scenario.faulty(), seed, p, f.violationTime(), f.violationLevel(),
+                        f.turnTime(), f.turnLevel(), f.stationLevel(), f.endTime(), f.timeline());
+                return new SimRun(scenario, seed, options, events, truth);
+            }
+        }
+        throw new IllegalStateException("no sample of " + MAX_ATTEMPTS + " tells the " + scenario.id()
+                + " story with early warning " + options.earlyWarning() + " (seed " + seed + ")");
+    }
+
+    /** Draws one set of parameters, or null when the draw cannot place the scenario's geometry. */
+    private static SimParameters sample(Scenario scenario, double ew, SplittableRandom r, int attempt,
+                                        long startMicros) {
+        double tick = r.nextDouble(0.2, 1.0);
+        double speed = r.nextDouble(0.3, 1.0);
+        double drain = r.nextDouble(0.4, 2.5);
+        double idle = r.nextDouble(0.0, 0.03);
+        double noise = r.nextDouble(0.0, 0.3);
+        double charge = r.nextDouble(0.8, 5.0);
+        double sensor = r.nextDouble(tick, Math.max(tick, 4.0) + 1e-9);
+        double startLow = Math.max(70.0, Math.min(ew + 5.0, 99.0));
+        double start = r.nextDouble(startLow, 100.0 + 1e-9);
+        double tolerance = r.nextDouble(0.05, 0.25);
+        boolean echoes = r.nextBoolean();
+        int tail = r.nextInt(1, 4);
+        double heading = r.nextDouble(0, 2 * Math.PI);
+        double perMetre = drain / speed;
+        double range = 100.0 / perMetre;
+        double toTurn = (start - ew) / perMetre;
+        Point kitchen;
+        Point station;
+        switch (scenario) {
+            case DIRECT -> {
+                if (ew + 2.0 >= start - 3.0) {
+                    return null;
+                }
+                double arrival = r.nextDouble(ew + 2.0, start - 3.0);
+                kitchen = polar(Point.ORIGIN, (start - arrival) / perMetre, heading);
+                station = polar(Point.ORIGIN, r.nextDouble(3.0, 25.0), heading + r.nextDouble(1.0, 5.3));
+            }
+            case RECHARGE -> {
+                if (RunFacts.RECHARGE_MIN_LEVEL >= ew - 2.0) {
+                    return null;
+                }
+                Point turn = polar(Point.ORIGIN, toTurn, heading);
+                kitchen = polar(Point.ORIGIN, toTurn + r.nextDouble(0.03, 0.5) * range, heading);
+                double arrival = r.nextDouble(RunFacts.RECHARGE_MIN_LEVEL, ew - 2.0);
+                station = polar(turn, (ew - arrival) / perMetre, heading + r.nextDouble(-Math.PI, Math.PI));
+            }
+            case DEPLETED -> {
+                Point turn = polar(Point.ORIGIN, toTurn, heading);
+                kitchen = polar(Point.ORIGIN, toTurn + r.nextDouble(0.03, 0.5) * range, heading);
+                station = polar(turn, (ew + r.nextDouble(5.0, 60.0)) / perMetre,
+                        heading + r.nextDouble(-Math.PI, Math.PI));
+            }
+            default -> throw new IllegalArgumentException(scenario.toString());
+        }
+        return new SimParameters(attempt, tick, speed, drain, idle, noise, charge, sensor, start, tolerance,
+                kitchen, station, echoes, startMicros / 1e6, tail);
+    }
+
+    /** Cheap early rejection; {@link RunFacts#tell} remains the judge of a finished run. */
+    private static boolean storyBroken(Scenario scenario, Components c) {
+        return switch (scenario) {
+            case DIRECT -> c.goToStationCount() > 0;
+            case RECHARGE -> c.goToStationCount() > 1 || c.level() < RunFacts.RECHARGE_MIN_LEVEL;
+            case DEPLETED -> c.isAtLocation(Components.CHARGING_STATION);
+        };
+    }
+
+    private static Point polar(Point from, double distance, double angle) {
+        return new Point(from.x() + distance * Math.cos(angle), from.y() + distance * Math.sin(angle));
+    }
+
+    /**
+     * Ticks the tree until it succeeds or the robot stops on an empty battery; null past the time cap or as soon
+     * as the run can no longer tell the story (which keeps rejected samples cheap).
+     */
+    private static List<SimEvent> simulate(Scenario scenario, SimParameters p, double ew, long startMicros,
+                                           SplittableRandom noise) {
+        Components c = new Components(p, noise.split());
+        Recorder r = new Recorder(noise.split());
+        Node root = BehaviorTree.build(c, r, ew, p.goToEchoesDestination());
+        int remaining = -1;
+        for (int k = 0; k * p.tickPeriod() <= TIME_CAP; k++) {
+            if (k > 0) {
+                c.advance(p.tickPeriod());
+            }
+            r.tick(startMicros + Math.round(k * p.tickPeriod() * 1e6), k);
+            Status s = root.tick();
+            if (storyBroken(scenario, c)) {
+                return null;
+            }
+            if (remaining > 0) {
+                if (--remaining == 0) {
+                    return r.events();
+                }
+            } else if (s == Status.SUCCESS || c.stoppedEmpty()) {
+                remaining = p.tailTicks();
+            }
+        }
+        return null;
+    }
+}

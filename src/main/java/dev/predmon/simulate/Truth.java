@@ -1,0 +1,24 @@
+package dev.predmon.simulate;
+
+import java.util.List;
+
+/**
+ * What really happened in a run, written beside the log as {@code <log>.truth.json} so that evaluations
+ * can compare a monitor's warnings with the ground truth.
+ *
+ * @param scenario        the story told
+ * @param faulty          whether the run violates the safety requirement
+ * @param seed            the seed the run was simulated from
+ * @param parameters      the sampled physical parameters
+ * @param violationTime   log time of the first {@code level} reply below 20.0, or null
+ * @param violationLevel  that reply's value, or null
+ * @param turnTime        log time of the first {@code level} reply at or below the early warning, or null
+ * @param turnLevel       that reply's value: the level at which the robot turned towards the station, or null
+ * @param stationLevel    the last {@code level} reply before the robot was first at the station, or null
+ * @param endTime         log time of the last record
+ * @param batteryTimeline one {@code [time, level]} point per {@code level} reply
+ */
+public record Truth(Scenario scenario, boolean faulty, long seed, SimParameters parameters, Double violationTime,
+                    Double violationLevel, Double turnTime, Double turnLevel, Double stationLevel, double endTime,
+                    List<double[]> batteryTimeline) {
+}
