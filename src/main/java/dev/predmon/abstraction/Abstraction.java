@@ -24,6 +24,7 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
 import java.util.HexFormat;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -80,6 +81,8 @@ public final class Abstraction {
     private final List<String> outputAlphabet;
     private final String canonicalJson;
     private final String fingerprint;
+    /** For each band symbol of a continuous rule: its rule's bands in ascending order. */
+    private final Map<String, List<String>> continuousBands;
 
     /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
     private record Rule(String protocol, String command, String input, List<Reply> replies) {
@@ -120,6 +123,22 @@ public final class Abstraction {
             inputs.addAll(expand(r.input()));
         }
         this.rules = List.copyOf(compiled);
+        Map<String, List<String>> ordered = new HashMap<>();
+        for (RuleSpec r : spec.rules()) {
+            if (Boolean.TRUE.equals(r.continuous())) {
+                List<String> ascending = r.replies().stream()
+                        .sorted(java.util.Comparator.comparing(p -> Band.of(p.range()), Band.BY_LOWER))
+                        .map(ReplySpec::symbol).distinct().toList();
+                for (String template : ascending) {
+                    for (String loc : locations.isEmpty() ? List.of("") : List.copyOf(new TreeSet<>(locations.values()))) {
+                        List<String> concrete = ascending.stream()
+                                .map(t -> t.replace(AbstractionValidator.LOC, loc)).toList();
+                        ordered.put(template.replace(AbstractionValidator.LOC, loc), concrete);
+                    }
+                }
+            }
+        }
+        this.continuousBands = Map.copyOf(ordered);
         this.inputAlphabet = List.copyOf(inputs);
         this.outputAlphabet = List.copyOf(outputs);
         this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
@@ -130,6 +149,26 @@ public final class Abstraction {
             throw new IllegalStateException("cannot serialise a validated abstraction", e);
         }
         this.fingerprint = sha256(canonicalJson);
+    }
+
+    /**
+     * The output symbols a reply passes through when a query's answer changes from {@code from} to {@code to}:
+     * for the bands of a {@code continuous} rule, every band strictly between them, in order, then {@code to}
+     * (a battery going from 52% to 41% crossed medium_six before reaching medium_five, whether or not it was
+     * read there); otherwise just {@code to}. This keeps traces independent of how often a robot polls.
+     */
+    public List<String> bandPath(String from, String to) {
+        List<String> bands = continuousBands.get(to);
+        if (from == null || bands == null || !bands.contains(from)) {
+            return List.of(to);
+        }
+        int i = bands.indexOf(from);
+        int j = bands.indexOf(to);
+        List<String> path = new ArrayList<>();
+        for (int k = i + Integer.signum(j - i); k != j + Integer.signum(j - i); k += Integer.signum(j - i)) {
+            path.add(bands.get(k));
+        }
+        return path.isEmpty() ? List.of(to) : List.copyOf(path);
     }
 
     private List<String> expand(String template) {

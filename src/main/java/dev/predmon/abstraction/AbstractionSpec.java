@@ -27,9 +27,14 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
     record DropSpec(String kind, String from, String to, String protocol, String command) {
     }
 
-    /** One message kind of the interface. {@code input} and reply symbols may contain {@code {loc}}. */
+    /**
+     * One message kind of the interface. {@code input} and reply symbols may contain {@code {loc}}.
+     * {@code continuous: true} says the replies are bands of a continuous quantity (a battery level): between two
+     * readings it crosses every band in between, so the trace must not depend on how often it is read.
+     */
     @JsonInclude(JsonInclude.Include.NON_NULL)
-    record RuleSpec(String protocol, String command, String input, String description, List<ReplySpec> replies) {
+    record RuleSpec(String protocol, String command, String input, String description, Boolean continuous,
+                    List<ReplySpec> replies) {
     }
 
     /** One reply symbol, given by exactly one of {@code any}, {@code equals} or {@code range}. */

@@ -174,6 +174,12 @@ final class AbstractionValidator {
                 }
             }
         }
+        if (Boolean.TRUE.equals(rule.continuous()) && bands.size() != rule.replies().size()) {
+            throw new Invalid(at + "/continuous", "a continuous quantity needs every reply to be a 'range' band");
+        }
+        if (Boolean.FALSE.equals(rule.continuous())) {
+            throw new Invalid(at + "/continuous", "'continuous' can only be true (leave it out otherwise)");
+        }
         bands.sort(Band.BY_LOWER);
         for (int k = 1; k < bands.size(); k++) {
             Band a = bands.get(k - 1);

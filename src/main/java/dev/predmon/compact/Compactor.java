@@ -54,6 +54,7 @@ public final class Compactor {
     }
 
     private final Consumer<IoPair> out;
+    private final BandPath bandPath;
     private final Deque<Entry> queue = new ArrayDeque<>();
     private final Map<Channel, Entry> pending = new HashMap<>();
     private final Map<String, String> lastOutput = new HashMap<>();
@@ -64,7 +65,16 @@ public final class Compactor {
 
     /** @param out receives the kept pairs, in the order of their commands in the log */
     public Compactor(Consumer<IoPair> out) {
+        this(out, (from, to) -> java.util.List.of(to));
+    }
+
+    /**
+     * @param out      receives the kept pairs, in the order of their commands in the log
+     * @param bandPath the outputs a changed answer passes through (see {@link BandPath}); each becomes a pair
+     */
+    public Compactor(Consumer<IoPair> out, BandPath bandPath) {
         this.out = Objects.requireNonNull(out, "out");
+        this.bandPath = Objects.requireNonNull(bandPath, "bandPath");
     }
 
     /** Takes the next abstract event in log order. */
@@ -107,8 +117,10 @@ public final class Compactor {
             String output = e.reply.symbol();
             String last = lastOutput.put(input, output);
             if (!output.equals(last)) {
-                kept++;
-                out.accept(new IoPair(input, output, e.command.record(), e.reply.record()));
+                for (String passed : bandPath.path(last, output)) {
+                    kept++;
+                    out.accept(new IoPair(input, passed, e.command.record(), e.reply.record()));
+                }
             }
         }
     }

@@ -28,7 +28,7 @@ public final class TracePipeline {
     public TracePipeline(Abstraction abstraction, PipelineListener listener) {
         this.abstraction = abstraction;
         this.listener = listener;
-        this.compactor = new Compactor(pair -> listener.pair(pair, current));
+        this.compactor = new Compactor(pair -> listener.pair(pair, current), abstraction::bandPath);
     }
 
     /** Takes the next record of the log. */
