@@ -16,8 +16,15 @@ record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Doubl
 
     /** The level below which the safety monitor fires. */
     static final double SAFETY_BOUND = 20.0;
-    /** {@code recharge} keeps this margin above the safety bound, so that no run is a near miss. */
-    static final double RECHARGE_MIN_LEVEL = 21.0;
+    /**
+     * The lowest level a {@code recharge} run may reach: the thesis's premise for raising the Early Warning to
+     * 50% (Section 5.2) is that a nominal robot reaches the station with margin, at most 20 points below the
+     * Early Warning and never closer than 1 point to the safety bound. Without that margin a depleted run is
+     * indistinguishable from a nominal late arrival until the violation itself, for any monitor.
+     */
+    static double rechargeMinLevel(double earlyWarning) {
+        return Math.max(SAFETY_BOUND + 1.0, earlyWarning - 20.0);
+    }
 
     static RunFacts of(List<SimEvent> events, double earlyWarning) {
         List<double[]> timeline = new ArrayList<>();
@@ -75,7 +82,7 @@ record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Doubl
         return switch (scenario) {
             case DIRECT -> kitchenTime != null && goToStationCount == 0 && minLevel > earlyWarning;
             case RECHARGE -> turnTime != null && goToStationCount == 1 && stationTime != null && chargedFull
-                    && kitchenTime != null && kitchenTime > stationTime && minLevel >= RECHARGE_MIN_LEVEL;
+                    && kitchenTime != null && kitchenTime > stationTime && minLevel >= rechargeMinLevel(earlyWarning);
             case DEPLETED -> turnTime != null && turnLevel >= SAFETY_BOUND && goToStationCount >= 1
                     && stationTime == null && kitchenTime == null && violationTime != null && emptied;
         };

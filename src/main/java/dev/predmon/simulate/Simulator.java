@@ -20,7 +20,8 @@ import java.util.SplittableRandom;
  * <p>Ranges: tick period 0.2-1.0 s; speed 0.3-1.0 m/s; drain 0.4-2.5 %/s moving, 0-0.03 %/s idle, with
  * +-0-30% noise per tick; charge 0.8-5 %/s; battery sensor period tick-4 s; start level 70-100 (at least
  * early warning + 5); tolerance 0.05-0.25 m. {@code direct}: arrival level early warning + 2 .. start - 3.
- * {@code recharge}: planned station arrival level 21 .. early warning - 2, kitchen up to half a full
+ * {@code recharge}: planned station arrival level max(21, early warning - 20) + 2 .. early warning - 2 (the
+ * thesis's margin, see {@link RunFacts#rechargeMinLevel}), kitchen up to half a full
  * battery's range past the turn. {@code depleted}: station (early warning + 5..60)% of range past the turn.
  */
 public final class Simulator {
@@ -101,12 +102,13 @@ public final class Simulator {
                 station = polar(Point.ORIGIN, r.nextDouble(3.0, 25.0), heading + r.nextDouble(1.0, 5.3));
             }
             case RECHARGE -> {
-                if (RunFacts.RECHARGE_MIN_LEVEL >= ew - 2.0) {
+                double lowest = RunFacts.rechargeMinLevel(ew) + 2.0;
+                if (lowest >= ew - 2.0) {
                     return null;
                 }
                 Point turn = polar(Point.ORIGIN, toTurn, heading);
                 kitchen = polar(Point.ORIGIN, toTurn + r.nextDouble(0.03, 0.5) * range, heading);
-                double arrival = r.nextDouble(RunFacts.RECHARGE_MIN_LEVEL, ew - 2.0);
+                double arrival = r.nextDouble(lowest, ew - 2.0);
                 station = polar(turn, (ew - arrival) / perMetre, heading + r.nextDouble(-Math.PI, Math.PI));
             }
             case DEPLETED -> {
@@ -122,10 +124,10 @@ public final class Simulator {
     }
 
     /** Cheap early rejection; {@link RunFacts#tell} remains the judge of a finished run. */
-    private static boolean storyBroken(Scenario scenario, Components c) {
+    private static boolean storyBroken(Scenario scenario, Components c, double ew) {
         return switch (scenario) {
             case DIRECT -> c.goToStationCount() > 0;
-            case RECHARGE -> c.goToStationCount() > 1 || c.level() < RunFacts.RECHARGE_MIN_LEVEL;
+            case RECHARGE -> c.goToStationCount() > 1 || c.level() < RunFacts.rechargeMinLevel(ew);
             case DEPLETED -> c.isAtLocation(Components.CHARGING_STATION);
         };
     }
@@ -150,7 +152,7 @@ public final class Simulator {
             }
             r.tick(startMicros + Math.round(k * p.tickPeriod() * 1e6), k);
             Status s = root.tick();
-            if (storyBroken(scenario, c)) {
+            if (storyBroken(scenario, c, ew)) {
                 return null;
             }
             if (remaining > 0) {
