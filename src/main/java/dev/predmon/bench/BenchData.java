@@ -1,0 +1,92 @@
+package dev.predmon.bench;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.learn.LearnedModels;
+import dev.predmon.learn.LearnedScenario;
+import dev.predmon.learn.ScenarioLearner;
+import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyMapping;
+import dev.predmon.mealy.MealyTrace;
+import dev.predmon.model.ModelSet;
+import dev.predmon.model.ModelStore;
+import dev.predmon.parse.LogParser;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.Traces;
+import dev.predmon.simulate.LogWriter;
+import dev.predmon.simulate.Scenario;
+import dev.predmon.simulate.SimOptions;
+import dev.predmon.simulate.Simulator;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/** Inputs of the benchmarks, all from the simulator: log texts, Mealy samples, models learned in memory. */
+final class BenchData {
+
+    private BenchData() {
+    }
+
+    /** The log text of one simulated run (default options). */
+    static String text(Scenario s, long seed) {
+        return LogWriter.toText(Simulator.run(s, seed, SimOptions.defaults()), SimOptions.defaults());
+    }
+
+    /** The records of a log text, parsed as any log is. */
+    static List<LogRecord> records(String text) {
+        List<LogRecord> records = new ArrayList<>();
+        LogParser p = new LogParser(records::add, problem -> {
+        });
+        text.lines().forEach(p::acceptLine);
+        p.endOfInput();
+        return records;
+    }
+
+    /** The Mealy sample of a log text, as {@code learn} makes it. */
+    static MealyTrace sample(String text, Abstraction abstraction, String source) {
+        return MealyMapping.toTrace(Traces.compact(records(text), abstraction), source);
+    }
+
+    /** Models of the three scenarios learned in memory from {@code runs} runs each (seeds 1..runs). */
+    static ModelSet models(Abstraction abstraction, int runs) {
+        List<LearnedScenario> learned = new ArrayList<>();
+        for (Scenario s : Scenario.values()) {
+            List<MealyTrace> samples = new ArrayList<>();
+            for (long seed = 1; seed <= runs; seed++) {
+                samples.add(sample(text(s, seed), abstraction, s.id() + "-" + seed + ".log"));
+            }
+            learned.add(ScenarioLearner.learnSamples(new ScenarioSpec(s.id(), s.faulty(), s.description(), List.of()),
+                    samples, ModelStore.alphabetOf(abstraction)));
+        }
+        return LearnedModels.modelSet(learned, abstraction);
+    }
+
+    /**
+     * Writes a log of at least {@code bytes} bytes: runs of every scenario, seeds from 10,000 on, back to back
+     * (each run's clock starts again near 0, which is how a run boundary is recognised).
+     *
+     * @return the number of runs written
+     */
+    static int bigLog(Path file, long bytes) throws IOException {
+        // A pool of distinct runs, cycled: simulating is slower than what is measured and not what is measured.
+        List<String> pool = new ArrayList<>();
+        for (int i = 0; i < 12; i++) {
+            pool.add(text(Scenario.values()[i % 3], 10_000 + i));
+        }
+        long written = 0;
+        int runs = 0;
+        try (BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
+            while (written < bytes) {
+                String t = pool.get(runs % pool.size());
+                w.write(t);
+                written += t.length();
+                runs++;
+            }
+        }
+        return runs;
+    }
+}

@@ -1,0 +1,98 @@
+package dev.predmon.bench;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.model.ModelSet;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
+
+/**
+ * Runs predmon's benchmarks and describes each figure in one line. Not timed unit tests: each benchmark warms
+ * up, repeats, and reports what it measured, whether the target is met or not.
+ */
+public final class Benchmarks {
+
+    /** The benchmarks, as named on the command line. */
+    public enum Kind { BATCH, LATENCY, MEMORY, LEARN }
+
+    /**
+     * Sizes.
+     *
+     * @param batchMegabytes  size of the generated log for the batch benchmark
+     * @param latencyRuns     appends measured
+     * @param pollMicros      the watcher's pause when nothing was appended
+     * @param memoryRecords   records pushed through the monitor
+     * @param learnRuns       runs per scenario, one learning per value
+     * @param modelRuns       runs per scenario the monitored models are learned from
+     * @param tempDir         where generated logs go
+     */
+    public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
+                          List<Integer> learnRuns, int modelRuns, Path tempDir) {
+    }
+
+    private Benchmarks() {
+    }
+
+    /** Runs {@code kinds} in order, handing each figure's line to {@code out} as soon as it is measured. */
+    public static void run(List<Kind> kinds, Options o, Consumer<String> out) throws Exception {
+        Abstraction abstraction = Abstraction.defaults();
+        ModelSet models = null;
+        if (kinds.contains(Kind.BATCH) || kinds.contains(Kind.LATENCY) || kinds.contains(Kind.MEMORY)) {
+            models = BenchData.models(abstraction, o.modelRuns());
+            out.accept(f("models: %d machines learned from %d runs per scenario", models.models().size(), o.modelRuns()));
+        }
+        out.accept(f("machine: %d cores, Java %s, max heap %.0f MB", Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.version"), Runtime.getRuntime().maxMemory() / 1e6));
+        for (Kind k : kinds) {
+            switch (k) {
+                case BATCH -> {
+                    BatchBench.Result r = BatchBench.run(abstraction, models, o.batchMegabytes(), 3, o.tempDir());
+                    out.accept(f("batch: parse+abstract+compact+match of %.1f MB (%d records) in %.3f s: %.1f MB/s, "
+                                    + "%.0f records/s (best of 3, after a warm-up pass); target >= 200 MB/s: %s",
+                            r.bytes() / 1e6, r.records(), r.seconds(), r.mbPerSecond(), r.recordsPerSecond(),
+                            r.mbPerSecond() >= 200 ? "met" : "MISSED"));
+                    out.accept(Double.isNaN(r.grepSeconds()) ? "batch: grep could not be run"
+                            : f("batch: grep -c intercepted on the same file: %.3f s, %.1f MB/s (counted %d)",
+                            r.grepSeconds(), r.bytes() / 1e6 / r.grepSeconds(), r.grepCount()));
+                }
+                case LATENCY -> {
+                    LatencyBench.Result r = LatencyBench.run(abstraction, models, o.latencyRuns(), o.pollMicros(),
+                            o.tempDir());
+                    out.accept(f("latency: append of the warning's record -> warning event, %d runs, poll pause %d us: "
+                                    + "median %.3f ms, p99 %.3f ms, max %.3f ms; target p99 < 20 ms: %s",
+                            r.millis().length, r.pollMicros(), r.median(), r.p99(), r.max(),
+                            r.p99() < 20 ? "met" : "MISSED"));
+                }
+                case MEMORY -> {
+                    MemoryBench.Result r = MemoryBench.run(abstraction, models, o.memoryRecords(), 10);
+                    List<String> cpu = new ArrayList<>();
+                    List<String> heap = new ArrayList<>();
+                    for (int i = 0; i < r.records().length; i++) {
+                        cpu.add(f("%.0f", r.cpuNanos()[i]));
+                        heap.add(f("%.1f", r.heapMb()[i]));
+                    }
+                    out.accept(f("watch cpu: ns of CPU per record, per tenth of %d records: %s", o.memoryRecords(),
+                            String.join(" ", cpu)));
+                    out.accept(f("watch heap: MB in use after GC, per tenth: %s (max heap %.0f MB); after %d records: "
+                                    + "%.1f MB", String.join(" ", heap), r.maxHeapMb(),
+                            r.records()[r.records().length - 1], r.heapMb()[r.heapMb().length - 1]));
+                }
+                case LEARN -> {
+                    for (int n : o.learnRuns()) {
+                        LearnBench.Result r = LearnBench.run(abstraction, n);
+                        out.accept(f("learn: %d runs per scenario (3 scenarios): %.3f s, peak heap %.1f MB, %d machines, "
+                                        + "%d states (samples prepared in %.1f s, not counted)", r.runs(), r.seconds(),
+                                r.peakMb(), r.machines(), r.states(), r.prepareSeconds()));
+                    }
+                }
+            }
+        }
+    }
+
+    private static String f(String format, Object... args) {
+        return String.format(Locale.ROOT, format, args);
+    }
+}

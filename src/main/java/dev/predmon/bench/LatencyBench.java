@@ -1,0 +1,157 @@
+package dev.predmon.bench;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.LogWatcher;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.simulate.Scenario;
+
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * Append-to-warning latency of {@code watch}: a writer thread appends a depleted run to a file; the main thread
+ * runs {@code watch}'s {@link LogWatcher} loop on it, polling every {@code pollMicros} (watch's {@code --poll-ms}).
+ * Everything before the record that triggers the warning is appended first and let through; then that record
+ * is appended, and the time from the end of its write to the warning event is one sample.
+ */
+final class LatencyBench {
+
+    /** @param millis one latency per run, sorted */
+    record Result(double[] millis, long pollMicros) {
+        double median() {
+            return percentile(0.5);
+        }
+
+        double p99() {
+            return percentile(0.99);
+        }
+
+        double max() {
+            return millis[millis.length - 1];
+        }
+
+        double percentile(double q) {
+            return millis[Math.min(millis.length - 1, (int) Math.ceil(q * millis.length) - 1)];
+        }
+    }
+
+    private LatencyBench() {
+    }
+
+    static Result run(Abstraction abstraction, ModelSet models, int runs, long pollMicros, Path dir) throws Exception {
+        // A depleted run the models warn on, split at the warning's record.
+        String[] parts = null;
+        for (long seed = 20_000; parts == null && seed < 20_100; seed++) {
+            parts = split(BenchData.text(Scenario.DEPLETED, seed), abstraction, models, dir);
+        }
+        if (parts == null) {
+            throw new IllegalStateException("no simulated depleted run raised a warning with these models");
+        }
+        byte[] before = parts[0].getBytes(StandardCharsets.UTF_8);
+        byte[] trigger = parts[1].getBytes(StandardCharsets.UTF_8);
+        double[] millis = new double[runs];
+        for (int i = 0; i < runs; i++) {
+            millis[i] = once(before, trigger, abstraction, models, pollMicros, dir);
+        }
+        Arrays.sort(millis);
+        return new Result(millis, pollMicros);
+    }
+
+    private static double once(byte[] before, byte[] trigger, Abstraction abstraction, ModelSet models,
+                               long pollMicros, Path dir) throws Exception {
+        Path file = Files.createTempFile(dir, "predmon-latency", ".log");
+        AtomicLong warnedAt = new AtomicLong();
+        AtomicLong written = new AtomicLong();
+        java.util.concurrent.atomic.AtomicBoolean caughtUp = new java.util.concurrent.atomic.AtomicBoolean();
+        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> {
+            if (e instanceof MonitorEvent.Warning) {
+                warnedAt.set(System.nanoTime());
+            }
+        });
+        try (OutputStream out = Files.newOutputStream(file);
+             LogWatcher watcher = new LogWatcher(file, monitor, p -> {
+             })) {
+            out.write(before);
+            out.flush();
+            long records = before.length == 0 ? 0 : countRecords(before);
+            Thread writer = new Thread(() -> {
+                try {
+                    while (!caughtUp.get()) {
+                        LockSupport.parkNanos(100_000);
+                    }
+                    out.write(trigger);
+                    out.flush();
+                    written.set(System.nanoTime());
+                } catch (Exception ex) {
+                    throw new IllegalStateException(ex);
+                }
+            }, "predmon-bench-writer");
+            writer.start();
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (warnedAt.get() == 0 && System.nanoTime() < deadline) {
+                boolean read = watcher.poll();
+                if (!caughtUp.get() && monitor.pipeline().records() >= records) {
+                    caughtUp.set(true);
+                }
+                if (!read) {
+                    LockSupport.parkNanos(pollMicros * 1000);
+                }
+            }
+            writer.join();
+            if (warnedAt.get() == 0) {
+                throw new IllegalStateException("no warning within 10 s");
+            }
+        } finally {
+            Files.deleteIfExists(file);
+        }
+        // The warning can be seen before the writer stores its clock; such a sample is ~0.
+        return Math.max(0, warnedAt.get() - written.get()) / 1e6;
+    }
+
+    private static long countRecords(byte[] text) {
+        String s = new String(text, StandardCharsets.UTF_8);
+        return s.lines().filter(l -> l.contains(" intercepted:") || l.contains("\tintercepted:")
+                || l.endsWith("intercepted:")).count();
+    }
+
+    /** The text before the warning's record and that record's seven lines, or null when no warning. */
+    private static String[] split(String text, Abstraction abstraction, ModelSet models, Path dir) throws Exception {
+        Path file = Files.createTempFile(dir, "predmon-latency", ".log");
+        try {
+            Files.writeString(file, text);
+            long[] line = {-1};
+            PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> {
+                if (e instanceof MonitorEvent.Warning w) {
+                    line[0] = w.line();
+                }
+            });
+            try (LogWatcher w = new LogWatcher(file, monitor, p -> {
+            })) {
+                w.drain();
+            }
+            if (line[0] < 0) {
+                return null;
+            }
+            String[] lines = text.split("\n", -1);
+            int start = (int) line[0] - 1; // the record's header line, 1-based
+            StringBuilder before = new StringBuilder();
+            for (int i = 0; i < start; i++) {
+                before.append(lines[i]).append('\n');
+            }
+            StringBuilder trigger = new StringBuilder();
+            for (int i = start; i < start + 7; i++) {
+                trigger.append(lines[i]).append('\n');
+            }
+            return new String[] {before.toString(), trigger.toString()};
+        } finally {
+            Files.deleteIfExists(file);
+        }
+    }
+}

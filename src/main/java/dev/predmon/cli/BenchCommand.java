@@ -1,0 +1,77 @@
+package dev.predmon.cli;
+
+import dev.predmon.bench.Benchmarks;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.Callable;
+
+/** {@code predmon bench}: the performance figures of the README, measured on this machine. */
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = {"Measure predmon on this machine with simulated logs: batch throughput (vs grep), "
+                + "append-to-warning latency of watch, watch's CPU per record and heap as the log grows, "
+                + "learning time and peak heap.",
+                "For the heap figure run: java -Xmx64m -jar predmon.jar bench --only memory"})
+final class BenchCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--only", split = ",", paramLabel = "batch|latency|memory|learn",
+            description = "Run only these benchmarks (default: all, in this order).")
+    List<String> only;
+
+    @Option(names = "--batch-mb", defaultValue = "200", description = "Size of the batch log in MB (default: ${DEFAULT-VALUE}).")
+    long batchMb;
+
+    @Option(names = "--latency-runs", defaultValue = "200", description = "Appends measured (default: ${DEFAULT-VALUE}).")
+    int latencyRuns;
+
+    @Option(names = "--poll-us", defaultValue = "1000",
+            description = "Watcher pause when nothing was appended, microseconds (watch --poll-ms; default: ${DEFAULT-VALUE}).")
+    long pollMicros;
+
+    @Option(names = "--memory-records", defaultValue = "10000000",
+            description = "Records pushed through the monitor (default: ${DEFAULT-VALUE}).")
+    long memoryRecords;
+
+    @Option(names = "--learn-runs", split = ",", defaultValue = "10,100,1000",
+            description = "Runs per scenario to learn from, one measurement each (default: ${DEFAULT-VALUE}).")
+    List<Integer> learnRuns;
+
+    @Option(names = "--model-runs", defaultValue = "20",
+            description = "Runs per scenario the monitored models are learned from (default: ${DEFAULT-VALUE}).")
+    int modelRuns;
+
+    @Option(names = "--tmp", paramLabel = "DIR", description = "Directory for generated logs (default: the system's).")
+    Path tmp;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        List<Benchmarks.Kind> kinds = only == null || only.isEmpty() ? Arrays.asList(Benchmarks.Kind.values())
+                : only.stream().map(this::kind).toList();
+        Path dir = tmp != null ? tmp : Path.of(System.getProperty("java.io.tmpdir"));
+        Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, learnRuns,
+                modelRuns, dir), line -> {
+            out.println(line);
+            out.flush();
+        });
+        return ExitCodes.OK;
+    }
+
+    private Benchmarks.Kind kind(String name) {
+        try {
+            return Benchmarks.Kind.valueOf(name.trim().toUpperCase(java.util.Locale.ROOT));
+        } catch (IllegalArgumentException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--only: unknown benchmark '" + name + "' (expected batch, latency, memory or learn)");
+        }
+    }
+}

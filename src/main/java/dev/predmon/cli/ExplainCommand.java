@@ -1,0 +1,97 @@
+package dev.predmon.cli;
+
+import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.evaluate.Explanation;
+import dev.predmon.model.ModelSet;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+/** {@code predmon explain}: why did it warn, why did it not. */
+@Command(name = "explain", mixinStandardHelpOptions = true,
+        description = {"Explain a run: its abstract trace pair by pair and, for each model, where it stopped "
+                + "matching and why (the reply it expected versus the one seen), then what 'watch' concluded.",
+                "Exit 1 when watch would warn on this log, 0 otherwise."})
+final class ExplainCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to explain.")
+    Path log;
+
+    @Option(names = "--threshold", paramLabel = "N", defaultValue = "0",
+            description = "Output discrepancies a model may accumulate and still match (default: ${DEFAULT-VALUE}).")
+    int threshold;
+
+    @Option(names = "--json", description = "Print the explanation as one JSON document.")
+    boolean json;
+
+    @Mixin
+    ModelOptions models;
+
+    @Mixin
+    AbstractionOption abstractionOption;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        Abstraction abstraction = abstractionOption.load();
+        ModelSet set = models.load(abstraction);
+        if (!Files.isRegularFile(log)) {
+            throw new BadInputException(log + ": no such file");
+        }
+        Explanation x = Explanation.of(log, set, abstraction, threshold);
+        if (json) {
+            out.println(new com.fasterxml.jackson.databind.ObjectMapper()
+                    .enable(com.fasterxml.jackson.databind.SerializationFeature.INDENT_OUTPUT).writeValueAsString(x));
+        } else {
+            print(out, x);
+        }
+        out.flush();
+        return x.run().warningTime() != null ? ExitCodes.WARNING : ExitCodes.OK;
+    }
+
+    private static void print(PrintWriter out, Explanation x) {
+        out.println("trace of " + x.log() + " (" + x.steps().size() + " compacted pairs):");
+        for (Explanation.Step s : x.steps()) {
+            StringBuilder ends = new StringBuilder();
+            for (Explanation.ModelFate f : x.models()) {
+                if (f.stoppedAt() != null && f.stoppedAt() == s.index()) {
+                    ends.append(ends.length() == 0 ? "   <- eliminated: " : ", ").append(f.model());
+                }
+            }
+            out.printf(Locale.ROOT, "  %4d  t=%-10.3f line %-7d %s -> %s%s%n", s.index(), s.time(), s.line(),
+                    s.input(), s.output(), ends);
+        }
+        out.println();
+        out.println("models:");
+        for (Explanation.ModelFate f : x.models()) {
+            out.printf(Locale.ROOT, "  %-16s %-8s %s%n", f.model(), f.faulty() ? "faulty" : "nominal",
+                    f.matched() ? f.reason() : "stopped at pair " + f.stoppedAt() + ": " + f.reason());
+        }
+        out.println();
+        var r = x.run();
+        if (r.warningTime() != null) {
+            out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d): every nominal model is eliminated while %s "
+                    + "still matches%n", r.warningTime(), r.warningLine(), String.join(", ", r.warningScenarios()));
+        } else {
+            boolean nominal = x.models().stream().anyMatch(f -> !f.faulty() && f.matched());
+            boolean faulty = x.models().stream().anyMatch(f -> f.faulty() && f.matched());
+            out.println("watch does not warn: " + (nominal ? "a nominal model matches the whole run"
+                    : faulty ? "a nominal model matched until the faulty ones were gone"
+                    : "no model was left when the nominal ones were eliminated"));
+        }
+        out.println(r.violationTime() == null ? "the safety property holds throughout the log"
+                : String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime()));
+    }
+}

@@ -1,0 +1,26 @@
+package dev.predmon.evaluate;
+
+import com.fasterxml.jackson.annotation.JsonIgnore;
+import com.fasterxml.jackson.annotation.JsonPropertyOrder;
+import dev.predmon.model.ModelSet;
+
+import java.util.List;
+
+/**
+ * The outcome of {@code evaluate}.
+ *
+ * @param mode        {@code cross-validation} or {@code test-set}
+ * @param folds       K, or 0 with a test set
+ * @param threshold   discrepancies tolerated per model
+ * @param abstraction the abstraction's name
+ * @param scenarios   per-scenario counts, sorted by scenario
+ * @param confusion   actual against predicted over all runs
+ * @param runs        every judged run, in scenario then log order
+ * @param notes       what a reader should know (scenarios missing from a fold's training data, skipped logs)
+ * @param models      the models to show: learned on all of {@code --logs} (not serialised)
+ */
+@JsonPropertyOrder({"mode", "folds", "threshold", "abstraction", "scenarios", "confusion", "notes", "runs"})
+public record Evaluation(String mode, int folds, int threshold, String abstraction, List<ScenarioSummary> scenarios,
+                         Confusion confusion, List<RunResult> runs, List<String> notes,
+                         @JsonIgnore ModelSet models) {
+}

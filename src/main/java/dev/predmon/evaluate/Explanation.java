@@ -1,0 +1,98 @@
+package dev.predmon.evaluate;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.compact.IoPair;
+import dev.predmon.model.LearnedModel;
+import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.ModelTracker;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Traces;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Why {@code watch} warned or did not: the run's abstract trace pair by pair and, for each model, where it stopped
+ * matching and why (the symbol it expected versus the one seen). Each model is walked with the monitor's own
+ * {@link ModelTracker} and threshold; the warning and violation come from replaying the log ({@link Replay}), so
+ * the explanation and the monitor cannot disagree.
+ *
+ * @param log    the run
+ * @param steps  the compacted trace, one query/reply pair each
+ * @param models every model's fate, in model order
+ * @param run    the monitor's verdict on the run (scenario unknown: judged as nominal)
+ */
+public record Explanation(String log, List<Step> steps, List<ModelFate> models, RunResult run) {
+
+    /**
+     * One compacted pair.
+     *
+     * @param index  0-based pair index (Mealy steps {@code 2*index} and {@code 2*index+1})
+     * @param time   time of the record that completed it
+     * @param line   that record's line
+     * @param input  input symbol (the command)
+     * @param output output symbol (the reply)
+     */
+    public record Step(int index, double time, long line, String input, String output) {
+    }
+
+    /**
+     * What became of one model.
+     *
+     * @param model          its id
+     * @param scenario       its scenario
+     * @param faulty         whether that scenario is faulty
+     * @param matched        it matched the whole trace (within the threshold)
+     * @param stoppedAt      the pair at which it was eliminated, or null
+     * @param input          the input there
+     * @param expected       the output it expected, or null when it had no transition for the input
+     * @param seen           the output seen
+     * @param discrepancies  outputs that differed up to its elimination or the end
+     * @param reason         one line for users
+     */
+    public record ModelFate(String model, String scenario, boolean faulty, boolean matched, Integer stoppedAt,
+                            String input, String expected, String seen, int discrepancies, String reason) {
+    }
+
+    /** Explains {@code log} against {@code models}. */
+    public static Explanation of(Path log, ModelSet models, Abstraction abstraction, int threshold) throws IOException {
+        LogTrace trace = Traces.read(log, abstraction);
+        List<Step> steps = new ArrayList<>();
+        for (int i = 0; i < trace.pairs().size(); i++) {
+            IoPair p = trace.pairs().get(i);
+            steps.add(new Step(i, p.reply().time(), p.reply().line(), p.input(), p.output()));
+        }
+        List<ModelFate> fates = new ArrayList<>();
+        for (LearnedModel m : models.models()) {
+            ModelTracker t = new ModelTracker(m, threshold);
+            for (IoPair p : trace.pairs()) {
+                t.step(p.input(), dev.predmon.mealy.MealyMapping.OK);
+                t.step(dev.predmon.mealy.MealyMapping.DELTA, p.output());
+                if (!t.alive()) {
+                    break;
+                }
+            }
+            ModelTracker.Failure f = t.elimination();
+            if (f == null) {
+                fates.add(new ModelFate(m.id(), m.scenario(), m.faulty(), true, null, null, null, null,
+                        t.discrepancies(), t.discrepancies() == 0 ? "matches the whole run"
+                        : "matches the whole run with " + t.discrepancies() + " discrepancy(ies), first: "
+                        + t.firstDiscrepancy().describe()));
+            } else {
+                int pair = f.step() / 2;
+                // Step 2k is the command (input/OK); step 2k+1 is Delta/reply: name the real symbols.
+                String input = f.step() % 2 == 0 ? f.input() : steps.get(pair).input();
+                String reason = f.expected() == null
+                        ? (f.step() % 2 == 0 ? "no transition for command " + input
+                        : "no transition for the reply to " + input)
+                        : "after command " + input + " expected reply " + f.expected() + " but saw " + f.seen();
+                fates.add(new ModelFate(m.id(), m.scenario(), m.faulty(), false, pair, input, f.expected(), f.seen(),
+                        t.discrepancies(), reason));
+            }
+        }
+        RunResult run = Replay.run(log, "?", false, -1, models, abstraction, threshold);
+        return new Explanation(log.toString(), List.copyOf(steps), List.copyOf(fates), run);
+    }
+}

@@ -1,0 +1,232 @@
+package dev.predmon.evaluate;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.model.LearnedModel;
+import dev.predmon.model.ModelStore;
+import org.jfree.chart.ChartFactory;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.plot.PlotOrientation;
+import org.jfree.chart.plot.ValueMarker;
+import org.jfree.chart.plot.XYPlot;
+import org.jfree.chart.ui.RectangleAnchor;
+import org.jfree.chart.ui.TextAnchor;
+import org.jfree.data.statistics.HistogramDataset;
+import org.jfree.data.xy.XYSeries;
+import org.jfree.data.xy.XYSeriesCollection;
+import org.jfree.svg.SVGGraphics2D;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Rectangle;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The evaluation as one self-contained HTML file: every chart is inline SVG drawn by JFreeChart through
+ * JFreeSVG, the style sheet is inline, there is no script and no external reference, so the file opens
+ * anywhere without network. Sections: summary table, confusion matrix, distribution of leads, the battery
+ * level of each run over time with its warning and violation marked (the first {@link #MAX_PLOTS} runs), and
+ * the learned models drawn ({@link MachineDrawing}) with their DOT text.
+ */
+public final class HtmlReport {
+
+    /** Runs plotted at most; a page of thousands of charts helps nobody. */
+    public static final int MAX_PLOTS = 60;
+    private static final int MAX_POINTS = 2000;
+
+    private HtmlReport() {
+    }
+
+    /** Writes the report of {@code e} to {@code file}. */
+    public static void write(Evaluation e, Abstraction abstraction, Path file) throws IOException {
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        Files.writeString(file, html(e, abstraction), StandardCharsets.UTF_8);
+    }
+
+    /** The report's text. */
+    public static String html(Evaluation e, Abstraction abstraction) throws IOException {
+        StringBuilder h = new StringBuilder(1 << 16);
+        h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>predmon evaluation</title>\n")
+                .append("<style>body{font-family:sans-serif;margin:2em;max-width:1200px}table{border-collapse:collapse;"
+                        + "margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}"
+                        + "th{background:#eee}td.l,th.l{text-align:left}.run{display:inline-block;margin:4px}"
+                        + ".bad{background:#fdd}.good{background:#dfd}svg{max-width:100%;height:auto}"
+                        + "pre{background:#f6f6f6;padding:6px;font-size:11px;overflow:auto}</style></head><body>\n");
+        h.append("<h1>predmon evaluation</h1>\n<p>")
+                .append(e.mode().equals("cross-validation")
+                        ? e.folds() + "-fold cross-validation over the training logs (every run is judged by models "
+                        + "learned without it)"
+                        : "models learned on the training logs, every run of the test logs judged")
+                .append("; threshold ").append(e.threshold()).append("; abstraction <code>")
+                .append(esc(e.abstraction())).append("</code>. Each run was replayed through the code path of "
+                        + "<code>watch --no-follow</code>, built-in safety monitor included.</p>\n");
+        summary(h, e);
+        confusion(h, e.confusion());
+        for (String n : e.notes()) {
+            h.append("<p>Note: ").append(esc(n)).append("</p>\n");
+        }
+        leads(h, e);
+        runs(h, e, abstraction);
+        models(h, e, abstraction);
+        h.append("</body></html>\n");
+        return h.toString();
+    }
+
+    private static void summary(StringBuilder h, Evaluation e) {
+        h.append("<h2>Summary</h2>\n<table><tr><th class=l>scenario</th><th class=l>kind</th><th>runs</th>"
+                + "<th>warned</th><th>hits</th><th>false alarms</th><th>missed</th><th>of which late</th>"
+                + "<th>no violation</th><th>no match</th><th>lead s: median [min..max]</th>"
+                + "<th>battery at warning: median [min..max]</th></tr>\n");
+        for (ScenarioSummary s : e.scenarios()) {
+            h.append("<tr><td class=l>").append(esc(s.scenario())).append("</td><td class=l>")
+                    .append(s.faulty() ? "faulty" : "nominal").append("</td>");
+            for (int v : new int[] {s.runs(), s.warned(), s.hits(), s.falseAlarms(), s.missed(), s.late(),
+                    s.noViolation(), s.noMatch()}) {
+                h.append("<td>").append(v).append("</td>");
+            }
+            h.append("<td>").append(stats(s.lead())).append("</td><td>").append(stats(s.batteryAtWarning()))
+                    .append("</td></tr>\n");
+        }
+        h.append("</table>\n<p>Missed: a faulty run without a warning strictly before its violation (late warnings "
+                + "included). No violation: a faulty run whose log ends before the property is violated. No match: "
+                + "runs during which, at some point, no learned model matched (unknown behaviour).</p>\n");
+    }
+
+    private static void confusion(StringBuilder h, Confusion c) {
+        h.append("<h2>Confusion matrix</h2>\n<table><tr><th class=l>actual \\ predicted</th>"
+                        + "<th>warned before violation</th><th>not warned (in time)</th></tr>\n")
+                .append("<tr><th class=l>faulty</th><td class=good>").append(c.truePositives())
+                .append("</td><td class=bad>").append(c.falseNegatives()).append("</td></tr>\n")
+                .append("<tr><th class=l>nominal</th><td class=bad>").append(c.falsePositives())
+                .append("</td><td class=good>").append(c.trueNegatives()).append("</td></tr>\n</table>\n")
+                .append("<p>Recall ").append(percent(c.recall())).append(", false-alarm rate ")
+                .append(percent(c.falseAlarmRate())).append("; faulty runs without violation, not scored: ")
+                .append(c.unscored()).append(".</p>\n");
+    }
+
+    private static void leads(StringBuilder h, Evaluation e) {
+        h.append("<h2>Distribution of leads</h2>\n");
+        double[] leads = e.runs().stream().filter(r -> r.lead() != null).mapToDouble(RunResult::lead).toArray();
+        if (leads.length == 0) {
+            h.append("<p>No faulty run was warned before its violation, so there is no lead to show.</p>\n");
+            return;
+        }
+        HistogramDataset d = new HistogramDataset();
+        double min = java.util.Arrays.stream(leads).min().orElse(0);
+        double max = java.util.Arrays.stream(leads).max().orElse(0);
+        d.addSeries("lead", leads, Math.max(1, Math.min(20, leads.length)), min, max > min ? max : min + 1);
+        JFreeChart chart = ChartFactory.createHistogram("Lead of the warning over the violation (" + leads.length
+                + " hits)", "lead (s)", "runs", d, PlotOrientation.VERTICAL, false, false, false);
+        chart.setBackgroundPaint(Color.WHITE);
+        h.append(svg(chart, 700, 320, "lead")).append('\n');
+    }
+
+    private static void runs(StringBuilder h, Evaluation e, Abstraction abstraction) throws IOException {
+        h.append("<h2>Runs</h2>\n");
+        if (abstraction.safety().isEmpty()) {
+            h.append("<p>The abstraction has no safety property, so there is no level to plot.</p>\n");
+            return;
+        }
+        SafetyRule rule = abstraction.safety().get();
+        List<RunResult> runs = e.runs();
+        if (runs.size() > MAX_PLOTS) {
+            h.append("<p>Only the first ").append(MAX_PLOTS).append(" of ").append(runs.size())
+                    .append(" runs are plotted; every run is in the JSON output.</p>\n");
+        }
+        h.append("<p>").append(esc(rule.name())).append(": the watched value over time; orange line: the warning; "
+                + "red line: the violation; dashed: the bound ").append(fmt(rule.below())).append(".</p>\n");
+        int n = 0;
+        for (RunResult r : runs) {
+            if (n == MAX_PLOTS) {
+                break;
+            }
+            Timeline t = Timeline.read(Path.of(r.log()), rule, MAX_POINTS);
+            XYSeries s = new XYSeries(rule.command());
+            for (int i = 0; i < t.times().length; i++) {
+                s.add(t.times()[i], t.values()[i]);
+            }
+            String title = r.scenario() + " / " + Path.of(r.log()).getFileName() + ": " + r.verdict().id()
+                    + (r.lead() != null ? String.format(Locale.ROOT, ", lead %.1f s", r.lead()) : "");
+            JFreeChart chart = ChartFactory.createXYLineChart(title, "time (s)", rule.command(),
+                    new XYSeriesCollection(s), PlotOrientation.VERTICAL, false, false, false);
+            chart.setBackgroundPaint(Color.WHITE);
+            chart.getTitle().setFont(chart.getTitle().getFont().deriveFont(12f));
+            XYPlot plot = chart.getXYPlot();
+            plot.setBackgroundPaint(Color.WHITE);
+            plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
+            plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
+            plot.getRenderer().setSeriesPaint(0, new Color(30, 90, 180));
+            ValueMarker bound = new ValueMarker(rule.below(), Color.GRAY, new BasicStroke(1f,
+                    BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
+            plot.addRangeMarker(bound);
+            if (r.warningTime() != null) {
+                plot.addDomainMarker(marker(r.warningTime(), new Color(230, 140, 0), "warning"));
+            }
+            if (r.violationTime() != null) {
+                plot.addDomainMarker(marker(r.violationTime(), new Color(200, 0, 0), "violation"));
+            }
+            h.append("<div class=run>").append(svg(chart, 560, 260, "run" + n)).append("</div>\n");
+            n++;
+        }
+    }
+
+    private static ValueMarker marker(double x, Color color, String label) {
+        ValueMarker m = new ValueMarker(x, color, new BasicStroke(2f));
+        m.setLabel(label);
+        m.setLabelPaint(color);
+        m.setLabelAnchor(RectangleAnchor.TOP_RIGHT);
+        m.setLabelTextAnchor(TextAnchor.TOP_LEFT);
+        return m;
+    }
+
+    private static void models(StringBuilder h, Evaluation e, Abstraction abstraction) {
+        h.append("<h2>Learned models</h2>\n<p>")
+                .append(e.mode().equals("cross-validation")
+                        ? "Learned on every training log (each fold's models are learned on a subset of these runs)."
+                        : "Learned on the training logs.")
+                .append(" States by breadth-first distance from the initial state (blue); labels <code>input</code> "
+                        + "(answered OK) and <code>Delta/reply</code>.</p>\n");
+        if (e.models() == null) {
+            return;
+        }
+        int n = 0;
+        for (LearnedModel m : e.models().models()) {
+            h.append("<h3>").append(esc(m.id())).append(" (").append(m.faulty() ? "faulty" : "nominal")
+                    .append(", ").append(m.machine().size()).append(" states)</h3>\n")
+                    .append(MachineDrawing.svg(m, "m" + n++ + "_")).append('\n')
+                    .append("<details><summary>DOT</summary><pre>")
+                    .append(esc(ModelStore.toDot(m.machine(), m.alphabet()))).append("</pre></details>\n");
+        }
+    }
+
+    private static String svg(JFreeChart chart, int w, int h, String key) {
+        SVGGraphics2D g = new SVGGraphics2D(w, h);
+        g.setDefsKeyPrefix(key + "_");
+        chart.draw(g, new Rectangle(0, 0, w, h));
+        return g.getSVGElement(key);
+    }
+
+    private static String stats(Stats s) {
+        return s.n() == 0 ? "-" : String.format(Locale.ROOT, "%.1f [%.1f..%.1f]", s.median(), s.min(), s.max());
+    }
+
+    private static String percent(Double d) {
+        return d == null ? "-" : String.format(Locale.ROOT, "%.1f%%", d * 100);
+    }
+
+    private static String fmt(double d) {
+        return String.format(Locale.ROOT, "%.1f", d);
+    }
+
+    private static String esc(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
+    }
+}

@@ -1,0 +1,43 @@
+package dev.predmon.evaluate;
+
+import java.util.List;
+
+/**
+ * How the monitor judged one test log, replayed through {@code watch}'s code path.
+ *
+ * @param scenario         the log's scenario (its directory)
+ * @param faulty           whether that scenario is faulty
+ * @param log              the log file
+ * @param fold             the fold the log was tested in (0-based), or -1 with a separate test set
+ * @param verdict          what the warning meant
+ * @param warningTime      time of the warning, or null
+ * @param warningLine      its line, or null
+ * @param warningScenarios the faulty scenarios still matching at the warning (empty without one)
+ * @param batteryAtWarning the battery level at the warning, or null
+ * @param violationTime    time of the safety monitor's first violation, or null
+ * @param lead             violation time minus warning time for a hit, else null
+ * @param noMatch          whether a point came where no model matched (unknown behaviour)
+ * @param noMatchTime      when, or null
+ * @param records          records parsed
+ * @param pairs            compacted pairs matched
+ * @param problems         parse problems in the log
+ * @param eliminations     every model's elimination, in log order
+ */
+public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
+                        Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
+                        Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
+                        List<Elimination> eliminations) {
+
+    /**
+     * A model stopped matching.
+     *
+     * @param model    its id
+     * @param scenario its scenario
+     * @param faulty   whether that scenario is faulty
+     * @param time     time of the record that eliminated it
+     * @param line     that record's line
+     * @param reason   expected versus seen
+     */
+    public record Elimination(String model, String scenario, boolean faulty, double time, long line, String reason) {
+    }
+}

@@ -1,0 +1,49 @@
+package dev.predmon.evaluate;
+
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * The counts of one scenario's test runs.
+ *
+ * @param scenario           the scenario
+ * @param faulty             whether it is faulty
+ * @param runs               test runs
+ * @param warned             runs with a warning (whatever its timing)
+ * @param hits               faulty runs warned strictly before the violation
+ * @param falseAlarms        nominal runs with a warning
+ * @param missed             faulty runs with a violation and no warning before it (late warnings included)
+ * @param late               of {@code missed}, those warned at or after the violation
+ * @param noViolation        faulty runs whose log ends before any violation (neither hit nor missed)
+ * @param noMatch            runs where at some point no model matched (unknown behaviour)
+ * @param lead               lead of the hits, in the log's time unit (seconds)
+ * @param batteryAtWarning   battery level at the warning, over the hits
+ */
+public record ScenarioSummary(String scenario, boolean faulty, int runs, int warned, int hits, int falseAlarms,
+                              int missed, int late, int noViolation, int noMatch, Stats lead, Stats batteryAtWarning) {
+
+    /** Summarises the runs of one scenario. */
+    public static ScenarioSummary of(String scenario, boolean faulty, List<RunResult> runs) {
+        int warned = 0;
+        int hits = 0;
+        int falseAlarms = 0;
+        int missed = 0;
+        int late = 0;
+        int noViolation = 0;
+        int noMatch = 0;
+        for (RunResult r : runs) {
+            Verdict v = r.verdict();
+            warned += v.warned() ? 1 : 0;
+            hits += v == Verdict.WARNED_BEFORE_VIOLATION ? 1 : 0;
+            falseAlarms += v == Verdict.FALSE_ALARM ? 1 : 0;
+            missed += v == Verdict.MISSED || v == Verdict.WARNED_LATE ? 1 : 0;
+            late += v == Verdict.WARNED_LATE ? 1 : 0;
+            noViolation += v == Verdict.WARNED_NO_VIOLATION || v == Verdict.QUIET_NO_VIOLATION ? 1 : 0;
+            noMatch += r.noMatch() ? 1 : 0;
+        }
+        List<RunResult> hit = runs.stream().filter(r -> r.verdict() == Verdict.WARNED_BEFORE_VIOLATION).toList();
+        return new ScenarioSummary(scenario, faulty, runs.size(), warned, hits, falseAlarms, missed, late, noViolation,
+                noMatch, Stats.of(hit.stream().map(RunResult::lead).toList()),
+                Stats.of(hit.stream().map(RunResult::batteryAtWarning).filter(Objects::nonNull).toList()));
+    }
+}
