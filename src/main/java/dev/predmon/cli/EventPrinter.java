@@ -88,7 +88,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         }
     }
 
-    private String toText(MonitorEvent e) {
+    String toText(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w) {
             warning = w;
             return String.format(Locale.ROOT, "t=%.3f line %d: WARNING: the run can only be faulty scenario %s "

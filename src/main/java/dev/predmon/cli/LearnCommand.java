@@ -2,12 +2,8 @@ package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.Conflict;
-import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
-import dev.predmon.learn.ScenarioLayout;
-import dev.predmon.learn.ScenarioLearner;
-import dev.predmon.learn.ScenarioSpec;
-import dev.predmon.model.ModelStore;
+import dev.predmon.learn.Learning;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -16,7 +12,6 @@ import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -48,17 +43,13 @@ final class LearnCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
-        List<ScenarioSpec> specs = ScenarioLayout.scan(logs);
-        List<LearnedScenario> learned = new ArrayList<>();
         Map<String, Long> unmapped = new TreeMap<>();
-        for (ScenarioSpec s : specs) {
-            LearnedScenario l = ScenarioLearner.learn(s, abstraction);
-            learned.add(l);
+        List<LearnedScenario> learned = Learning.learnAndWrite(logs, models, abstraction, l -> {
             l.problems().forEach(err::println);
             l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));
             l.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
             report(out, l);
-        }
+        });
         if (!unmapped.isEmpty()) {
             err.println("predmon: interface messages that no abstraction rule maps (not learned):");
             unmapped.forEach((k, n) -> err.println("  " + n + " x " + k));
@@ -69,8 +60,6 @@ final class LearnCommand implements Callable<Integer> {
         if (learned.stream().allMatch(l -> l.spec().faulty())) {
             err.println("predmon: note: no scenario is nominal, so 'watch' warns at the first faulty match");
         }
-        ModelStore.write(models, LearnedModels.index(learned, abstraction),
-                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)));
         int machines = learned.stream().mapToInt(l -> l.machines().size()).sum();
         out.println("wrote " + models + ": " + machines + " machine(s) for " + learned.size() + " scenario(s), "
                 + "abstraction '" + abstraction.name() + "'");
@@ -93,5 +82,4 @@ final class LearnCommand implements Callable<Integer> {
             out.println("  split: " + c.describe());
         }
     }
-
 }

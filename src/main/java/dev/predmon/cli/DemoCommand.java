@@ -1,0 +1,148 @@
+package dev.predmon.cli;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.learn.Learning;
+import dev.predmon.model.ModelSet;
+import dev.predmon.model.ModelStore;
+import dev.predmon.monitor.LogWatcher;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.simulate.RealtimeWriter;
+import dev.predmon.simulate.Scenario;
+import dev.predmon.simulate.SimOptions;
+import dev.predmon.simulate.SimRun;
+import dev.predmon.simulate.Simulator;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+/**
+ * {@code predmon demo}: the main job on a fresh machine. A faulty ({@code depleted}) run is simulated live into a
+ * log file while the predictive monitor follows it, exactly as {@code watch} does; the warning and then the safety
+ * monitor's violation are shown as they happen, with the lead between them. Then a nominal ({@code recharge}) run
+ * ends without a warning.
+ */
+@Command(name = "demo", mixinStandardHelpOptions = true,
+        description = {"Watch a simulated 'depleted' run live (sped up) and see the warning arrive before the "
+                + "safety violation, then a 'recharge' run that ends without a warning. Uses the models in "
+                + "--models, learning them from --logs first if there are none.",
+                "Exit 0 when both runs behave as expected, 1 otherwise."})
+final class DemoCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--models", paramLabel = "DIR", defaultValue = "models", description = "Models (default: ${DEFAULT-VALUE}).")
+    Path models;
+
+    @Option(names = "--logs", paramLabel = "DIR", defaultValue = "sample-logs",
+            description = "Logs to learn from when --models holds no models (default: ${DEFAULT-VALUE}).")
+    Path logs;
+
+    @Option(names = "--seconds", paramLabel = "S", defaultValue = "15",
+            description = "Wall-clock seconds each run takes; sets the speed-up (default: ${DEFAULT-VALUE}).")
+    double seconds;
+
+    @Option(names = "--depleted-seed", defaultValue = "9001", description = "Seed of the faulty run (default: ${DEFAULT-VALUE}).")
+    long depletedSeed;
+
+    @Option(names = "--recharge-seed", defaultValue = "9002", description = "Seed of the nominal run (default: ${DEFAULT-VALUE}).")
+    long rechargeSeed;
+
+    @Option(names = "--work", paramLabel = "DIR", description = "Where to write the live logs (default: a new temporary directory).")
+    Path work;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        Abstraction abstraction = Abstraction.defaults();
+        if (!Files.isRegularFile(models.resolve(ModelStore.INDEX))) {
+            out.println("no models in " + models + ": learning them from " + logs);
+            out.flush();
+            Learning.learnAndWrite(logs, models, abstraction, l -> { });
+        }
+        ModelSet set = ModelStore.read(models, abstraction);
+        out.println("predmon demo: " + set.models().size() + " learned machines in " + models + " ("
+                + String.join(", ", set.index().scenarios().stream()
+                .map(s -> s.name() + (s.faulty() ? " faulty" : " nominal")).toList()) + ")");
+        Path dir = work != null ? Files.createDirectories(work) : Files.createTempDirectory("predmon-demo-");
+        boolean depletedOk = live(out, set, abstraction, dir, Scenario.DEPLETED, depletedSeed);
+        boolean rechargeOk = live(out, set, abstraction, dir, Scenario.RECHARGE, rechargeSeed);
+        out.println(depletedOk && rechargeOk
+                ? "demo done: the faulty run was predicted before its violation; the nominal run raised no warning"
+                : "demo done, but not as expected: see above");
+        out.flush();
+        return depletedOk && rechargeOk ? ExitCodes.OK : ExitCodes.WARNING;
+    }
+
+    /** Simulates one run into a file on a writer thread while following it; whether it behaved as expected. */
+    private boolean live(PrintWriter out, ModelSet set, Abstraction abstraction, Path dir, Scenario scenario, long seed)
+            throws IOException, InterruptedException {
+        SimRun run = Simulator.run(scenario, seed, SimOptions.defaults());
+        double duration = run.truth().endTime() - run.events().get(0).time();
+        double speed = Math.max(1.0, duration / seconds);
+        Path log = dir.resolve(scenario.id() + "-" + seed + ".log");
+        Files.deleteIfExists(log);
+        out.printf(Locale.ROOT, "%nrun: a '%s' run (%s, seed %d), %.0f s of robot time played at %.1fx into %s%n",
+                scenario.id(), scenario.faulty() ? "faulty" : "nominal", seed, duration, speed, log);
+        out.flush();
+        long start = System.nanoTime();
+        EventPrinter text = new EventPrinter(out, false, true);
+        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, 0, e -> {
+            String line = text.toText(e);
+            if (line != null) {
+                out.printf(Locale.ROOT, "  [%5.1f s] %s%n", (System.nanoTime() - start) / 1e9, line);
+                out.flush();
+            }
+        });
+        Thread writer = new Thread(() -> write(run, log, speed), "predmon-demo-writer");
+        writer.setDaemon(true);
+        writer.start();
+        try (LogWatcher watcher = new LogWatcher(log, monitor, p -> out.println("  " + p.format(log.toString())))) {
+            while (writer.isAlive()) {
+                if (!watcher.poll()) {
+                    Thread.sleep(5);
+                }
+            }
+            writer.join();
+            watcher.drain();
+        }
+        return verdict(out, scenario, monitor);
+    }
+
+    private static void write(SimRun run, Path log, double speed) {
+        try (Writer w = Files.newBufferedWriter(log, StandardCharsets.UTF_8)) {
+            new RealtimeWriter(run, SimOptions.defaults(), w, speed).run();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static boolean verdict(PrintWriter out, Scenario scenario, PredictiveMonitor m) {
+        MonitorEvent.Warning w = m.warning().orElse(null);
+        MonitorEvent.Violation v = m.violation().orElse(null);
+        boolean ok;
+        if (scenario.faulty()) {
+            ok = w != null && v != null && w.time() < v.time();
+            out.println(ok ? String.format(Locale.ROOT, "  => predicted %.1f s ahead: warning at battery %.1f%%, "
+                    + "violation at %.1f%%", v.time() - w.time(), w.battery(), v.value())
+                    : "  => the warning did not come before the violation");
+        } else {
+            ok = w == null && v == null;
+            out.println(ok ? "  => run ended with no warning and no violation" : "  => unexpected warning or violation");
+        }
+        out.flush();
+        return ok;
+    }
+}
