@@ -3,6 +3,7 @@ package dev.predmon.monitor;
 import dev.predmon.parse.LineSink;
 import dev.predmon.parse.LogFollower;
 import dev.predmon.parse.LogParser;
+import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 
 import java.io.IOException;
@@ -22,8 +23,16 @@ public final class LogWatcher implements AutoCloseable {
     private final LogFollower follower;
 
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
+        this(log, monitor, problems, record -> { });
+    }
+
+    /** As above; {@code seen} also gets every record, before the monitor (tests count them across rotations). */
+    LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen) {
         this.monitor = monitor;
-        this.parser = new LogParser(monitor::accept, problems);
+        this.parser = new LogParser(record -> {
+            seen.accept(record);
+            monitor.accept(record);
+        }, problems);
         LineSink lines = parser.lineSink();
         this.follower = new LogFollower(log, new LineSink() {
             @Override

@@ -27,18 +27,26 @@ import java.util.Objects;
  *       appears at the path.</li>
  * </ul>
  * Files are told apart by {@link BasicFileAttributes#fileKey()} (device and inode on Unix), or by creation time
- * where the file system has no keys. Like {@code tail -F}, a truncation followed by a rewrite longer than the
- * old read position before the next poll cannot be seen. Lines are decoded and capped as by {@link LogReader}.
+ * where the file system has no keys. Unlike {@code tail -F}, a truncation followed by a rewrite longer than the
+ * old read position before the next poll is seen too: the last bytes read are kept and compared with what the
+ * file now holds before the read position; if they differ, the file was rewritten and is read from 0. (A
+ * rewrite with the very same bytes there cannot be told apart.) Lines are decoded and capped as by {@link LogReader}.
  * Memory is constant: one read buffer and at most one partial line.
  */
 public final class LogFollower implements AutoCloseable {
 
     private static final int BUFFER_BYTES = 64 * 1024;
+    /** How many of the last bytes read are kept to notice a rewrite: enough for a time stamp and more. */
+    private static final int TAIL_BYTES = 64;
 
     private final Path file;
     private final LineSink sink;
     private final LineSplitter splitter;
     private final ByteBuffer buffer = ByteBuffer.allocate(BUFFER_BYTES);
+    /** The bytes just before {@link #position}, as read: {@code tail[0, tailLength)}. */
+    private final byte[] tail = new byte[TAIL_BYTES];
+    private int tailLength;
+    private final ByteBuffer check = ByteBuffer.allocate(TAIL_BYTES);
 
     private FileChannel channel;
     private Object identity;
@@ -71,16 +79,18 @@ public final class LogFollower implements AutoCloseable {
             return open() | readAvailable();
         }
         Object current = identityOf(file);
+        // The open file may have been truncated (and written again) even if it is no longer at the path.
+        boolean truncated = channel.size() < position || rewritten();
+        if (truncated) {
+            splitter.finish();
+            sink.restarted("truncated");
+            position = 0;
+            tailLength = 0;
+        }
         if (current != null && current.equals(identity)) {
-            boolean truncated = channel.size() < position;
-            if (truncated) {
-                splitter.finish();
-                sink.restarted("truncated");
-                position = 0;
-            }
             return readAvailable() | truncated;
         }
-        boolean progress = readAvailable();
+        boolean progress = readAvailable() | truncated;
         if (current == null) {
             return progress;
         }
@@ -133,6 +143,7 @@ public final class LogFollower implements AutoCloseable {
         channel = opened;
         identity = before;
         position = 0;
+        tailLength = 0;
         openedBefore = true;
         return true;
     }
@@ -150,8 +161,41 @@ public final class LogFollower implements AutoCloseable {
             }
             position += n;
             progress = true;
+            remember(buffer.array(), n);
             splitter.feed(buffer.array(), 0, n);
         }
+    }
+
+    /** Keeps the last {@value #TAIL_BYTES} bytes read, the {@code n} bytes of {@code bytes} being the newest. */
+    private void remember(byte[] bytes, int n) {
+        if (n >= TAIL_BYTES) {
+            System.arraycopy(bytes, n - TAIL_BYTES, tail, 0, TAIL_BYTES);
+            tailLength = TAIL_BYTES;
+            return;
+        }
+        int keep = Math.min(tailLength, TAIL_BYTES - n);
+        System.arraycopy(tail, tailLength - keep, tail, 0, keep);
+        System.arraycopy(bytes, 0, tail, keep, n);
+        tailLength = keep + n;
+    }
+
+    /**
+     * Whether the bytes before the read position are no longer those read there: the file was truncated and
+     * written again past the old position between two polls (copytruncate rotation while the logger writes).
+     */
+    private boolean rewritten() throws IOException {
+        if (tailLength == 0) {
+            return false;
+        }
+        check.clear().limit(tailLength);
+        long at = position - tailLength;
+        while (check.hasRemaining()) {
+            int n = channel.read(check, at + check.position());
+            if (n <= 0) {
+                return true; // shorter than it was: truncated
+            }
+        }
+        return !java.util.Arrays.equals(check.array(), 0, tailLength, tail, 0, tailLength);
     }
 
     private void closeChannel() throws IOException {

@@ -81,6 +81,8 @@ public final class LogParser {
 
     private long lineNumber;
     private Mode mode = Mode.UNKNOWN;
+    /** The line that made the parser read the input as a save file, for messages. */
+    private long saveSince;
     private Draft draft;
 
     // Save-file state: the last three value lines seen outside a text block, and the block being read.
@@ -110,10 +112,12 @@ public final class LogParser {
         }
         if (mode == Mode.UNKNOWN) {
             mode = text.trim().equals("1") ? Mode.SAVE : Mode.TEXT;
+            saveSince = lineNumber;
         }
         if (mode == Mode.TEXT && text.contains(START_MARK)) {
             // A save file whose version line was lost: the values before the marker were remembered anyway.
             mode = Mode.SAVE;
+            saveSince = lineNumber;
         }
         if (mode == Mode.SAVE) {
             acceptSaveLine(text);
@@ -233,6 +237,12 @@ public final class LogParser {
     // ---- save files --------------------------------------------------------------------------------------
 
     private void acceptSaveLine(String text) {
+        if (HEADER.matcher(text).matches()) {
+            // A text log's record in a file read as a save file (first line "1", or a stray start marker
+            // earlier): its fields are not save-file values, so without this it would vanish silently.
+            error(lineNumber, "record header of a text log inside a yarplogger save file (read as one because of "
+                    + "line " + saveSince + "); record skipped");
+        }
         int start = text.indexOf(START_MARK);
         int end = text.indexOf(END_MARK);
         if (inBlock && start >= 0 && (end < 0 || start < end)) {
