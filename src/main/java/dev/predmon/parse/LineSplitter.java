@@ -37,8 +37,13 @@ final class LineSplitter {
         int end = offset + length;
         for (int i = offset; i < end; i++) {
             if (bytes[i] == '\n') {
-                append(bytes, start, i - start);
-                deliver();
+                if (partialLength == 0 && overflow == 0 && i - start <= maxLineBytes) {
+                    // The whole line is in this chunk: decode it in place, without copying it first.
+                    sink.line(decode(bytes, start, i - start));
+                } else {
+                    append(bytes, start, i - start);
+                    deliver();
+                }
                 start = i + 1;
             }
         }
@@ -89,15 +94,18 @@ final class LineSplitter {
             sink.overlongLine(bytes);
             return;
         }
-        int length = partialLength;
-        if (length > 0 && partial[length - 1] == '\r') {
-            length--;
-        }
-        // new String(..., UTF_8) replaces malformed input with U+FFFD: never throws on bad bytes.
-        String line = new String(partial, 0, length, StandardCharsets.UTF_8);
+        String line = decode(partial, 0, partialLength);
         partialLength = 0;
         shrink();
         sink.line(line);
+    }
+
+    /** The line's text without a trailing {@code '\r'}; malformed UTF-8 becomes U+FFFD, never an exception. */
+    private static String decode(byte[] bytes, int offset, int length) {
+        if (length > 0 && bytes[offset + length - 1] == '\r') {
+            length--;
+        }
+        return new String(bytes, offset, length, StandardCharsets.UTF_8);
     }
 
     /** Gives back the buffer a long line made grow, so that one long line does not pin a MiB for ever. */

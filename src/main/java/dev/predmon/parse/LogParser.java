@@ -200,13 +200,14 @@ public final class LogParser {
 
     private void acceptTextLine(String text) {
         if (draft != null) {
-            Matcher field = FIELD.matcher(text);
-            if (field.matches()) {
-                offerField(field.group(1), field.group(2));
+            if (offerFieldLine(text)) {
                 return;
             }
             brokenRecord("expected " + draft.expected() + " line of the record started at line " + draft.line
                     + ", got " + quote(text));
+        }
+        if (text.indexOf("intercepted") < 0 && text.indexOf("received") < 0) {
+            return; // cannot be a record header, well-formed or not: another entry or its continuation
         }
         Matcher header = HEADER.matcher(text);
         if (header.matches()) {
@@ -269,9 +270,9 @@ public final class LogParser {
         blockFirstLine = true;
         blockLine = lineNumber;
         blockBroken = false;
-        String yarprunTime = lastValues[0];
-        String localTime = lastValues[1];
-        String level = lastValues[2];
+        String yarprunTime = trimmed(lastValues[0]);
+        String localTime = trimmed(lastValues[1]);
+        String level = trimmed(lastValues[2]);
         Arrays.fill(lastValues, null);
         if (level == null || !SAVE_LEVEL.matcher(level).matches()) {
             blockBroken = true;
@@ -331,6 +332,45 @@ public final class LogParser {
 
     // ---- shared ------------------------------------------------------------------------------------------
 
+    /**
+     * Offers {@code text} as a field line ({@code FIELD}: blanks, a label of letters, blanks or tabs, a colon, the
+     * value) if it is one. Hand-written because six of every seven lines of a log are field lines and the regex
+     * was the parser's main cost.
+     */
+    private boolean offerFieldLine(String text) {
+        int n = text.length();
+        int i = 0;
+        while (i < n && isRegexBlank(text.charAt(i))) {
+            i++;
+        }
+        int labelStart = i;
+        while (i < n && isAsciiLetter(text.charAt(i))) {
+            i++;
+        }
+        int labelEnd = i;
+        while (i < n && (text.charAt(i) == ' ' || text.charAt(i) == '\t')) {
+            i++;
+        }
+        if (labelEnd == labelStart || i == n || text.charAt(i) != ':') {
+            return false;
+        }
+        offerField(text.substring(labelStart, labelEnd), text.substring(i + 1));
+        return true;
+    }
+
+    private static String trimmed(String s) {
+        return s == null ? null : s.trim();
+    }
+
+    /** Exactly the characters of the regex class {@code \\s}. */
+    private static boolean isRegexBlank(char c) {
+        return c == ' ' || c == '\t' || c == '\n' || c == '\u000B' || c == '\f' || c == '\r';
+    }
+
+    private static boolean isAsciiLetter(char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    }
+
     private void offerField(String label, String value) {
         if (!draft.offer(label, value.trim())) {
             brokenRecord("expected " + draft.expected() + " line of the record started at line " + draft.line
@@ -354,7 +394,7 @@ public final class LogParser {
     private void rememberValue(String text) {
         lastValues[0] = lastValues[1];
         lastValues[1] = lastValues[2];
-        lastValues[2] = text.trim();
+        lastValues[2] = text; // trimmed only when used: this runs on every line of a text log
     }
 
     private static String quote(String text) {
