@@ -83,6 +83,10 @@ public final class Abstraction {
     private final String fingerprint;
     /** For each band symbol of a continuous rule: its rule's bands in ascending order. */
     private final Map<String, List<String>> continuousBands;
+    /** Input symbols of rules with {@code carry: true}. */
+    private final Set<String> carried;
+    /** The Mealy input alphabet: inputs, plus each carried input after each answer of its rule, sorted. */
+    private final List<String> mealyInputs;
 
     /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
     private record Rule(String protocol, String command, String input, List<Reply> replies) {
@@ -139,6 +143,21 @@ public final class Abstraction {
             }
         }
         this.continuousBands = Map.copyOf(ordered);
+        Set<String> carriedInputs = new TreeSet<>();
+        Set<String> mealy = new TreeSet<>(inputs);
+        for (RuleSpec r : spec.rules()) {
+            if (Boolean.TRUE.equals(r.carry())) {
+                for (String loc : locations.isEmpty() ? List.of("") : List.copyOf(new TreeSet<>(locations.values()))) {
+                    String in = r.input().replace(AbstractionValidator.LOC, loc);
+                    carriedInputs.add(in);
+                    for (ReplySpec p : r.replies()) {
+                        mealy.add(carriedSymbol(in, p.symbol().replace(AbstractionValidator.LOC, loc)));
+                    }
+                }
+            }
+        }
+        this.carried = Set.copyOf(carriedInputs);
+        this.mealyInputs = List.copyOf(mealy);
         this.inputAlphabet = List.copyOf(inputs);
         this.outputAlphabet = List.copyOf(outputs);
         this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
@@ -169,6 +188,30 @@ public final class Abstraction {
             path.add(bands.get(k));
         }
         return path.isEmpty() ? List.of(to) : List.copyOf(path);
+    }
+
+    /**
+     * The Mealy input for a query: its input symbol, or, for a rule with {@code carry: true} and a query answered
+     * before, the input symbol followed by {@code _after_} and the previous answer.
+     *
+     * <p>Why: in the thesis's I/O-automaton-to-Mealy mapping a Mealy state follows inputs only, so to predict the
+     * next battery band a machine must count {@code level_i} queries, entangled with every navigation event
+     * around them; each new interleaving is then a path no training run took. Carrying the current band in the
+     * query lets a band change be the same transition wherever it happens, which generalises across timing.
+     *
+     * @param previousAnswer the query's previous answer, or null for its first
+     */
+    public String mealyInput(String input, String previousAnswer) {
+        return previousAnswer != null && carried.contains(input) ? carriedSymbol(input, previousAnswer) : input;
+    }
+
+    /** Every Mealy input {@link #mealyInput} can give, sorted (without {@code Delta}). */
+    public List<String> mealyInputAlphabet() {
+        return mealyInputs;
+    }
+
+    private static String carriedSymbol(String input, String previousAnswer) {
+        return input + "_after_" + previousAnswer;
     }
 
     private List<String> expand(String template) {

@@ -177,6 +177,9 @@ final class AbstractionValidator {
         if (Boolean.TRUE.equals(rule.continuous()) && bands.size() != rule.replies().size()) {
             throw new Invalid(at + "/continuous", "a continuous quantity needs every reply to be a 'range' band");
         }
+        if (Boolean.FALSE.equals(rule.carry())) {
+            throw new Invalid(at + "/carry", "'carry' can only be true (leave it out otherwise)");
+        }
         if (Boolean.FALSE.equals(rule.continuous())) {
             throw new Invalid(at + "/continuous", "'continuous' can only be true (leave it out otherwise)");
         }

@@ -51,9 +51,9 @@ public final class ModelStore {
     private ModelStore() {
     }
 
-    /** The Mealy input alphabet for an abstraction: its inputs plus {@code Delta}, sorted. */
+    /** The Mealy input alphabet for an abstraction: its Mealy inputs plus {@code Delta}, sorted. */
     public static Alphabet<String> alphabetOf(Abstraction abstraction) {
-        List<String> symbols = new ArrayList<>(abstraction.inputAlphabet());
+        List<String> symbols = new ArrayList<>(abstraction.mealyInputAlphabet());
         symbols.add(dev.predmon.mealy.MealyMapping.DELTA);
         symbols.sort(Comparator.naturalOrder());
         return Alphabets.fromList(symbols);

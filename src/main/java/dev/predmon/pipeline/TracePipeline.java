@@ -20,6 +20,7 @@ public final class TracePipeline {
     private final Abstraction abstraction;
     private final PipelineListener listener;
     private final Compactor compactor;
+    private final CarryEncoder encoder;
     private final Map<String, Long> unmapped = new TreeMap<>();
     private LogRecord current;
     private long records;
@@ -28,7 +29,8 @@ public final class TracePipeline {
     public TracePipeline(Abstraction abstraction, PipelineListener listener) {
         this.abstraction = abstraction;
         this.listener = listener;
-        this.compactor = new Compactor(pair -> listener.pair(pair, current), abstraction::bandPath);
+        this.encoder = new CarryEncoder(abstraction);
+        this.compactor = new Compactor(pair -> listener.pair(encoder.encode(pair), current), abstraction::bandPath);
     }
 
     /** Takes the next record of the log. */
@@ -54,6 +56,7 @@ public final class TracePipeline {
     /** Forgets the log read so far (it was truncated or replaced); counters restart too. */
     public void reset() {
         compactor.reset();
+        encoder.reset();
         unmapped.clear();
         current = null;
         records = 0;
