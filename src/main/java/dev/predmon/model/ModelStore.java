@@ -155,6 +155,9 @@ public final class ModelStore {
                     + firstLine(e.getMessage()));
         }
         for (String symbol : data.alphabet) {
+            if (symbol == null) { // AutomataLib reads an edge label without " / " as a null input
+                throw new BadInputException(file + ": not a Mealy machine in DOT: an edge label is not 'input / output'");
+            }
             if (!alphabet.containsSymbol(symbol)) {
                 throw new BadInputException(file + ": input '" + symbol
                         + "' is not in the abstraction's alphabet; relearn with the abstraction in use");
