@@ -83,14 +83,26 @@ final class WatchCommand implements Callable<Integer> {
                     err.println("predmon: waiting for " + log + " to appear");
                     err.flush();
                 }
-                while (!Thread.currentThread().isInterrupted()) {
-                    if (!watcher.poll()) {
-                        Thread.sleep(pollMillis);
-                    }
-                }
+                follow(watcher);
             }
         }
         return monitor.warning().isPresent() ? ExitCodes.WARNING : ExitCodes.OK;
+    }
+
+    /**
+     * Follows until the thread is interrupted, which is how watching is meant to end (Ctrl-C in a shell ends the
+     * JVM instead): an interrupt while sleeping is a stop, not an error.
+     */
+    private void follow(LogWatcher watcher) throws java.io.IOException {
+        try {
+            while (!Thread.currentThread().isInterrupted()) {
+                if (!watcher.poll()) {
+                    Thread.sleep(pollMillis);
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private void summary(PrintWriter out, PrintWriter err, PredictiveMonitor m) {
