@@ -91,7 +91,7 @@ final class WatchCommand implements Callable<Integer> {
 
     /**
      * Follows until the thread is interrupted, which is how watching is meant to end (Ctrl-C in a shell ends the
-     * JVM instead): an interrupt while sleeping is a stop, not an error.
+     * JVM instead): an interrupt while sleeping or reading is a stop, not an error.
      */
     private void follow(LogWatcher watcher) throws java.io.IOException {
         try {
@@ -102,6 +102,8 @@ final class WatchCommand implements Callable<Integer> {
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        } catch (java.nio.channels.ClosedByInterruptException e) {
+            // interrupted while reading (FileChannel reads are interruptible); the interrupt status stays set
         }
     }
 

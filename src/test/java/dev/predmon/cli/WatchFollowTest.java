@@ -91,6 +91,34 @@ class WatchFollowTest {
         assertEquals(ExitCodes.OK, code.get(), err.toString());
     }
 
+    /** An interrupt can land in the middle of reading (FileChannel reads are interruptible): still a clean stop. */
+    @Test
+    @Timeout(60)
+    void interruptedWhileReadingIsAStopNotAnError() throws Exception {
+        Path logs = tmp.resolve("logs");
+        Path models = tmp.resolve("models");
+        CliEndToEndTest.scenario(logs, "recharge", false, HandRuns.recharge().text());
+        CliEndToEndTest.scenario(logs, "depleted", true, HandRuns.depleted().text());
+        assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
+        Path log = Files.writeString(tmp.resolve("big.log"), HandRuns.recharge().text().repeat(2_000));
+        for (int delayMs = 1; delayMs <= 40; delayMs += 3) {
+            StringWriter err = new StringWriter();
+            CommandLine cl = Main.commandLine();
+            cl.setOut(new PrintWriter(new StringWriter(), true));
+            cl.setErr(new PrintWriter(err, true));
+            AtomicInteger code = new AtomicInteger(-1);
+            Thread watcher = new Thread(() -> code.set(cl.execute("watch", "--log", log.toString(),
+                    "--models", models.toString())), "watch");
+            watcher.start();
+            Thread.sleep(delayMs);
+            watcher.interrupt();
+            watcher.join(10_000);
+            assertFalse(watcher.isAlive());
+            assertTrue(code.get() == ExitCodes.OK || code.get() == ExitCodes.WARNING,
+                    "interrupted after " + delayMs + " ms: exit " + code.get() + ": " + err);
+        }
+    }
+
     private static void await(BooleanSupplier condition, String what) throws InterruptedException {
         long deadline = System.nanoTime() + 10_000_000_000L;
         while (!condition.getAsBoolean()) {
