@@ -83,23 +83,43 @@ final class WatchCommand implements Callable<Integer> {
                     err.println("predmon: waiting for " + log + " to appear");
                     err.flush();
                 }
-                while (!Thread.currentThread().isInterrupted()) {
-                    if (!watcher.poll()) {
-                        Thread.sleep(pollMillis);
-                    }
-                }
+                follow(watcher);
             }
         }
         return monitor.warning().isPresent() ? ExitCodes.WARNING : ExitCodes.OK;
     }
 
+    /**
+     * Follows until the thread is interrupted, which is how watching is meant to end (Ctrl-C in a shell ends the
+     * JVM instead): an interrupt while sleeping or reading is a stop, not an error.
+     */
+    private void follow(LogWatcher watcher) throws java.io.IOException {
+        try {
+            while (!Thread.currentThread().isInterrupted()) {
+                if (!watcher.poll()) {
+                    Thread.sleep(pollMillis);
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (java.nio.channels.ClosedByInterruptException e) {
+            // interrupted while reading (FileChannel reads are interruptible); the interrupt status stays set
+        }
+    }
+
     private void summary(PrintWriter out, PrintWriter err, PredictiveMonitor m) {
         Map<String, Long> unmapped = m.pipeline().unmapped();
-        if (m.pipeline().interfaceRecords() == 0) {
-            err.println(log + ": warning: no skill-component interface message in " + m.pipeline().records()
-                    + " records; is this a YARP monitor log of the case study?");
+        long mapped = m.pipeline().interfaceRecords() - unmapped.values().stream().mapToLong(Long::longValue).sum();
+        if (mapped == 0) {
+            // Nothing was monitored: "no warning" would be silently wrong, so this one line says why instead.
+            err.println(log + ": warning: no skill-component interface message the abstraction maps in "
+                    + m.pipeline().records() + " records" + (unmapped.isEmpty() ? "" : " (only "
+                    + String.join(", ", unmapped.keySet().stream().limit(3).toList())
+                    + (unmapped.size() > 3 ? ", ..." : "") + ")")
+                    + "; is this a YARP monitor log of the case study, and the right --abstraction?");
+        } else {
+            unmapped.forEach((k, n) -> err.println(log + ": warning: " + n + " interface message(s) no rule maps: " + k));
         }
-        unmapped.forEach((k, n) -> err.println(log + ": warning: " + n + " interface message(s) no rule maps: " + k));
         err.flush();
         if (json) {
             Map<String, Object> o = new LinkedHashMap<>();

@@ -37,12 +37,15 @@ import java.util.stream.Stream;
  * <p>Writing is atomic at the directory level: everything goes to a sibling staging directory, which then
  * replaces the old directory by two renames. A learn that fails or is killed leaves the previous models in
  * place; if it is killed between the two renames, the previous models are in {@code <dir>.old}, and
- * {@link #read} takes them from there.
+ * {@link #read} takes them from there. There is no moment without readable models: {@code .old} is deleted
+ * only once the new models are in place, and staging directories of killed learns are removed by the next one.
  */
 public final class ModelStore {
 
     /** Name of the index file inside a model directory. */
     public static final String INDEX = "index.json";
+    /** Infix of staging directories: {@code <dir>.new-<pid>-<random>}. */
+    private static final String STAGING = ".new-";
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(SerializationFeature.INDENT_OUTPUT)
@@ -79,17 +82,21 @@ public final class ModelStore {
         Path target = dir.toAbsolutePath().normalize();
         Path parent = target.getParent();
         Files.createDirectories(parent);
-        Path staging = Files.createTempDirectory(parent, target.getFileName() + ".new-");
+        String stagingPrefix = target.getFileName() + STAGING;
+        deleteAbandonedStaging(parent, stagingPrefix);
+        Path staging = Files.createTempDirectory(parent, stagingPrefix + ProcessHandle.current().pid() + "-");
         try {
             for (Map.Entry<String, String> e : dots.entrySet()) {
                 writeDurably(staging.resolve(e.getKey()), e.getValue());
             }
             writeDurably(staging.resolve(INDEX), JSON.writeValueAsString(index) + "\n");
             Path old = oldOf(target);
-            deleteTree(old);
             if (Files.exists(target)) {
+                deleteTree(old); // the previous models are in target, so an older .old is garbage
                 Files.move(target, old, StandardCopyOption.ATOMIC_MOVE);
             }
+            // Otherwise .old may hold the only readable models (a learn killed between the renames): it must
+            // survive until the new models are in place.
             Files.move(staging, target, StandardCopyOption.ATOMIC_MOVE);
             deleteTree(old);
         } finally {
@@ -155,6 +162,9 @@ public final class ModelStore {
                     + firstLine(e.getMessage()));
         }
         for (String symbol : data.alphabet) {
+            if (symbol == null) { // AutomataLib reads an edge label without " / " as a null input
+                throw new BadInputException(file + ": not a Mealy machine in DOT: an edge label is not 'input / output'");
+            }
             if (!alphabet.containsSymbol(symbol)) {
                 throw new BadInputException(file + ": input '" + symbol
                         + "' is not in the abstraction's alphabet; relearn with the abstraction in use");
@@ -166,6 +176,32 @@ public final class ModelStore {
         CompactMealy<String, String> full = new CompactMealy<>(alphabet);
         AutomatonLowLevelCopy.copy(AutomatonCopyMethod.BFS, data.model, data.alphabet, full);
         return full;
+    }
+
+    /**
+     * Deletes staging directories of learns that were killed while writing: those whose owning process (the pid
+     * in their name) is gone. A staging directory named without a pid (older versions) goes once it is an hour
+     * old. A learn still running keeps its own.
+     */
+    private static void deleteAbandonedStaging(Path parent, String prefix) throws IOException {
+        List<Path> candidates;
+        try (Stream<Path> s = Files.list(parent)) {
+            candidates = s.filter(p -> p.getFileName().toString().startsWith(prefix) && Files.isDirectory(p)).toList();
+        }
+        for (Path p : candidates) {
+            String rest = p.getFileName().toString().substring(prefix.length());
+            int dash = rest.indexOf('-');
+            boolean abandoned;
+            if (dash > 0 && dash <= 18 && rest.substring(0, dash).chars().allMatch(Character::isDigit)) {
+                abandoned = ProcessHandle.of(Long.parseLong(rest.substring(0, dash))).map(h -> !h.isAlive()).orElse(true);
+            } else {
+                abandoned = Files.getLastModifiedTime(p).toInstant()
+                        .isBefore(java.time.Instant.now().minus(java.time.Duration.ofHours(1)));
+            }
+            if (abandoned) {
+                deleteTree(p);
+            }
+        }
     }
 
     private static String shortFp(String fp) {

@@ -91,6 +91,48 @@ class ModelStoreTest {
         assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size());
     }
 
+    /** Killed between the renames, with its staging directory left behind: read works, the next learn too. */
+    @Test
+    void afterAKillBetweenTheRenamesTheNextLearnSucceeds() throws Exception {
+        Path dir = tmp.resolve("models");
+        writeModels(dir);
+        Files.move(dir, tmp.resolve("models.old"));
+        Path staging = Files.createDirectories(tmp.resolve("models.new-999999999-1"));
+        Files.writeString(staging.resolve("direct.dot"), "digraph g {"); // half-written
+        assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size());
+        writeModels(dir);
+        assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size());
+        assertTrue(Files.isRegularFile(dir.resolve("index.json")));
+        assertTrue(Files.notExists(tmp.resolve("models.old")), "cleaned up once the new models are in place");
+    }
+
+    /**
+     * When the previous models are only in {@code .old} and the rename into place then fails (here a dangling
+     * link named like the model directory blocks it), those models must not have been deleted first.
+     */
+    @Test
+    void modelsOnlyInOldSurviveAFailedRenameIntoPlace() throws Exception {
+        Path dir = tmp.resolve("models");
+        writeModels(dir);
+        Files.move(dir, tmp.resolve("models.old"));
+        Files.createSymbolicLink(dir, tmp.resolve("nowhere"));
+        assertThrows(IOException.class, () -> writeModels(dir));
+        assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size(), "the previous models are still readable");
+    }
+
+    /** Staging directories of killed learns (their process is gone) are removed; a live learn's is kept. */
+    @Test
+    void stagingLeftByAKilledLearnIsRemovedByTheNextOne() throws Exception {
+        Path dir = tmp.resolve("models");
+        Path dead = Files.createDirectories(tmp.resolve("models.new-999999999-42")); // above any pid_max
+        Files.writeString(dead.resolve("index.json"), "{");
+        Path live = Files.createDirectories(tmp.resolve("models.new-" + ProcessHandle.current().pid() + "-7"));
+        writeModels(dir);
+        assertTrue(Files.notExists(dead), "abandoned staging removed");
+        assertTrue(Files.isDirectory(live), "a running learn's staging kept");
+        assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size());
+    }
+
     @Test
     void missingDirectoryIsOneLineNamingIt() {
         BadInputException e = assertThrows(BadInputException.class, () -> ModelStore.read(tmp.resolve("nope"), ABSTRACTION));
