@@ -43,7 +43,8 @@ import java.util.stream.Collectors;
  * (interface traffic no rule covers, which the caller reports instead of losing). Everything is data: adding a
  * location, changing the battery bands or adding a component means editing the JSON file only.
  *
- * <p>The file has the keys {@code name} (required), {@code description}, {@code drop} (filters on
+ * <p>The file has the keys {@code name} (required), {@code description}, {@code drop} (filters, where {@code *}
+ * matches any characters, on
  * {@code kind}/{@code from}/{@code to}/{@code protocol}/{@code command}), {@code locations} (name to
  * abbreviation, used for {@code {loc}} in symbols), {@code rules} (required: {@code protocol}, {@code command},
  * {@code input}, {@code replies}, optional {@code description}; each reply has a {@code symbol} and exactly one
@@ -392,10 +393,40 @@ public final class Abstraction {
 
     private static boolean dropped(DropSpec d, LogRecord r) {
         return (d.kind() == null || d.kind().toUpperCase(Locale.ROOT).equals(r.kind().name()))
-                && (d.from() == null || d.from().equals(r.from()))
-                && (d.to() == null || d.to().equals(r.to()))
-                && (d.protocol() == null || d.protocol().equals(r.protocol()))
-                && (d.command() == null || d.command().equals(r.command()));
+                && (d.from() == null || glob(d.from(), r.from()))
+                && (d.to() == null || glob(d.to(), r.to()))
+                && (d.protocol() == null || glob(d.protocol(), r.protocol()))
+                && (d.command() == null || glob(d.command(), r.command()));
+    }
+
+    /**
+     * Whether {@code text} matches {@code pattern}, where {@code *} stands for any characters (possibly none) and
+     * everything else for itself: BT-to-skill ports are {@code /<Skill>/BT_rpc/client}, one per skill, and the
+     * older log format has no Protocol line to drop them by.
+     */
+    static boolean glob(String pattern, String text) {
+        int p = 0;
+        int t = 0;
+        int star = -1;
+        int mark = 0;
+        while (t < text.length()) {
+            if (p < pattern.length() && pattern.charAt(p) == '*') {
+                star = p++;
+                mark = t;
+            } else if (p < pattern.length() && pattern.charAt(p) == text.charAt(t)) {
+                p++;
+                t++;
+            } else if (star >= 0) {
+                p = star + 1;
+                t = ++mark;
+            } else {
+                return false;
+            }
+        }
+        while (p < pattern.length() && pattern.charAt(p) == '*') {
+            p++;
+        }
+        return p == pattern.length();
     }
 
     /** The abbreviation of the location {@code r} is about, or {@code null}. */

@@ -9,7 +9,7 @@ import dev.predmon.parse.RecordKind;
  * below 20.0, the thesis's SCXML monitor of Section 3.3.1).
  *
  * @param name     shown to users, e.g. {@code battery level >= 20%}
- * @param protocol Thrift service of the watched reply
+ * @param protocol Thrift service of the watched reply (a record without one, from the older format, matches)
  * @param command  method of the watched reply
  * @param from     the reply's sending port (the server); empty matches any
  * @param to       the reply's receiving port (the client); empty matches any
@@ -19,7 +19,9 @@ public record SafetyRule(String name, String protocol, String command, String fr
 
     /** The watched numeric value carried by {@code r}, or NaN when {@code r} is not a watched reply. */
     public double valueOf(LogRecord r) {
-        if (r.kind() != RecordKind.REPLY || !protocol.equals(r.protocol()) || !command.equals(r.command())
+        // An empty protocol is the older log format, which has no Protocol line: match by command, as rules do.
+        boolean protocolMatches = r.protocol().isEmpty() || protocol.equals(r.protocol());
+        if (r.kind() != RecordKind.REPLY || !protocolMatches || !command.equals(r.command())
                 || (!from.isEmpty() && !from.equals(r.from())) || (!to.isEmpty() && !to.equals(r.to()))) {
             return Double.NaN;
         }
