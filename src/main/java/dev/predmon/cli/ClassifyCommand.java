@@ -33,9 +33,8 @@ final class ClassifyCommand implements Callable<Integer> {
     @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to classify.")
     Path log;
 
-    @Option(names = "--threshold", paramLabel = "N", defaultValue = "0",
-            description = "Most output discrepancies a matching model may have (default: ${DEFAULT-VALUE}).")
-    int threshold;
+    @Mixin
+    ThresholdOption threshold;
 
     @Option(names = "--json", description = "Print the result as one JSON object.")
     boolean json;
@@ -53,7 +52,7 @@ final class ClassifyCommand implements Callable<Integer> {
         ModelSet set = models.load(abstraction);
         LogTrace trace = Traces.read(log, abstraction);
         Problems.print(spec.commandLine().getErr(), log, trace);
-        Classifier.Result r = Classifier.classify(set, trace.mealy(), threshold);
+        Classifier.Result r = Classifier.classify(set, trace.mealy(), threshold.value);
         if (json) {
             List<Map<String, Object>> scores = new ArrayList<>();
             for (Classifier.Score s : r.scores()) {
@@ -83,7 +82,7 @@ final class ClassifyCommand implements Callable<Integer> {
             }
             out.println(r.best().map(s -> "best match: " + s.model().scenario() + " (" + s.model().id() + ", "
                     + s.discrepancies() + " discrepancies)" + (s.model().faulty() ? ": FAULTY" : ""))
-                    .orElse("no model matches within threshold " + threshold));
+                    .orElse("no model matches within threshold " + threshold.value));
         }
         out.flush();
         return r.faulty() ? ExitCodes.WARNING : ExitCodes.OK;

@@ -57,9 +57,8 @@ final class EvaluateCommand implements Callable<Integer> {
         Integer folds;
     }
 
-    @Option(names = "--threshold", paramLabel = "N", defaultValue = "0",
-            description = "Output discrepancies a model may accumulate and still match (default: ${DEFAULT-VALUE}).")
-    int threshold;
+    @Mixin
+    ThresholdOption threshold;
 
     @Option(names = "--report", paramLabel = "FILE",
             description = "Write a self-contained HTML report: table, confusion matrix, leads, battery plots, models.")
@@ -78,12 +77,9 @@ final class EvaluateCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        if (threshold < 0) {
-            throw new ParameterException(spec.commandLine(), "--threshold must be at least 0, got " + threshold);
-        }
         Abstraction abstraction = abstractionOption.load();
         List<ScenarioSpec> train = ScenarioLayout.scan(logs);
-        Evaluator evaluator = new Evaluator(abstraction, threshold, ProgressBar.on(err, quiet));
+        Evaluator evaluator = new Evaluator(abstraction, threshold.value, ProgressBar.on(err, quiet));
         Evaluation e;
         if (split != null && split.test != null) {
             e = evaluator.trainTest(train, ScenarioLayout.scan(split.test));

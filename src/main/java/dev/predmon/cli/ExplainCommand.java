@@ -29,9 +29,8 @@ final class ExplainCommand implements Callable<Integer> {
     @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to explain.")
     Path log;
 
-    @Option(names = "--threshold", paramLabel = "N", defaultValue = "0",
-            description = "Output discrepancies a model may accumulate and still match (default: ${DEFAULT-VALUE}).")
-    int threshold;
+    @Mixin
+    ThresholdOption threshold;
 
     @Option(names = "--json", description = "Print the explanation as one JSON document.")
     boolean json;
@@ -50,7 +49,7 @@ final class ExplainCommand implements Callable<Integer> {
         if (!Files.isRegularFile(log)) {
             throw new BadInputException(log + ": no such file");
         }
-        Explanation x = Explanation.of(log, set, abstraction, threshold);
+        Explanation x = Explanation.of(log, set, abstraction, threshold.value);
         if (json) {
             out.println(new com.fasterxml.jackson.databind.ObjectMapper()
                     .enable(com.fasterxml.jackson.databind.SerializationFeature.INDENT_OUTPUT).writeValueAsString(x));

@@ -32,9 +32,8 @@ final class WatchCommand implements Callable<Integer> {
     @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to watch.")
     Path log;
 
-    @Option(names = "--threshold", paramLabel = "N", defaultValue = "0",
-            description = "Output discrepancies a model may accumulate and still match (default: ${DEFAULT-VALUE}).")
-    int threshold;
+    @Mixin
+    ThresholdOption threshold;
 
     @Option(names = "--json", description = "One JSON object per event on stdout.")
     boolean json;
@@ -70,7 +69,7 @@ final class WatchCommand implements Callable<Integer> {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
         }
         EventPrinter printer = new EventPrinter(out, json, eliminations || json);
-        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, threshold, printer);
+        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, threshold.value, printer);
         try (LogWatcher watcher = new LogWatcher(log, monitor, p -> {
             err.println(p.format(log.toString()));
             err.flush();

@@ -68,8 +68,7 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
         for (LearnedModel m : models.models()) {
             ModelTracker t = new ModelTracker(m, threshold);
             for (IoPair p : trace.pairs()) {
-                t.step(p.input(), dev.predmon.mealy.MealyMapping.OK);
-                t.step(dev.predmon.mealy.MealyMapping.DELTA, p.output());
+                t.pair(p.input(), p.output());
                 if (!t.alive()) {
                     break;
                 }

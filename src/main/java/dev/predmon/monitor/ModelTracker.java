@@ -87,6 +87,16 @@ public final class ModelTracker {
         return Outcome.DISCREPANCY;
     }
 
+    /**
+     * Feeds one query/reply pair as its two Mealy steps, {@code input/OK} then {@code Delta/output} (the thesis's
+     * I/O-automaton-to-Mealy mapping); returns whether the model is still alive.
+     */
+    public boolean pair(String input, String output) {
+        step(input, dev.predmon.mealy.MealyMapping.OK);
+        step(dev.predmon.mealy.MealyMapping.DELTA, output);
+        return alive();
+    }
+
     public LearnedModel model() {
         return model;
     }

@@ -3,7 +3,6 @@ package dev.predmon.monitor;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
-import dev.predmon.mealy.MealyMapping;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.LogRecord;
@@ -100,9 +99,7 @@ public final class PredictiveMonitor implements PipelineListener {
             if (!t.alive()) {
                 continue;
             }
-            t.step(pair.input(), MealyMapping.OK);
-            t.step(MealyMapping.DELTA, pair.output());
-            if (!t.alive()) {
+            if (!t.pair(pair.input(), pair.output())) {
                 LearnedModel m = t.model();
                 events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
                         m.faulty(), t.elimination().describe()));

@@ -38,11 +38,11 @@ final class BehaviorTree {
         Node goToStation = new GoTo("GoToChargingStation", Components.CHARGING_STATION, c, r, goToEchoes);
         Node atKitchen = isAt("IsAtDestination", Components.KITCHEN, c, r);
         Node goToKitchen = new GoTo("GoToDestination", Components.KITCHEN, c, r, goToEchoes);
-        return new ReactiveSequence(
-                new ReactiveFallback(
-                        new ReactiveSequence(batteryLevel, notCharging),
-                        new ReactiveSequence(new ReactiveFallback(atStation, goToStation), new Wait())),
-                new ReactiveFallback(atKitchen, goToKitchen));
+        return Reactive.sequence(
+                Reactive.fallback(
+                        Reactive.sequence(batteryLevel, notCharging),
+                        Reactive.sequence(Reactive.fallback(atStation, goToStation), new Wait())),
+                Reactive.fallback(atKitchen, goToKitchen));
     }
 
     private static Node isAt(String skill, String location, Components c, Recorder r) {
@@ -73,66 +73,43 @@ final class BehaviorTree {
         }
     }
 
-    /** BehaviorTree.CPP's {@code ReactiveSequence}. */
-    static final class ReactiveSequence extends Node {
+    /**
+     * BehaviorTree.CPP's {@code ReactiveSequence} and {@code ReactiveFallback}: every tick re-evaluates the children
+     * from the left; a child answering {@code stopOn} ends the tick with that answer, a running child ends it
+     * running, and children no longer ticked are halted. A sequence stops on FAILURE, a fallback on SUCCESS.
+     */
+    static final class Reactive extends Node {
+        private final Status stopOn;
         private final List<Node> children;
 
-        ReactiveSequence(Node... children) {
+        private Reactive(Status stopOn, Node... children) {
+            this.stopOn = stopOn;
             this.children = List.of(children);
+        }
+
+        static Reactive sequence(Node... children) {
+            return new Reactive(Status.FAILURE, children);
+        }
+
+        static Reactive fallback(Node... children) {
+            return new Reactive(Status.SUCCESS, children);
         }
 
         @Override
         Status onTick(Status previous) {
             for (int i = 0; i < children.size(); i++) {
-                switch (children.get(i).tick()) {
-                    case RUNNING -> {
-                        haltFrom(children, i + 1);
-                        return Status.RUNNING;
-                    }
-                    case FAILURE -> {
-                        haltFrom(children, 0);
-                        return Status.FAILURE;
-                    }
-                    default -> {
-                    }
+                Status s = children.get(i).tick();
+                if (s == Status.RUNNING) {
+                    haltFrom(children, i + 1);
+                    return Status.RUNNING;
+                }
+                if (s == stopOn) {
+                    haltFrom(children, 0);
+                    return stopOn;
                 }
             }
             haltFrom(children, 0);
-            return Status.SUCCESS;
-        }
-
-        @Override
-        void onHalt() {
-            haltFrom(children, 0);
-        }
-    }
-
-    /** BehaviorTree.CPP's {@code ReactiveFallback}. */
-    static final class ReactiveFallback extends Node {
-        private final List<Node> children;
-
-        ReactiveFallback(Node... children) {
-            this.children = List.of(children);
-        }
-
-        @Override
-        Status onTick(Status previous) {
-            for (int i = 0; i < children.size(); i++) {
-                switch (children.get(i).tick()) {
-                    case RUNNING -> {
-                        haltFrom(children, i + 1);
-                        return Status.RUNNING;
-                    }
-                    case SUCCESS -> {
-                        haltFrom(children, 0);
-                        return Status.SUCCESS;
-                    }
-                    default -> {
-                    }
-                }
-            }
-            haltFrom(children, 0);
-            return Status.FAILURE;
+            return stopOn == Status.SUCCESS ? Status.FAILURE : Status.SUCCESS;
         }
 
         @Override

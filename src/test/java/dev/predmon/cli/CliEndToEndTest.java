@@ -114,4 +114,14 @@ class CliEndToEndTest {
     void usageErrorIsExit2() {
         assertEquals(ExitCodes.USAGE, Cli.run("watch").code());
     }
+
+    @Test
+    void aNegativeThresholdIsAUsageErrorForEveryMatchingCommand() {
+        for (String command : List.of("watch", "classify", "explain")) {
+            Cli r = Cli.run(command, "--log", "x.log", "--threshold", "-1");
+            assertEquals(ExitCodes.USAGE, r.code(), command);
+            assertTrue(r.err().contains("--threshold must be at least 0"), r.err());
+        }
+        assertEquals(ExitCodes.USAGE, Cli.run("evaluate", "--logs", "x", "--threshold", "-2").code());
+    }
 }
