@@ -26,8 +26,10 @@ import java.util.Map;
  * all its {@code input/output} labels stacked, self-loops as small arcs above the state, edges to an earlier or
  * the same layer bent. Deterministic: the same machine always gives the same picture.
  *
- * <p>The {@code Delta/output} steps of the thesis's mapping are kept, since the replies are what tells scenarios
- * apart; {@code input/OK} is shortened to {@code input} to save room.
+ * <p>The thesis's mapping turns each query/reply pair into two Mealy steps, {@code input/OK} into a state that
+ * only waits for {@code Delta/reply}. Such waiting states are folded away: the pair is drawn as one edge
+ * {@code input / reply} between the states that matter, which halves the picture and reads like the I/O
+ * automaton the machine stands for. A state that does more than wait is drawn, with its own edges.
  */
 public final class MachineDrawing {
 
@@ -53,43 +55,43 @@ public final class MachineDrawing {
         layer.put(init, 0);
         queue.add(init);
         while (!queue.isEmpty()) {
-            // Boxed on purpose: the int overload of getSuccessor answers -1, not null, for a missing transition.
             Integer s = queue.poll();
-            for (String in : inputs) {
-                Integer t = m.getSuccessor(s, in);
-                if (t != null && !layer.containsKey(t)) {
-                    layer.put(t, layer.get(s) + 1);
-                    queue.add(t);
+            for (Edge e : edges(m, inputs, s)) {
+                if (!layer.containsKey(e.target())) {
+                    layer.put(e.target(), layer.get(s) + 1);
+                    queue.add(e.target());
                 }
             }
-        }
-        Map<Integer, double[]> pos = new LinkedHashMap<>();
-        Map<Integer, Integer> perLayer = new LinkedHashMap<>();
-        for (Map.Entry<Integer, Integer> e : layer.entrySet()) {
-            int row = perLayer.merge(e.getValue(), 1, Integer::sum) - 1;
-            pos.put(e.getKey(), new double[] {40 + e.getValue() * COL, 50 + row * ROW});
         }
         // Labels per (source, target), in alphabet order.
         Map<Long, List<String>> labels = new LinkedHashMap<>();
         for (Integer s : layer.keySet()) {
-            for (String in : inputs) {
-                Integer t = m.getSuccessor(s, in);
-                if (t != null) {
-                    String out = m.getOutput(s, in);
-                    String label = MealyMapping.OK.equals(out) ? in : in + "/" + out;
-                    labels.computeIfAbsent(((long) s << 32) | t.longValue(), k -> new ArrayList<>()).add(label);
-                }
+            for (Edge e : edges(m, inputs, s)) {
+                labels.computeIfAbsent(((long) s << 32) | e.target().longValue(), k -> new ArrayList<>()).add(e.label());
             }
+        }
+        // Spacing from the labels themselves, so that long symbols and tall stacks neither overlap nor get cut.
+        FontMetrics fm = new SVGGraphics2D(10, 10).getFontMetrics(FONT);
+        int widest = labels.values().stream().flatMap(List::stream).mapToInt(fm::stringWidth).max().orElse(0);
+        int tallest = labels.values().stream().mapToInt(List::size).max().orElse(1) * fm.getHeight();
+        int col = Math.max(COL, widest + 60);
+        int rowHeight = Math.max(ROW, tallest + 2 * R + 30);
+        int left = widest / 2 + 20;
+        int top = tallest + R + 40;
+        Map<Integer, double[]> pos = new LinkedHashMap<>();
+        Map<Integer, Integer> perLayer = new LinkedHashMap<>();
+        for (Map.Entry<Integer, Integer> e : layer.entrySet()) {
+            int row = perLayer.merge(e.getValue(), 1, Integer::sum) - 1;
+            pos.put(e.getKey(), new double[] {left + e.getValue() * col, top + row * rowHeight});
         }
         int layers = perLayer.size();
         int rows = perLayer.values().stream().mapToInt(Integer::intValue).max().orElse(1);
-        int width = 80 + Math.max(0, layers - 1) * COL + 120;
-        int height = 100 + Math.max(0, rows - 1) * ROW + 40;
+        int width = 2 * left + Math.max(0, layers - 1) * col;
+        int height = top + Math.max(0, rows - 1) * rowHeight + tallest + R + 60;
         SVGGraphics2D g = new SVGGraphics2D(width, height);
         g.setDefsKeyPrefix(key);
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setFont(FONT);
-        FontMetrics fm = g.getFontMetrics();
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, width, height);
         for (Map.Entry<Long, List<String>> e : labels.entrySet()) {
@@ -133,6 +135,42 @@ public final class MachineDrawing {
             g.drawString(name, (float) (p[0] - fm.stringWidth(name) / 2.0), (float) (p[1] + fm.getAscent() / 2.0 - 1));
         }
         return g.getSVGElement(key);
+    }
+
+    /** One drawn edge. */
+    private record Edge(Integer target, String label) {
+    }
+
+    /**
+     * The edges drawn from {@code s}: a query whose successor only waits for {@code Delta} becomes one edge
+     * {@code input / reply} to where the reply leads; any other transition is drawn as it is.
+     */
+    private static List<Edge> edges(CompactMealy<String, String> m, List<String> inputs, Integer s) {
+        List<Edge> out = new ArrayList<>();
+        for (String in : inputs) {
+            // Boxed on purpose: the int overload of getSuccessor answers -1, not null, for a missing transition.
+            Integer t = m.getSuccessor(s, in);
+            if (t == null) {
+                continue;
+            }
+            String answer = m.getOutput(s, in);
+            if (!in.equals(MealyMapping.DELTA) && MealyMapping.OK.equals(answer) && onlyWaits(m, inputs, t)) {
+                out.add(new Edge(m.getSuccessor(t, MealyMapping.DELTA), in + " / " + m.getOutput(t, MealyMapping.DELTA)));
+            } else {
+                out.add(new Edge(t, MealyMapping.OK.equals(answer) ? in : in + " / " + answer));
+            }
+        }
+        return out;
+    }
+
+    /** Whether {@code t}'s only transition is {@code Delta}: the state between a query and its reply. */
+    private static boolean onlyWaits(CompactMealy<String, String> m, List<String> inputs, Integer t) {
+        for (String in : inputs) {
+            if (m.getSuccessor(t, in) != null && !in.equals(MealyMapping.DELTA)) {
+                return false;
+            }
+        }
+        return m.getSuccessor(t, MealyMapping.DELTA) != null;
     }
 
     /** Where the line from the centre {@code c} towards {@code (x, y)} leaves the state's circle. */
