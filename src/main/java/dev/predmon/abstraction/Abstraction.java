@@ -77,6 +77,10 @@ public final class Abstraction {
     private final List<DropSpec> drop;
     private final Map<String, String> locations;
     private final List<Rule> rules;
+    /** Rules by command, in file order: classify runs once per record. */
+    private final Map<String, List<Rule>> rulesByCommand;
+    /** Symbols with {@code {loc}} already replaced, by template and abbreviation (the set is small and fixed). */
+    private final Map<String, Map<String, String>> expanded = new java.util.concurrent.ConcurrentHashMap<>();
     private final Optional<SafetyRule> safety;
     private final List<String> inputAlphabet;
     private final List<String> outputAlphabet;
@@ -90,7 +94,7 @@ public final class Abstraction {
     private final List<String> mealyInputs;
 
     /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
-    private record Rule(String protocol, String command, String input, List<Reply> replies) {
+    private record Rule(String protocol, String command, String input, List<Reply> replies, boolean numeric) {
         boolean usesLocation() {
             return input.contains(AbstractionValidator.LOC)
                     || replies.stream().anyMatch(r -> r.symbol.contains(AbstractionValidator.LOC));
@@ -99,14 +103,15 @@ public final class Abstraction {
 
     /** A compiled reply: exactly one of {@code any}, {@code values}, {@code band} is set. */
     private record Reply(boolean any, Set<String> values, Band band, String symbol) {
-        boolean matches(String value) {
+        /** @param number the value parsed once per record, NaN when it is not a decimal number */
+        boolean matches(String value, double number) {
             if (any) {
                 return true;
             }
             if (values != null) {
                 return values.contains(value);
             }
-            return NUMBER.matcher(value).matches() && band.contains(Double.parseDouble(value));
+            return !Double.isNaN(number) && band.contains(number);
         }
     }
 
@@ -124,10 +129,17 @@ public final class Abstraction {
                         p.range() == null ? null : Band.of(p.range()), p.symbol()));
                 outputs.addAll(expand(p.symbol()));
             }
-            compiled.add(new Rule(r.protocol(), r.command(), r.input(), List.copyOf(replies)));
+            compiled.add(new Rule(r.protocol(), r.command(), r.input(), List.copyOf(replies),
+                    replies.stream().anyMatch(x -> x.band() != null)));
             inputs.addAll(expand(r.input()));
         }
         this.rules = List.copyOf(compiled);
+        Map<String, List<Rule>> byCommand = new HashMap<>();
+        for (Rule r : rules) {
+            byCommand.computeIfAbsent(r.command(), k -> new ArrayList<>()).add(r);
+        }
+        byCommand.replaceAll((k, v) -> List.copyOf(v));
+        this.rulesByCommand = Map.copyOf(byCommand);
         Map<String, List<String>> ordered = new HashMap<>();
         for (RuleSpec r : spec.rules()) {
             if (Boolean.TRUE.equals(r.continuous())) {
@@ -360,39 +372,54 @@ public final class Abstraction {
                 return new Classification.Dropped();
             }
         }
-        String what = (r.protocol().isEmpty() ? "" : r.protocol() + "/") + r.command();
         boolean command = r.kind() == RecordKind.COMMAND;
-        Rule rule = rules.stream()
-                .filter(x -> x.command.equals(r.command()) && (r.protocol().isEmpty() || x.protocol.equals(r.protocol())))
-                .findFirst().orElse(null);
-        if (rule == null) {
-            return new Classification.Unmapped(command ? what + " command" : what + " reply '" + r.reply() + "'");
+        Rule rule = null;
+        for (Rule x : rulesByCommand.getOrDefault(r.command(), List.of())) {
+            if (r.protocol().isEmpty() || x.protocol.equals(r.protocol())) {
+                rule = x;
+                break;
+            }
         }
-        String template;
+        if (rule == null) {
+            return new Classification.Unmapped(command ? what(r) + " command" : what(r) + " reply '" + r.reply() + "'");
+        }
+        String template = null;
         if (command) {
             template = rule.input;
         } else {
-            template = rule.replies.stream().filter(p -> p.matches(r.reply())).map(Reply::symbol)
-                    .findFirst().orElse(null);
+            String value = r.reply();
+            double number = rule.numeric && NUMBER.matcher(value).matches() ? Double.parseDouble(value) : Double.NaN;
+            for (Reply p : rule.replies) {
+                if (p.matches(value, number)) {
+                    template = p.symbol;
+                    break;
+                }
+            }
             if (template == null) {
-                return new Classification.Unmapped(what + " reply '" + r.reply() + "'");
+                return new Classification.Unmapped(what(r) + " reply '" + r.reply() + "'");
             }
         }
         if (template.contains(AbstractionValidator.LOC)) {
             String abbreviation = location(r);
             if (abbreviation == null) {
-                return new Classification.Unmapped(what + (command ? " command" : " reply")
+                return new Classification.Unmapped(what(r) + (command ? " command" : " reply")
                         + " about unknown location '" + locationCandidate(r) + "'");
             }
-            template = template.replace(AbstractionValidator.LOC, abbreviation);
+            String withLoc = template;
+            template = expanded.computeIfAbsent(withLoc, t -> new java.util.concurrent.ConcurrentHashMap<>())
+                    .computeIfAbsent(abbreviation, a -> withLoc.replace(AbstractionValidator.LOC, a));
         }
         AbstractEvent event = new AbstractEvent(command ? Direction.INPUT : Direction.OUTPUT, template,
                 Channel.of(r), r);
         return new Classification.Mapped(event);
     }
 
+    private static String what(LogRecord r) {
+        return (r.protocol().isEmpty() ? "" : r.protocol() + "/") + r.command();
+    }
+
     private static boolean dropped(DropSpec d, LogRecord r) {
-        return (d.kind() == null || d.kind().toUpperCase(Locale.ROOT).equals(r.kind().name()))
+        return (d.kind() == null || d.kind().equalsIgnoreCase(r.kind().name()))
                 && (d.from() == null || glob(d.from(), r.from()))
                 && (d.to() == null || glob(d.to(), r.to()))
                 && (d.protocol() == null || glob(d.protocol(), r.protocol()))
@@ -405,6 +432,20 @@ public final class Abstraction {
      * older log format has no Protocol line to drop them by.
      */
     static boolean glob(String pattern, String text) {
+        int firstStar = pattern.indexOf('*');
+        if (firstStar < 0) {
+            return pattern.equals(text);
+        }
+        if (firstStar == 0 && pattern.length() > 2 && pattern.indexOf('*', 1) == pattern.length() - 1) {
+            // "*middle*", the usual shape (a port segment): a plain search, without building the middle
+            int m = pattern.length() - 2;
+            for (int i = 0; i + m <= text.length(); i++) {
+                if (text.regionMatches(i, pattern, 1, m)) {
+                    return true;
+                }
+            }
+            return false;
+        }
         int p = 0;
         int t = 0;
         int star = -1;

@@ -41,6 +41,11 @@ public final class LogWatcher implements AutoCloseable {
             }
 
             @Override
+            public void line(byte[] bytes, int offset, int length) {
+                lines.line(bytes, offset, length);
+            }
+
+            @Override
             public void overlongLine(long bytes) {
                 lines.overlongLine(bytes);
             }

@@ -12,6 +12,15 @@ public interface LineSink {
     void line(String line);
 
     /**
+     * One complete line as the bytes of the file, without its terminator (a trailing {@code '\r'} already
+     * removed). The default decodes it as UTF-8 and calls {@link #line(String)}; a sink that can read bytes
+     * directly (the parser, for its hot path) overrides it. The bytes are only valid during the call.
+     */
+    default void line(byte[] bytes, int offset, int length) {
+        line(new String(bytes, offset, length, java.nio.charset.StandardCharsets.UTF_8));
+    }
+
+    /**
      * The file was truncated ({@code "truncated"}) or replaced by another one ({@code "replaced"}); the lines
      * that follow come from its beginning. Everything of the old content was delivered before this call.
      */

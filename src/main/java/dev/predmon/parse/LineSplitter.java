@@ -38,8 +38,8 @@ final class LineSplitter {
         for (int i = offset; i < end; i++) {
             if (bytes[i] == '\n') {
                 if (partialLength == 0 && overflow == 0 && i - start <= maxLineBytes) {
-                    // The whole line is in this chunk: decode it in place, without copying it first.
-                    sink.line(decode(bytes, start, i - start));
+                    // The whole line is in this chunk: hand it over in place, without copying it first.
+                    deliver(bytes, start, i - start);
                 } else {
                     append(bytes, start, i - start);
                     deliver();
@@ -94,18 +94,18 @@ final class LineSplitter {
             sink.overlongLine(bytes);
             return;
         }
-        String line = decode(partial, 0, partialLength);
+        int length = partialLength;
         partialLength = 0;
+        deliver(partial, 0, length);
         shrink();
-        sink.line(line);
     }
 
-    /** The line's text without a trailing {@code '\r'}; malformed UTF-8 becomes U+FFFD, never an exception. */
-    private static String decode(byte[] bytes, int offset, int length) {
+    /** Hands a line to the sink without a trailing {@code '\r'}. */
+    private void deliver(byte[] bytes, int offset, int length) {
         if (length > 0 && bytes[offset + length - 1] == '\r') {
             length--;
         }
-        return new String(bytes, offset, length, StandardCharsets.UTF_8);
+        sink.line(bytes, offset, length);
     }
 
     /** Gives back the buffer a long line made grow, so that one long line does not pin a MiB for ever. */

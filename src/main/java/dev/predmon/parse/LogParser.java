@@ -1,5 +1,6 @@
 package dev.predmon.parse;
 
+import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.Objects;
@@ -86,7 +87,8 @@ public final class LogParser {
     private Draft draft;
 
     // Save-file state: the last three value lines seen outside a text block, and the block being read.
-    private final String[] lastValues = new String[3];
+    private final RecentLines lastValues = new RecentLines();
+    private final AsciiStrings strings = new AsciiStrings();
     private boolean inBlock;
     private boolean blockFirstLine;
     private long blockLine;
@@ -164,7 +166,7 @@ public final class LogParser {
         mode = Mode.UNKNOWN;
         draft = null;
         inBlock = false;
-        Arrays.fill(lastValues, null);
+        lastValues.clear();
     }
 
     /** The number of lines seen since construction or the last {@link #reset()}. */
@@ -181,6 +183,11 @@ public final class LogParser {
             @Override
             public void line(String line) {
                 acceptLine(line);
+            }
+
+            @Override
+            public void line(byte[] bytes, int offset, int length) {
+                acceptLine(bytes, offset, length);
             }
 
             @Override
@@ -270,10 +277,10 @@ public final class LogParser {
         blockFirstLine = true;
         blockLine = lineNumber;
         blockBroken = false;
-        String yarprunTime = trimmed(lastValues[0]);
-        String localTime = trimmed(lastValues[1]);
-        String level = trimmed(lastValues[2]);
-        Arrays.fill(lastValues, null);
+        String yarprunTime = lastValues.trimmed(0);
+        String localTime = lastValues.trimmed(1);
+        String level = lastValues.trimmed(2);
+        lastValues.clear();
         if (level == null || !SAVE_LEVEL.matcher(level).matches()) {
             blockBroken = true;
             error(lineNumber, "expected the entry's level (a number from 0 to 6) on the line before "
@@ -392,9 +399,185 @@ public final class LogParser {
     }
 
     private void rememberValue(String text) {
-        lastValues[0] = lastValues[1];
-        lastValues[1] = lastValues[2];
-        lastValues[2] = text; // trimmed only when used: this runs on every line of a text log
+        lastValues.push(text); // trimmed only when used: this runs on every line of a text log
+    }
+
+    /**
+     * A line as bytes: a well-formed ASCII field line of the text record in progress is taken straight from the
+     * bytes (six of every seven lines of a log; decoding each into a string, cutting label and value out of it
+     * and trimming the value was most of the parser's time); any other line takes the general path,
+     * {@link #acceptLine}, exactly as before.
+     */
+    void acceptLine(byte[] b, int offset, int len) {
+        boolean done = mode == Mode.TEXT && (draft != null ? fastField(b, offset, len) : fastOutside(b, offset, len));
+        if (!done) {
+            acceptLine(new String(b, offset, len, StandardCharsets.UTF_8));
+        }
+    }
+
+    /**
+     * The fast path for a line outside a record: a plain ASCII line that cannot start a record (no
+     * {@code intercepted}, {@code received} or {@code <}) is only remembered; a header of the usual shape,
+     * {@code <time> [<time>] <LEVEL> <Kind> intercepted:}, starts a record without the header regex. Anything else
+     * goes the general way.
+     */
+    private boolean fastOutside(byte[] b, int offset, int len) {
+        int end = offset + len;
+        boolean interesting = false;
+        for (int k = offset; k < end; k++) {
+            byte c = b[k];
+            if (c < 0 || c == '<') {
+                return false;
+            }
+            if ((c == 'i' || c == 'r') && (startsWith(b, k, end, "intercepted") || startsWith(b, k, end, "received"))) {
+                interesting = true;
+            }
+        }
+        if (!interesting) {
+            lineNumber++;
+            lastValues.push(b, offset, len);
+            return true;
+        }
+        return fastHeader(b, offset, end);
+    }
+
+    /** A header of the usual shape, tokens separated by blanks and tabs; false for anything else. */
+    private boolean fastHeader(byte[] b, int offset, int end) {
+        int[] starts = new int[6];
+        int[] ends = new int[6];
+        int n = 0;
+        int i = offset;
+        while (i < end && isRegexBlank((char) b[i])) {
+            i++;
+        }
+        while (i < end) {
+            if (n == starts.length) {
+                return false;
+            }
+            starts[n] = i;
+            while (i < end && b[i] != ' ' && b[i] != '\t') {
+                i++;
+            }
+            ends[n++] = i;
+            while (i < end && (b[i] == ' ' || b[i] == '\t')) {
+                i++;
+            }
+        }
+        if ((n != 4 && n != 5) || !tokenIs(b, starts[n - 1], ends[n - 1], "intercepted:")) {
+            return false;
+        }
+        RecordKind kind = kindOf(b, starts[n - 2], ends[n - 2]);
+        int levelAt = n - 3;
+        if (kind == null || !upperLetters(b, starts[levelAt], ends[levelAt])
+                || !plainNumber(b, starts[0], ends[0]) || (n == 5 && !plainNumber(b, starts[1], ends[1]))) {
+            return false;
+        }
+        int t = n == 5 ? 1 : 0;
+        double time = Double.parseDouble(new String(b, starts[t], ends[t] - starts[t], StandardCharsets.ISO_8859_1));
+        lineNumber++;
+        lastValues.push(b, offset, end - offset);
+        draft = new Draft(lineNumber, time, strings.of(b, starts[levelAt], ends[levelAt] - starts[levelAt]), kind);
+        return true;
+    }
+
+    private static boolean startsWith(byte[] b, int at, int end, String word) {
+        if (end - at < word.length()) {
+            return false;
+        }
+        for (int i = 0; i < word.length(); i++) {
+            if (b[at + i] != word.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean tokenIs(byte[] b, int start, int end, String word) {
+        return end - start == word.length() && startsWith(b, start, end, word);
+    }
+
+    private static RecordKind kindOf(byte[] b, int start, int end) {
+        if (tokenIs(b, start, end, "Command")) {
+            return RecordKind.COMMAND;
+        }
+        if (tokenIs(b, start, end, "Reply")) {
+            return RecordKind.REPLY;
+        }
+        if (tokenIs(b, start, end, "Tick")) {
+            return RecordKind.TICK;
+        }
+        return tokenIs(b, start, end, "Unknown") ? RecordKind.UNKNOWN : null;
+    }
+
+    private static boolean upperLetters(byte[] b, int start, int end) {
+        for (int i = start; i < end; i++) {
+            if (b[i] < 'A' || b[i] > 'Z') {
+                return false;
+            }
+        }
+        return end > start;
+    }
+
+    /** Digits with at most one '.', an optional leading '-': what a log's time column holds. */
+    private static boolean plainNumber(byte[] b, int start, int end) {
+        int i = start < end && b[start] == '-' ? start + 1 : start;
+        boolean digit = false;
+        boolean dot = false;
+        for (; i < end; i++) {
+            if (b[i] >= '0' && b[i] <= '9') {
+                digit = true;
+            } else if (b[i] == '.' && !dot) {
+                dot = true;
+            } else {
+                return false;
+            }
+        }
+        return digit;
+    }
+
+    /** The fast path of {@link #acceptLine(byte[], int, int)}; false (nothing done) sends the line the slow way. */
+    private boolean fastField(byte[] b, int offset, int len) {
+        int end = offset + len;
+        int i = offset;
+        while (i < end && isRegexBlank((char) b[i])) {
+            i++;
+        }
+        int labelStart = i;
+        while (i < end && isAsciiLetter((char) b[i])) {
+            i++;
+        }
+        int labelEnd = i;
+        while (i < end && (b[i] == ' ' || b[i] == '\t')) {
+            i++;
+        }
+        if (labelEnd == labelStart || i == end || b[i] != ':') {
+            return false;
+        }
+        int valueStart = i + 1;
+        for (int k = valueStart; k < end; k++) {
+            if (b[k] < 0 || b[k] == '<') {
+                return false; // non-ASCII, or perhaps a save-file marker: the general path decides
+            }
+        }
+        int valueEnd = end;
+        while (valueStart < valueEnd && (b[valueStart] & 0xff) <= ' ') {
+            valueStart++;
+        }
+        while (valueEnd > valueStart && (b[valueEnd - 1] & 0xff) <= ' ') {
+            valueEnd--;
+        }
+        if (!draft.expects(b, labelStart, labelEnd - labelStart)) {
+            return false;
+        }
+        lineNumber++;
+        lastValues.push(b, offset, len);
+        draft.offer(draft.expectedLabel(), strings.of(b, valueStart, valueEnd - valueStart));
+        if (draft.complete()) {
+            LogRecord record = draft.build();
+            draft = null;
+            records.accept(record);
+        }
+        return true;
     }
 
     private static String quote(String text) {
@@ -418,12 +601,37 @@ public final class LogParser {
 
         /** @param kindWord the {@code <Kind>} of a current header, {@code null} for {@code Message received:} */
         Draft(long line, double time, String level, String kindWord) {
+            this(line, time, level, kindWord == null ? null : RecordKind.valueOf(kindWord.toUpperCase(Locale.ROOT)));
+        }
+
+        /** @param kind the kind of a current header, {@code null} for {@code Message received:} */
+        Draft(long line, double time, String level, RecordKind kind) {
             this.line = line;
             this.time = time;
             this.level = level;
-            this.labels = kindWord == null ? OLDER : CURRENT;
+            this.labels = kind == null ? OLDER : CURRENT;
             this.values = new String[labels.length];
-            this.kind = kindWord == null ? null : RecordKind.valueOf(kindWord.toUpperCase(Locale.ROOT));
+            this.kind = kind;
+        }
+
+        /** Whether the ASCII bytes are the label expected next (any case); false for the older kind line. */
+        boolean expects(byte[] b, int offset, int len) {
+            String wanted = labels[next];
+            if (wanted == null || wanted.length() != len) {
+                return false;
+            }
+            for (int i = 0; i < len; i++) {
+                // Labels are ASCII letters (checked by the caller): folding bit 0x20 compares them case-blind.
+                if ((b[offset + i] | 0x20) != (wanted.charAt(i) | 0x20)) {
+                    return false;
+                }
+            }
+            return true;
+        }
+
+        /** The label expected next, as {@link #offer} compares it. */
+        String expectedLabel() {
+            return labels[next];
         }
 
         /** Takes the next field if {@code label} is the one expected; returns whether it was. */

@@ -2,8 +2,14 @@ package dev.predmon.parse;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.InterruptedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 
 /**
@@ -28,6 +34,19 @@ public final class LogReader {
      *                     reported to {@code problems}
      */
     public static long read(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems) throws IOException {
+        if (Files.size(file) < PARALLEL_FROM_BYTES) {
+            return readHere(file, records, problems);
+        }
+        return readAlongside(file, records, problems);
+    }
+
+    /** Files from this size on are parsed on a second thread while the caller consumes the records. */
+    static final long PARALLEL_FROM_BYTES = 8L << 20;
+    private static final int CHUNK = 2048;
+    private static final Object[] END = new Object[0];
+
+    /** Parses on the calling thread. */
+    static long readHere(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems) throws IOException {
         long[] count = {0};
         LogParser parser = new LogParser(record -> {
             count[0]++;
@@ -43,5 +62,85 @@ public final class LogReader {
         splitter.finish();
         parser.endOfInput();
         return count[0];
+    }
+
+    /**
+     * Parses on a second thread and hands records and problems over, in log order and in chunks, to the calling
+     * thread, which runs the callbacks: on two cores parsing overlaps with what the caller does with each record
+     * (abstraction, compaction, matching), and callers need no thread safety. A failure on either side stops both.
+     */
+    static long readAlongside(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems) throws IOException {
+        BlockingQueue<Object[]> queue = new ArrayBlockingQueue<>(8);
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Thread parser = new Thread(() -> {
+            Object[][] chunk = {new Object[CHUNK]};
+            int[] filled = {0};
+            Consumer<Object> emit = o -> {
+                chunk[0][filled[0]++] = o;
+                if (filled[0] == CHUNK) {
+                    handOver(queue, chunk[0]);
+                    chunk[0] = new Object[CHUNK];
+                    filled[0] = 0;
+                }
+            };
+            try {
+                readHere(file, emit::accept, emit::accept);
+                if (filled[0] > 0) {
+                    handOver(queue, Arrays.copyOf(chunk[0], filled[0]));
+                }
+            } catch (Throwable e) {
+                failure.set(e);
+            } finally {
+                try {
+                    queue.put(END);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }, "predmon-parse");
+        parser.setDaemon(true);
+        parser.start();
+        long count = 0;
+        boolean done = false;
+        try {
+            for (Object[] c = queue.take(); c != END; c = queue.take()) {
+                for (Object o : c) {
+                    if (o instanceof LogRecord r) {
+                        count++;
+                        records.accept(r);
+                    } else {
+                        problems.accept((ParseProblem) o);
+                    }
+                }
+            }
+            done = true;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new InterruptedIOException("interrupted while reading " + file);
+        } finally {
+            if (!done) {
+                parser.interrupt(); // the caller failed or was interrupted: stop parsing
+            }
+        }
+        Throwable e = failure.get();
+        if (e instanceof IOException io) {
+            throw io;
+        }
+        if (e instanceof RuntimeException re) {
+            throw re;
+        }
+        if (e instanceof Error err) {
+            throw err;
+        }
+        return count;
+    }
+
+    private static void handOver(BlockingQueue<Object[]> queue, Object[] chunk) {
+        try {
+            queue.put(chunk);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new CancellationException("the reader stopped");
+        }
     }
 }
