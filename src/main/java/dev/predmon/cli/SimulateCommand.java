@@ -88,7 +88,7 @@ public final class SimulateCommand implements Callable<Integer> {
     boolean crlf;
 
     @Override
-    public Integer call() {
+    public Integer call() throws IOException {
         Scenario s;
         SimOptions options;
         try {
@@ -104,17 +104,13 @@ public final class SimulateCommand implements Callable<Integer> {
             } else {
                 writeOne(s, options);
             }
-            return 0;
-        } catch (IOException e) {
-            spec.commandLine().getErr().println("simulate: cannot write: " + e.getMessage());
-            return 1;
         } catch (UncheckedIOException e) {
-            spec.commandLine().getErr().println("simulate: cannot write: " + e.getCause().getMessage());
-            return 1;
+            throw e.getCause(); // the CLI's error handler reports it: one line, exit 3
         } catch (IllegalStateException e) {
-            spec.commandLine().getErr().println("simulate: " + e.getMessage());
-            return 1;
+            // No run of this scenario can tell its story with these options (an impossible --early-warning).
+            throw new ParameterException(spec.commandLine(), e.getMessage(), e);
         }
+        return ExitCodes.OK;
     }
 
     private void checkCombination() {
