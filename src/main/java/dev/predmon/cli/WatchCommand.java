@@ -44,7 +44,7 @@ final class WatchCommand implements Callable<Integer> {
     @Option(names = "--eliminations", description = "Also print each model's elimination (--json always does).")
     boolean eliminations;
 
-    @Option(names = "--poll-ms", paramLabel = "MS", defaultValue = "20", description = "How often to look for new lines (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--poll-ms", paramLabel = "MS", defaultValue = "2", description = "How often to look for new lines (default: ${DEFAULT-VALUE}).")
     long pollMillis;
 
     @Mixin
