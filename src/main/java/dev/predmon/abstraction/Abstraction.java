@@ -88,6 +88,9 @@ public final class Abstraction {
     private final String fingerprint;
     /** For each band symbol of a continuous rule: its rule's bands in ascending order. */
     private final Map<String, List<String>> continuousBands;
+    /** For each band symbol of a continuous rule with hysteresis: its band and the rule's hysteresis. */
+    private final Map<String, Band> bandOf;
+    private final Map<String, Double> hysteresisOf;
     /** Input symbols of rules with {@code carry: true}. */
     private final Set<String> carried;
     /** The Mealy input alphabet: inputs, plus each carried input after each answer of its rule, sorted. */
@@ -156,6 +159,20 @@ public final class Abstraction {
             }
         }
         this.continuousBands = Map.copyOf(ordered);
+        Map<String, Band> bands = new HashMap<>();
+        Map<String, Double> hysteresis = new HashMap<>();
+        for (RuleSpec r : spec.rules()) {
+            if (r.hysteresis() != null && r.hysteresis() > 0) {
+                for (ReplySpec p : r.replies()) {
+                    for (String symbol : expand(p.symbol())) {
+                        bands.put(symbol, Band.of(p.range()));
+                        hysteresis.put(symbol, r.hysteresis());
+                    }
+                }
+            }
+        }
+        this.bandOf = Map.copyOf(bands);
+        this.hysteresisOf = Map.copyOf(hysteresis);
         Set<String> carriedInputs = new TreeSet<>();
         Set<String> mealy = new TreeSet<>(inputs);
         for (RuleSpec r : spec.rules()) {
@@ -201,6 +218,29 @@ public final class Abstraction {
             path.add(bands.get(k));
         }
         return path.isEmpty() ? List.of(to) : List.copyOf(path);
+    }
+
+    /**
+     * The band a new reading of a continuous quantity settles in, given the band it was in: for a rule with
+     * {@code hysteresis: h}, a reading that left {@code previous} by at most {@code h} stays in {@code previous};
+     * otherwise, and for every other rule, {@code next}. A battery sensor hovering at 50% (50.1, 49.9, 50.2)
+     * then gives one band, not a flip on every reading that no learned model has seen.
+     *
+     * @param previous the band the query was last in, or null
+     * @param next     the band of the new reading, by the rule's ranges
+     * @param value    the new reading
+     */
+    public String settle(String previous, String next, double value) {
+        Double h = hysteresisOf.get(next);
+        if (previous == null || h == null || previous.equals(next) || !bandOf.containsKey(previous)) {
+            return next;
+        }
+        return bandOf.get(previous).distance(value) <= h ? previous : next;
+    }
+
+    /** Whether some rule with {@code hysteresis} gives {@code symbol}. */
+    public boolean hasHysteresis(String symbol) {
+        return hysteresisOf.containsKey(symbol);
     }
 
     /**

@@ -31,12 +31,14 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
      * One message kind of the interface. {@code input} and reply symbols may contain {@code {loc}}.
      * {@code continuous: true} says the replies are bands of a continuous quantity (a battery level): between two
      * readings it crosses every band in between, so the trace must not depend on how often it is read.
+     * {@code hysteresis: h} (continuous rules only) keeps a reading within {@code h} of the previous band in that
+     * band, so a noisy sensor hovering at a boundary does not flip bands, see {@link Abstraction#settle}.
      * {@code carry: true} makes the query's Mealy input carry its previous answer
      * ({@code level_i_after_o_level_medium_six}), see {@link Abstraction#mealyInput}.
      */
     @JsonInclude(JsonInclude.Include.NON_NULL)
     record RuleSpec(String protocol, String command, String input, String description, Boolean continuous,
-                    Boolean carry, List<ReplySpec> replies) {
+                    Boolean carry, Double hysteresis, List<ReplySpec> replies) {
     }
 
     /** One reply symbol, given by exactly one of {@code any}, {@code equals} or {@code range}. */

@@ -177,6 +177,12 @@ final class AbstractionValidator {
         if (Boolean.TRUE.equals(rule.continuous()) && bands.size() != rule.replies().size()) {
             throw new Invalid(at + "/continuous", "a continuous quantity needs every reply to be a 'range' band");
         }
+        if (rule.hysteresis() != null && (!(rule.hysteresis() >= 0) || Double.isInfinite(rule.hysteresis()))) {
+            throw new Invalid(at + "/hysteresis", "hysteresis must be a finite number >= 0, got " + rule.hysteresis());
+        }
+        if (rule.hysteresis() != null && !Boolean.TRUE.equals(rule.continuous())) {
+            throw new Invalid(at + "/hysteresis", "hysteresis applies to a 'continuous' rule only");
+        }
         if (Boolean.FALSE.equals(rule.carry())) {
             throw new Invalid(at + "/carry", "'carry' can only be true (leave it out otherwise)");
         }

@@ -20,6 +20,14 @@ record Band(double lower, boolean lowerClosed, double upper, boolean upperClosed
         return lower > upper || (lower == upper && !(lowerClosed && upperClosed));
     }
 
+    /** How far {@code v} lies outside this band; 0 inside. */
+    double distance(double v) {
+        if (contains(v)) {
+            return 0;
+        }
+        return v <= lower ? lower - v : v - upper;
+    }
+
     boolean contains(double v) {
         return (lowerClosed ? v >= lower : v > lower) && (upperClosed ? v <= upper : v < upper);
     }

@@ -21,6 +21,7 @@ public final class TracePipeline {
     private final PipelineListener listener;
     private final Compactor compactor;
     private final CarryEncoder encoder;
+    private final Hysteresis hysteresis;
     private final Map<String, Long> unmapped = new TreeMap<>();
     private LogRecord current;
     private long records;
@@ -30,6 +31,7 @@ public final class TracePipeline {
         this.abstraction = abstraction;
         this.listener = listener;
         this.encoder = new CarryEncoder(abstraction);
+        this.hysteresis = new Hysteresis(abstraction);
         this.compactor = new Compactor(pair -> listener.pair(encoder.encode(pair), current), abstraction::bandPath);
     }
 
@@ -41,7 +43,7 @@ public final class TracePipeline {
         Classification c = abstraction.classify(record);
         if (c instanceof Classification.Mapped m) {
             interfaceRecords++;
-            compactor.push(m.event());
+            compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;
             unmapped.merge(u.key(), 1L, Long::sum);
@@ -57,6 +59,7 @@ public final class TracePipeline {
     public void reset() {
         compactor.reset();
         encoder.reset();
+        hysteresis.reset();
         unmapped.clear();
         current = null;
         records = 0;
