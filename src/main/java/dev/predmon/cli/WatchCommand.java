@@ -108,18 +108,7 @@ final class WatchCommand implements Callable<Integer> {
 
     private void summary(PrintWriter out, PrintWriter err, PredictiveMonitor m) {
         Map<String, Long> unmapped = m.pipeline().unmapped();
-        long mapped = m.pipeline().interfaceRecords() - unmapped.values().stream().mapToLong(Long::longValue).sum();
-        if (mapped == 0) {
-            // Nothing was monitored: "no warning" would be silently wrong, so this one line says why instead.
-            err.println(log + ": warning: no skill-component interface message the abstraction maps in "
-                    + m.pipeline().records() + " records" + (unmapped.isEmpty() ? "" : " (only "
-                    + String.join(", ", unmapped.keySet().stream().limit(3).toList())
-                    + (unmapped.size() > 3 ? ", ..." : "") + ")")
-                    + "; is this a YARP monitor log of the case study, and the right --abstraction?");
-        } else {
-            unmapped.forEach((k, n) -> err.println(log + ": warning: " + n + " interface message(s) no rule maps: " + k));
-        }
-        err.flush();
+        Problems.interfaceMessages(err, log, m.pipeline().records(), m.pipeline().interfaceRecords(), unmapped);
         if (json) {
             Map<String, Object> o = new LinkedHashMap<>();
             o.put("event", "end");

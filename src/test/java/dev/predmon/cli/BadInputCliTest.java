@@ -109,6 +109,18 @@ class BadInputCliTest {
         assertTrue(r.err().contains("in 2 records") && r.err().contains("Camera/grab"), r.err());
     }
 
+    /** classify and verify report it the same way as watch: one line, not a line per unmapped kind. */
+    @Test
+    void classifyAndVerifySayTheSameOfALogOfAnotherProtocol() throws Exception {
+        Path log = Files.writeString(tmp.resolve("other.log"), new Records()
+                .call("/camera/client", "/camera/server", "Camera", "grab", "", "frame").text());
+        Cli classify = Cli.run("classify", "--log", log.toString(), "--models", models.toString());
+        oneLine(classify, log, "no skill-component interface message");
+        assertTrue(classify.err().contains("Camera/grab"), classify.err());
+        Cli verify = Cli.run("verify", "--log", log.toString(), "--scenario", "depleted", "--models", models.toString());
+        oneLine(verify, log, "no skill-component interface message");
+    }
+
     @Test
     void anEmptyLogSaysItHasNoInterfaceMessage() throws Exception {
         Path log = Files.writeString(tmp.resolve("empty.log"), "");
