@@ -149,12 +149,9 @@ public final class Abstraction {
                 List<String> ascending = r.replies().stream()
                         .sorted(java.util.Comparator.comparing(p -> Band.of(p.range()), Band.BY_LOWER))
                         .map(ReplySpec::symbol).distinct().toList();
-                for (String template : ascending) {
-                    for (String loc : locations.isEmpty() ? List.of("") : List.copyOf(new TreeSet<>(locations.values()))) {
-                        List<String> concrete = ascending.stream()
-                                .map(t -> t.replace(AbstractionValidator.LOC, loc)).toList();
-                        ordered.put(template.replace(AbstractionValidator.LOC, loc), concrete);
-                    }
+                for (String loc : abbreviations()) {
+                    List<String> family = ascending.stream().map(t -> t.replace(AbstractionValidator.LOC, loc)).toList();
+                    family.forEach(band -> ordered.put(band, family));
                 }
             }
         }
@@ -177,7 +174,7 @@ public final class Abstraction {
         Set<String> mealy = new TreeSet<>(inputs);
         for (RuleSpec r : spec.rules()) {
             if (Boolean.TRUE.equals(r.carry())) {
-                for (String loc : locations.isEmpty() ? List.of("") : List.copyOf(new TreeSet<>(locations.values()))) {
+                for (String loc : abbreviations()) {
                     String in = r.input().replace(AbstractionValidator.LOC, loc);
                     carriedInputs.add(in);
                     for (ReplySpec p : r.replies()) {
@@ -265,6 +262,11 @@ public final class Abstraction {
 
     private static String carriedSymbol(String input, String previousAnswer) {
         return input + "_after_" + previousAnswer;
+    }
+
+    /** The location abbreviations, sorted, or one empty one when there are none (for templates without {@code {loc}}). */
+    private List<String> abbreviations() {
+        return locations.isEmpty() ? List.of("") : List.copyOf(new TreeSet<>(locations.values()));
     }
 
     private List<String> expand(String template) {
