@@ -1,0 +1,178 @@
+package dev.predmon.parse;
+
+import java.nio.charset.StandardCharsets;
+import java.util.function.Consumer;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * yarplogger's column layout, copied or exported: an entry starts with {@code <time> <LEVEL> <text>}, columns
+ * separated by tabs or spaces. {@code <time>} is relative ({@code 71.818968}) or epoch seconds; the export layout
+ * {@code <yarprun time> <local time> <LEVEL>} (level in angle brackets) is accepted too, taking the local time. A
+ * record is an entry whose text is a record header ({@code <Kind> intercepted:} or {@code Message received:});
+ * any other entry (the INFO raw bottle the monitor prints before each record, other components' messages) is
+ * skipped. Times are seconds.
+ */
+final class ColumnsLayout extends RecordLayout {
+
+    private static final String NUMBER = "[-+]?(?:\\d+(?:\\.\\d*)?|\\.\\d+)(?:[eE][-+]?\\d+)?";
+    static final String HEADER_TEXT =
+            "(?:(Command|Reply|Tick|Unknown)[ \\t]+intercepted|Message[ \\t]+received)[ \\t]*:[ \\t]*";
+    /** A line whose text column is a record header; the times are checked afterwards to report bad ones. */
+    static final Pattern HEADER = Pattern.compile(
+            "\\s*(\\S+)(?:[ \\t]+(\\S+))?[ \\t]+<?([A-Z]+)>?[ \\t]+" + HEADER_TEXT);
+    /** A line that merely ends like a header, to catch headers without time or level. */
+    private static final Pattern HEADER_SUFFIX = Pattern.compile("(?:^|\\s)" + HEADER_TEXT + "$");
+    /** The first line of any log entry (record or not). */
+    private static final Pattern ENTRY = Pattern.compile(
+            "\\s*" + NUMBER + "(?:[ \\t]+" + NUMBER + ")?[ \\t]+<?(?:TRACE|DEBUG|INFO|WARNING|ERROR|FATAL)>?(?:[ \\t].*)?");
+    static final Pattern TIME = Pattern.compile(NUMBER);
+
+    ColumnsLayout(Consumer<LogRecord> records, Consumer<ParseProblem> problems) {
+        super(records, problems);
+    }
+
+    @Override
+    LogRecord build(RecordDraft done) {
+        return done.build();
+    }
+
+    @Override
+    public void line(String text, long number) {
+        lineNumber = number;
+        if (draft != null) {
+            if (offerFieldLine(text)) {
+                return;
+            }
+            notAField(text);
+        }
+        if (text.indexOf("intercepted") < 0 && text.indexOf("received") < 0) {
+            return; // cannot be a record header, well-formed or not: another entry or its continuation
+        }
+        Matcher header = HEADER.matcher(text);
+        if (header.matches()) {
+            startRecord(header);
+            return;
+        }
+        Matcher suffix = HEADER_SUFFIX.matcher(text);
+        if (suffix.find() && !ENTRY.matcher(text).matches()) {
+            // Another component's entry may end like a header; a line that is no entry at all is a broken one.
+            error(number, "malformed record header: expected '<time> <LEVEL> " + suffix.group().strip()
+                    + "', got " + quote(text));
+        }
+        // Anything else is another entry or its continuation: not a record, skipped.
+    }
+
+    private void startRecord(Matcher header) {
+        String first = header.group(1);
+        String second = header.group(2);
+        if (!TIME.matcher(first).matches() || (second != null && !TIME.matcher(second).matches())) {
+            error(lineNumber, "record header with a non-numeric time "
+                    + quote(second == null ? first : first + " " + second) + ": expected seconds such as 71.818968");
+            return;
+        }
+        double time = Double.parseDouble(second == null ? first : second);
+        draft = new RecordDraft(lineNumber, time, header.group(3), header.group(4));
+    }
+
+    /**
+     * A well-formed ASCII field line of the record in progress is taken straight from the bytes; outside a record, a
+     * plain ASCII line that cannot start one (no {@code intercepted}, {@code received} or {@code <}) is skipped
+     * undecoded, and a header of the usual shape, {@code <time> [<time>] <LEVEL> <Kind> intercepted:}, starts a
+     * record without the header regex. Anything else goes the general way.
+     */
+    @Override
+    public boolean fastLine(byte[] b, int offset, int len, long number) {
+        lineNumber = number;
+        if (draft != null) {
+            return fastField(b, offset, len);
+        }
+        int end = offset + len;
+        for (int k = offset; k < end; k++) {
+            if (b[k] < 0 || b[k] == '<') {
+                return false;
+            }
+        }
+        return !mayBeHeader(b, offset, end) || fastHeader(b, offset, end);
+    }
+
+    /** A header of the usual shape, tokens separated by blanks and tabs; false for anything else. */
+    private boolean fastHeader(byte[] b, int offset, int end) {
+        int[] starts = new int[6];
+        int[] ends = new int[6];
+        int n = 0;
+        int i = offset;
+        while (i < end && isRegexBlank((char) b[i])) {
+            i++;
+        }
+        while (i < end) {
+            if (n == starts.length) {
+                return false;
+            }
+            starts[n] = i;
+            while (i < end && b[i] != ' ' && b[i] != '\t') {
+                i++;
+            }
+            ends[n++] = i;
+            while (i < end && (b[i] == ' ' || b[i] == '\t')) {
+                i++;
+            }
+        }
+        if ((n != 4 && n != 5) || !tokenIs(b, starts[n - 1], ends[n - 1], "intercepted:")) {
+            return false;
+        }
+        RecordKind kind = kindOf(b, starts[n - 2], ends[n - 2]);
+        int levelAt = n - 3;
+        if (kind == null || !upperLetters(b, starts[levelAt], ends[levelAt])
+                || !plainNumber(b, starts[0], ends[0]) || (n == 5 && !plainNumber(b, starts[1], ends[1]))) {
+            return false;
+        }
+        int t = n == 5 ? 1 : 0;
+        double time = Double.parseDouble(new String(b, starts[t], ends[t] - starts[t], StandardCharsets.ISO_8859_1));
+        draft = new RecordDraft(lineNumber, time, strings.of(b, starts[levelAt], ends[levelAt] - starts[levelAt]), kind);
+        return true;
+    }
+
+    private static boolean tokenIs(byte[] b, int start, int end, String word) {
+        return end - start == word.length() && startsWith(b, start, end, word);
+    }
+
+    private static RecordKind kindOf(byte[] b, int start, int end) {
+        if (tokenIs(b, start, end, "Command")) {
+            return RecordKind.COMMAND;
+        }
+        if (tokenIs(b, start, end, "Reply")) {
+            return RecordKind.REPLY;
+        }
+        if (tokenIs(b, start, end, "Tick")) {
+            return RecordKind.TICK;
+        }
+        return tokenIs(b, start, end, "Unknown") ? RecordKind.UNKNOWN : null;
+    }
+
+    private static boolean upperLetters(byte[] b, int start, int end) {
+        for (int i = start; i < end; i++) {
+            if (b[i] < 'A' || b[i] > 'Z') {
+                return false;
+            }
+        }
+        return end > start;
+    }
+
+    /** Digits with at most one '.', an optional leading '-': what a log's time column holds. */
+    private static boolean plainNumber(byte[] b, int start, int end) {
+        int i = start < end && b[start] == '-' ? start + 1 : start;
+        boolean digit = false;
+        boolean dot = false;
+        for (; i < end; i++) {
+            if (b[i] >= '0' && b[i] <= '9') {
+                digit = true;
+            } else if (b[i] == '.' && !dot) {
+                dot = true;
+            } else {
+                return false;
+            }
+        }
+        return digit;
+    }
+}

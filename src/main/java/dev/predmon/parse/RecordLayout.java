@@ -1,0 +1,181 @@
+package dev.predmon.parse;
+
+import java.util.Objects;
+import java.util.function.Consumer;
+
+/**
+ * What every layout shares: the record in progress ({@link RecordDraft}), field lines ({@code <Label> : <value>},
+ * any spacing, value trimmed), the fast path for well-formed ASCII field lines, and how broken records are
+ * reported. A layout adds how its header lines look and where a record's time comes from
+ * ({@link #emit(RecordDraft)}).
+ */
+abstract class RecordLayout implements LogLayout {
+
+    /** Longest quotation of an input line in a problem message. */
+    private static final int QUOTE_LIMIT = 80;
+
+    private final Consumer<LogRecord> records;
+    private final Consumer<ParseProblem> problems;
+    final AsciiStrings strings = new AsciiStrings();
+    RecordDraft draft;
+    /** The number of the line being read. */
+    long lineNumber;
+
+    RecordLayout(Consumer<LogRecord> records, Consumer<ParseProblem> problems) {
+        this.records = Objects.requireNonNull(records, "records");
+        this.problems = Objects.requireNonNull(problems, "problems");
+    }
+
+    /** The complete record of {@code done}, with its time. */
+    abstract LogRecord build(RecordDraft done);
+
+    @Override
+    public void overlongLine(long number, long bytes) {
+        lineNumber = number;
+        String lost = draft == null ? "" : "; dropped the record started at line " + draft.line;
+        draft = null;
+        error(number, "line of " + bytes + " bytes is longer than the limit and was skipped" + lost);
+    }
+
+    @Override
+    public void endOfInput() {
+        if (draft != null) {
+            problems.accept(new ParseProblem(draft.line, ParseProblem.Severity.WARNING,
+                    "log ends in the middle of a record started at line " + draft.line + ": missing "
+                            + draft.expected()));
+            draft = null;
+        }
+    }
+
+    /**
+     * Offers {@code text} as a field line of the record in progress if it is one ({@code FIELD}: blanks, a label of
+     * letters, blanks or tabs, a colon, the value); returns whether it was one (a field line with an unexpected
+     * label is reported and breaks the record). Hand-written because six of every seven lines of a log are
+     * field lines and a regex was the parser's main cost.
+     */
+    final boolean offerFieldLine(String text) {
+        int n = text.length();
+        int i = 0;
+        while (i < n && isRegexBlank(text.charAt(i))) {
+            i++;
+        }
+        int labelStart = i;
+        while (i < n && isAsciiLetter(text.charAt(i))) {
+            i++;
+        }
+        int labelEnd = i;
+        while (i < n && (text.charAt(i) == ' ' || text.charAt(i) == '\t')) {
+            i++;
+        }
+        if (labelEnd == labelStart || i == n || text.charAt(i) != ':') {
+            return false;
+        }
+        offerField(text.substring(labelStart, labelEnd), text.substring(i + 1));
+        return true;
+    }
+
+    /** The record in progress is broken by {@code text}, which is not its next field line. */
+    final void notAField(String text) {
+        brokenRecord("expected " + draft.expected() + " line of the record started at line " + draft.line
+                + ", got " + quote(text));
+    }
+
+    final void offerField(String label, String value) {
+        if (!draft.offer(label, value.trim())) {
+            brokenRecord("expected " + draft.expected() + " line of the record started at line " + draft.line
+                    + ", got " + quote(label + " :" + value));
+        } else if (draft.complete()) {
+            RecordDraft done = draft;
+            draft = null;
+            records.accept(build(done));
+        }
+    }
+
+    /**
+     * The fast path for a field line of the record in progress: a well-formed ASCII field line with the label
+     * expected next is taken straight from the bytes (decoding each into a string, cutting label and value out of
+     * it and trimming the value was most of the parser's time). False, having done nothing, for anything else.
+     */
+    final boolean fastField(byte[] b, int offset, int len) {
+        int end = offset + len;
+        int i = offset;
+        while (i < end && isRegexBlank((char) b[i])) {
+            i++;
+        }
+        int labelStart = i;
+        while (i < end && isAsciiLetter((char) b[i])) {
+            i++;
+        }
+        int labelEnd = i;
+        while (i < end && (b[i] == ' ' || b[i] == '\t')) {
+            i++;
+        }
+        if (labelEnd == labelStart || i == end || b[i] != ':') {
+            return false;
+        }
+        int valueStart = i + 1;
+        for (int k = valueStart; k < end; k++) {
+            if (b[k] < 0 || b[k] == '<' || b[k] == 0x1b) {
+                return false; // non-ASCII, a save-file marker or a colour code: the general path decides
+            }
+        }
+        int valueEnd = end;
+        while (valueStart < valueEnd && (b[valueStart] & 0xff) <= ' ') {
+            valueStart++;
+        }
+        while (valueEnd > valueStart && (b[valueEnd - 1] & 0xff) <= ' ') {
+            valueEnd--;
+        }
+        if (!draft.expects(b, labelStart, labelEnd - labelStart)) {
+            return false;
+        }
+        offerField(draft.expectedLabel(), strings.of(b, valueStart, valueEnd - valueStart));
+        return true;
+    }
+
+    final void brokenRecord(String message) {
+        draft = null;
+        error(lineNumber, message);
+    }
+
+    final void error(long line, String message) {
+        problems.accept(new ParseProblem(line, ParseProblem.Severity.ERROR, message));
+    }
+
+    /** Exactly the characters of the regex class {@code \\s}. */
+    static boolean isRegexBlank(char c) {
+        return c == ' ' || c == '\t' || c == '\n' || c == '\u000B' || c == '\f' || c == '\r';
+    }
+
+    static boolean isAsciiLetter(char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    }
+
+    static boolean startsWith(byte[] b, int at, int end, String word) {
+        if (end - at < word.length()) {
+            return false;
+        }
+        for (int i = 0; i < word.length(); i++) {
+            if (b[at + i] != word.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Whether the bytes contain {@code intercepted} or {@code received}: only such a line can start a record. */
+    static boolean mayBeHeader(byte[] b, int offset, int end) {
+        for (int k = offset; k < end; k++) {
+            byte c = b[k];
+            if ((c == 'i' || c == 'r') && (startsWith(b, k, end, "intercepted") || startsWith(b, k, end, "received"))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    static String quote(String text) {
+        String trimmed = text.strip();
+        return "'" + (trimmed.length() > QUOTE_LIMIT ? trimmed.substring(0, QUOTE_LIMIT) + "..." : trimmed) + "'";
+    }
+}
