@@ -115,14 +115,17 @@ final class EvaluateCommand implements Callable<Integer> {
                 ? e.folds() + "-fold cross-validation, threshold " + e.threshold() + ", abstraction '" + e.abstraction() + "'"
                 : "learned on --logs, judged --test, threshold " + e.threshold() + ", abstraction '" + e.abstraction() + "'");
         out.println();
-        String head = "%-14s %-8s %5s %6s %5s %6s %6s %5s %6s %8s  %-28s %-28s%n";
+        String head = "%-14s %-8s %5s %6s %5s %6s %6s %5s %6s %8s %6s  %-34s %-28s%n";
         out.printf(Locale.ROOT, head, "scenario", "kind", "runs", "warned", "hits", "false", "missed", "late",
-                "no-vio", "no-match", "lead s: median [min..max]", "battery@warning: median [min..max]");
+                "no-vio", "no-match", "sudden", "lead: median [min..max]", "battery@warning: median [min..max]");
         for (ScenarioSummary s : e.scenarios()) {
             out.printf(Locale.ROOT, head, s.scenario(), s.faulty() ? "faulty" : "nominal", s.runs(), s.warned(),
-                    s.hits(), s.falseAlarms(), s.missed(), s.late(), s.noViolation(), s.noMatch(), stats(s.lead()),
-                    stats(s.batteryAtWarning()));
+                    s.hits(), s.falseAlarms(), s.missed(), s.late(), s.noViolation(), s.noMatch(), s.sudden(),
+                    s.lead().n() == 0 ? "-" : stats(s.lead()) + " " + s.leadUnit(), stats(s.batteryAtWarning()));
         }
+        out.println();
+        out.println("sudden: runs whose violation came in one reading from more than " + RunResult.SUDDEN_MARGIN
+                + " points above the threshold (the violation is the jump itself: no monitor can see it coming)");
         Confusion c = e.confusion();
         out.println();
         out.printf(Locale.ROOT, "confusion (actual x predicted): faulty&warned-in-time %d, faulty&missed %d, "
@@ -130,13 +133,14 @@ final class EvaluateCommand implements Callable<Integer> {
                 c.truePositives(), c.falseNegatives(), c.falsePositives(), c.trueNegatives(), c.unscored());
         out.printf(Locale.ROOT, "recall %s, false-alarm rate %s%n", percent(c.recall()), percent(c.falseAlarmRate()));
         out.println();
-        out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s  %s%n", "scenario", "log", "fold", "verdict",
-                "warning", "violation", "lead", "eliminated (model@line)");
+        out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s  %s%n", "scenario", "log", "fold", "verdict",
+                "warning", "violation", "lead", "unit", "eliminated (model@line)");
         for (RunResult r : e.runs()) {
             String elim = r.eliminations().stream().map(x -> x.model() + "@" + x.line()).collect(Collectors.joining(" "));
-            out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s  %s%s%n", r.scenario(),
+            out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s  %s%s%s%n", r.scenario(),
                     Path.of(r.log()).getFileName(), r.fold() < 0 ? "-" : Integer.toString(r.fold()), r.verdict().id(),
-                    num(r.warningTime()), num(r.violationTime()), num(r.lead()), elim, r.noMatch() ? " [no-match]" : "");
+                    num(r.warningTime()), num(r.violationTime()), num(r.lead()), r.unit(), elim,
+                    r.noMatch() ? " [no-match]" : "", r.sudden() ? " [sudden violation]" : "");
         }
     }
 

@@ -3,6 +3,7 @@ package dev.predmon.cli;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.parse.Clock;
 
 import java.io.PrintWriter;
 import java.util.LinkedHashMap;
@@ -50,6 +51,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         if (e instanceof MonitorEvent.Warning w) {
             o.put("event", "warning");
             o.put("time", w.time());
+            o.put("unit", w.clock().unit());
             o.put("line", w.line());
             o.put("scenario", w.scenarios().get(0));
             o.put("scenarios", w.scenarios());
@@ -58,12 +60,15 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         } else if (e instanceof MonitorEvent.Violation v) {
             o.put("event", "violation");
             o.put("time", v.time());
+            o.put("unit", v.clock().unit());
             o.put("line", v.line());
             o.put("property", v.property());
             o.put("battery", v.value());
+            o.put("before", v.before());
         } else if (e instanceof MonitorEvent.Eliminated x) {
             o.put("event", "eliminated");
             o.put("time", x.time());
+            o.put("unit", x.clock().unit());
             o.put("line", x.line());
             o.put("model", x.model());
             o.put("scenario", x.scenario());
@@ -72,6 +77,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         } else if (e instanceof MonitorEvent.NoMatch n) {
             o.put("event", "no-match");
             o.put("time", n.time());
+            o.put("unit", n.clock().unit());
             o.put("line", n.line());
         } else if (e instanceof MonitorEvent.Restarted r) {
             o.put("event", "restarted");
@@ -91,30 +97,42 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     String toText(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w) {
             warning = w;
-            return String.format(Locale.ROOT, "t=%.3f line %d: WARNING: the run can only be faulty scenario %s "
-                    + "(every nominal model eliminated); battery %s", w.time(), w.line(),
+            return String.format(Locale.ROOT, "%s line %d: WARNING: the run can only be faulty scenario %s "
+                    + "(every nominal model eliminated); battery %s", at(w.time(), w.clock()), w.line(),
                     String.join(", ", w.scenarios()), battery(w.battery()));
         }
         if (e instanceof MonitorEvent.Violation v) {
             String lead = warning == null ? "no warning came before it"
-                    : String.format(Locale.ROOT, "lead of the warning: %.3f s, battery %s at the warning vs %s now",
-                    v.time() - warning.time(), battery(warning.battery()), battery(v.value()));
-            return String.format(Locale.ROOT, "t=%.3f line %d: VIOLATION of '%s': %s; %s", v.time(), v.line(),
+                    : String.format(Locale.ROOT, "lead of the warning: %s, battery %s at the warning vs %s now",
+                    span(v.time() - warning.time(), v.clock()), battery(warning.battery()), battery(v.value()));
+            return String.format(Locale.ROOT, "%s line %d: VIOLATION of '%s': %s; %s", at(v.time(), v.clock()), v.line(),
                     v.property(), battery(v.value()), lead);
         }
         if (e instanceof MonitorEvent.Eliminated x) {
-            return verbose ? String.format(Locale.ROOT, "t=%.3f line %d: model %s (%s) eliminated: %s", x.time(),
+            return verbose ? String.format(Locale.ROOT, "%s line %d: model %s (%s) eliminated: %s", at(x.time(), x.clock()),
                     x.line(), x.model(), x.faulty() ? "faulty" : "nominal", x.reason()) : null;
         }
         if (e instanceof MonitorEvent.NoMatch n) {
-            return String.format(Locale.ROOT, "t=%.3f line %d: no learned scenario matches this run any more",
-                    n.time(), n.line());
+            return String.format(Locale.ROOT, "%s line %d: no learned scenario matches this run any more",
+                    at(n.time(), n.clock()), n.line());
         }
         if (e instanceof MonitorEvent.Restarted r) {
             warning = null;
             return "log " + r.reason() + ": monitoring starts over";
         }
         return null;
+    }
+
+    /** When an event happened: {@code t=71.819} in seconds, {@code tick 188} in a log without time stamps. */
+    static String at(double time, Clock clock) {
+        return clock == Clock.TICKS ? String.format(Locale.ROOT, "tick %.0f", time)
+                : String.format(Locale.ROOT, "t=%.3f", time);
+    }
+
+    /** A duration with its unit: {@code 5.026 s} or {@code 48 ticks}. */
+    static String span(double amount, Clock clock) {
+        return clock == Clock.TICKS ? String.format(Locale.ROOT, "%.0f ticks", amount)
+                : String.format(Locale.ROOT, "%.3f s", amount);
     }
 
     private static String battery(Double b) {

@@ -118,6 +118,7 @@ final class WatchCommand implements Callable<Integer> {
             o.put("violation", m.violation().isPresent());
             o.put("lead", m.warning().isPresent() && m.violation().isPresent()
                     ? m.violation().get().time() - m.warning().get().time() : null);
+            o.put("unit", m.clock().unit());
             o.put("unmapped", unmapped);
             out.println(EventPrinter.write(o));
         } else {

@@ -83,7 +83,7 @@ public final class HtmlReport {
     private static void summary(StringBuilder h, Evaluation e) {
         h.append("<h2>Summary</h2>\n<table><tr><th class=l>scenario</th><th class=l>kind</th><th>runs</th>"
                 + "<th>warned</th><th>hits</th><th>false alarms</th><th>missed</th><th>of which late</th>"
-                + "<th>no violation</th><th>no match</th><th>lead s: median [min..max]</th>"
+                + "<th>no violation</th><th>no match</th><th>sudden violations</th><th>lead: median [min..max]</th>"
                 + "<th>battery at warning: median [min..max]</th></tr>\n");
         for (ScenarioSummary s : e.scenarios()) {
             h.append("<tr><td class=l>").append(esc(s.scenario())).append("</td><td class=l>")
@@ -92,8 +92,9 @@ public final class HtmlReport {
                     s.noViolation(), s.noMatch()}) {
                 h.append("<td>").append(v).append("</td>");
             }
-            h.append("<td>").append(stats(s.lead())).append("</td><td>").append(stats(s.batteryAtWarning()))
-                    .append("</td></tr>\n");
+            h.append("<td>").append(s.sudden()).append("</td><td>")
+                    .append(s.lead().n() == 0 ? "-" : stats(s.lead()) + " " + s.leadUnit()).append("</td><td>")
+                    .append(stats(s.batteryAtWarning())).append("</td></tr>\n");
         }
         h.append("</table>\n<p>Missed: a faulty run without a warning strictly before its violation (late warnings "
                 + "included). No violation: a faulty run whose log ends before the property is violated. No match: "
@@ -124,7 +125,8 @@ public final class HtmlReport {
         double max = java.util.Arrays.stream(leads).max().orElse(0);
         d.addSeries("lead", leads, Math.max(1, Math.min(20, leads.length)), min, max > min ? max : min + 1);
         JFreeChart chart = ChartFactory.createHistogram("Lead of the warning over the violation (" + leads.length
-                + " hits)", "lead (s)", "runs", d, PlotOrientation.VERTICAL, false, false, false);
+                + " hits)", "lead (" + String.join(", ", e.runs().stream().filter(r -> r.lead() != null)
+                .map(RunResult::unit).distinct().sorted().toList()) + ")", "runs", d, PlotOrientation.VERTICAL, false, false, false);
         chart.setBackgroundPaint(Color.WHITE);
         h.append(svg(chart, 700, 320, "lead")).append('\n');
     }
@@ -154,7 +156,7 @@ public final class HtmlReport {
                 s.add(t.times()[i], t.values()[i]);
             }
             String title = r.scenario() + " / " + Path.of(r.log()).getFileName() + ": " + r.verdict().id()
-                    + (r.lead() != null ? String.format(Locale.ROOT, ", lead %.1f s", r.lead()) : "");
+                    + (r.lead() != null ? String.format(Locale.ROOT, ", lead %.1f %s", r.lead(), r.unit()) : "");
             JFreeChart chart = ChartFactory.createXYLineChart(title, "time (s)", rule.command(),
                     new XYSeriesCollection(s), PlotOrientation.VERTICAL, false, false, false);
             chart.setBackgroundPaint(Color.WHITE);

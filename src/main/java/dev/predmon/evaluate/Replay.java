@@ -21,6 +21,12 @@ public final class Replay {
     private Replay() {
     }
 
+    /** Whether the reading before the violation was more than {@link RunResult#SUDDEN_MARGIN} above the threshold. */
+    private static boolean sudden(MonitorEvent.Violation v, Abstraction abstraction) {
+        return v.before() != null && abstraction.safety()
+                .map(rule -> v.before() > rule.below() + RunResult.SUDDEN_MARGIN).orElse(false);
+    }
+
     /**
      * Replays {@code log} against {@code models}.
      *
@@ -58,6 +64,6 @@ public final class Replay {
                 warning == null ? null : warning.line(), warning == null ? List.of() : warning.scenarios(),
                 warning == null ? null : warning.battery(), violationTime, lead, noMatch != null,
                 noMatch == null ? null : noMatch.time(), monitor.pipeline().records(), monitor.pairs(), problems[0],
-                List.copyOf(eliminations));
+                List.copyOf(eliminations), monitor.clock().unit(), violation != null && sudden(violation, abstraction));
     }
 }

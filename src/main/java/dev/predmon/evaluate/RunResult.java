@@ -22,11 +22,21 @@ import java.util.List;
  * @param pairs            compacted pairs matched
  * @param problems         parse problems in the log
  * @param eliminations     every model's elimination, in log order
+ * @param unit             what the times and the lead count: {@code s}, or {@code ticks} in a log without time stamps
+ * @param sudden           whether the violation came in one reading from more than {@link #SUDDEN_MARGIN} points above
+ *                         the threshold (the battery set by hand from 65% to 10%, say): the violation is the jump itself,
+ *                         and no monitor that reads the battery can see it coming. False without a violation.
  */
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
-                        List<Elimination> eliminations) {
+                        List<Elimination> eliminations, String unit, boolean sudden) {
+
+    /**
+     * How far above the safety threshold the reading before a violation may be for the violation to count as
+     * approached rather than sudden, in the property's unit (percentage points): one battery band of Section 5.2.
+     */
+    public static final double SUDDEN_MARGIN = 5.0;
 
     /**
      * A model stopped matching.

@@ -2,6 +2,7 @@ package dev.predmon.evaluate;
 
 import java.util.List;
 import java.util.Objects;
+import java.util.TreeSet;
 
 /**
  * The counts of one scenario's test runs.
@@ -16,11 +17,15 @@ import java.util.Objects;
  * @param late               of {@code missed}, those warned at or after the violation
  * @param noViolation        faulty runs whose log ends before any violation (neither hit nor missed)
  * @param noMatch            runs where at some point no model matched (unknown behaviour)
- * @param lead               lead of the hits, in the log's time unit (seconds)
+ * @param lead               lead of the hits, in {@code leadUnit}
  * @param batteryAtWarning   battery level at the warning, over the hits
+ * @param sudden             runs whose violation was sudden ({@link RunResult#sudden()}): the jump itself
+ * @param suddenHits         of {@code hits}, those with a sudden violation
+ * @param leadUnit           what the lead counts ({@code s} or {@code ticks}; {@code s, ticks} when runs differ)
  */
 public record ScenarioSummary(String scenario, boolean faulty, int runs, int warned, int hits, int falseAlarms,
-                              int missed, int late, int noViolation, int noMatch, Stats lead, Stats batteryAtWarning) {
+                              int missed, int late, int noViolation, int noMatch, Stats lead, Stats batteryAtWarning,
+                              int sudden, int suddenHits, String leadUnit) {
 
     /** Summarises the runs of one scenario. */
     public static ScenarioSummary of(String scenario, boolean faulty, List<RunResult> runs) {
@@ -31,7 +36,11 @@ public record ScenarioSummary(String scenario, boolean faulty, int runs, int war
         int late = 0;
         int noViolation = 0;
         int noMatch = 0;
+        int sudden = 0;
+        int suddenHits = 0;
         for (RunResult r : runs) {
+            sudden += r.sudden() ? 1 : 0;
+            suddenHits += r.sudden() && r.verdict() == Verdict.WARNED_BEFORE_VIOLATION ? 1 : 0;
             Verdict v = r.verdict();
             warned += v.warned() ? 1 : 0;
             hits += v == Verdict.WARNED_BEFORE_VIOLATION ? 1 : 0;
@@ -44,6 +53,7 @@ public record ScenarioSummary(String scenario, boolean faulty, int runs, int war
         List<RunResult> hit = runs.stream().filter(r -> r.verdict() == Verdict.WARNED_BEFORE_VIOLATION).toList();
         return new ScenarioSummary(scenario, faulty, runs.size(), warned, hits, falseAlarms, missed, late, noViolation,
                 noMatch, Stats.of(hit.stream().map(RunResult::lead).toList()),
-                Stats.of(hit.stream().map(RunResult::batteryAtWarning).filter(Objects::nonNull).toList()));
+                Stats.of(hit.stream().map(RunResult::batteryAtWarning).filter(Objects::nonNull).toList()),
+                sudden, suddenHits, String.join(", ", new TreeSet<>(runs.stream().map(RunResult::unit).toList())));
     }
 }

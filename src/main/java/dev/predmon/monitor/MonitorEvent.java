@@ -1,8 +1,13 @@
 package dev.predmon.monitor;
 
+import dev.predmon.parse.Clock;
+
 import java.util.List;
 
-/** What the predictive monitor reports, in log order. Times are the log's time stamps. */
+/**
+ * What the predictive monitor reports, in log order. Times are the log's own: seconds where it has time stamps, else
+ * the tree's tick number; each event's {@code clock} says which.
+ */
 public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.Violation, MonitorEvent.Eliminated,
         MonitorEvent.NoMatch, MonitorEvent.Restarted {
 
@@ -14,8 +19,10 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param scenarios the faulty scenarios still matching
      * @param battery   the last value seen on the safety property's channel (the battery level), or null
      * @param pairs     compacted query/reply pairs seen so far
+     * @param clock     what {@code time} counts
      */
-    record Warning(double time, long line, List<String> scenarios, Double battery, long pairs) implements MonitorEvent {
+    record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock)
+            implements MonitorEvent {
     }
 
     /**
@@ -25,8 +32,11 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param line     its line
      * @param property the property's name
      * @param value    the violating value (the battery level)
+     * @param before   the value of the reading before it on the same channel, or null when it was the first
+     * @param clock    what {@code time} counts
      */
-    record Violation(double time, long line, String property, double value) implements MonitorEvent {
+    record Violation(double time, long line, String property, double value, Double before, Clock clock)
+            implements MonitorEvent {
     }
 
     /**
@@ -38,13 +48,14 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param scenario its scenario
      * @param faulty   whether that scenario is faulty
      * @param reason   why (expected versus seen)
+     * @param clock    what {@code time} counts
      */
-    record Eliminated(double time, long line, String model, String scenario, boolean faulty, String reason)
-            implements MonitorEvent {
+    record Eliminated(double time, long line, String model, String scenario, boolean faulty, String reason,
+                      Clock clock) implements MonitorEvent {
     }
 
     /** No model matches any more: the run is unlike every learned scenario. */
-    record NoMatch(double time, long line) implements MonitorEvent {
+    record NoMatch(double time, long line, Clock clock) implements MonitorEvent {
     }
 
     /** The log was truncated or replaced; matching starts over. */

@@ -5,6 +5,7 @@ import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
+import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
@@ -39,6 +40,7 @@ public final class PredictiveMonitor implements PipelineListener {
     private MonitorEvent.Violation violation;
     private boolean noMatch;
     private Double battery;
+    private Clock clock = Clock.SECONDS;
     private long pairs;
 
     /**
@@ -78,6 +80,7 @@ public final class PredictiveMonitor implements PipelineListener {
 
     @Override
     public void record(LogRecord record) {
+        clock = record.clock();
         if (safety.isEmpty()) {
             return;
         }
@@ -85,9 +88,11 @@ public final class PredictiveMonitor implements PipelineListener {
         if (Double.isNaN(v)) {
             return;
         }
+        Double before = battery;
         battery = v;
         if (violation == null && safety.get().violatedBy(v)) {
-            violation = new MonitorEvent.Violation(record.time(), record.line(), safety.get().name(), v);
+            violation = new MonitorEvent.Violation(record.time(), record.line(), safety.get().name(), v, before,
+                    record.clock());
             events.accept(violation);
         }
     }
@@ -102,7 +107,7 @@ public final class PredictiveMonitor implements PipelineListener {
             if (!t.pair(pair.input(), pair.output())) {
                 LearnedModel m = t.model();
                 events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
-                        m.faulty(), t.elimination().describe()));
+                        m.faulty(), t.elimination().describe(), trigger.clock()));
             }
         }
         TreeSet<String> faultyAlive = new TreeSet<>();
@@ -117,12 +122,13 @@ public final class PredictiveMonitor implements PipelineListener {
             }
         }
         if (warning == null && !nominalAlive && !faultyAlive.isEmpty()) {
-            warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), List.copyOf(faultyAlive), battery, pairs);
+            warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), List.copyOf(faultyAlive), battery, pairs,
+                    trigger.clock());
             events.accept(warning);
         }
         if (!noMatch && !nominalAlive && faultyAlive.isEmpty()) {
             noMatch = true;
-            events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line()));
+            events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock()));
         }
     }
 
@@ -144,6 +150,11 @@ public final class PredictiveMonitor implements PipelineListener {
     /** Last value on the safety property's channel (the battery level), or null. */
     public Double battery() {
         return battery;
+    }
+
+    /** What the log's times count: seconds, or ticks in a log without time stamps (seconds until a record says). */
+    public Clock clock() {
+        return clock;
     }
 
     /** Compacted pairs matched so far. */
