@@ -51,6 +51,11 @@ public final class LogWatcher implements AutoCloseable {
             }
 
             @Override
+            public void lastLine(byte[] bytes, int offset, int length) {
+                lines.lastLine(bytes, offset, length);
+            }
+
+            @Override
             public void restarted(String reason) {
                 lines.restarted(reason); // reports a record the rotation cut, then starts the parser over
                 monitor.restart(reason);

@@ -21,6 +21,14 @@ public interface LineSink {
     }
 
     /**
+     * The input's last line, which no line terminator ended: the writer may have been stopped in the middle of it.
+     * The default takes it as any other line.
+     */
+    default void lastLine(byte[] bytes, int offset, int length) {
+        line(bytes, offset, length);
+    }
+
+    /**
      * The file was truncated ({@code "truncated"}) or replaced by another one ({@code "replaced"}); the lines
      * that follow come from its beginning. Everything of the old content was delivered before this call.
      */

@@ -42,7 +42,7 @@ final class LineSplitter {
                     deliver(bytes, start, i - start);
                 } else {
                     append(bytes, start, i - start);
-                    deliver();
+                    deliver(false);
                 }
                 start = i + 1;
             }
@@ -55,10 +55,10 @@ final class LineSplitter {
         return partialLength > 0 || overflow > 0;
     }
 
-    /** The input is over: an unterminated last line is still a line and is delivered. */
+    /** The input is over: an unterminated last line is still a line and is delivered, as the last one. */
     void finish() {
         if (hasPartialLine()) {
-            deliver();
+            deliver(true);
         }
     }
 
@@ -87,7 +87,7 @@ final class LineSplitter {
         partialLength += length;
     }
 
-    private void deliver() {
+    private void deliver(boolean last) {
         if (overflow > 0) {
             long bytes = overflow;
             overflow = 0;
@@ -96,7 +96,11 @@ final class LineSplitter {
         }
         int length = partialLength;
         partialLength = 0;
-        deliver(partial, 0, length);
+        if (last) {
+            sink.lastLine(partial, 0, length > 0 && partial[length - 1] == '\r' ? length - 1 : length);
+        } else {
+            deliver(partial, 0, length);
+        }
         shrink();
     }
 

@@ -76,6 +76,19 @@ public final class LogParser {
         acceptLine(new String(b, offset, len, StandardCharsets.UTF_8));
     }
 
+    /**
+     * The input's last line, which no terminator ended: the capture may have stopped in the middle of it. It is read
+     * as any line, except that one that cannot continue the record in progress is taken as the cut rather than as
+     * a broken record: {@link #endOfInput()} then reports the record once, as cut off.
+     */
+    public void acceptLastLine(String line) {
+        if (layout instanceof RecordLayout grammar && grammar.cutBy(line)) {
+            lineNumber++;
+            return;
+        }
+        acceptLine(line);
+    }
+
     /** Decides the layout if {@code text} shows it; whether it did. */
     private boolean detect(String text) {
         if ((lineNumber == 1 && text.trim().equals("1")) || text.contains(SaveFileLayout.START_MARK)) {
@@ -145,6 +158,11 @@ public final class LogParser {
             @Override
             public void line(byte[] bytes, int offset, int length) {
                 acceptLine(bytes, offset, length);
+            }
+
+            @Override
+            public void lastLine(byte[] bytes, int offset, int length) {
+                acceptLastLine(new String(bytes, offset, length, StandardCharsets.UTF_8));
             }
 
             @Override

@@ -74,6 +74,16 @@ abstract class RecordLayout implements LogLayout {
         return true;
     }
 
+    /** Whether {@code text} cannot continue the record in progress: it is not a field line. */
+    final boolean cutBy(String text) {
+        if (draft == null) {
+            return false;
+        }
+        String t = text.strip();
+        int colon = t.indexOf(':');
+        return colon < 1 || !t.substring(0, colon).strip().chars().allMatch(c -> isAsciiLetter((char) c));
+    }
+
     /** The record in progress is broken by {@code text}, which is not its next field line. */
     final void notAField(String text) {
         brokenRecord("expected " + draft.expected() + " line of the record started at line " + draft.line
