@@ -97,7 +97,8 @@ public final class Abstraction {
     private final List<String> mealyInputs;
 
     /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
-    private record Rule(String protocol, String command, String input, List<Reply> replies, boolean numeric) {
+    private record Rule(String protocol, String command, String client, String input, List<Reply> replies,
+                        boolean numeric) {
         boolean usesLocation() {
             return input.contains(AbstractionValidator.LOC)
                     || replies.stream().anyMatch(r -> r.symbol.contains(AbstractionValidator.LOC));
@@ -132,7 +133,7 @@ public final class Abstraction {
                         p.range() == null ? null : Band.of(p.range()), p.symbol()));
                 outputs.addAll(expand(p.symbol()));
             }
-            compiled.add(new Rule(r.protocol(), r.command(), r.input(), List.copyOf(replies),
+            compiled.add(new Rule(r.protocol(), r.command(), r.client(), r.input(), List.copyOf(replies),
                     replies.stream().anyMatch(x -> x.band() != null)));
             inputs.addAll(expand(r.input()));
         }
@@ -276,16 +277,46 @@ public final class Abstraction {
         return locations.values().stream().map(a -> template.replace(AbstractionValidator.LOC, a)).toList();
     }
 
-    /** The embedded default: Tables 4.1/4.2 with the refined battery bands of Section 5.2. */
+    /**
+     * The built-in abstractions by name: {@code thesis}, the default (Tables 4.1/4.2 with the battery bands of
+     * Section 5.2, for the thesis's tree), and {@code scope-fetch} (the R1 fetch-and-carry tree whose monitor the
+     * public SCOPE recordings show).
+     */
+    public static final List<String> BUILTIN_NAMES = List.of("thesis", "scope-fetch");
+    private static final Map<String, String> BUILTIN = Map.of("thesis", DEFAULT_RESOURCE, "scope-fetch", "scope-fetch.json");
+
+    /** The embedded default: the built-in {@code thesis}. */
     public static Abstraction defaults() {
-        try (InputStream in = Abstraction.class.getResourceAsStream(DEFAULT_RESOURCE)) {
-            if (in == null) {
-                throw new IllegalStateException("resource " + DEFAULT_RESOURCE + " is missing from the build");
-            }
-            return fromJson("(embedded) " + DEFAULT_RESOURCE, new String(in.readAllBytes(), StandardCharsets.UTF_8));
-        } catch (IOException | AbstractionException e) {
+        return builtin("thesis").orElseThrow();
+    }
+
+    /** The built-in abstraction of that name, if there is one. */
+    public static Optional<Abstraction> builtin(String name) {
+        String resource = BUILTIN.get(name);
+        if (resource == null) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(fromJson("(built-in " + name + ")", builtinJson(name).orElseThrow()));
+        } catch (AbstractionException e) {
             // The resource ships with the code and is tested, so this is a build defect, not user input.
-            throw new IllegalStateException("the embedded default abstraction is broken: " + e.getMessage(), e);
+            throw new IllegalStateException("the built-in abstraction " + name + " is broken: " + e.getMessage(), e);
+        }
+    }
+
+    /** The JSON text of a built-in abstraction, as shipped, for users to start their own from. */
+    public static Optional<String> builtinJson(String name) {
+        String resource = BUILTIN.get(name);
+        if (resource == null) {
+            return Optional.empty();
+        }
+        try (InputStream in = Abstraction.class.getResourceAsStream(resource)) {
+            if (in == null) {
+                throw new IllegalStateException("resource " + resource + " is missing from the build");
+            }
+            return Optional.of(new String(in.readAllBytes(), StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot read the built-in abstraction " + name, e);
         }
     }
 
@@ -417,7 +448,8 @@ public final class Abstraction {
         boolean command = r.kind() == RecordKind.COMMAND;
         Rule rule = null;
         for (Rule x : rulesByCommand.getOrDefault(r.command(), List.of())) {
-            if (r.protocol().isEmpty() || x.protocol.equals(r.protocol())) {
+            if ((r.protocol().isEmpty() || x.protocol.equals(r.protocol()))
+                    && (x.client == null || glob(x.client, command ? r.from() : r.to()))) {
                 rule = x;
                 break;
             }

@@ -22,9 +22,12 @@ import java.util.Map;
 record AbstractionSpec(String name, String description, List<DropSpec> drop, Map<String, String> locations,
                        List<RuleSpec> rules, SafetySpec safety) {
 
-    /** A record matching every given key is dropped; at least one key is required. */
+    /**
+     * A record matching every given key is dropped; at least one key is required. {@code description} says why,
+     * for readers.
+     */
     @JsonInclude(JsonInclude.Include.NON_NULL)
-    record DropSpec(String kind, String from, String to, String protocol, String command) {
+    record DropSpec(String kind, String from, String to, String protocol, String command, String description) {
     }
 
     /**
@@ -35,9 +38,13 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
      * band, so a noisy sensor hovering at a boundary does not flip bands, see {@link Abstraction#settle}.
      * {@code carry: true} makes the query's Mealy input carry its previous answer
      * ({@code level_i_after_o_level_medium_six}), see {@link Abstraction#mealyInput}.
+     * {@code client}, a port pattern ({@code *} for any characters), restricts the rule to messages whose client
+     * port matches (a command's {@code From}, a reply's {@code To}): one component method called by two skills
+     * (a condition polling {@code hasGrasped} every tick, an action calling it while it grasps) is then two
+     * messages of the interface. The first rule that matches a message is used.
      */
     @JsonInclude(JsonInclude.Include.NON_NULL)
-    record RuleSpec(String protocol, String command, String input, String description, Boolean continuous,
+    record RuleSpec(String protocol, String command, String client, String input, String description, Boolean continuous,
                     Boolean carry, Double hysteresis, List<ReplySpec> replies) {
     }
 

@@ -123,11 +123,18 @@ final class AbstractionValidator {
         required(rule.command(), at, "command");
         required(rule.input(), at, "input");
         required(rule.replies(), at, "replies");
-        String previous = ruleOwner.putIfAbsent(rule.protocol() + "/" + rule.command(), at);
-        if (previous != null) {
-            throw new Invalid(at, "a second rule for " + rule.protocol() + "/" + rule.command() + " (the first is "
-                    + LocatedJson.readable(previous) + ") would never be used");
+        // A rule is never used when an earlier rule for the same message matches every client, or the same one.
+        if (rule.client() != null && rule.client().isBlank()) {
+            throw new Invalid(at + "/client", "client must be a port pattern such as '/ArmServiceIsFetchedClient'");
         }
+        String message = rule.protocol() + "/" + rule.command();
+        String client = rule.client() == null ? "*" : rule.client();
+        String previous = ruleOwner.getOrDefault(message + " client *", ruleOwner.get(message + " client " + client));
+        if (previous != null) {
+            throw new Invalid(at, "a second rule for " + message + (rule.client() == null ? "" : " from client " + client)
+                    + " (the first is " + LocatedJson.readable(previous) + ") would never be used");
+        }
+        ruleOwner.put(message + " client " + client, at);
         for (String symbol : expand(rule.input(), at + "/input", locations)) {
             String owner = inputOwner.putIfAbsent(symbol, at);
             if (owner != null && !owner.equals(at)) {

@@ -4,16 +4,38 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
 import picocli.CommandLine.Option;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 
-/** {@code --abstraction FILE}, shared by the commands that read logs. */
+/** {@code --abstraction NAME|FILE}, shared by the commands that read logs. */
 final class AbstractionOption {
 
-    @Option(names = "--abstraction", paramLabel = "FILE",
-            description = "Abstraction JSON (default: the embedded thesis Tables 4.1/4.2 with the Section 5.2 bands).")
-    Path file;
+    @Option(names = "--abstraction", paramLabel = "NAME|FILE",
+            description = "A built-in abstraction by name (thesis: the thesis's Tables 4.1/4.2 with the Section 5.2 "
+                    + "bands, the default; scope-fetch: the R1 fetch-and-carry tree of the SCOPE recordings), or an "
+                    + "abstraction JSON file ('predmon abstraction show NAME' prints one to start from).")
+    String value;
 
     Abstraction load() throws AbstractionException {
-        return file == null ? Abstraction.defaults() : Abstraction.load(file);
+        return resolve(value);
+    }
+
+    /**
+     * The abstraction a value names: an existing file is read as one; otherwise a built-in name; {@code null} is the
+     * default, {@code thesis}.
+     */
+    static Abstraction resolve(String value) throws AbstractionException {
+        if (value == null) {
+            return Abstraction.defaults();
+        }
+        Path file = Path.of(value);
+        if (Files.exists(file) || Abstraction.builtin(value).isEmpty()) {
+            if (!Files.exists(file)) {
+                throw new AbstractionException(value + ": no such file, and not a built-in abstraction (one of "
+                        + String.join(", ", Abstraction.BUILTIN_NAMES) + ")");
+            }
+            return Abstraction.load(file);
+        }
+        return Abstraction.builtin(value).orElseThrow();
     }
 }

@@ -78,11 +78,11 @@ final class EvaluateCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
-        List<ScenarioSpec> train = ScenarioLayout.scan(logs);
+        List<ScenarioSpec> train = ScenarioLayout.scan(logs, abstraction);
         Evaluator evaluator = new Evaluator(abstraction, threshold.value, ProgressBar.on(err, quiet));
         Evaluation e;
         if (split != null && split.test != null) {
-            e = evaluator.trainTest(train, ScenarioLayout.scan(split.test));
+            e = evaluator.trainTest(train, ScenarioLayout.scan(split.test, abstraction));
         } else {
             int k = split == null || split.folds == null ? 5 : split.folds;
             if (k < 2) {

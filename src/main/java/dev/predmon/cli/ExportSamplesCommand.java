@@ -44,7 +44,7 @@ final class ExportSamplesCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
         Files.createDirectories(out);
-        for (ScenarioSpec s : ScenarioLayout.scan(logs)) {
+        for (ScenarioSpec s : ScenarioLayout.scan(logs, abstraction)) {
             // learn() itself, so the samples are exactly those learn feeds LearnLib, grouped as it groups them.
             LearnedScenario l = ScenarioLearner.learn(s, abstraction);
             l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));

@@ -12,7 +12,7 @@ import picocli.CommandLine.Spec;
                 + "monitor logs and warns while a robot runs as soon as the run can only be a faulty scenario.",
         subcommands = {LearnCommand.class, VerifyCommand.class, ClassifyCommand.class, WatchCommand.class,
                 SimulateCommand.class, EvaluateCommand.class, ExplainCommand.class,
-                ExportSamplesCommand.class, BenchCommand.class, DemoCommand.class},
+                ExportSamplesCommand.class, BenchCommand.class, DemoCommand.class, AbstractionCommand.class},
         footer = {"", "Exit codes: 0 ok / no warning, 1 warning raised (verify: mismatch), 2 usage, 3 bad input, "
                 + "4 internal error."})
 public final class PredmonCommand implements Runnable {

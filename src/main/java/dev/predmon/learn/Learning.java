@@ -24,7 +24,7 @@ public final class Learning {
     public static List<LearnedScenario> learnAndWrite(Path logs, Path models, Abstraction abstraction,
                                                       Consumer<LearnedScenario> each) throws BadInputException, IOException {
         List<LearnedScenario> learned = new ArrayList<>();
-        for (ScenarioSpec s : ScenarioLayout.scan(logs)) {
+        for (ScenarioSpec s : ScenarioLayout.scan(logs, abstraction)) {
             LearnedScenario l = ScenarioLearner.learn(s, abstraction);
             each.accept(l);
             learned.add(l);

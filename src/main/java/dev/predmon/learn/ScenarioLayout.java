@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -26,10 +27,15 @@ public final class ScenarioLayout {
     private ScenarioLayout() {
     }
 
-    /** Reads every scenario under {@code logsDir}, sorted by name. */
-    public static List<ScenarioSpec> scan(Path logsDir) throws BadInputException {
+    /**
+     * Reads every scenario under {@code logsDir}, sorted by name. A directory with {@code <scenario>/scenario.json}
+     * subdirectories is read as such; any other directory holding {@code *.log} or {@code *.txt} files (in
+     * subfolders too) is a {@link RecordingFolder}, whose runs the abstraction's safety monitor labels.
+     */
+    public static List<ScenarioSpec> scan(Path logsDir, Abstraction abstraction) throws BadInputException {
         if (!Files.isDirectory(logsDir)) {
-            throw new BadInputException(logsDir + ": not a directory (expected one subdirectory per scenario)");
+            throw new BadInputException(logsDir + ": not a directory (expected one subdirectory per scenario with its "
+                    + "scenario.json, or a folder of *.log/*.txt recordings)");
         }
         List<Path> dirs;
         try (Stream<Path> s = Files.list(logsDir)) {
@@ -37,12 +43,17 @@ public final class ScenarioLayout {
         } catch (IOException e) {
             throw new BadInputException(logsDir + ": cannot list: " + e.getMessage());
         }
+        if (dirs.stream().noneMatch(d -> Files.isRegularFile(d.resolve("scenario.json")))) {
+            List<ScenarioSpec> labelled = RecordingFolder.scenarios(logsDir, abstraction);
+            if (labelled.isEmpty()) {
+                throw new BadInputException(logsDir + ": no scenario directories (<scenario>/scenario.json and *.log) "
+                        + "and no *.log or *.txt recordings");
+            }
+            return labelled;
+        }
         List<ScenarioSpec> specs = new ArrayList<>();
         for (Path dir : dirs) {
             specs.add(read(dir));
-        }
-        if (specs.isEmpty()) {
-            throw new BadInputException(logsDir + ": no scenario directories (expected <scenario>/scenario.json and *.log)");
         }
         return specs;
     }

@@ -32,7 +32,7 @@ class EvaluatorTest {
 
     @BeforeAll
     static void evaluate() throws Exception {
-        specs = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("logs"), 3, 1));
+        specs = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("logs"), 3, 1), Abstraction.defaults());
         folds = new Evaluator(Abstraction.defaults(), 0, Progress.NONE).crossValidate(specs, 3);
     }
 
@@ -97,7 +97,7 @@ class EvaluatorTest {
 
     @Test
     void testSetModeJudgesEveryTestLog() throws Exception {
-        List<ScenarioSpec> test = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("test"), 2, 500));
+        List<ScenarioSpec> test = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("test"), 2, 500), Abstraction.defaults());
         Evaluation e = new Evaluator(Abstraction.defaults(), 0, Progress.NONE).trainTest(specs, test);
         assertEquals(6, e.runs().size());
         assertTrue(e.runs().stream().allMatch(r -> r.fold() == -1));

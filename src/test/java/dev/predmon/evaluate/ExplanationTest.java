@@ -66,7 +66,7 @@ class ExplanationTest {
     void exportedSamplesParseBackToTheWordsLearnUses() throws Exception {
         Path logs = SimulatedSets.write(dir.resolve("logs"), 2, 1);
         Abstraction a = Abstraction.defaults();
-        for (ScenarioSpec s : ScenarioLayout.scan(logs)) {
+        for (ScenarioSpec s : ScenarioLayout.scan(logs, a)) {
             LearnedScenario l = ScenarioLearner.learn(s, a);
             Path file = dir.resolve(s.name() + ".txt");
             Files.writeString(file, SampleFile.text(l));

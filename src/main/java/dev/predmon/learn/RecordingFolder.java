@@ -1,0 +1,78 @@
+package dev.predmon.learn;
+
+import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.parse.LogReader;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+
+/**
+ * A folder of recordings not sorted into scenarios (named by date, say): every {@code *.log} and {@code *.txt}
+ * file under it, in subfolders too, is one run, labelled by the abstraction's safety monitor. Runs that violate
+ * the property form the faulty scenario {@value #VIOLATING}, the others the nominal scenario {@value #SAFE}; the
+ * learner then splits each into conflict-free groups as for any scenario.
+ */
+public final class RecordingFolder {
+
+    /** The faulty scenario of a labelled folder: runs the safety monitor saw violate the property. */
+    public static final String VIOLATING = "violating";
+    /** The nominal scenario of a labelled folder: runs in which the property held to the end. */
+    public static final String SAFE = "safe";
+
+    private RecordingFolder() {
+    }
+
+    /** Whether {@code name} is a log file of a recording folder. */
+    static boolean isLog(Path file) {
+        String name = file.getFileName().toString();
+        return (name.endsWith(".log") || name.endsWith(".txt")) && Files.isRegularFile(file);
+    }
+
+    /** The recordings under {@code dir}, sorted by path. */
+    static List<Path> logs(Path dir) throws BadInputException {
+        try (Stream<Path> s = Files.walk(dir)) {
+            return s.filter(RecordingFolder::isLog).sorted().toList();
+        } catch (IOException e) {
+            throw new BadInputException(dir + ": cannot list: " + e.getMessage());
+        }
+    }
+
+    /** The two scenarios of a recording folder, labelled by the safety monitor (a scenario without runs is left out). */
+    static List<ScenarioSpec> scenarios(Path dir, Abstraction abstraction) throws BadInputException {
+        SafetyRule rule = abstraction.safety().orElseThrow(() -> new BadInputException(dir
+                + ": a folder of recordings is labelled by the safety monitor, and abstraction '" + abstraction.name()
+                + "' has none; give it a \"safety\" property or sort the logs into <scenario>/scenario.json folders"));
+        List<Path> violating = new ArrayList<>();
+        List<Path> safe = new ArrayList<>();
+        for (Path log : logs(dir)) {
+            (violates(log, rule) ? violating : safe).add(log);
+        }
+        List<ScenarioSpec> specs = new ArrayList<>();
+        if (!safe.isEmpty()) {
+            specs.add(new ScenarioSpec(SAFE, false, "runs in which '" + rule.name()
+                    + "' held to the end (labelled by the safety monitor)", List.copyOf(safe)));
+        }
+        if (!violating.isEmpty()) {
+            specs.add(new ScenarioSpec(VIOLATING, true, "runs that violated '" + rule.name()
+                    + "' (labelled by the safety monitor)", List.copyOf(violating)));
+        }
+        return specs;
+    }
+
+    /** Whether the safety monitor sees {@code log} violate the property. */
+    private static boolean violates(Path log, SafetyRule rule) throws BadInputException {
+        boolean[] violated = {false};
+        try {
+            LogReader.read(log, r -> violated[0] |= rule.violatedBy(rule.valueOf(r)), p -> { });
+        } catch (IOException e) {
+            throw new BadInputException(log + ": cannot read: " + e.getMessage());
+        }
+        return violated[0];
+    }
+}
