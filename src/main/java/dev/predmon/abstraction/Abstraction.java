@@ -82,6 +82,7 @@ public final class Abstraction {
     /** Symbols with {@code {loc}} already replaced, by template and abbreviation (the set is small and fixed). */
     private final Map<String, Map<String, String>> expanded = new java.util.concurrent.ConcurrentHashMap<>();
     private final Optional<SafetyRule> safety;
+    private final int confirm;
     private final List<String> inputAlphabet;
     private final List<String> outputAlphabet;
     private final String canonicalJson;
@@ -188,6 +189,7 @@ public final class Abstraction {
         this.mealyInputs = List.copyOf(mealy);
         this.inputAlphabet = List.copyOf(inputs);
         this.outputAlphabet = List.copyOf(outputs);
+        this.confirm = spec.warning() == null || spec.warning().confirm() == null ? 0 : spec.warning().confirm();
         this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
                 s.from() == null ? "" : s.from(), s.to() == null ? "" : s.to(), s.below()));
         try {
@@ -585,6 +587,14 @@ public final class Abstraction {
     }
 
     /** The built-in safety monitor's property, if the file defines one. */
+    /**
+     * Pairs a faulty model must still match after the last nominal model is eliminated before the predictive
+     * warning, unless the user says otherwise: 0 (the thesis's Algorithm 8) unless the file's {@code warning} sets it.
+     */
+    public int confirm() {
+        return confirm;
+    }
+
     public Optional<SafetyRule> safety() {
         return safety;
     }

@@ -17,10 +17,19 @@ import java.util.Map;
  * @param locations   location name, as in arguments and client ports, to its abbreviation in symbols
  * @param rules       how each (protocol, command) becomes an input symbol and its replies output symbols
  * @param safety      the property of the built-in safety monitor, optional
+ * @param warning     how cautiously the predictive monitor warns on this system, optional
  */
 @JsonInclude(JsonInclude.Include.NON_NULL)
 record AbstractionSpec(String name, String description, List<DropSpec> drop, Map<String, String> locations,
-                       List<RuleSpec> rules, SafetySpec safety) {
+                       List<RuleSpec> rules, SafetySpec safety, WarningSpec warning) {
+
+    /**
+     * {@code confirm}: pairs a faulty model must still match after the last nominal model is eliminated before the
+     * warning (absent: 0, the thesis's Algorithm 8). {@code description} says why, for readers.
+     */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record WarningSpec(Integer confirm, String description) {
+    }
 
     /**
      * A record matching every given key is dropped; at least one key is required. {@code description} says why,

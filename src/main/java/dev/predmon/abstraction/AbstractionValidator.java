@@ -71,6 +71,9 @@ final class AbstractionValidator {
             }
         }
         validateSafety(spec.safety());
+        if (spec.warning() != null && spec.warning().confirm() != null && spec.warning().confirm() < 0) {
+            throw new Invalid("/warning/confirm", "confirm must be at least 0, got " + spec.warning().confirm());
+        }
     }
 
     private static void validateDrop(List<DropSpec> drop) throws Invalid {

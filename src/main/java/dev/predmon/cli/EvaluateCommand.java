@@ -60,6 +60,9 @@ final class EvaluateCommand implements Callable<Integer> {
     @Mixin
     ThresholdOption threshold;
 
+    @Mixin
+    ConfirmOption confirm;
+
     @Option(names = "--report", paramLabel = "FILE",
             description = "Write a self-contained HTML report: table, confusion matrix, leads, battery plots, models.")
     Path report;
@@ -79,7 +82,7 @@ final class EvaluateCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
         List<ScenarioSpec> train = ScenarioLayout.scan(logs, abstraction);
-        Evaluator evaluator = new Evaluator(abstraction, threshold.value, ProgressBar.on(err, quiet));
+        Evaluator evaluator = new Evaluator(abstraction, threshold.value, confirm.value(abstraction), ProgressBar.on(err, quiet));
         Evaluation e;
         if (split != null && split.test != null) {
             e = evaluator.trainTest(train, ScenarioLayout.scan(split.test, abstraction));

@@ -32,6 +32,9 @@ final class ExplainCommand implements Callable<Integer> {
     @Mixin
     ThresholdOption threshold;
 
+    @Mixin
+    ConfirmOption confirm;
+
     @Option(names = "--json", description = "Print the explanation as one JSON document.")
     boolean json;
 
@@ -49,7 +52,7 @@ final class ExplainCommand implements Callable<Integer> {
         if (!Files.isRegularFile(log)) {
             throw new BadInputException(log + ": no such file");
         }
-        Explanation x = Explanation.of(log, set, abstraction, threshold.value);
+        Explanation x = Explanation.of(log, set, abstraction, threshold.value, confirm.value(abstraction));
         if (json) {
             out.println(new com.fasterxml.jackson.databind.ObjectMapper()
                     .enable(com.fasterxml.jackson.databind.SerializationFeature.INDENT_OUTPUT).writeValueAsString(x));

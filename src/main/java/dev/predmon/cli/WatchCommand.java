@@ -35,6 +35,9 @@ final class WatchCommand implements Callable<Integer> {
     @Mixin
     ThresholdOption threshold;
 
+    @Mixin
+    ConfirmOption confirm;
+
     @Option(names = "--json", description = "One JSON object per event on stdout.")
     boolean json;
 
@@ -69,7 +72,7 @@ final class WatchCommand implements Callable<Integer> {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
         }
         EventPrinter printer = new EventPrinter(out, json, eliminations || json);
-        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, threshold.value, printer);
+        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, threshold.value, confirm.value(abstraction), printer);
         try (LogWatcher watcher = new LogWatcher(log, monitor, p -> {
             err.println(p.format(log.toString()));
             err.flush();

@@ -34,10 +34,17 @@ public final class Evaluator {
 
     private final Abstraction abstraction;
     private final int threshold;
+    private final int confirm;
     private final Progress progress;
     private final Alphabet<String> alphabet;
 
     public Evaluator(Abstraction abstraction, int threshold, Progress progress) {
+        this(abstraction, threshold, abstraction.confirm(), progress);
+    }
+
+    /** @param confirm pairs a faulty model must match after the last nominal model is eliminated (see watch) */
+    public Evaluator(Abstraction abstraction, int threshold, int confirm, Progress progress) {
+        this.confirm = confirm;
         this.abstraction = abstraction;
         this.threshold = threshold;
         this.progress = progress;
@@ -101,7 +108,7 @@ public final class Evaluator {
 
     private RunResult judge(Path log, ScenarioSpec s, int fold, ModelSet models) throws BadInputException {
         try {
-            return Replay.run(log, s.name(), s.faulty(), fold, models, abstraction, threshold);
+            return Replay.run(log, s.name(), s.faulty(), fold, models, abstraction, threshold, confirm);
         } catch (IOException e) {
             throw new BadInputException(log + ": cannot read: " + e.getMessage());
         }

@@ -57,7 +57,8 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
     }
 
     /** Explains {@code log} against {@code models}. */
-    public static Explanation of(Path log, ModelSet models, Abstraction abstraction, int threshold) throws IOException {
+    public static Explanation of(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
+            throws IOException {
         LogTrace trace = Traces.read(log, abstraction);
         List<Step> steps = new ArrayList<>();
         for (int i = 0; i < trace.pairs().size(); i++) {
@@ -91,7 +92,7 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                         t.discrepancies(), reason));
             }
         }
-        RunResult run = Replay.run(log, "?", false, -1, models, abstraction, threshold);
+        RunResult run = Replay.run(log, "?", false, -1, models, abstraction, threshold, confirm);
         return new Explanation(log.toString(), List.copyOf(steps), List.copyOf(fates), run);
     }
 }

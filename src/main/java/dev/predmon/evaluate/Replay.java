@@ -33,10 +33,10 @@ public final class Replay {
      * @param fold the fold it is tested in, or -1
      */
     public static RunResult run(Path log, String scenario, boolean faulty, int fold, ModelSet models,
-                                Abstraction abstraction, int threshold) throws IOException {
+                                Abstraction abstraction, int threshold, int confirm) throws IOException {
         List<MonitorEvent> events = new ArrayList<>();
         int[] problems = {0};
-        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, events::add);
+        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, events::add);
         try (LogWatcher watcher = new LogWatcher(log, monitor, p -> problems[0]++)) {
             watcher.drain();
         }

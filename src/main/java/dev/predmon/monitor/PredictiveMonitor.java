@@ -20,8 +20,14 @@ import java.util.function.Consumer;
  * The predictive monitor: the thesis's Algorithm 8 with MatchTracesRT, made incremental. Records are pushed
  * one at a time through the shared {@link TracePipeline}; each compacted pair advances every model still alive
  * by its two Mealy steps ({@code input/OK}, {@code Delta/output}); a model is dropped at an input it cannot take
- * or when its discrepancies exceed the threshold. A warning is raised as soon as every nominal scenario is
- * eliminated while a faulty one still matches. A scenario matches while any of its machines matches.
+ * or when its discrepancies exceed the threshold. A scenario matches while any of its machines matches.
+ *
+ * <p>The warning: every nominal scenario is eliminated while a faulty one still matches, and a faulty model has
+ * matched {@code confirm} more pairs since ({@code confirm = 0} is Algorithm 8; the abstraction sets the default,
+ * {@link Abstraction#confirm()}). The nominal models are learned from finitely many runs, so a nominal run that does
+ * something no training run did (its battery crosses a band while the robot grasps, say) eliminates them all; a
+ * faulty model that happens to allow that step would then warn on no evidence but the novelty. With
+ * {@code confirm = 1} the faulty model must also predict what happens next.
  *
  * <p>Per record the work is constant (one step per model) and the state is constant (per model: state,
  * discrepancy count, alive), so the monitor never re-reads the log, unlike the thesis's loop.
@@ -42,12 +48,29 @@ public final class PredictiveMonitor implements PipelineListener {
     private Double battery;
     private Clock clock = Clock.SECONDS;
     private long pairs;
+    private final int confirm;
+    /** Pairs matched since every nominal model was eliminated with a faulty one alive; -1 before. */
+    private long sinceNominalGone = -1;
 
     /**
      * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
      * @param events    receives every event, in log order
      */
     public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, Consumer<MonitorEvent> events) {
+        this(models, abstraction, threshold, abstraction.confirm(), events);
+    }
+
+    /**
+     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
+     * @param confirm   pairs a faulty model must match after the last nominal model is eliminated before the warning
+     * @param events    receives every event, in log order
+     */
+    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, int confirm,
+                             Consumer<MonitorEvent> events) {
+        if (confirm < 0) {
+            throw new IllegalArgumentException("confirm must be at least 0, got " + confirm);
+        }
+        this.confirm = confirm;
         for (LearnedModel m : models.models()) {
             trackers.add(new ModelTracker(m, threshold));
         }
@@ -75,6 +98,7 @@ public final class PredictiveMonitor implements PipelineListener {
         noMatch = false;
         battery = null;
         pairs = 0;
+        sinceNominalGone = -1;
         events.accept(new MonitorEvent.Restarted(reason));
     }
 
@@ -121,7 +145,10 @@ public final class PredictiveMonitor implements PipelineListener {
                 }
             }
         }
-        if (warning == null && !nominalAlive && !faultyAlive.isEmpty()) {
+        if (!nominalAlive && !faultyAlive.isEmpty()) {
+            sinceNominalGone++;
+        }
+        if (warning == null && !nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
             warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), List.copyOf(faultyAlive), battery, pairs,
                     trigger.clock());
             events.accept(warning);

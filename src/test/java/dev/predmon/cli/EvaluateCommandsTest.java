@@ -38,7 +38,7 @@ class EvaluateCommandsTest {
         Cli r = Cli.run("evaluate", "--logs", logs("a", 3, 1).toString(), "--test", logs("b", 1, 900).toString(),
                 "--report", report.toString(), "--quiet");
         assertEquals(ExitCodes.OK, r.code(), r.err());
-        assertTrue(r.out().contains("depleted") && r.out().contains("false") && r.out().contains("lead s"), r.out());
+        assertTrue(r.out().contains("depleted") && r.out().contains("false") && r.out().contains("lead: median"), r.out());
         assertTrue(Files.readString(report).startsWith("<!DOCTYPE html>"));
     }
 

@@ -39,7 +39,7 @@ class ExplanationTest {
         ModelSet models = LearnedModels.modelSet(List.of(
                 learn("recharge", false, recharge, a), learn("depleted", true, depleted, a)), a);
 
-        Explanation x = Explanation.of(depleted, models, a, 0);
+        Explanation x = Explanation.of(depleted, models, a, 0, a.confirm());
         assertFalse(x.steps().isEmpty());
         Explanation.ModelFate rechargeFate = x.models().stream().filter(f -> f.model().equals("recharge"))
                 .findFirst().orElseThrow();

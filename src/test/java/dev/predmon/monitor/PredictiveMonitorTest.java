@@ -77,6 +77,26 @@ class PredictiveMonitorTest {
     }
 
     @Test
+    void confirmWaitsForTheFaultyModelToMatchThatManyMorePairs() {
+        ModelSet models = models();
+        List<MonitorEvent> strict = watch(models, depleted().list());
+        List<MonitorEvent> confirmed = new ArrayList<>();
+        PredictiveMonitor m = new PredictiveMonitor(models, A, 0, 1, confirmed::add);
+        depleted().list().forEach(m::accept);
+        m.endOfInput();
+        MonitorEvent.Warning first = strict.stream().filter(e -> e instanceof MonitorEvent.Warning)
+                .map(e -> (MonitorEvent.Warning) e).findFirst().orElseThrow();
+        MonitorEvent.Warning later = confirmed.stream().filter(e -> e instanceof MonitorEvent.Warning)
+                .map(e -> (MonitorEvent.Warning) e).findFirst().orElseThrow();
+        assertEquals(0, A.confirm(), "the thesis abstraction keeps Algorithm 8");
+        assertEquals(first.pairs() + 1, later.pairs(), "one more pair matched by the faulty model");
+        assertTrue(later.time() > first.time());
+        MonitorEvent.Violation v = confirmed.stream().filter(e -> e instanceof MonitorEvent.Violation)
+                .map(e -> (MonitorEvent.Violation) e).findFirst().orElseThrow();
+        assertTrue(later.time() < v.time(), "still before the violation");
+    }
+
+    @Test
     void nominalRunNeverWarnsAndNeverViolates() {
         List<MonitorEvent> events = watch(models(), recharge().list());
         assertTrue(events.stream().noneMatch(e -> e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation),

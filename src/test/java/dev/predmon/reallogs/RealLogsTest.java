@@ -7,6 +7,7 @@ import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.parse.RecordKind;
+import dev.predmon.support.RealLogs;
 import org.junit.jupiter.api.Test;
 
 import java.io.IOException;

@@ -1,4 +1,4 @@
-package dev.predmon.reallogs;
+package dev.predmon.support;
 
 import org.junit.jupiter.api.Assumptions;
 
@@ -16,9 +16,9 @@ import java.util.regex.Pattern;
  * says for every file what an independent reader counted. They are never copied into this repository: tests that
  * use them are skipped, with a message, where the folder is absent.
  */
-final class RealLogs {
+public final class RealLogs {
 
-    static final Path DIR = Path.of("..", "shared", "real-logs");
+    public static final Path DIR = Path.of("..", "shared", "real-logs");
 
     /**
      * One row of the README's table.
@@ -26,10 +26,10 @@ final class RealLogs {
      * @param file           the file, relative to {@link #DIR}
      * @param violationTick  the tick of the first level reading below 20, if there is one
      */
-    record Row(String file, long commands, long replies, long ticks, double firstLevel, double lowestLevel,
+    public record Row(String file, long commands, long replies, long ticks, double firstLevel, double lowestLevel,
                OptionalInt violationTick) {
 
-        Path path() {
+        public Path path() {
             return DIR.resolve(file);
         }
     }
@@ -42,7 +42,7 @@ final class RealLogs {
     }
 
     /** The table's rows; skips the calling test where the recordings are absent. */
-    static List<Row> rows() throws IOException {
+    public static List<Row> rows() throws IOException {
         Path readme = DIR.resolve("README.md");
         Assumptions.assumeTrue(Files.isRegularFile(readme),
                 "skipped: no real recordings at " + DIR.toAbsolutePath().normalize() + " (they are not part of this repository)");

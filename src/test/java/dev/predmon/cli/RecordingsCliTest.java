@@ -1,0 +1,113 @@
+package dev.predmon.cli;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.simulate.LogWriter;
+import dev.predmon.simulate.Scenario;
+import dev.predmon.simulate.SimOptions;
+import dev.predmon.simulate.Simulator;
+import dev.predmon.support.RealLogs;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * Recordings as users have them: built-in abstractions by name, a flat folder of logs labelled by the safety
+ * monitor, and (where {@code ../shared/real-logs} exists) the real monitor's recordings end to end.
+ */
+class RecordingsCliTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void builtinAbstractionsByNameAndShow() throws Exception {
+        Cli list = Cli.run("abstraction", "list");
+        assertEquals(ExitCodes.OK, list.code());
+        assertTrue(list.out().contains("thesis") && list.out().contains("scope-fetch"), list.out());
+        Cli show = Cli.run("abstraction", "show", "scope-fetch");
+        assertEquals(ExitCodes.OK, show.code(), show.err());
+        // What 'show' prints is a valid abstraction file: a user starts from it.
+        Path file = dir.resolve("mine.json");
+        Files.writeString(file, show.out());
+        assertEquals(Abstraction.builtin("scope-fetch").orElseThrow().fingerprint(), Abstraction.load(file).fingerprint());
+        Cli bad = Cli.run("abstraction", "show", "nope");
+        assertEquals(ExitCodes.BAD_INPUT, bad.code());
+        assertTrue(bad.err().contains("'nope': not a built-in abstraction (one of thesis, scope-fetch)"), bad.err());
+        Cli missing = Cli.run("learn", "--logs", dir.toString(), "--models", dir.resolve("m").toString(),
+                "--abstraction", "scope-fech");
+        assertEquals(ExitCodes.BAD_INPUT, missing.code());
+        assertTrue(missing.err().contains("scope-fech: no such file, and not a built-in abstraction"), missing.err());
+    }
+
+    @Test
+    void aFlatFolderIsLabelledByTheSafetyMonitor() throws Exception {
+        Path flat = Files.createDirectories(dir.resolve("recordings/2022-10-11"));
+        SimOptions o = SimOptions.defaults();
+        for (long seed = 1; seed <= 3; seed++) {
+            Files.writeString(flat.resolve("run-d" + seed + ".txt"), LogWriter.toText(Simulator.run(Scenario.DEPLETED, seed, o), o));
+            Files.writeString(flat.resolve("run-n" + seed + ".log"), LogWriter.toText(Simulator.run(Scenario.DIRECT, seed, o), o));
+        }
+        Path models = dir.resolve("models");
+        Cli learn = Cli.run("learn", "--logs", dir.resolve("recordings").toString(), "--models", models.toString());
+        assertEquals(ExitCodes.OK, learn.code(), learn.err());
+        JsonNode index = JSON.readTree(models.resolve("index.json").toFile());
+        String text = index.toString();
+        assertTrue(text.contains("\"violating\"") && text.contains("\"safe\""), text);
+        assertTrue(learn.out().contains("scenario safe (nominal): 3 run(s)"), learn.out());
+        assertTrue(learn.out().contains("scenario violating (faulty): 3 run(s)"), learn.out());
+        Cli folds = Cli.run("evaluate", "--logs", dir.resolve("recordings").toString(), "--folds", "3", "--quiet");
+        assertEquals(ExitCodes.OK, folds.code(), folds.err());
+        assertTrue(folds.out().contains("violating") && folds.out().contains("safe"), folds.out());
+    }
+
+    /** issue 8's criterion: learned on the recordings with scope-fetch, no safe run warns under cross-validation. */
+    @Test
+    void realRecordingsCrossValidateWithoutFalseAlarms() throws Exception {
+        List<RealLogs.Row> rows = RealLogs.rows();
+        Cli r = Cli.run("evaluate", "--logs", RealLogs.DIR.toString(), "--folds", "5", "--abstraction", "scope-fetch",
+                "--json", "--quiet");
+        assertEquals(ExitCodes.OK, r.code(), r.err());
+        JsonNode e = JSON.readTree(r.out());
+        int runs = 0;
+        for (JsonNode s : e.get("scenarios")) {
+            runs += s.get("runs").asInt();
+            assertEquals(0, s.get("falseAlarms").asInt(), s.toString());
+        }
+        assertEquals(rows.size(), runs);
+        long violating = rows.stream().filter(x -> x.violationTick().isPresent()).count();
+        long hits = 0;
+        for (JsonNode run : e.get("runs")) {
+            assertEquals("ticks", run.get("unit").asText());
+            if (run.get("faulty").asBoolean() && !run.get("sudden").asBoolean()) {
+                // A violation the battery approached (no jump straight past 25%) is one a predictive monitor is for.
+                hits += run.get("verdict").asText().equals("warned-before-violation") ? 1 : 0;
+            }
+        }
+        assertTrue(violating > 0 && hits > 0, r.out());
+    }
+
+    @Test
+    void watchCountsEveryRecordOfARealRecording() throws Exception {
+        RealLogs.Row row = RealLogs.rows().get(0);
+        Path models = dir.resolve("models");
+        assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", RealLogs.DIR.toString(), "--models", models.toString(),
+                "--abstraction", "scope-fetch").code());
+        Cli w = Cli.run("watch", "--log", row.path().toString(), "--models", models.toString(),
+                "--abstraction", "scope-fetch", "--no-follow", "--json");
+        String[] lines = w.out().strip().split("\n");
+        JsonNode end = JSON.readTree(lines[lines.length - 1]);
+        assertEquals("end", end.get("event").asText());
+        assertEquals(row.commands() + row.replies() + row.ticks(), end.get("records").asLong());
+        assertEquals("ticks", end.get("unit").asText());
+    }
+}
