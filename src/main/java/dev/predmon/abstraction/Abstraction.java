@@ -83,6 +83,7 @@ public final class Abstraction {
     private final Map<String, Map<String, String>> expanded = new java.util.concurrent.ConcurrentHashMap<>();
     private final Optional<SafetyRule> safety;
     private final int confirm;
+    private final RunRule runs;
     private final List<String> inputAlphabet;
     private final List<String> outputAlphabet;
     private final String canonicalJson;
@@ -189,6 +190,9 @@ public final class Abstraction {
         this.mealyInputs = List.copyOf(mealy);
         this.inputAlphabet = List.copyOf(inputs);
         this.outputAlphabet = List.copyOf(outputs);
+        this.runs = spec.runs() == null ? RunRule.DEFAULT : new RunRule(
+                spec.runs().tickRestart() == null || spec.runs().tickRestart(),
+                spec.runs().silence() == null ? RunRule.DEFAULT_SILENCE : spec.runs().silence());
         this.confirm = spec.warning() == null || spec.warning().confirm() == null ? 0 : spec.warning().confirm();
         this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
                 s.from() == null ? "" : s.from(), s.to() == null ? "" : s.to(), s.below()));
@@ -593,6 +597,11 @@ public final class Abstraction {
      */
     public int confirm() {
         return confirm;
+    }
+
+    /** Where runs begin in a log that holds several ({@link RunRule#DEFAULT} unless the file's {@code runs} says). */
+    public RunRule runs() {
+        return runs;
     }
 
     public Optional<SafetyRule> safety() {

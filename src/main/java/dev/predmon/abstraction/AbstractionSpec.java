@@ -18,10 +18,21 @@ import java.util.Map;
  * @param rules       how each (protocol, command) becomes an input symbol and its replies output symbols
  * @param safety      the property of the built-in safety monitor, optional
  * @param warning     how cautiously the predictive monitor warns on this system, optional
+ * @param runs        where one run ends and the next begins in a log that holds several, optional
  */
 @JsonInclude(JsonInclude.Include.NON_NULL)
 record AbstractionSpec(String name, String description, List<DropSpec> drop, Map<String, String> locations,
-                       List<RuleSpec> rules, SafetySpec safety, WarningSpec warning) {
+                       List<RuleSpec> rules, SafetySpec safety, WarningSpec warning, RunsSpec runs) {
+
+    /**
+     * A log holds one run after another (a robot's day): {@code tickRestart} (default true) starts a run where the
+     * tree's tick counter starts again (a {@code Tick} record whose number is not above the previous one);
+     * {@code silence} (seconds, default {@value RunRule#DEFAULT_SILENCE}; 0 turns it off) starts one after that
+     * long without any record, for logs with time stamps and no ticks.
+     */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record RunsSpec(Boolean tickRestart, Double silence, String description) {
+    }
 
     /**
      * {@code confirm}: pairs a faulty model must still match after the last nominal model is eliminated before the

@@ -71,6 +71,11 @@ final class AbstractionValidator {
             }
         }
         validateSafety(spec.safety());
+        if (spec.runs() != null && spec.runs().silence() != null
+                && (!(spec.runs().silence() >= 0) || Double.isInfinite(spec.runs().silence()))) {
+            throw new Invalid("/runs/silence", "silence must be a finite number of seconds >= 0 (0: off), got "
+                    + spec.runs().silence());
+        }
         if (spec.warning() != null && spec.warning().confirm() != null && spec.warning().confirm() < 0) {
             throw new Invalid("/warning/confirm", "confirm must be at least 0, got " + spec.warning().confirm());
         }

@@ -53,6 +53,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             o.put("time", w.time());
             o.put("unit", w.clock().unit());
             o.put("line", w.line());
+            o.put("run", w.run());
             o.put("scenario", w.scenarios().get(0));
             o.put("scenarios", w.scenarios());
             o.put("battery", w.battery());
@@ -62,6 +63,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             o.put("time", v.time());
             o.put("unit", v.clock().unit());
             o.put("line", v.line());
+            o.put("run", v.run());
             o.put("property", v.property());
             o.put("battery", v.value());
             o.put("before", v.before());
@@ -70,6 +72,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             o.put("time", x.time());
             o.put("unit", x.clock().unit());
             o.put("line", x.line());
+            o.put("run", x.run());
             o.put("model", x.model());
             o.put("scenario", x.scenario());
             o.put("faulty", x.faulty());
@@ -79,6 +82,13 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             o.put("time", n.time());
             o.put("unit", n.clock().unit());
             o.put("line", n.line());
+            o.put("run", n.run());
+        } else if (e instanceof MonitorEvent.RunStarted r) {
+            o.put("event", "run");
+            o.put("run", r.run());
+            o.put("time", r.time());
+            o.put("unit", r.clock().unit());
+            o.put("line", r.line());
         } else if (e instanceof MonitorEvent.Restarted r) {
             o.put("event", "restarted");
             o.put("reason", r.reason());
@@ -115,6 +125,11 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         if (e instanceof MonitorEvent.NoMatch n) {
             return String.format(Locale.ROOT, "%s line %d: no learned scenario matches this run any more",
                     at(n.time(), n.clock()), n.line());
+        }
+        if (e instanceof MonitorEvent.RunStarted r) {
+            warning = null;
+            return String.format(Locale.ROOT, "%s line %d: run %d begins: every model starts over",
+                    at(r.time(), r.clock()), r.line(), r.run());
         }
         if (e instanceof MonitorEvent.Restarted r) {
             warning = null;

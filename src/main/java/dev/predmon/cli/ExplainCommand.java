@@ -13,6 +13,7 @@ import picocli.CommandLine.Spec;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
@@ -52,15 +53,22 @@ final class ExplainCommand implements Callable<Integer> {
         if (!Files.isRegularFile(log)) {
             throw new BadInputException(log + ": no such file");
         }
-        Explanation x = Explanation.of(log, set, abstraction, threshold.value, confirm.value(abstraction));
+        List<Explanation> runs = Explanation.of(log, set, abstraction, threshold.value, confirm.value(abstraction));
         if (json) {
+            // One object for a log of one run, as always; a log of several runs gives one object per run.
+            Object value = runs.size() == 1 ? runs.get(0) : java.util.Map.of("runs", runs);
             out.println(new com.fasterxml.jackson.databind.ObjectMapper()
-                    .enable(com.fasterxml.jackson.databind.SerializationFeature.INDENT_OUTPUT).writeValueAsString(x));
+                    .enable(com.fasterxml.jackson.databind.SerializationFeature.INDENT_OUTPUT).writeValueAsString(value));
         } else {
-            print(out, x);
+            for (int i = 0; i < runs.size(); i++) {
+                if (i > 0) {
+                    out.println();
+                }
+                print(out, runs.get(i));
+            }
         }
         out.flush();
-        return x.run().warningTime() != null ? ExitCodes.WARNING : ExitCodes.OK;
+        return runs.stream().anyMatch(x -> x.run().warningTime() != null) ? ExitCodes.WARNING : ExitCodes.OK;
     }
 
     private static void print(PrintWriter out, Explanation x) {

@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.simulate.Day;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.RealtimeWriter;
 import dev.predmon.simulate.Scenario;
@@ -20,6 +21,8 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 
 /**
@@ -37,8 +40,9 @@ public final class SimulateCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--scenario", required = true, paramLabel = "direct|recharge|depleted",
-            description = "The story to simulate.")
+    @Option(names = "--scenario", required = true, paramLabel = "direct|recharge|depleted[,...]",
+            description = "The story to simulate. With --out and --runs, a comma-separated list: the log holds the "
+                    + "runs one after another, the list taken in turn (a robot's day: 'direct,depleted').")
     String scenario;
 
     @Option(names = "--seed", defaultValue = "1", description = "Seed of the run (first seed with --runs); "
@@ -49,7 +53,9 @@ public final class SimulateCommand implements Callable<Integer> {
             description = "Write the log here (and FILE.truth.json beside it) instead of to standard output.")
     Path out;
 
-    @Option(names = "--runs", paramLabel = "N", description = "With --out-dir: simulate N runs, seeds seed..seed+N-1.")
+    @Option(names = "--runs", paramLabel = "N", description = "Simulate N runs, seeds seed..seed+N-1: with --out-dir "
+            + "one log each; with --out one log holding them one after another (its tick counter starting again "
+            + "with every run, as the real monitor's does).")
     Integer runs;
 
     @Option(names = "--out-dir", paramLabel = "DIR",
@@ -87,19 +93,33 @@ public final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--crlf", description = "End lines with CR LF.")
     boolean crlf;
 
+    @Option(names = "--noise", defaultValue = "0", paramLabel = "SIGMA",
+            description = "Gaussian noise of this standard deviation (percentage points) on every battery reading; "
+                    + "the tree reacts to the noisy reading, as a real one would. Default: ${DEFAULT-VALUE}.")
+    double noise;
+
     @Override
     public Integer call() throws IOException {
         Scenario s;
+        List<Scenario> day = new ArrayList<>();
         SimOptions options;
         try {
-            s = Scenario.fromId(scenario);
-            options = new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf);
+            for (String id : scenario.split(",")) {
+                day.add(Scenario.fromId(id.strip()));
+            }
+            s = day.get(0);
+            options = new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage(), e);
         }
         checkCombination();
+        if (day.size() > 1 && (runs == null || out == null)) {
+            throw new ParameterException(spec.commandLine(), "several scenarios need --out FILE and --runs N");
+        }
         try {
-            if (outDir != null) {
+            if (out != null && runs != null) {
+                writeDay(day, options);
+            } else if (outDir != null) {
                 writeBatch(s, options);
             } else {
                 writeOne(s, options);
@@ -114,8 +134,11 @@ public final class SimulateCommand implements Callable<Integer> {
     }
 
     private void checkCombination() {
-        if (runs != null && outDir == null) {
-            throw new ParameterException(spec.commandLine(), "--runs needs --out-dir");
+        if (runs != null && outDir == null && out == null) {
+            throw new ParameterException(spec.commandLine(), "--runs needs --out-dir or --out");
+        }
+        if (runs != null && out != null && realtime) {
+            throw new ParameterException(spec.commandLine(), "--runs with --out cannot be combined with --realtime");
         }
         if (runs != null && runs < 1) {
             throw new ParameterException(spec.commandLine(), "--runs must be at least 1, got " + runs);
@@ -139,6 +162,24 @@ public final class SimulateCommand implements Callable<Integer> {
         }
         TruthWriter.writeScenario(s, outDir);
         spec.commandLine().getErr().println("simulate: wrote " + n + " " + s.id() + " runs to " + outDir);
+    }
+
+    /** One log holding {@code runs} runs one after another, and a sidecar listing each run's truth. */
+    private void writeDay(List<Scenario> scenarios, SimOptions options) throws IOException {
+        List<SimRun> day = Day.simulate(scenarios, seed, runs, options);
+        Path parent = out.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        StringBuilder truths = new StringBuilder("[");
+        try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+            for (SimRun run : day) {
+                LogWriter.write(run, options, w);
+                truths.append(truths.length() > 1 ? ",\n" : "\n").append(TruthWriter.toJson(run.truth()));
+            }
+        }
+        Files.writeString(TruthWriter.sidecarOf(out), truths.append("\n]\n"));
+        spec.commandLine().getErr().println("simulate: wrote " + runs + " runs one after another to " + out);
     }
 
     private void writeOne(Scenario s, SimOptions options) throws IOException {

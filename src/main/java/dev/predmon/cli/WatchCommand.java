@@ -5,6 +5,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.RunOutcome;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -14,7 +15,9 @@ import picocli.CommandLine.Spec;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 
@@ -112,20 +115,43 @@ final class WatchCommand implements Callable<Integer> {
     private void summary(PrintWriter out, PrintWriter err, PredictiveMonitor m) {
         Map<String, Long> unmapped = m.pipeline().unmapped();
         Problems.interfaceMessages(err, log, m.pipeline().records(), m.pipeline().interfaceRecords(), unmapped);
+        List<RunOutcome> runs = m.runs();
+        RunOutcome first = runs.stream().filter(r -> r.warning() != null).findFirst().orElse(runs.get(0));
         if (json) {
             Map<String, Object> o = new LinkedHashMap<>();
             o.put("event", "end");
             o.put("records", m.pipeline().records());
-            o.put("pairs", m.pairs());
+            o.put("pairs", runs.stream().mapToLong(RunOutcome::pairs).sum());
             o.put("warning", m.warning().isPresent());
             o.put("violation", m.violation().isPresent());
-            o.put("lead", m.warning().isPresent() && m.violation().isPresent()
-                    ? m.violation().get().time() - m.warning().get().time() : null);
+            o.put("lead", first.lead().orElse(null));
             o.put("unit", m.clock().unit());
+            List<Map<String, Object>> perRun = new ArrayList<>();
+            for (RunOutcome r : runs) {
+                Map<String, Object> x = new LinkedHashMap<>();
+                x.put("run", r.run());
+                x.put("line", r.firstLine());
+                x.put("pairs", r.pairs());
+                x.put("warning", r.warning() != null);
+                x.put("violation", r.violation() != null);
+                x.put("lead", r.lead().orElse(null));
+                x.put("noMatch", r.noMatch());
+                perRun.add(x);
+            }
+            o.put("runs", perRun);
             o.put("unmapped", unmapped);
             out.println(EventPrinter.write(o));
         } else {
-            out.println("end of " + log + ": " + m.pipeline().records() + " records, " + m.pairs() + " compacted pairs; "
+            if (runs.size() > 1) {
+                for (RunOutcome r : runs) {
+                    out.println("run " + r.run() + " (from line " + r.firstLine() + "): " + r.pairs() + " compacted pairs; "
+                            + (r.warning() != null ? "warning raised" : "no warning")
+                            + (r.violation() != null ? ", property violated" : ", property held")
+                            + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse(""));
+                }
+            }
+            out.println("end of " + log + ": " + m.pipeline().records() + " records, " + runs.size() + " run(s), "
+                    + runs.stream().mapToLong(RunOutcome::pairs).sum() + " compacted pairs; "
                     + (m.warning().isPresent() ? "warning raised" : "no warning")
                     + (m.violation().isPresent() ? ", property violated" : ", property held"));
         }

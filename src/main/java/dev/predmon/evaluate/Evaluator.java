@@ -56,13 +56,13 @@ public final class Evaluator {
         int total = count(train) + 1 + count(test);
         Counter c = new Counter(total);
         List<String> notes = new ArrayList<>();
-        Map<Path, MealyTrace> samples = readSamples(train, notes, c);
+        Map<Path, LogTrace> samples = readSamples(train, notes, c);
         ModelSet models = learn(train, samples, log -> true, notes, "");
         c.step("learned " + models.models().size() + " model(s)");
         List<RunResult> runs = new ArrayList<>();
         for (ScenarioSpec s : test) {
             for (Path log : s.logs()) {
-                runs.add(judge(log, s, -1, models));
+                runs.addAll(judge(log, s, -1, models));
                 c.step(log.getFileName().toString());
             }
         }
@@ -74,7 +74,7 @@ public final class Evaluator {
         Map<Path, Integer> fold = Folds.assign(specs, k);
         Counter c = new Counter(count(specs) * 2 + k + 1);
         List<String> notes = new ArrayList<>();
-        Map<Path, MealyTrace> samples = readSamples(specs, notes, c);
+        Map<Path, LogTrace> samples = readSamples(specs, notes, c);
         List<RunResult> runs = new ArrayList<>();
         for (int f = 0; f < k; f++) {
             int current = f;
@@ -83,7 +83,7 @@ public final class Evaluator {
             for (ScenarioSpec s : specs) {
                 for (Path log : s.logs()) {
                     if (fold.get(log) == current) {
-                        runs.add(judge(log, s, current, models));
+                        runs.addAll(judge(log, s, current, models));
                         c.step("fold " + f + ": " + log.getFileName());
                     }
                 }
@@ -106,18 +106,18 @@ public final class Evaluator {
                 List.copyOf(runs), List.copyOf(notes), models);
     }
 
-    private RunResult judge(Path log, ScenarioSpec s, int fold, ModelSet models) throws BadInputException {
+    private List<RunResult> judge(Path log, ScenarioSpec s, int fold, ModelSet models) throws BadInputException {
         try {
-            return Replay.run(log, s.name(), s.faulty(), fold, models, abstraction, threshold, confirm);
+            return Replay.run(log, s.name(), s.faulty(), s.runs(), fold, models, abstraction, threshold, confirm);
         } catch (IOException e) {
             throw new BadInputException(log + ": cannot read: " + e.getMessage());
         }
     }
 
-    /** Each log's Mealy sample, as {@code learn} makes it; logs without interface messages are left out. */
-    private Map<Path, MealyTrace> readSamples(List<ScenarioSpec> specs, List<String> notes, Counter c)
+    /** Each log's trace, read once, its runs' Mealy samples taken as {@code learn} takes them. */
+    private Map<Path, LogTrace> readSamples(List<ScenarioSpec> specs, List<String> notes, Counter c)
             throws BadInputException {
-        Map<Path, MealyTrace> samples = new LinkedHashMap<>();
+        Map<Path, LogTrace> samples = new LinkedHashMap<>();
         for (ScenarioSpec s : specs) {
             for (Path log : s.logs()) {
                 LogTrace trace;
@@ -126,10 +126,10 @@ public final class Evaluator {
                 } catch (IOException e) {
                     throw new BadInputException(log + ": cannot read: " + e.getMessage());
                 }
-                if (trace.pairs().isEmpty()) {
+                if (trace.samples(s.runs()).isEmpty()) {
                     notes.add(log + ": no skill-component interface message; not learned from");
                 } else {
-                    samples.put(log, trace.mealy());
+                    samples.put(log, trace);
                 }
                 c.step("read " + log.getFileName());
             }
@@ -137,12 +137,12 @@ public final class Evaluator {
         return samples;
     }
 
-    private ModelSet learn(List<ScenarioSpec> specs, Map<Path, MealyTrace> samples,
+    private ModelSet learn(List<ScenarioSpec> specs, Map<Path, LogTrace> samples,
                            java.util.function.Predicate<Path> training, List<String> notes, String prefix) {
         List<LearnedScenario> learned = new ArrayList<>();
         for (ScenarioSpec s : specs) {
             List<MealyTrace> own = s.logs().stream().filter(training).filter(samples::containsKey)
-                    .map(samples::get).toList();
+                    .flatMap(log -> samples.get(log).samples(s.runs()).stream()).toList();
             if (own.isEmpty()) {
                 notes.add(prefix + "scenario '" + s.name() + "' has no training run; its runs can match no model of it");
                 continue;

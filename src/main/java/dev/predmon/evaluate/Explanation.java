@@ -6,6 +6,7 @@ import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.ModelTracker;
 import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.Traces;
 
 import java.io.IOException;
@@ -56,19 +57,29 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                             String input, String expected, String seen, int discrepancies, String reason) {
     }
 
-    /** Explains {@code log} against {@code models}. */
-    public static Explanation of(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
+    /** Explains {@code log} against {@code models}: one explanation per run the log holds. */
+    public static List<Explanation> of(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
             throws IOException {
         LogTrace trace = Traces.read(log, abstraction);
+        List<RunResult> verdicts = Replay.run(log, "?", false, RunLabel.ALL, -1, models, abstraction, threshold, confirm);
+        List<Explanation> all = new ArrayList<>();
+        for (LogTrace.Run r : trace.runs()) {
+            all.add(of(LogTrace.name(log, r.index(), trace.runs().size()), r.pairs(), models, threshold,
+                    verdicts.get(r.index())));
+        }
+        return List.copyOf(all);
+    }
+
+    private static Explanation of(String name, List<IoPair> pairs, ModelSet models, int threshold, RunResult run) {
         List<Step> steps = new ArrayList<>();
-        for (int i = 0; i < trace.pairs().size(); i++) {
-            IoPair p = trace.pairs().get(i);
+        for (int i = 0; i < pairs.size(); i++) {
+            IoPair p = pairs.get(i);
             steps.add(new Step(i, p.reply().time(), p.reply().line(), p.input(), p.output()));
         }
         List<ModelFate> fates = new ArrayList<>();
         for (LearnedModel m : models.models()) {
             ModelTracker t = new ModelTracker(m, threshold);
-            for (IoPair p : trace.pairs()) {
+            for (IoPair p : pairs) {
                 t.pair(p.input(), p.output());
                 if (!t.alive()) {
                     break;
@@ -92,7 +103,6 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                         t.discrepancies(), reason));
             }
         }
-        RunResult run = Replay.run(log, "?", false, -1, models, abstraction, threshold, confirm);
-        return new Explanation(log.toString(), List.copyOf(steps), List.copyOf(fates), run);
+        return new Explanation(name, List.copyOf(steps), List.copyOf(fates), run);
     }
 }

@@ -5,6 +5,9 @@ import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.RunOutcome;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunLabel;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -28,42 +31,50 @@ public final class Replay {
     }
 
     /**
-     * Replays {@code log} against {@code models}.
+     * Replays {@code log} against {@code models}: one result per run the log holds, of the runs {@code label}
+     * selects (each judged by its own warning and violation).
      *
      * @param fold the fold it is tested in, or -1
      */
-    public static RunResult run(Path log, String scenario, boolean faulty, int fold, ModelSet models,
-                                Abstraction abstraction, int threshold, int confirm) throws IOException {
+    public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
+                                      ModelSet models, Abstraction abstraction, int threshold, int confirm)
+            throws IOException {
         List<MonitorEvent> events = new ArrayList<>();
         int[] problems = {0};
         PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, events::add);
         try (LogWatcher watcher = new LogWatcher(log, monitor, p -> problems[0]++)) {
             watcher.drain();
         }
-        MonitorEvent.Warning warning = null;
-        MonitorEvent.Violation violation = null;
-        MonitorEvent.NoMatch noMatch = null;
-        List<RunResult.Elimination> eliminations = new ArrayList<>();
-        for (MonitorEvent e : events) {
-            if (e instanceof MonitorEvent.Warning w && warning == null) {
-                warning = w;
-            } else if (e instanceof MonitorEvent.Violation v && violation == null) {
-                violation = v;
-            } else if (e instanceof MonitorEvent.NoMatch n && noMatch == null) {
-                noMatch = n;
-            } else if (e instanceof MonitorEvent.Eliminated x) {
-                eliminations.add(new RunResult.Elimination(x.model(), x.scenario(), x.faulty(), x.time(), x.line(),
-                        x.reason()));
+        List<RunOutcome> runs = monitor.runs();
+        List<RunResult> results = new ArrayList<>();
+        for (RunOutcome o : runs) {
+            if (!label.selects(o.violation() != null)) {
+                continue;
             }
+            List<RunResult.Elimination> eliminations = new ArrayList<>();
+            MonitorEvent.NoMatch noMatch = null;
+            for (MonitorEvent e : events) {
+                if (e instanceof MonitorEvent.Eliminated x && x.run() == o.run()) {
+                    eliminations.add(new RunResult.Elimination(x.model(), x.scenario(), x.faulty(), x.time(), x.line(),
+                            x.reason()));
+                } else if (e instanceof MonitorEvent.NoMatch n && n.run() == o.run() && noMatch == null) {
+                    noMatch = n;
+                }
+            }
+            MonitorEvent.Warning warning = o.warning();
+            MonitorEvent.Violation violation = o.violation();
+            Double warningTime = warning == null ? null : warning.time();
+            Double violationTime = violation == null ? null : violation.time();
+            Verdict verdict = Verdict.of(faulty, warningTime, violationTime);
+            Double lead = verdict == Verdict.WARNED_BEFORE_VIOLATION ? violationTime - warningTime : null;
+            results.add(new RunResult(scenario, faulty, LogTrace.name(log, o.run(), runs.size()), fold, verdict,
+                    warningTime, warning == null ? null : warning.line(),
+                    warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.battery(),
+                    violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
+                    runs.size() == 1 ? monitor.pipeline().records() : -1, o.pairs(), problems[0],
+                    List.copyOf(eliminations), monitor.clock().unit(),
+                    violation != null && sudden(violation, abstraction)));
         }
-        Double warningTime = warning == null ? null : warning.time();
-        Double violationTime = violation == null ? null : violation.time();
-        Verdict verdict = Verdict.of(faulty, warningTime, violationTime);
-        Double lead = verdict == Verdict.WARNED_BEFORE_VIOLATION ? violationTime - warningTime : null;
-        return new RunResult(scenario, faulty, log.toString(), fold, verdict, warningTime,
-                warning == null ? null : warning.line(), warning == null ? List.of() : warning.scenarios(),
-                warning == null ? null : warning.battery(), violationTime, lead, noMatch != null,
-                noMatch == null ? null : noMatch.time(), monitor.pipeline().records(), monitor.pairs(), problems[0],
-                List.copyOf(eliminations), monitor.clock().unit(), violation != null && sudden(violation, abstraction));
+        return results;
     }
 }

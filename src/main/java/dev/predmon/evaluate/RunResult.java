@@ -7,7 +7,7 @@ import java.util.List;
  *
  * @param scenario         the log's scenario (its directory)
  * @param faulty           whether that scenario is faulty
- * @param log              the log file
+ * @param log              the log file; {@code file#k} for run k of a log that holds several
  * @param fold             the fold the log was tested in (0-based), or -1 with a separate test set
  * @param verdict          what the warning meant
  * @param warningTime      time of the warning, or null
@@ -18,7 +18,7 @@ import java.util.List;
  * @param lead             violation time minus warning time for a hit, else null
  * @param noMatch          whether a point came where no model matched (unknown behaviour)
  * @param noMatchTime      when, or null
- * @param records          records parsed
+ * @param records          records parsed (-1 for one run of a log that holds several)
  * @param pairs            compacted pairs matched
  * @param problems         parse problems in the log
  * @param eliminations     every model's elimination, in log order

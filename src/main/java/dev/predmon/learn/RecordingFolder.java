@@ -3,7 +3,9 @@ package dev.predmon.learn;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
-import dev.predmon.parse.LogReader;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunLabel;
+import dev.predmon.pipeline.Traces;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -43,7 +45,10 @@ public final class RecordingFolder {
         }
     }
 
-    /** The two scenarios of a recording folder, labelled by the safety monitor (a scenario without runs is left out). */
+    /**
+     * The two scenarios of a recording folder, labelled run by run by the safety monitor (a log holding a safe run
+     * and a violating one is in both, each taking its own runs); a scenario without runs is left out.
+     */
     static List<ScenarioSpec> scenarios(Path dir, Abstraction abstraction) throws BadInputException {
         SafetyRule rule = abstraction.safety().orElseThrow(() -> new BadInputException(dir
                 + ": a folder of recordings is labelled by the safety monitor, and abstraction '" + abstraction.name()
@@ -51,28 +56,28 @@ public final class RecordingFolder {
         List<Path> violating = new ArrayList<>();
         List<Path> safe = new ArrayList<>();
         for (Path log : logs(dir)) {
-            (violates(log, rule) ? violating : safe).add(log);
+            LogTrace trace;
+            try {
+                trace = Traces.read(log, abstraction);
+            } catch (IOException e) {
+                throw new BadInputException(log + ": cannot read: " + e.getMessage());
+            }
+            if (trace.runs().stream().anyMatch(LogTrace.Run::violated)) {
+                violating.add(log);
+            }
+            if (trace.runs().stream().anyMatch(r -> !r.violated())) {
+                safe.add(log);
+            }
         }
         List<ScenarioSpec> specs = new ArrayList<>();
         if (!safe.isEmpty()) {
             specs.add(new ScenarioSpec(SAFE, false, "runs in which '" + rule.name()
-                    + "' held to the end (labelled by the safety monitor)", List.copyOf(safe)));
+                    + "' held to the end (labelled by the safety monitor)", List.copyOf(safe), RunLabel.SAFE));
         }
         if (!violating.isEmpty()) {
             specs.add(new ScenarioSpec(VIOLATING, true, "runs that violated '" + rule.name()
-                    + "' (labelled by the safety monitor)", List.copyOf(violating)));
+                    + "' (labelled by the safety monitor)", List.copyOf(violating), RunLabel.VIOLATING));
         }
         return specs;
-    }
-
-    /** Whether the safety monitor sees {@code log} violate the property. */
-    private static boolean violates(Path log, SafetyRule rule) throws BadInputException {
-        boolean[] violated = {false};
-        try {
-            LogReader.read(log, r -> violated[0] |= rule.violatedBy(rule.valueOf(r)), p -> { });
-        } catch (IOException e) {
-            throw new BadInputException(log + ": cannot read: " + e.getMessage());
-        }
-        return violated[0];
     }
 }

@@ -38,10 +38,11 @@ public final class ScenarioLearner {
             }
             trace.problems().forEach(p -> problems.add(p.format(log.toString())));
             trace.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
-            if (trace.pairs().isEmpty()) {
+            List<MealyTrace> runs = trace.samples(spec.runs());
+            if (runs.isEmpty()) {
                 skipped.add(log + ": no skill-component interface message (" + trace.records() + " records)");
             } else {
-                samples.add(trace.mealy());
+                samples.addAll(runs);
             }
         }
         if (samples.isEmpty()) {

@@ -9,7 +9,7 @@ import java.util.List;
  * the tree's tick number; each event's {@code clock} says which.
  */
 public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.Violation, MonitorEvent.Eliminated,
-        MonitorEvent.NoMatch, MonitorEvent.Restarted {
+        MonitorEvent.NoMatch, MonitorEvent.Restarted, MonitorEvent.RunStarted {
 
     /**
      * Every nominal scenario is eliminated while a faulty one still matches: the run is predicted to fail.
@@ -20,8 +20,9 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param battery   the last value seen on the safety property's channel (the battery level), or null
      * @param pairs     compacted query/reply pairs seen so far
      * @param clock     what {@code time} counts
+     * @param run       the run of the log (0, 1, ... in a log that holds several)
      */
-    record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock)
+    record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run)
             implements MonitorEvent {
     }
 
@@ -34,8 +35,9 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param value    the violating value (the battery level)
      * @param before   the value of the reading before it on the same channel, or null when it was the first
      * @param clock    what {@code time} counts
+     * @param run      the run of the log
      */
-    record Violation(double time, long line, String property, double value, Double before, Clock clock)
+    record Violation(double time, long line, String property, double value, Double before, Clock clock, int run)
             implements MonitorEvent {
     }
 
@@ -49,13 +51,25 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param faulty   whether that scenario is faulty
      * @param reason   why (expected versus seen)
      * @param clock    what {@code time} counts
+     * @param run      the run of the log
      */
     record Eliminated(double time, long line, String model, String scenario, boolean faulty, String reason,
-                      Clock clock) implements MonitorEvent {
+                      Clock clock, int run) implements MonitorEvent {
     }
 
     /** No model matches any more: the run is unlike every learned scenario. */
-    record NoMatch(double time, long line, Clock clock) implements MonitorEvent {
+    record NoMatch(double time, long line, Clock clock, int run) implements MonitorEvent {
+    }
+
+    /**
+     * A new run of the robot begins in the log (its tick counter started again, or after a silence): every model
+     * starts over from its initial state, and the run gets its own warning, violation and lead.
+     *
+     * @param run  its number (1, 2, ...; run 0 begins with the log)
+     * @param time time of its first record
+     * @param line line of its first record
+     */
+    record RunStarted(int run, double time, long line, Clock clock) implements MonitorEvent {
     }
 
     /** The log was truncated or replaced; matching starts over. */

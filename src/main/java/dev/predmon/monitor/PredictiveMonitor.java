@@ -48,6 +48,11 @@ public final class PredictiveMonitor implements PipelineListener {
     private Double battery;
     private Clock clock = Clock.SECONDS;
     private long pairs;
+    private int run;
+    private long runLine = 1;
+    private final List<RunOutcome> finished = new ArrayList<>();
+    private MonitorEvent.Warning firstWarning;
+    private MonitorEvent.Violation firstViolation;
     private final int confirm;
     /** Pairs matched since every nominal model was eliminated with a faulty one alive; -1 before. */
     private long sinceNominalGone = -1;
@@ -89,9 +94,27 @@ public final class PredictiveMonitor implements PipelineListener {
         pipeline.endOfInput();
     }
 
-    /** The log was truncated or replaced: start over as for a new run. */
+    /** The log was truncated or replaced: start over as for a new log. */
     public void restart(String reason) {
         pipeline.reset();
+        startRun(0, 1);
+        finished.clear();
+        firstWarning = null;
+        firstViolation = null;
+        events.accept(new MonitorEvent.Restarted(reason));
+    }
+
+    /** A new run begins in the log: its outcome is kept and every model starts over. */
+    @Override
+    public void runStarted(int number, LogRecord first) {
+        finished.add(current());
+        startRun(number, first.line());
+        events.accept(new MonitorEvent.RunStarted(number, first.time(), first.line(), first.clock()));
+    }
+
+    private void startRun(int number, long line) {
+        run = number;
+        runLine = line;
         trackers.forEach(ModelTracker::reset);
         warning = null;
         violation = null;
@@ -99,7 +122,17 @@ public final class PredictiveMonitor implements PipelineListener {
         battery = null;
         pairs = 0;
         sinceNominalGone = -1;
-        events.accept(new MonitorEvent.Restarted(reason));
+    }
+
+    private RunOutcome current() {
+        return new RunOutcome(run, runLine, warning, violation, noMatch, pairs);
+    }
+
+    /** The outcome of every run so far, the current one last. */
+    public List<RunOutcome> runs() {
+        List<RunOutcome> all = new ArrayList<>(finished);
+        all.add(current());
+        return List.copyOf(all);
     }
 
     @Override
@@ -116,7 +149,8 @@ public final class PredictiveMonitor implements PipelineListener {
         battery = v;
         if (violation == null && safety.get().violatedBy(v)) {
             violation = new MonitorEvent.Violation(record.time(), record.line(), safety.get().name(), v, before,
-                    record.clock());
+                    record.clock(), run);
+            firstViolation = firstViolation == null ? violation : firstViolation;
             events.accept(violation);
         }
     }
@@ -131,7 +165,7 @@ public final class PredictiveMonitor implements PipelineListener {
             if (!t.pair(pair.input(), pair.output())) {
                 LearnedModel m = t.model();
                 events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
-                        m.faulty(), t.elimination().describe(), trigger.clock()));
+                        m.faulty(), t.elimination().describe(), trigger.clock(), run));
             }
         }
         TreeSet<String> faultyAlive = new TreeSet<>();
@@ -150,23 +184,29 @@ public final class PredictiveMonitor implements PipelineListener {
         }
         if (warning == null && !nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
             warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), List.copyOf(faultyAlive), battery, pairs,
-                    trigger.clock());
+                    trigger.clock(), run);
+            firstWarning = firstWarning == null ? warning : firstWarning;
             events.accept(warning);
         }
         if (!noMatch && !nominalAlive && faultyAlive.isEmpty()) {
             noMatch = true;
-            events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock()));
+            events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock(), run));
         }
     }
 
-    /** The warning, once raised. */
+    /** The first warning of the log (of any run), once raised. */
     public Optional<MonitorEvent.Warning> warning() {
-        return Optional.ofNullable(warning);
+        return Optional.ofNullable(firstWarning);
     }
 
-    /** The safety violation, once seen. */
+    /** The first safety violation of the log (of any run), once seen. */
     public Optional<MonitorEvent.Violation> violation() {
-        return Optional.ofNullable(violation);
+        return Optional.ofNullable(firstViolation);
+    }
+
+    /** The run being matched: 0, then 1, 2, ... in a log that holds several. */
+    public int run() {
+        return run;
     }
 
     /** Every model's tracker, in model order. */

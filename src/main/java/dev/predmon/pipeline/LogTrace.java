@@ -6,6 +6,7 @@ import dev.predmon.mealy.MealyTrace;
 import dev.predmon.parse.ParseProblem;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
@@ -13,17 +14,48 @@ import java.util.Map;
  * A whole log read offline through the {@link TracePipeline}.
  *
  * @param log              the file
- * @param pairs            the compacted trace
+ * @param pairs            the compacted trace, every run's pairs in log order
  * @param problems         what the parser reported (first {@link Traces#MAX_PROBLEMS} only)
  * @param records          records parsed
  * @param interfaceRecords records of the skill-component interface
  * @param unmapped         interface messages no rule maps, by key
+ * @param runs             the runs the log holds (one, unless the robot ran several missions in it)
  */
 public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems, long records,
-                       long interfaceRecords, Map<String, Long> unmapped) {
+                       long interfaceRecords, Map<String, Long> unmapped, List<Run> runs) {
 
-    /** The trace as a Mealy sample. */
+    /**
+     * One run of a log.
+     *
+     * @param index     0, 1, ... in log order
+     * @param firstLine the line of its first record
+     * @param pairs     its compacted trace
+     * @param violated  whether the safety monitor saw its property violated in this run
+     */
+    public record Run(int index, long firstLine, List<IoPair> pairs, boolean violated) {
+    }
+
+    /** The trace as one Mealy sample (a log of one run). */
     public MealyTrace mealy() {
         return MealyMapping.toTrace(pairs, log.toString());
+    }
+
+    /**
+     * One Mealy sample per run with interface messages, of the runs {@code label} selects; a run after the first is
+     * named {@code log#run}.
+     */
+    public List<MealyTrace> samples(RunLabel label) {
+        List<MealyTrace> samples = new ArrayList<>();
+        for (Run r : runs) {
+            if (!r.pairs().isEmpty() && label.selects(r.violated())) {
+                samples.add(MealyMapping.toTrace(r.pairs(), name(log, r.index(), runs.size())));
+            }
+        }
+        return samples;
+    }
+
+    /** How a run of a log is named in reports: the file, with {@code #k} when the log holds several runs. */
+    public static String name(Path log, int run, int runs) {
+        return runs > 1 ? log + "#" + run : log.toString();
     }
 }

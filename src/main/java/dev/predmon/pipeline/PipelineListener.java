@@ -12,4 +12,11 @@ public interface PipelineListener {
 
     /** A compacted query/reply pair; {@code trigger} is the record whose arrival completed it. */
     void pair(IoPair pair, LogRecord trigger);
+
+    /**
+     * {@code first} begins run number {@code run} (1, 2, ...) of a log that holds several; the previous run's last
+     * pairs were delivered before. Run 0 begins with the log and is not announced.
+     */
+    default void runStarted(int run, LogRecord first) {
+    }
 }

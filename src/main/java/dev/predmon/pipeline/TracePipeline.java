@@ -22,6 +22,8 @@ public final class TracePipeline {
     private final Compactor compactor;
     private final CarryEncoder encoder;
     private final Hysteresis hysteresis;
+    private final RunSplitter runs;
+    private int run;
     private final Map<String, Long> unmapped = new TreeMap<>();
     private LogRecord current;
     private long records;
@@ -32,11 +34,22 @@ public final class TracePipeline {
         this.listener = listener;
         this.encoder = new CarryEncoder(abstraction);
         this.hysteresis = new Hysteresis(abstraction);
+        this.runs = new RunSplitter(abstraction.runs());
         this.compactor = new Compactor(pair -> listener.pair(encoder.encode(pair), current), abstraction::bandPath);
     }
 
-    /** Takes the next record of the log. */
+    /**
+     * Takes the next record of the log. A record that begins a new run ({@link dev.predmon.abstraction.RunRule})
+     * first ends the run before it, as the end of a log would, and starts matching over.
+     */
     public void accept(LogRecord record) {
+        if (runs.startsRun(record) && records > 0) {
+            compactor.endOfInput();
+            compactor.reset();
+            encoder.reset();
+            hysteresis.reset();
+            listener.runStarted(++run, record);
+        }
         current = record;
         records++;
         listener.record(record);
@@ -60,6 +73,8 @@ public final class TracePipeline {
         compactor.reset();
         encoder.reset();
         hysteresis.reset();
+        runs.reset();
+        run = 0;
         unmapped.clear();
         current = null;
         records = 0;
@@ -69,6 +84,11 @@ public final class TracePipeline {
     /** Interface messages no rule maps, by key, sorted: reported to the user, never silently dropped. */
     public Map<String, Long> unmapped() {
         return Collections.unmodifiableMap(new TreeMap<>(unmapped));
+    }
+
+    /** The run being read: 0, then 1, 2, ... in a log that holds several. */
+    public int run() {
+        return run;
     }
 
     /** Records seen. */

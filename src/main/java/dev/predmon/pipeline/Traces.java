@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
@@ -10,6 +11,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 
 /** Reads whole logs offline through the shared {@link TracePipeline}. */
 public final class Traces {
@@ -20,11 +22,12 @@ public final class Traces {
     private Traces() {
     }
 
-    /** Parses, abstracts and compacts {@code log}. */
+    /** Parses, abstracts and compacts {@code log}, cut into its runs; each run says whether it violated the property. */
     public static LogTrace read(Path log, Abstraction abstraction) throws IOException {
         List<IoPair> pairs = new ArrayList<>();
         List<ParseProblem> problems = new ArrayList<>();
-        TracePipeline pipeline = new TracePipeline(abstraction, (pair, trigger) -> pairs.add(pair));
+        RunCollector runs = new RunCollector(abstraction, pairs);
+        TracePipeline pipeline = new TracePipeline(abstraction, runs);
         LogReader.read(log, pipeline::accept, p -> {
             if (problems.size() < MAX_PROBLEMS) {
                 problems.add(p);
@@ -32,7 +35,50 @@ public final class Traces {
         });
         pipeline.endOfInput();
         return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), pipeline.records(),
-                pipeline.interfaceRecords(), pipeline.unmapped());
+                pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs());
+    }
+
+    /** Collects each run's pairs and whether the safety monitor saw it violate the property. */
+    private static final class RunCollector implements PipelineListener {
+        private final Optional<SafetyRule> safety;
+        private final List<IoPair> all;
+        private final List<LogTrace.Run> done = new ArrayList<>();
+        private List<IoPair> pairs = new ArrayList<>();
+        private long firstLine = 1;
+        private boolean violated;
+
+        RunCollector(Abstraction abstraction, List<IoPair> all) {
+            this.safety = abstraction.safety();
+            this.all = all;
+        }
+
+        @Override
+        public void record(LogRecord record) {
+            violated |= safety.isPresent() && safety.get().violatedBy(safety.get().valueOf(record));
+        }
+
+        @Override
+        public void pair(IoPair pair, LogRecord trigger) {
+            pairs.add(pair);
+            all.add(pair);
+        }
+
+        @Override
+        public void runStarted(int run, LogRecord first) {
+            finish();
+            firstLine = first.line();
+        }
+
+        private void finish() {
+            done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated));
+            pairs = new ArrayList<>();
+            violated = false;
+        }
+
+        List<LogTrace.Run> runs() {
+            finish();
+            return List.copyOf(done);
+        }
     }
 
     /** Convenience for tests and tools: runs records already in memory through the pipeline. */

@@ -26,6 +26,9 @@ final class Components {
     private final Map<String, Point> locations;
     private final SplittableRandom noise;
     private final int stopDelayTicks;
+    /** The battery sensor's noise: its own stream, so that a noise-free run draws exactly as before. */
+    private final double sensorNoise;
+    private final SplittableRandom sensor;
 
     private double time;
     private double level;
@@ -40,8 +43,15 @@ final class Components {
     private int goToStationCount;
 
     Components(SimParameters p, SplittableRandom noise) {
+        this(p, noise, 0.0, null);
+    }
+
+    /** @param sensorNoise standard deviation of the battery sensor's Gaussian noise, drawn from {@code sensor} */
+    Components(SimParameters p, SplittableRandom noise, double sensorNoise, SplittableRandom sensor) {
         this.p = p;
         this.noise = noise;
+        this.sensorNoise = sensorNoise;
+        this.sensor = sensor;
         this.locations = Map.of(KITCHEN, p.kitchen(), CHARGING_STATION, p.chargingStation(), "start", Point.ORIGIN);
         this.stopDelayTicks = noise.nextInt(1, 4);
         this.level = p.startLevel();
@@ -98,8 +108,14 @@ final class Components {
     }
 
     private void sample() {
-        reportedLevel = level;
+        reportedLevel = sensorNoise > 0 ? Math.min(100.0, Math.max(0.0, level + sensorNoise * gaussian())) : level;
         lastSample = time;
+    }
+
+    /** A standard normal draw (Box-Muller; SplittableRandom has no nextGaussian in Java 17). */
+    private double gaussian() {
+        double u = 1.0 - sensor.nextDouble();
+        return Math.sqrt(-2.0 * Math.log(u)) * Math.cos(2 * Math.PI * sensor.nextDouble());
     }
 
     /** {@code BatteryReader.level()}: the last sensor reading, a percentage. */

@@ -16,7 +16,7 @@ package dev.predmon.simulate;
  * @param crlf         end lines with {@code \r\n} instead of {@code \n}
  */
 public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, double lateReplies, boolean vocab,
-                         boolean spaces, boolean crlf) {
+                         boolean spaces, boolean crlf, double noise) {
 
     /** The thesis's final Early Warning (Section 5.2). */
     public static final double DEFAULT_EARLY_WARNING = 50.0;
@@ -29,6 +29,15 @@ public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, d
         if (!(lateReplies >= 0.0 && lateReplies <= 1.0)) {
             throw new IllegalArgumentException("late-reply probability must be in [0, 1], got " + lateReplies);
         }
+        if (!(noise >= 0.0 && noise <= 20.0)) {
+            throw new IllegalArgumentException("sensor noise must be a standard deviation in [0, 20] points, got " + noise);
+        }
+    }
+
+    /** Options of a noise-free battery sensor. */
+    public SimOptions(double earlyWarning, boolean epoch, boolean rawLines, double lateReplies, boolean vocab,
+                      boolean spaces, boolean crlf) {
+        this(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, 0.0);
     }
 
     /** Early warning 50, relative times, tab columns, {@code \n}, replies in order, {@code 1}/{@code 0}. */
@@ -37,30 +46,38 @@ public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, d
     }
 
     public SimOptions withEarlyWarning(double value) {
-        return new SimOptions(value, epoch, rawLines, lateReplies, vocab, spaces, crlf);
+        return new SimOptions(value, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise);
     }
 
     public SimOptions withEpoch(boolean value) {
-        return new SimOptions(earlyWarning, value, rawLines, lateReplies, vocab, spaces, crlf);
+        return new SimOptions(earlyWarning, value, rawLines, lateReplies, vocab, spaces, crlf, noise);
     }
 
     public SimOptions withRawLines(boolean value) {
-        return new SimOptions(earlyWarning, epoch, value, lateReplies, vocab, spaces, crlf);
+        return new SimOptions(earlyWarning, epoch, value, lateReplies, vocab, spaces, crlf, noise);
     }
 
     public SimOptions withLateReplies(double value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, value, vocab, spaces, crlf);
+        return new SimOptions(earlyWarning, epoch, rawLines, value, vocab, spaces, crlf, noise);
     }
 
     public SimOptions withVocab(boolean value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, value, spaces, crlf);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, value, spaces, crlf, noise);
     }
 
     public SimOptions withSpaces(boolean value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, value, crlf);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, value, crlf, noise);
     }
 
     public SimOptions withCrlf(boolean value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, value);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, value, noise);
+    }
+
+    /**
+     * Gaussian noise of this standard deviation, in percentage points, on every battery reading: a real sensor is
+     * not monotone. The tree reacts to the noisy reading, as a real one would.
+     */
+    public SimOptions withNoise(double value) {
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, value);
     }
 }

@@ -56,7 +56,8 @@ public final class Simulator {
             if (p == null) {
                 continue;
             }
-            List<SimEvent> events = simulate(scenario, p, options.earlyWarning(), startMicros, noise);
+            List<SimEvent> events = simulate(scenario, p, options, startMicros, noise,
+                    new SplittableRandom(seed * 0x5DEECE66DL + attempt));
             if (events == null) {
                 continue;
             }
@@ -140,9 +141,10 @@ public final class Simulator {
      * Ticks the tree until it succeeds or the robot stops on an empty battery; null past the time cap or as soon
      * as the run can no longer tell the story (which keeps rejected samples cheap).
      */
-    private static List<SimEvent> simulate(Scenario scenario, SimParameters p, double ew, long startMicros,
-                                           SplittableRandom noise) {
-        Components c = new Components(p, noise.split());
+    private static List<SimEvent> simulate(Scenario scenario, SimParameters p, SimOptions options, long startMicros,
+                                           SplittableRandom noise, SplittableRandom sensor) {
+        double ew = options.earlyWarning();
+        Components c = new Components(p, noise.split(), options.noise(), sensor);
         Recorder r = new Recorder(noise.split());
         Node root = BehaviorTree.build(c, r, ew, p.goToEchoesDestination());
         int remaining = -1;

@@ -21,4 +21,15 @@ import java.util.List;
 public record Truth(Scenario scenario, boolean faulty, long seed, SimParameters parameters, Double violationTime,
                     Double violationLevel, Double turnTime, Double turnLevel, Double stationLevel, double endTime,
                     List<double[]> batteryTimeline) {
+
+    /** The same truth for the run shifted {@code seconds} later in its log. */
+    public Truth shifted(double seconds) {
+        List<double[]> timeline = batteryTimeline.stream().map(p -> new double[] {p[0] + seconds, p[1]}).toList();
+        return new Truth(scenario, faulty, seed, parameters, plus(violationTime, seconds), violationLevel,
+                plus(turnTime, seconds), turnLevel, stationLevel, endTime + seconds, timeline);
+    }
+
+    private static Double plus(Double t, double seconds) {
+        return t == null ? null : t + seconds;
+    }
 }

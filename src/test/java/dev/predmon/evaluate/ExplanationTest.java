@@ -39,7 +39,9 @@ class ExplanationTest {
         ModelSet models = LearnedModels.modelSet(List.of(
                 learn("recharge", false, recharge, a), learn("depleted", true, depleted, a)), a);
 
-        Explanation x = Explanation.of(depleted, models, a, 0, a.confirm());
+        List<Explanation> runs = Explanation.of(depleted, models, a, 0, a.confirm());
+        assertEquals(1, runs.size(), "a log of one run is one explanation");
+        Explanation x = runs.get(0);
         assertFalse(x.steps().isEmpty());
         Explanation.ModelFate rechargeFate = x.models().stream().filter(f -> f.model().equals("recharge"))
                 .findFirst().orElseThrow();

@@ -1,0 +1,22 @@
+package dev.predmon.monitor;
+
+import java.util.Optional;
+
+/**
+ * What the predictive monitor saw in one run of a log.
+ *
+ * @param run       0, 1, ... in log order
+ * @param firstLine the line of its first record
+ * @param warning   its warning, or null
+ * @param violation its first violation, or null
+ * @param noMatch   whether a point came where no model matched
+ * @param pairs     compacted pairs matched
+ */
+public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
+                         boolean noMatch, long pairs) {
+
+    /** Violation time minus warning time when both happened, in the log's unit. */
+    public Optional<Double> lead() {
+        return warning != null && violation != null ? Optional.of(violation.time() - warning.time()) : Optional.empty();
+    }
+}
