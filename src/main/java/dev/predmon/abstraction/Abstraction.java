@@ -84,6 +84,10 @@ public final class Abstraction {
     private final Optional<SafetyRule> safety;
     private final int confirm;
     private final RunRule runs;
+    private final AbstractionSpec spec;
+    private final Map<String, Double> learnedHysteresis;
+    /** Each continuous rule's band symbols, expanded, to the rule's input template. */
+    private final Map<String, String> continuousInputOf;
     private final List<String> inputAlphabet;
     private final List<String> outputAlphabet;
     private final String canonicalJson;
@@ -122,6 +126,17 @@ public final class Abstraction {
     }
 
     private Abstraction(AbstractionSpec spec) {
+        this(spec, null, Map.of());
+    }
+
+    /**
+     * @param fingerprintOf the abstraction whose identity this one keeps (its canonical JSON and fingerprint), or
+     *                      null for the spec's own
+     * @param learned       the hysteresis learned per continuous rule input, already in {@code spec}
+     */
+    private Abstraction(AbstractionSpec spec, Abstraction fingerprintOf, Map<String, Double> learned) {
+        this.spec = spec;
+        this.learnedHysteresis = Map.copyOf(learned);
         this.name = spec.name();
         this.drop = spec.drop() == null ? List.of() : List.copyOf(spec.drop());
         this.locations = spec.locations() == null ? Map.of() : Map.copyOf(spec.locations());
@@ -159,6 +174,13 @@ public final class Abstraction {
             }
         }
         this.continuousBands = Map.copyOf(ordered);
+        Map<String, String> inputOfBand = new HashMap<>();
+        for (RuleSpec r : spec.rules()) {
+            if (Boolean.TRUE.equals(r.continuous())) {
+                r.replies().forEach(p -> expand(p.symbol()).forEach(band -> inputOfBand.put(band, r.input())));
+            }
+        }
+        this.continuousInputOf = Map.copyOf(inputOfBand);
         Map<String, Band> bands = new HashMap<>();
         Map<String, Double> hysteresis = new HashMap<>();
         for (RuleSpec r : spec.rules()) {
@@ -196,12 +218,17 @@ public final class Abstraction {
         this.confirm = spec.warning() == null || spec.warning().confirm() == null ? 0 : spec.warning().confirm();
         this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
                 s.from() == null ? "" : s.from(), s.to() == null ? "" : s.to(), s.below()));
-        try {
-            this.canonicalJson = MAPPER.writeValueAsString(spec);
-        } catch (JsonProcessingException e) {
-            throw new IllegalStateException("cannot serialise a validated abstraction", e);
+        if (fingerprintOf != null) {
+            this.canonicalJson = fingerprintOf.canonicalJson;
+            this.fingerprint = fingerprintOf.fingerprint;
+        } else {
+            try {
+                this.canonicalJson = MAPPER.writeValueAsString(spec);
+            } catch (JsonProcessingException e) {
+                throw new IllegalStateException("cannot serialise a validated abstraction", e);
+            }
+            this.fingerprint = sha256(canonicalJson);
         }
-        this.fingerprint = sha256(canonicalJson);
     }
 
     /**
@@ -597,6 +624,57 @@ public final class Abstraction {
      */
     public int confirm() {
         return confirm;
+    }
+
+    /**
+     * The input (as the file writes it, e.g. {@code level_i}) of the continuous rule whose reply {@code r} is, with
+     * its value; empty for any other record. The learner estimates a sensor's noise from these readings.
+     */
+    public Optional<Map.Entry<String, Double>> continuousReading(LogRecord r) {
+        if (r.kind() != RecordKind.REPLY || continuousInputOf.isEmpty()) {
+            return Optional.empty();
+        }
+        Classification c = classify(r);
+        if (!(c instanceof Classification.Mapped m)) {
+            return Optional.empty();
+        }
+        String input = continuousInputOf.get(m.event().symbol());
+        String value = r.reply().trim();
+        if (input == null || !NUMBER.matcher(value).matches()) {
+            return Optional.empty();
+        }
+        return Optional.of(Map.entry(input, Double.parseDouble(value)));
+    }
+
+    /**
+     * This abstraction with hysteresis learned from training runs ({@code input -> h}) on the continuous rules that
+     * do not set their own. It keeps this one's name and fingerprint: it is the same abstraction, tuned to a sensor's
+     * noise, and {@code models/index.json} records the values beside the fingerprint. An empty map gives this one.
+     */
+    public Abstraction withLearnedHysteresis(Map<String, Double> byInput) {
+        Map<String, Double> applied = new java.util.TreeMap<>();
+        List<RuleSpec> rules = new ArrayList<>();
+        for (RuleSpec r : spec.rules()) {
+            Double h = byInput.get(r.input());
+            if (Boolean.TRUE.equals(r.continuous()) && r.hysteresis() == null && h != null && h > 0) {
+                applied.put(r.input(), h);
+                rules.add(new RuleSpec(r.protocol(), r.command(), r.client(), r.input(), r.description(),
+                        r.continuous(), r.carry(), h, r.replies()));
+            } else {
+                rules.add(r);
+            }
+        }
+        if (applied.isEmpty()) {
+            return this;
+        }
+        AbstractionSpec tuned = new AbstractionSpec(spec.name(), spec.description(), spec.drop(), spec.locations(),
+                List.copyOf(rules), spec.safety(), spec.warning(), spec.runs());
+        return new Abstraction(tuned, this, applied);
+    }
+
+    /** The hysteresis learned from training runs that this abstraction applies, by rule input; empty if none. */
+    public Map<String, Double> learnedHysteresis() {
+        return learnedHysteresis;
     }
 
     /** Where runs begin in a log that holds several ({@link RunRule#DEFAULT} unless the file's {@code runs} says). */

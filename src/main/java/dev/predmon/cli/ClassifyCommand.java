@@ -50,6 +50,7 @@ final class ClassifyCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Abstraction abstraction = abstractionOption.load();
         ModelSet set = models.load(abstraction);
+        abstraction = set.tune(abstraction); // the hysteresis learn estimated from the training runs' sensor noise
         LogTrace trace = Traces.read(log, abstraction);
         Problems.print(spec.commandLine().getErr(), log, trace);
         Classifier.Result r = Classifier.classify(set, trace.mealy(), threshold.value);

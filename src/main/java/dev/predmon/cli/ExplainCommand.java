@@ -50,6 +50,7 @@ final class ExplainCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Abstraction abstraction = abstractionOption.load();
         ModelSet set = models.load(abstraction);
+        abstraction = set.tune(abstraction); // the hysteresis learn estimated from the training runs' sensor noise
         if (!Files.isRegularFile(log)) {
             throw new BadInputException(log + ": no such file");
         }

@@ -47,6 +47,7 @@ final class VerifyCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Abstraction abstraction = abstractionOption.load();
         ModelSet set = models.load(abstraction);
+        abstraction = set.tune(abstraction); // the hysteresis learn estimated from the training runs' sensor noise
         List<LearnedModel> own = set.models().stream().filter(m -> m.scenario().equals(scenario)).toList();
         if (own.isEmpty()) {
             throw new BadInputException(models.dir + ": no scenario '" + scenario + "' (have: "

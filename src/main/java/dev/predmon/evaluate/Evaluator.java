@@ -3,6 +3,7 @@ package dev.predmon.evaluate;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.LearnedModels;
+import dev.predmon.learn.Learning;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
@@ -35,6 +36,8 @@ public final class Evaluator {
     private final Abstraction abstraction;
     private final int threshold;
     private final int confirm;
+    /** Training traces read again with a learned hysteresis, by that hysteresis. */
+    private final Map<Map<String, Double>, Map<Path, LogTrace>> retuned = new java.util.HashMap<>();
     private final Progress progress;
     private final Alphabet<String> alphabet;
 
@@ -137,19 +140,36 @@ public final class Evaluator {
         return samples;
     }
 
+    /**
+     * Learns every scenario from the training logs, as {@code learn} does: the sensor noise is estimated from the
+     * training runs ({@link Learning#tuneToNoise}) and, when there is some, the logs are read again with the
+     * hysteresis that absorbs it (cached by hysteresis, since folds mostly agree).
+     */
     private ModelSet learn(List<ScenarioSpec> specs, Map<Path, LogTrace> samples,
-                           java.util.function.Predicate<Path> training, List<String> notes, String prefix) {
+                           java.util.function.Predicate<Path> training, List<String> notes, String prefix)
+            throws BadInputException {
+        List<ScenarioSpec> train = specs.stream().map(s -> new ScenarioSpec(s.name(), s.faulty(), s.description(),
+                s.logs().stream().filter(training).filter(samples::containsKey).toList(), s.runs())).toList();
+        Abstraction tuned = Learning.tuneToNoise(train, samples, abstraction);
+        Map<Path, LogTrace> traces = samples;
+        if (tuned != abstraction) {
+            traces = retuned.get(tuned.learnedHysteresis());
+            if (traces == null) {
+                traces = ScenarioLearner.read(samples.keySet(), tuned);
+                retuned.put(tuned.learnedHysteresis(), traces);
+            }
+        }
         List<LearnedScenario> learned = new ArrayList<>();
-        for (ScenarioSpec s : specs) {
-            List<MealyTrace> own = s.logs().stream().filter(training).filter(samples::containsKey)
-                    .flatMap(log -> samples.get(log).samples(s.runs()).stream()).toList();
+        for (ScenarioSpec s : train) {
+            Map<Path, LogTrace> read = traces;
+            List<MealyTrace> own = s.logs().stream().flatMap(log -> read.get(log).samples(s.runs()).stream()).toList();
             if (own.isEmpty()) {
                 notes.add(prefix + "scenario '" + s.name() + "' has no training run; its runs can match no model of it");
                 continue;
             }
             learned.add(ScenarioLearner.learnSamples(s, own, alphabet));
         }
-        return LearnedModels.modelSet(learned, abstraction);
+        return LearnedModels.modelSet(learned, tuned);
     }
 
     private static int count(List<ScenarioSpec> specs) {

@@ -38,7 +38,8 @@ public final class LearnedModels {
         }
         try {
             ModelIndex.AbstractionInfo info = new ModelIndex.AbstractionInfo(abstraction.name(),
-                    abstraction.fingerprint(), new ObjectMapper().readTree(abstraction.canonicalJson()));
+                    abstraction.fingerprint(), new ObjectMapper().readTree(abstraction.canonicalJson()),
+                    abstraction.learnedHysteresis());
             return new ModelIndex(ModelIndex.FORMAT, info, List.copyOf(ModelStore.alphabetOf(abstraction)),
                     List.copyOf(entries));
         } catch (JsonProcessingException e) {

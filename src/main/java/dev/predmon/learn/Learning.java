@@ -8,6 +8,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import dev.predmon.pipeline.LogTrace;
 import java.util.function.Consumer;
 
 /** The {@code learn} job as a library call: every scenario of a log directory, then the models written. */
@@ -24,13 +26,37 @@ public final class Learning {
     public static List<LearnedScenario> learnAndWrite(Path logs, Path models, Abstraction abstraction,
                                                       Consumer<LearnedScenario> each) throws BadInputException, IOException {
         List<LearnedScenario> learned = new ArrayList<>();
-        for (ScenarioSpec s : ScenarioLayout.scan(logs, abstraction)) {
-            LearnedScenario l = ScenarioLearner.learn(s, abstraction);
+        List<ScenarioSpec> specs = ScenarioLayout.scan(logs, abstraction);
+        List<Path> all = specs.stream().flatMap(s -> s.logs().stream()).toList();
+        Map<Path, LogTrace> traces = ScenarioLearner.read(all, abstraction);
+        Abstraction tuned = tuneToNoise(specs, traces, abstraction);
+        if (tuned != abstraction) {
+            traces = ScenarioLearner.read(all, tuned); // the hysteresis changes the traces
+        }
+        for (ScenarioSpec s : specs) {
+            LearnedScenario l = ScenarioLearner.learn(s, tuned, traces);
             each.accept(l);
             learned.add(l);
         }
-        ModelStore.write(models, LearnedModels.index(learned, abstraction),
+        ModelStore.write(models, LearnedModels.index(learned, tuned),
                 LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)));
         return List.copyOf(learned);
+    }
+
+    /**
+     * {@code abstraction} with the hysteresis that absorbs the noise of its continuous sensors, estimated from the
+     * runs the scenarios learn from ({@link NoiseEstimate}); itself when they show no noise.
+     */
+    public static Abstraction tuneToNoise(List<ScenarioSpec> specs, Map<Path, LogTrace> traces, Abstraction abstraction) {
+        List<LogTrace.Run> runs = new ArrayList<>();
+        for (ScenarioSpec s : specs) {
+            for (Path log : s.logs()) {
+                LogTrace t = traces.get(log);
+                if (t != null) {
+                    t.runs().stream().filter(r -> s.runs().selects(r.violated())).forEach(runs::add);
+                }
+            }
+        }
+        return abstraction.withLearnedHysteresis(NoiseEstimate.hysteresis(runs));
     }
 }

@@ -12,7 +12,10 @@ import net.automatalib.automaton.transducer.CompactMealy;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Learns one scenario: every log through the shared pipeline, conflicting runs split into groups
@@ -25,17 +28,33 @@ public final class ScenarioLearner {
 
     /** Reads the scenario's logs and learns it. */
     public static LearnedScenario learn(ScenarioSpec spec, Abstraction abstraction) throws BadInputException {
+        return learn(spec, abstraction, read(spec.logs(), abstraction));
+    }
+
+    /** Reads logs through the shared pipeline, each once. */
+    public static Map<Path, LogTrace> read(Collection<Path> logs, Abstraction abstraction) throws BadInputException {
+        Map<Path, LogTrace> traces = new LinkedHashMap<>();
+        for (Path log : logs) {
+            if (!traces.containsKey(log)) {
+                try {
+                    traces.put(log, Traces.read(log, abstraction));
+                } catch (IOException e) {
+                    throw new BadInputException(log + ": cannot read: " + e.getMessage());
+                }
+            }
+        }
+        return traces;
+    }
+
+    /** Learns the scenario from its logs' traces, read with {@code abstraction}. */
+    public static LearnedScenario learn(ScenarioSpec spec, Abstraction abstraction, Map<Path, LogTrace> traces)
+            throws BadInputException {
         List<MealyTrace> samples = new ArrayList<>();
         List<String> skipped = new ArrayList<>();
         List<String> problems = new ArrayList<>();
         java.util.Map<String, Long> unmapped = new java.util.TreeMap<>();
         for (Path log : spec.logs()) {
-            LogTrace trace;
-            try {
-                trace = Traces.read(log, abstraction);
-            } catch (IOException e) {
-                throw new BadInputException(log + ": cannot read: " + e.getMessage());
-            }
+            LogTrace trace = traces.get(log);
             trace.problems().forEach(p -> problems.add(p.format(log.toString())));
             trace.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
             List<MealyTrace> runs = trace.samples(spec.runs());

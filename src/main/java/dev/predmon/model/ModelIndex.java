@@ -1,8 +1,10 @@
 package dev.predmon.model;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
 import com.fasterxml.jackson.databind.JsonNode;
 
 import java.util.List;
+import java.util.Map;
 
 /**
  * The contents of {@code models/index.json}: what was learned, from what, with which abstraction.
@@ -17,8 +19,19 @@ public record ModelIndex(int format, AbstractionInfo abstraction, List<String> a
     /** Current index format. */
     public static final int FORMAT = 1;
 
-    /** The abstraction, embedded so that a model directory is self-describing. */
-    public record AbstractionInfo(String name, String fingerprint, JsonNode definition) {
+    /**
+     * The abstraction, embedded so that a model directory is self-describing.
+     *
+     * @param hysteresis the hysteresis {@code learn} estimated from the training runs' sensor noise, by continuous
+     *                   rule input, applied by every command that uses these models; absent when none was (noise-free
+     *                   sensors), so that such an index is unchanged
+     */
+    public record AbstractionInfo(String name, String fingerprint, JsonNode definition,
+                                  @JsonInclude(JsonInclude.Include.NON_EMPTY) Map<String, Double> hysteresis) {
+
+        public AbstractionInfo {
+            hysteresis = hysteresis == null ? Map.of() : Map.copyOf(new java.util.TreeMap<>(hysteresis));
+        }
     }
 
     /** One scenario and its machines. */

@@ -21,4 +21,13 @@ public record ModelSet(Path dir, ModelIndex index, List<LearnedModel> models) {
     public boolean hasNominal() {
         return index.scenarios().stream().anyMatch(s -> !s.faulty());
     }
+
+    /**
+     * {@code abstraction} as these models were learned with it: with the hysteresis {@code learn} estimated from the
+     * training runs' sensor noise ({@link ModelIndex.AbstractionInfo#hysteresis()}), so that a log abstracts as the
+     * training logs did.
+     */
+    public dev.predmon.abstraction.Abstraction tune(dev.predmon.abstraction.Abstraction abstraction) {
+        return abstraction.withLearnedHysteresis(index.abstraction().hysteresis());
+    }
 }

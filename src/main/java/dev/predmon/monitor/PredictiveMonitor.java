@@ -81,7 +81,7 @@ public final class PredictiveMonitor implements PipelineListener {
         }
         this.safety = abstraction.safety();
         this.events = events;
-        this.pipeline = new TracePipeline(abstraction, this);
+        this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
     /** Takes the next record of the log. */

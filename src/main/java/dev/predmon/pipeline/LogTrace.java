@@ -31,8 +31,10 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
      * @param firstLine the line of its first record
      * @param pairs     its compacted trace
      * @param violated  whether the safety monitor saw its property violated in this run
+     * @param readings  the values of each continuous rule's replies in order, by the rule's input
+     *                  ({@code level_i}): what the learner estimates a sensor's noise from
      */
-    public record Run(int index, long firstLine, List<IoPair> pairs, boolean violated) {
+    public record Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings) {
     }
 
     /** The trace as one Mealy sample (a log of one run). */

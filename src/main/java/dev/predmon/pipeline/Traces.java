@@ -11,7 +11,9 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.TreeMap;
 
 /** Reads whole logs offline through the shared {@link TracePipeline}. */
 public final class Traces {
@@ -40,7 +42,9 @@ public final class Traces {
 
     /** Collects each run's pairs and whether the safety monitor saw it violate the property. */
     private static final class RunCollector implements PipelineListener {
+        private final Abstraction abstraction;
         private final Optional<SafetyRule> safety;
+        private Map<String, List<Double>> readings = new TreeMap<>();
         private final List<IoPair> all;
         private final List<LogTrace.Run> done = new ArrayList<>();
         private List<IoPair> pairs = new ArrayList<>();
@@ -48,6 +52,7 @@ public final class Traces {
         private boolean violated;
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
+            this.abstraction = abstraction;
             this.safety = abstraction.safety();
             this.all = all;
         }
@@ -55,6 +60,8 @@ public final class Traces {
         @Override
         public void record(LogRecord record) {
             violated |= safety.isPresent() && safety.get().violatedBy(safety.get().valueOf(record));
+            abstraction.continuousReading(record)
+                    .ifPresent(e -> readings.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(e.getValue()));
         }
 
         @Override
@@ -70,8 +77,12 @@ public final class Traces {
         }
 
         private void finish() {
-            done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated));
+            Map<String, List<Double>> frozen = new TreeMap<>();
+            readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
+            done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated,
+                    java.util.Collections.unmodifiableMap(frozen)));
             pairs = new ArrayList<>();
+            readings = new TreeMap<>();
             violated = false;
         }
 
