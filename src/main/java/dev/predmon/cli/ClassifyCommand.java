@@ -4,7 +4,9 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
+import dev.predmon.mealy.MealyTrace;
 import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -53,39 +55,58 @@ final class ClassifyCommand implements Callable<Integer> {
         abstraction = set.tune(abstraction); // the hysteresis learn estimated from the training runs' sensor noise
         LogTrace trace = Traces.read(log, abstraction);
         Problems.print(spec.commandLine().getErr(), log, trace);
-        Classifier.Result r = Classifier.classify(set, trace.mealy(), threshold.value);
+        // A log of several runs (the tick counter started again) is classified run by run.
+        List<MealyTrace> runs = trace.runs().size() > 1 ? trace.samples(RunLabel.ALL) : List.of(trace.mealy());
+        boolean faulty = false;
+        List<Map<String, Object>> results = new ArrayList<>();
+        for (MealyTrace run : runs) {
+            Classifier.Result r = Classifier.classify(set, run, threshold.value);
+            faulty |= r.faulty();
+            if (json) {
+                results.add(toJson(r, run));
+            } else {
+                print(out, r, run);
+            }
+        }
         if (json) {
-            List<Map<String, Object>> scores = new ArrayList<>();
-            for (Classifier.Score s : r.scores()) {
-                Map<String, Object> m = new LinkedHashMap<>();
-                m.put("model", s.model().id());
-                m.put("scenario", s.model().scenario());
-                m.put("faulty", s.model().faulty());
-                m.put("deleted", s.deleted());
-                m.put("discrepancies", s.discrepancies());
-                m.put("reason", s.failure() == null ? null : s.failure().describe());
-                scores.add(m);
-            }
-            Map<String, Object> o = new LinkedHashMap<>();
-            o.put("log", log.toString());
-            o.put("pairs", trace.pairs().size());
-            o.put("models", scores);
-            o.put("best", r.best().map(s -> s.model().id()).orElse(null));
-            o.put("scenario", r.best().map(s -> s.model().scenario()).orElse(null));
-            o.put("faulty", r.faulty());
+            Object o = results.size() == 1 ? results.get(0) : Map.of("log", log.toString(), "runs", results);
             out.println(new ObjectMapper().writeValueAsString(o));
-        } else {
-            out.println(log + ": " + trace.pairs().size() + " compacted pairs");
-            for (Classifier.Score s : r.scores()) {
-                out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
-                        s.deleted() ? "deleted: " + s.failure().describe()
-                                : s.discrepancies() + " discrepancies" + (s.failure() == null ? "" : "; first: " + s.failure().describe()));
-            }
-            out.println(r.best().map(s -> "best match: " + s.model().scenario() + " (" + s.model().id() + ", "
-                    + s.discrepancies() + " discrepancies)" + (s.model().faulty() ? ": FAULTY" : ""))
-                    .orElse("no model matches within threshold " + threshold.value));
         }
         out.flush();
-        return r.faulty() ? ExitCodes.WARNING : ExitCodes.OK;
+        return faulty ? ExitCodes.WARNING : ExitCodes.OK;
+    }
+
+    private Map<String, Object> toJson(Classifier.Result r, MealyTrace run) {
+        List<Map<String, Object>> scores = new ArrayList<>();
+        for (Classifier.Score s : r.scores()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("model", s.model().id());
+            m.put("scenario", s.model().scenario());
+            m.put("faulty", s.model().faulty());
+            m.put("deleted", s.deleted());
+            m.put("discrepancies", s.discrepancies());
+            m.put("reason", s.failure() == null ? null : s.failure().describe());
+            scores.add(m);
+        }
+        Map<String, Object> o = new LinkedHashMap<>();
+        o.put("log", run.source());
+        o.put("pairs", run.length() / 2);
+        o.put("models", scores);
+        o.put("best", r.best().map(s -> s.model().id()).orElse(null));
+        o.put("scenario", r.best().map(s -> s.model().scenario()).orElse(null));
+        o.put("faulty", r.faulty());
+        return o;
+    }
+
+    private void print(PrintWriter out, Classifier.Result r, MealyTrace run) {
+        out.println(run.source() + ": " + run.length() / 2 + " compacted pairs");
+        for (Classifier.Score s : r.scores()) {
+            out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
+                s.deleted() ? "deleted: " + s.failure().describe()
+                        : s.discrepancies() + " discrepancies" + (s.failure() == null ? "" : "; first: " + s.failure().describe()));
+        }
+        out.println(r.best().map(s -> "best match: " + s.model().scenario() + " (" + s.model().id() + ", "
+                + s.discrepancies() + " discrepancies)" + (s.model().faulty() ? ": FAULTY" : ""))
+                .orElse("no model matches within threshold " + threshold.value));
     }
 }

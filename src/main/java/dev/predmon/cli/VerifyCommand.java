@@ -7,6 +7,7 @@ import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Verification;
 import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -55,13 +56,18 @@ final class VerifyCommand implements Callable<Integer> {
         }
         LogTrace trace = Traces.read(log, abstraction);
         Problems.print(spec.commandLine().getErr(), log, trace);
-        MealyTrace mealy = trace.mealy();
-        out.println(log + ": " + trace.pairs().size() + " compacted pairs, " + mealy.length() + " Mealy steps");
-        boolean matched = false;
-        for (LearnedModel m : own) {
-            Verification v = Verification.of(m, mealy);
-            matched |= v.verdict() == Verification.Verdict.MATCHES;
-            out.println("  " + m.id() + ": " + describe(v));
+        // A log of several runs (the tick counter started again) is verified run by run; it matches when each does.
+        List<MealyTrace> runs = trace.runs().size() > 1 ? trace.samples(RunLabel.ALL) : List.of(trace.mealy());
+        boolean matched = true;
+        for (MealyTrace mealy : runs) {
+            out.println(mealy.source() + ": " + mealy.length() / 2 + " compacted pairs, " + mealy.length() + " Mealy steps");
+            boolean any = false;
+            for (LearnedModel m : own) {
+                Verification v = Verification.of(m, mealy);
+                any |= v.verdict() == Verification.Verdict.MATCHES;
+                out.println("  " + m.id() + ": " + describe(v));
+            }
+            matched &= any;
         }
         out.println(matched ? "matches scenario " + scenario : "does not match scenario " + scenario);
         out.flush();

@@ -85,6 +85,21 @@ class SeveralRunsTest {
     }
 
     @Test
+    void classifyAndVerifyJudgeEachRun() throws Exception {
+        Path log = day("cv.log", 11, Scenario.DIRECT, Scenario.DEPLETED);
+        Cli c = Cli.run("classify", "--log", log.toString(), "--models", MODELS.toString(), "--json");
+        assertEquals(ExitCodes.WARNING, c.code(), "the depleted run is faulty: " + c.out());
+        JsonNode runs = JSON.readTree(c.out()).get("runs");
+        assertEquals(2, runs.size());
+        assertFalse(runs.get(0).get("faulty").asBoolean());
+        assertTrue(runs.get(1).get("faulty").asBoolean());
+        assertTrue(runs.get(1).get("log").asText().endsWith("cv.log#1"));
+        Cli v = Cli.run("verify", "--log", log.toString(), "--scenario", "direct", "--models", MODELS.toString());
+        assertEquals(ExitCodes.WARNING, v.code(), "run 1 is no direct run: " + v.out());
+        assertTrue(v.out().contains("cv.log#0: ") && v.out().contains("cv.log#1: "), v.out());
+    }
+
+    @Test
     void aRunCutShortIsStillARun() throws Exception {
         Path full = day("full.log", 21, Scenario.RECHARGE, Scenario.DEPLETED);
         String text = Files.readString(full);
