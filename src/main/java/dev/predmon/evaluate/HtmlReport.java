@@ -59,7 +59,13 @@ public final class HtmlReport {
                         + "margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}"
                         + "th{background:#eee}td.l,th.l{text-align:left}.run{display:inline-block;margin:4px}"
                         + ".bad{background:#fdd}.good{background:#dfd}svg{max-width:100%;height:auto}"
-                        + "pre{background:#f6f6f6;padding:6px;font-size:11px;overflow:auto}</style></head><body>\n");
+                        + "pre{background:#f6f6f6;padding:6px;font-size:11px;overflow:auto}"
+                        // Machines keep their natural size (readable text) and scroll; on paper they fit the page.
+                        + ".machine{overflow:auto;width:max-content;max-width:calc(100vw - 5em);max-height:85vh;"
+                        + "border:1px solid #ddd;margin:.5em 0}"
+                        + ".machine svg{max-width:none;display:block}.caption{color:#333;max-width:60em}"
+                        + "@media print{.machine{overflow:visible;width:auto;max-width:100%;max-height:none;border:0}"
+                        + ".machine svg{max-width:100%}.run,svg{break-inside:avoid}}</style></head><body>\n");
         h.append("<h1>predmon evaluation</h1>\n<p>")
                 .append(e.mode().equals("cross-validation")
                         ? e.folds() + "-fold cross-validation over the training logs (every run is judged by models "
@@ -75,7 +81,7 @@ public final class HtmlReport {
         }
         leads(h, e);
         runs(h, e, abstraction);
-        models(h, e, abstraction);
+        models(h, e);
         h.append("</body></html>\n");
         return h.toString();
     }
@@ -187,24 +193,45 @@ public final class HtmlReport {
         return m;
     }
 
-    private static void models(StringBuilder h, Evaluation e, Abstraction abstraction) {
+    private static void models(StringBuilder h, Evaluation e) {
         h.append("<h2>Learned models</h2>\n<p>")
                 .append(e.mode().equals("cross-validation")
                         ? "Learned on every training log (each fold's models are learned on a subset of these runs)."
                         : "Learned on the training logs.")
-                .append(" States by breadth-first distance from the initial state (blue); labels <code>input</code> "
-                        + "(answered OK) and <code>Delta/reply</code>.</p>\n");
+                .append(" Laid out with ELK's layered algorithm; the initial state is marked by an arrow from nowhere. "
+                        + "Labels <code>input</code> (answered OK) and <code>input / output</code>. A large machine "
+                        + "scrolls in its box.</p>\n");
         if (e.models() == null) {
             return;
         }
         int n = 0;
         for (LearnedModel m : e.models().models()) {
+            MachineGraph folded = MachineGraph.folded(m);
             h.append("<h3>").append(esc(m.id())).append(" (").append(m.faulty() ? "faulty" : "nominal")
-                    .append(", ").append(m.machine().size()).append(" states)</h3>\n")
-                    .append(MachineDrawing.svg(m, "m" + n++ + "_")).append('\n')
-                    .append("<details><summary>DOT</summary><pre>")
+                    .append(", ").append(m.machine().size()).append(" states)</h3>\n<p class=caption>")
+                    .append(caption(folded)).append("</p>\n<div class=machine>")
+                    .append(MachineDrawing.svg(folded, "m" + n + "_")).append("</div>\n");
+            if (folded.hidden() > 0) {
+                MachineGraph full = MachineGraph.full(m);
+                h.append("<details><summary>every state (").append(full.nodes().size()).append(" states, ")
+                        .append(full.edges().stream().mapToInt(x -> x.labels().size()).sum())
+                        .append(" transitions)</summary><div class=machine>")
+                        .append(MachineDrawing.svg(full, "m" + n + "f_")).append("</div></details>\n");
+            }
+            h.append("<details><summary>DOT</summary><pre>")
                     .append(esc(ModelStore.toDot(m.machine(), m.alphabet()))).append("</pre></details>\n");
+            n++;
         }
+    }
+
+    /** What the drawing of {@code g} shows of its machine: every state, or which were folded and how. */
+    static String caption(MachineGraph g) {
+        if (g.hidden() == 0) {
+            return "All " + g.states() + " states drawn, one arrow per transition between two states.";
+        }
+        return g.states() + " states, " + g.nodes().size() + " drawn: the other " + g.hidden() + " only wait for the "
+                + "reply to a query (<code>input / OK</code> then <code>Delta / reply</code>), so each such pair is "
+                + "drawn as one arrow <code>input / reply</code>. Every state is drawn below, and in the DOT text.";
     }
 
     private static String svg(JFreeChart chart, int w, int h, String key) {
