@@ -4,20 +4,9 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelStore;
-import org.jfree.chart.ChartFactory;
 import org.jfree.chart.JFreeChart;
-import org.jfree.chart.plot.PlotOrientation;
-import org.jfree.chart.plot.ValueMarker;
-import org.jfree.chart.plot.XYPlot;
-import org.jfree.chart.ui.RectangleAnchor;
-import org.jfree.chart.ui.TextAnchor;
-import org.jfree.data.statistics.HistogramDataset;
-import org.jfree.data.xy.XYSeries;
-import org.jfree.data.xy.XYSeriesCollection;
 import org.jfree.svg.SVGGraphics2D;
 
-import java.awt.BasicStroke;
-import java.awt.Color;
 import java.awt.Rectangle;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -38,6 +27,8 @@ public final class HtmlReport {
     /** Runs plotted at most; a page of thousands of charts helps nobody. */
     public static final int MAX_PLOTS = 60;
     private static final int MAX_POINTS = 2000;
+    /** What the logs' times count; every log parsed today has seconds. */
+    private static final Timeline.Clock CLOCK = Timeline.Clock.SECONDS;
 
     private HtmlReport() {
     }
@@ -125,14 +116,7 @@ public final class HtmlReport {
             h.append("<p>No faulty run was warned before its violation, so there is no lead to show.</p>\n");
             return;
         }
-        HistogramDataset d = new HistogramDataset();
-        double min = java.util.Arrays.stream(leads).min().orElse(0);
-        double max = java.util.Arrays.stream(leads).max().orElse(0);
-        d.addSeries("lead", leads, Math.max(1, Math.min(20, leads.length)), min, max > min ? max : min + 1);
-        JFreeChart chart = ChartFactory.createHistogram("Lead of the warning over the violation (" + leads.length
-                + " hits)", "lead (s)", "runs", d, PlotOrientation.VERTICAL, false, false, false);
-        chart.setBackgroundPaint(Color.WHITE);
-        h.append(svg(chart, 700, 320, "lead")).append('\n');
+        h.append(svg(ReportCharts.leads(leads, CLOCK), 700, 320, "lead")).append('\n');
     }
 
     private static void runs(StringBuilder h, Evaluation e, Abstraction abstraction) throws IOException {
@@ -147,50 +131,19 @@ public final class HtmlReport {
             h.append("<p>Only the first ").append(MAX_PLOTS).append(" of ").append(runs.size())
                     .append(" runs are plotted; every run is in the JSON output.</p>\n");
         }
-        h.append("<p>").append(esc(rule.name())).append(": the watched value over time; orange line: the warning; "
-                + "red line: the violation; dashed: the bound ").append(fmt(rule.below())).append(".</p>\n");
+        h.append("<p>").append(esc(rule.name())).append(": the watched value over time from the start of the log; "
+                + "orange dashed line: the warning; red line: the violation; shaded between them: the lead; grey "
+                + "dashed: the bound ").append(fmt(rule.below())).append(".</p>\n");
         int n = 0;
         for (RunResult r : runs) {
             if (n == MAX_PLOTS) {
                 break;
             }
-            Timeline t = Timeline.read(Path.of(r.log()), rule, MAX_POINTS);
-            XYSeries s = new XYSeries(rule.command());
-            for (int i = 0; i < t.times().length; i++) {
-                s.add(t.times()[i], t.values()[i]);
-            }
-            String title = r.scenario() + " / " + Path.of(r.log()).getFileName() + ": " + r.verdict().id()
-                    + (r.lead() != null ? String.format(Locale.ROOT, ", lead %.1f s", r.lead()) : "");
-            JFreeChart chart = ChartFactory.createXYLineChart(title, "time (s)", rule.command(),
-                    new XYSeriesCollection(s), PlotOrientation.VERTICAL, false, false, false);
-            chart.setBackgroundPaint(Color.WHITE);
-            chart.getTitle().setFont(chart.getTitle().getFont().deriveFont(12f));
-            XYPlot plot = chart.getXYPlot();
-            plot.setBackgroundPaint(Color.WHITE);
-            plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
-            plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
-            plot.getRenderer().setSeriesPaint(0, new Color(30, 90, 180));
-            ValueMarker bound = new ValueMarker(rule.below(), Color.GRAY, new BasicStroke(1f,
-                    BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
-            plot.addRangeMarker(bound);
-            if (r.warningTime() != null) {
-                plot.addDomainMarker(marker(r.warningTime(), new Color(230, 140, 0), "warning"));
-            }
-            if (r.violationTime() != null) {
-                plot.addDomainMarker(marker(r.violationTime(), new Color(200, 0, 0), "violation"));
-            }
-            h.append("<div class=run>").append(svg(chart, 560, 260, "run" + n)).append("</div>\n");
+            Timeline t = Timeline.read(Path.of(r.log()), rule, MAX_POINTS, CLOCK);
+            h.append("<div class=run>").append(svg(ReportCharts.battery(r, t, rule), 560, 260, "run" + n))
+                    .append("</div>\n");
             n++;
         }
-    }
-
-    private static ValueMarker marker(double x, Color color, String label) {
-        ValueMarker m = new ValueMarker(x, color, new BasicStroke(2f));
-        m.setLabel(label);
-        m.setLabelPaint(color);
-        m.setLabelAnchor(RectangleAnchor.TOP_RIGHT);
-        m.setLabelTextAnchor(TextAnchor.TOP_LEFT);
-        return m;
     }
 
     private static void models(StringBuilder h, Evaluation e) {
