@@ -78,7 +78,7 @@ public final class HtmlReport {
     }
 
     private static void summary(StringBuilder h, Evaluation e) {
-        h.append("<h2>Summary</h2>\n<table><tr><th class=l>scenario</th><th class=l>kind</th><th>runs</th>"
+        h.append("<h2 id=summary>Summary</h2>\n<table><tr><th class=l>scenario</th><th class=l>kind</th><th>runs</th>"
                 + "<th>warned</th><th>hits</th><th>false alarms</th><th>missed</th><th>of which late</th>"
                 + "<th>no violation</th><th>no match</th><th>lead s: median [min..max]</th>"
                 + "<th>battery at warning: median [min..max]</th></tr>\n");
@@ -98,7 +98,7 @@ public final class HtmlReport {
     }
 
     private static void confusion(StringBuilder h, Confusion c) {
-        h.append("<h2>Confusion matrix</h2>\n<table><tr><th class=l>actual \\ predicted</th>"
+        h.append("<h2 id=confusion>Confusion matrix</h2>\n<table><tr><th class=l>actual \\ predicted</th>"
                         + "<th>warned before violation</th><th>not warned (in time)</th></tr>\n")
                 .append("<tr><th class=l>faulty</th><td class=good>").append(c.truePositives())
                 .append("</td><td class=bad>").append(c.falseNegatives()).append("</td></tr>\n")
@@ -110,7 +110,7 @@ public final class HtmlReport {
     }
 
     private static void leads(StringBuilder h, Evaluation e) {
-        h.append("<h2>Distribution of leads</h2>\n");
+        h.append("<h2 id=leads>Distribution of leads</h2>\n");
         double[] leads = e.runs().stream().filter(r -> r.lead() != null).mapToDouble(RunResult::lead).toArray();
         if (leads.length == 0) {
             h.append("<p>No faulty run was warned before its violation, so there is no lead to show.</p>\n");
@@ -120,7 +120,7 @@ public final class HtmlReport {
     }
 
     private static void runs(StringBuilder h, Evaluation e, Abstraction abstraction) throws IOException {
-        h.append("<h2>Runs</h2>\n");
+        h.append("<h2 id=runs>Runs</h2>\n");
         if (abstraction.safety().isEmpty()) {
             h.append("<p>The abstraction has no safety property, so there is no level to plot.</p>\n");
             return;
@@ -140,14 +140,14 @@ public final class HtmlReport {
                 break;
             }
             Timeline t = Timeline.read(Path.of(r.log()), rule, MAX_POINTS, CLOCK);
-            h.append("<div class=run>").append(svg(ReportCharts.battery(r, t, rule), 560, 260, "run" + n))
+            h.append("<div class=run>").append(svg(ReportCharts.battery(r, t, rule), 540, 260, "run" + n))
                     .append("</div>\n");
             n++;
         }
     }
 
     private static void models(StringBuilder h, Evaluation e) {
-        h.append("<h2>Learned models</h2>\n<p>")
+        h.append("<h2 id=models>Learned models</h2>\n<p>")
                 .append(e.mode().equals("cross-validation")
                         ? "Learned on every training log (each fold's models are learned on a subset of these runs)."
                         : "Learned on the training logs.")

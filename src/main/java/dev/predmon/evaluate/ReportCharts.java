@@ -32,6 +32,7 @@ final class ReportCharts {
     private static final double LABEL_ROW = 15;
     private static final Font LABEL_FONT = new Font(Font.SANS_SERIF, Font.BOLD, 10);
     private static final int MAX_BINS = 20;
+    private static final int MIN_BINS = 8;
 
     private ReportCharts() {
     }
@@ -114,10 +115,14 @@ final class ReportCharts {
         d.addSeries("lead", leads, bins, from, from + bins * width);
         String unit = clock == Timeline.Clock.TICKS ? "ticks" : "s";
         JFreeChart chart = ChartFactory.createHistogram("Lead of the warning over the violation (" + leads.length
-                + " hits)", "lead (" + unit + ")", "runs", d, PlotOrientation.VERTICAL, false, false, false);
+                + (leads.length == 1 ? " hit)" : " hits)"), "lead (" + unit + ")", "runs", d, PlotOrientation.VERTICAL, false, false, false);
         ChartStyle.apply(chart);
         XYPlot plot = chart.getXYPlot();
         plot.getRangeAxis().setStandardTickUnits(NumberAxis.createIntegerTickUnits());
+        // At least MIN_BINS bins wide, the bars centred, so that a single lead is a bar, not the whole plot.
+        int pad = Math.max(0, MIN_BINS - bins);
+        double lower = Math.max(Math.min(0, from), from - (pad / 2) * width);
+        plot.getDomainAxis().setRange(lower, lower + Math.max(MIN_BINS, bins + (from - lower) / width) * width);
         XYBarRenderer bars = (XYBarRenderer) plot.getRenderer();
         bars.setSeriesPaint(0, ChartStyle.DATA);
         bars.setDrawBarOutline(true);
