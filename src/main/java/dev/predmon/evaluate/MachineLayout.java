@@ -30,14 +30,14 @@ import java.util.Map;
  * Where each state, edge and label of a {@link MachineGraph} goes, computed by Eclipse ELK's layered algorithm
  * (Sugiyama's method, as Graphviz's {@code dot}): states in layers from left to right, crossings minimised,
  * edges as splines. Each edge's labels form one block that ELK places as a node of its own between the layers,
- * so no label overlaps a state, an edge's bend or another label; {@link #overlaps} checks that on the result.
+ * so no label overlaps a state or another label; {@link #overlaps} checks that on the result.
  * Label sizes are measured with the font the drawing uses, so the boxes are the ones drawn.
  * Deterministic: ELK runs with a fixed random seed.
  *
  * @param width  width of the drawing
  * @param height height of the drawing
  * @param states the states, with their boxes
- * @param edges  the edges, as polylines from source border to target border
+ * @param edges  the edges, from source border to target border, and last the initial state's arrow
  * @param texts  every line of text drawn (state names and edge labels), with its box
  */
 public record MachineLayout(double width, double height, List<State> states, List<Line> edges, List<Text> texts) {
@@ -128,11 +128,12 @@ public record MachineLayout(double width, double height, List<State> states, Lis
         root.setProperty(LayeredOptions.SPACING_EDGE_EDGE, 12.0);
         root.setProperty(LayeredOptions.SPACING_EDGE_NODE, 12.0);
         root.setProperty(LayeredOptions.SPACING_NODE_SELF_LOOP, 12.0);
-        ElkNode from = null;
-        if (g.initial() >= 0) {
-            from = ElkGraphUtil.createNode(root);
-            from.setDimensions(1, 1);
-            from.setProperty(LayeredOptions.LAYERING_LAYER_CONSTRAINT, LayerConstraint.FIRST);
+        // The initial state's arrow from nowhere: an edge from an invisible point in the first layer. Created
+        // first, so that the breadth-first model order starts with it.
+        ElkNode nowhere = g.initial() < 0 ? null : ElkGraphUtil.createNode(root);
+        if (nowhere != null) {
+            nowhere.setDimensions(1, 1);
+            nowhere.setProperty(LayeredOptions.LAYERING_LAYER_CONSTRAINT, LayerConstraint.FIRST);
         }
         Map<Integer, ElkNode> nodes = new HashMap<>();
         for (int s : g.nodes()) {
@@ -141,12 +142,8 @@ public record MachineLayout(double width, double height, List<State> states, Lis
             n.setDimensions(STATE, STATE);
             nodes.put(s, n);
         }
+        ElkEdge start = nowhere == null ? null : ElkGraphUtil.createSimpleEdge(nowhere, nodes.get(g.initial()));
         List<ElkEdge> edges = new ArrayList<>();
-        // The initial state's arrow from nowhere, laid out as an edge from an invisible point.
-        ElkEdge start = null;
-        if (from != null) {
-            start = ElkGraphUtil.createSimpleEdge(from, nodes.get(g.initial()));
-        }
         for (MachineGraph.Edge e : g.edges()) {
             ElkEdge edge = ElkGraphUtil.createSimpleEdge(nodes.get(e.source()), nodes.get(e.target()));
             ElkLabel label = ElkGraphUtil.createLabel(String.join("\n", e.labels()), edge);
