@@ -61,14 +61,20 @@ public final class MachineDrawing {
                             ? "\" fill=\"#dce8fb\" stroke=\"#000\" stroke-width=\"2\"/>\n"
                             : "\" fill=\"#f4f4f4\" stroke=\"#000\" stroke-width=\"1\"/>\n");
         }
-        s.append("<g stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n");
-        for (MachineLayout.Text t : layout.texts()) {
-            s.append("<text x=\"").append(num(t.box().x())).append("\" y=\"").append(num(t.baseline()))
-                    .append("\" textLength=\"").append(num(t.box().w())).append("\" lengthAdjust=\"spacingAndGlyphs\"")
-                    .append(t.label() ? " fill=\"" + LABEL + "\"" : "").append('>').append(esc(t.text()))
-                    .append("</text>\n");
+        // State names plain (inside their circle), labels with a white halo.
+        for (boolean label : new boolean[] {false, true}) {
+            s.append(label ? "<g fill=\"" + LABEL + "\" stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\" "
+                    + "paint-order=\"stroke\">\n" : "<g>\n");
+            for (MachineLayout.Text t : layout.texts()) {
+                if (t.label() == label) {
+                    s.append("<text x=\"").append(num(t.box().x())).append("\" y=\"").append(num(t.baseline()))
+                            .append("\" textLength=\"").append(num(t.box().w()))
+                            .append("\" lengthAdjust=\"spacingAndGlyphs\">").append(esc(t.text())).append("</text>\n");
+                }
+            }
+            s.append("</g>\n");
         }
-        return s.append("</g>\n</svg>").toString();
+        return s.append("</svg>").toString();
     }
 
     /**
