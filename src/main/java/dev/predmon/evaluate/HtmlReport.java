@@ -1,23 +1,14 @@
 package dev.predmon.evaluate;
 
+import dev.predmon.parse.Clock;
+
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelStore;
-import org.jfree.chart.ChartFactory;
 import org.jfree.chart.JFreeChart;
-import org.jfree.chart.plot.PlotOrientation;
-import org.jfree.chart.plot.ValueMarker;
-import org.jfree.chart.plot.XYPlot;
-import org.jfree.chart.ui.RectangleAnchor;
-import org.jfree.chart.ui.TextAnchor;
-import org.jfree.data.statistics.HistogramDataset;
-import org.jfree.data.xy.XYSeries;
-import org.jfree.data.xy.XYSeriesCollection;
 import org.jfree.svg.SVGGraphics2D;
 
-import java.awt.BasicStroke;
-import java.awt.Color;
 import java.awt.Rectangle;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -59,7 +50,13 @@ public final class HtmlReport {
                         + "margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}"
                         + "th{background:#eee}td.l,th.l{text-align:left}.run{display:inline-block;margin:4px}"
                         + ".bad{background:#fdd}.good{background:#dfd}svg{max-width:100%;height:auto}"
-                        + "pre{background:#f6f6f6;padding:6px;font-size:11px;overflow:auto}</style></head><body>\n");
+                        + "pre{background:#f6f6f6;padding:6px;font-size:11px;overflow:auto}"
+                        // Machines keep their natural size (readable text) and scroll; on paper they fit the page.
+                        + ".machine{overflow:auto;width:max-content;max-width:calc(100vw - 5em);max-height:85vh;"
+                        + "border:1px solid #ddd;margin:.5em 0}"
+                        + ".machine svg{max-width:none;display:block}.caption{color:#333;max-width:60em}"
+                        + "@media print{.machine{overflow:visible;width:auto;max-width:100%;max-height:none;border:0}"
+                        + ".machine svg{max-width:100%}.run,svg{break-inside:avoid}}</style></head><body>\n");
         h.append("<h1>predmon evaluation</h1>\n<p>")
                 .append(e.mode().equals("cross-validation")
                         ? e.folds() + "-fold cross-validation over the training logs (every run is judged by models "
@@ -75,13 +72,13 @@ public final class HtmlReport {
         }
         leads(h, e);
         runs(h, e, abstraction);
-        models(h, e, abstraction);
+        models(h, e);
         h.append("</body></html>\n");
         return h.toString();
     }
 
     private static void summary(StringBuilder h, Evaluation e) {
-        h.append("<h2>Summary</h2>\n<table><tr><th class=l>scenario</th><th class=l>kind</th><th>runs</th>"
+        h.append("<h2 id=summary>Summary</h2>\n<table><tr><th class=l>scenario</th><th class=l>kind</th><th>runs</th>"
                 + "<th>warned</th><th>hits</th><th>false alarms</th><th>missed</th><th>of which late</th>"
                 + "<th>no violation</th><th>no match</th><th>sudden violations</th><th>lead: median [min..max]</th>"
                 + "<th>battery at warning: median [min..max]</th></tr>\n");
@@ -98,11 +95,13 @@ public final class HtmlReport {
         }
         h.append("</table>\n<p>Missed: a faulty run without a warning strictly before its violation (late warnings "
                 + "included). No violation: a faulty run whose log ends before the property is violated. No match: "
-                + "runs during which, at some point, no learned model matched (unknown behaviour).</p>\n");
+                + "runs during which, at some point, no learned model matched (unknown behaviour). Sudden: violations "
+                + "that came in one reading from more than " + fmt(RunResult.SUDDEN_MARGIN) + " points above the bound: "
+                + "the jump itself, which no monitor reading the value can see coming.</p>\n");
     }
 
     private static void confusion(StringBuilder h, Confusion c) {
-        h.append("<h2>Confusion matrix</h2>\n<table><tr><th class=l>actual \\ predicted</th>"
+        h.append("<h2 id=confusion>Confusion matrix</h2>\n<table><tr><th class=l>actual \\ predicted</th>"
                         + "<th>warned before violation</th><th>not warned (in time)</th></tr>\n")
                 .append("<tr><th class=l>faulty</th><td class=good>").append(c.truePositives())
                 .append("</td><td class=bad>").append(c.falseNegatives()).append("</td></tr>\n")
@@ -114,25 +113,20 @@ public final class HtmlReport {
     }
 
     private static void leads(StringBuilder h, Evaluation e) {
-        h.append("<h2>Distribution of leads</h2>\n");
+        h.append("<h2 id=leads>Distribution of leads</h2>\n");
         double[] leads = e.runs().stream().filter(r -> r.lead() != null).mapToDouble(RunResult::lead).toArray();
         if (leads.length == 0) {
             h.append("<p>No faulty run was warned before its violation, so there is no lead to show.</p>\n");
             return;
         }
-        HistogramDataset d = new HistogramDataset();
-        double min = java.util.Arrays.stream(leads).min().orElse(0);
-        double max = java.util.Arrays.stream(leads).max().orElse(0);
-        d.addSeries("lead", leads, Math.max(1, Math.min(20, leads.length)), min, max > min ? max : min + 1);
-        JFreeChart chart = ChartFactory.createHistogram("Lead of the warning over the violation (" + leads.length
-                + " hits)", "lead (" + String.join(", ", e.runs().stream().filter(r -> r.lead() != null)
-                .map(RunResult::unit).distinct().sorted().toList()) + ")", "runs", d, PlotOrientation.VERTICAL, false, false, false);
-        chart.setBackgroundPaint(Color.WHITE);
-        h.append(svg(chart, 700, 320, "lead")).append('\n');
+        // Leads of logs with time stamps are seconds, of console captures ticks: the histogram takes the hits' unit.
+        Clock clock = e.runs().stream().filter(r -> r.lead() != null).allMatch(r -> r.unit().equals(Clock.TICKS.unit()))
+                ? Clock.TICKS : Clock.SECONDS;
+        h.append(svg(ReportCharts.leads(leads, clock), 700, 320, "lead")).append('\n');
     }
 
     private static void runs(StringBuilder h, Evaluation e, Abstraction abstraction) throws IOException {
-        h.append("<h2>Runs</h2>\n");
+        h.append("<h2 id=runs>Runs</h2>\n");
         if (abstraction.safety().isEmpty()) {
             h.append("<p>The abstraction has no safety property, so there is no level to plot.</p>\n");
             return;
@@ -143,70 +137,60 @@ public final class HtmlReport {
             h.append("<p>Only the first ").append(MAX_PLOTS).append(" of ").append(runs.size())
                     .append(" runs are plotted; every run is in the JSON output.</p>\n");
         }
-        h.append("<p>").append(esc(rule.name())).append(": the watched value over time; orange line: the warning; "
-                + "red line: the violation; dashed: the bound ").append(fmt(rule.below())).append(".</p>\n");
+        h.append("<p>").append(esc(rule.name())).append(": the watched value over time from the start of the log; "
+                + "orange dashed line: the warning; red line: the violation; shaded between them: the lead; grey "
+                + "dashed: the bound ").append(fmt(rule.below())).append(".</p>\n");
         int n = 0;
         for (RunResult r : runs) {
             if (n == MAX_PLOTS) {
                 break;
             }
-            Timeline t = Timeline.read(Path.of(r.log()), rule, MAX_POINTS);
-            XYSeries s = new XYSeries(rule.command());
-            for (int i = 0; i < t.times().length; i++) {
-                s.add(t.times()[i], t.values()[i]);
-            }
-            String title = r.scenario() + " / " + Path.of(r.log()).getFileName() + ": " + r.verdict().id()
-                    + (r.lead() != null ? String.format(Locale.ROOT, ", lead %.1f %s", r.lead(), r.unit()) : "");
-            JFreeChart chart = ChartFactory.createXYLineChart(title, "time (s)", rule.command(),
-                    new XYSeriesCollection(s), PlotOrientation.VERTICAL, false, false, false);
-            chart.setBackgroundPaint(Color.WHITE);
-            chart.getTitle().setFont(chart.getTitle().getFont().deriveFont(12f));
-            XYPlot plot = chart.getXYPlot();
-            plot.setBackgroundPaint(Color.WHITE);
-            plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
-            plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
-            plot.getRenderer().setSeriesPaint(0, new Color(30, 90, 180));
-            ValueMarker bound = new ValueMarker(rule.below(), Color.GRAY, new BasicStroke(1f,
-                    BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
-            plot.addRangeMarker(bound);
-            if (r.warningTime() != null) {
-                plot.addDomainMarker(marker(r.warningTime(), new Color(230, 140, 0), "warning"));
-            }
-            if (r.violationTime() != null) {
-                plot.addDomainMarker(marker(r.violationTime(), new Color(200, 0, 0), "violation"));
-            }
-            h.append("<div class=run>").append(svg(chart, 560, 260, "run" + n)).append("</div>\n");
+            Timeline t = Timeline.ofRun(r.log(), abstraction, rule, MAX_POINTS);
+            h.append("<div class=run>").append(svg(ReportCharts.battery(r, t, rule), 540, 260, "run" + n))
+                    .append("</div>\n");
             n++;
         }
     }
 
-    private static ValueMarker marker(double x, Color color, String label) {
-        ValueMarker m = new ValueMarker(x, color, new BasicStroke(2f));
-        m.setLabel(label);
-        m.setLabelPaint(color);
-        m.setLabelAnchor(RectangleAnchor.TOP_RIGHT);
-        m.setLabelTextAnchor(TextAnchor.TOP_LEFT);
-        return m;
-    }
-
-    private static void models(StringBuilder h, Evaluation e, Abstraction abstraction) {
-        h.append("<h2>Learned models</h2>\n<p>")
+    private static void models(StringBuilder h, Evaluation e) {
+        h.append("<h2 id=models>Learned models</h2>\n<p>")
                 .append(e.mode().equals("cross-validation")
                         ? "Learned on every training log (each fold's models are learned on a subset of these runs)."
                         : "Learned on the training logs.")
-                .append(" States by breadth-first distance from the initial state (blue); labels <code>input</code> "
-                        + "(answered OK) and <code>Delta/reply</code>.</p>\n");
+                .append(" Laid out with ELK's layered algorithm; the initial state is marked by an arrow from nowhere. "
+                        + "Labels <code>input</code> (answered OK) and <code>input / output</code>. A large machine "
+                        + "scrolls in its box.</p>\n");
         if (e.models() == null) {
             return;
         }
         int n = 0;
         for (LearnedModel m : e.models().models()) {
+            MachineGraph folded = MachineGraph.folded(m);
             h.append("<h3>").append(esc(m.id())).append(" (").append(m.faulty() ? "faulty" : "nominal")
-                    .append(", ").append(m.machine().size()).append(" states)</h3>\n")
-                    .append(MachineDrawing.svg(m, "m" + n++ + "_")).append('\n')
-                    .append("<details><summary>DOT</summary><pre>")
+                    .append(", ").append(m.machine().size()).append(" states)</h3>\n<p class=caption>")
+                    .append(caption(folded)).append("</p>\n<div class=machine>")
+                    .append(MachineDrawing.svg(folded, "m" + n + "_")).append("</div>\n");
+            if (folded.hidden() > 0) {
+                MachineGraph full = MachineGraph.full(m);
+                h.append("<details><summary>every state (").append(full.nodes().size()).append(" states, ")
+                        .append(full.edges().stream().mapToInt(x -> x.labels().size()).sum())
+                        .append(" transitions)</summary><div class=machine>")
+                        .append(MachineDrawing.svg(full, "m" + n + "f_")).append("</div></details>\n");
+            }
+            h.append("<details><summary>DOT</summary><pre>")
                     .append(esc(ModelStore.toDot(m.machine(), m.alphabet()))).append("</pre></details>\n");
+            n++;
         }
+    }
+
+    /** What the drawing of {@code g} shows of its machine: every state, or which were folded and how. */
+    static String caption(MachineGraph g) {
+        if (g.hidden() == 0) {
+            return "All " + g.states() + " states drawn, one arrow per transition between two states.";
+        }
+        return g.states() + " states, " + g.nodes().size() + " drawn: the other " + g.hidden() + " only wait for the "
+                + "reply to a query (<code>input / OK</code> then <code>Delta / reply</code>), so each such pair is "
+                + "drawn as one arrow <code>input / reply</code>. Every state is drawn below, and in the DOT text.";
     }
 
     private static String svg(JFreeChart chart, int w, int h, String key) {

@@ -1,193 +1,134 @@
 package dev.predmon.evaluate;
 
-import dev.predmon.mealy.MealyMapping;
-import dev.predmon.model.LearnedModel;
-import net.automatalib.automaton.transducer.CompactMealy;
-import org.jfree.svg.SVGGraphics2D;
-
-import java.awt.BasicStroke;
-import java.awt.Color;
-import java.awt.Font;
-import java.awt.FontMetrics;
-import java.awt.RenderingHints;
-import java.awt.geom.Ellipse2D;
-import java.awt.geom.Path2D;
-import java.awt.geom.QuadCurve2D;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Deque;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
+import java.util.Locale;
+import java.util.Optional;
 
 /**
- * Draws a learned Mealy machine as SVG without Graphviz: states in layers by breadth-first distance from the
- * initial state (left to right, in the deterministic order of the alphabet), one arrow per pair of states with
- * all its {@code input/output} labels stacked, self-loops as small arcs above the state, edges to an earlier or
- * the same layer bent. Deterministic: the same machine always gives the same picture.
+ * Draws a learned Mealy machine as inline SVG, laid out by {@link MachineLayout} (ELK's layered algorithm):
+ * states as circles, the initial one marked by an arrow from nowhere, edges as splines with an arrow head,
+ * every transition's {@code input / output} written once beside its edge. No Graphviz needed, and the same
+ * machine always gives the same picture.
  *
- * <p>The thesis's mapping turns each query/reply pair into two Mealy steps, {@code input/OK} into a state that
- * only waits for {@code Delta/reply}. Such waiting states are folded away: the pair is drawn as one edge
- * {@code input / reply} between the states that matter, which halves the picture and reads like the I/O
- * automaton the machine stands for. A state that does more than wait is drawn, with its own edges.
+ * <p>The SVG is drawn at its natural size, one unit a CSS pixel, so its text stays readable however large the
+ * machine: the page scrolls it instead of shrinking it. Every text element carries its measured width as
+ * {@code textLength}, so a browser whose sans-serif font is wider than the one measured squeezes the text into
+ * the box the layout kept free for it rather than across a neighbour. Labels have a white halo, so that where
+ * an edge passes under one (the fan of a state's many edges can) the text still reads.
  */
 public final class MachineDrawing {
 
-    private static final int COL = 190;
-    private static final int ROW = 90;
-    private static final int R = 16;
-    private static final Font FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 10);
+    private static final String EDGE = "#555";
+    private static final String LABEL = "#1a3f7a";
 
     private MachineDrawing() {
     }
 
-    /** The machine as an inline {@code <svg>} element; {@code key} keeps element ids unique within a page. */
-    public static String svg(LearnedModel model, String key) {
-        CompactMealy<String, String> m = model.machine();
-        // Only symbols of the machine's own alphabet have transitions (as ModelTracker checks too).
-        List<String> inputs = new ArrayList<>(model.alphabet().stream().filter(m.getInputAlphabet()::containsSymbol).toList());
-        Map<Integer, Integer> layer = new LinkedHashMap<>();
-        Deque<Integer> queue = new ArrayDeque<>();
-        Integer init = m.getInitialState();
-        if (init == null) {
-            return "<p>(empty machine)</p>";
-        }
-        layer.put(init, 0);
-        queue.add(init);
-        while (!queue.isEmpty()) {
-            Integer s = queue.poll();
-            for (Edge e : edges(m, inputs, s)) {
-                if (!layer.containsKey(e.target())) {
-                    layer.put(e.target(), layer.get(s) + 1);
-                    queue.add(e.target());
-                }
-            }
-        }
-        // Labels per (source, target), in alphabet order.
-        Map<Long, List<String>> labels = new LinkedHashMap<>();
-        for (Integer s : layer.keySet()) {
-            for (Edge e : edges(m, inputs, s)) {
-                labels.computeIfAbsent(((long) s << 32) | e.target().longValue(), k -> new ArrayList<>()).add(e.label());
-            }
-        }
-        // Spacing from the labels themselves, so that long symbols and tall stacks neither overlap nor get cut.
-        FontMetrics fm = new SVGGraphics2D(10, 10).getFontMetrics(FONT);
-        int widest = labels.values().stream().flatMap(List::stream).mapToInt(fm::stringWidth).max().orElse(0);
-        int tallest = labels.values().stream().mapToInt(List::size).max().orElse(1) * fm.getHeight();
-        int col = Math.max(COL, widest + 60);
-        int rowHeight = Math.max(ROW, tallest + 2 * R + 30);
-        int left = widest / 2 + 20;
-        int top = tallest + R + 40;
-        Map<Integer, double[]> pos = new LinkedHashMap<>();
-        Map<Integer, Integer> perLayer = new LinkedHashMap<>();
-        for (Map.Entry<Integer, Integer> e : layer.entrySet()) {
-            int row = perLayer.merge(e.getValue(), 1, Integer::sum) - 1;
-            pos.put(e.getKey(), new double[] {left + e.getValue() * col, top + row * rowHeight});
-        }
-        int layers = perLayer.size();
-        int rows = perLayer.values().stream().mapToInt(Integer::intValue).max().orElse(1);
-        int width = 2 * left + Math.max(0, layers - 1) * col;
-        int height = top + Math.max(0, rows - 1) * rowHeight + tallest + R + 60;
-        SVGGraphics2D g = new SVGGraphics2D(width, height);
-        g.setDefsKeyPrefix(key);
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setFont(FONT);
-        g.setColor(Color.WHITE);
-        g.fillRect(0, 0, width, height);
-        for (Map.Entry<Long, List<String>> e : labels.entrySet()) {
-            int s = (int) (e.getKey() >>> 32);
-            int t = (int) (long) e.getKey();
-            double[] a = pos.get(s);
-            double[] b = pos.get(t);
-            g.setColor(new Color(80, 80, 80));
-            g.setStroke(new BasicStroke(1f));
-            double lx;
-            double ly;
-            if (s == t) {
-                g.draw(new Ellipse2D.Double(a[0] - 10, a[1] - R - 18, 20, 22));
-                lx = a[0];
-                ly = a[1] - R - 22 - (e.getValue().size() - 1) * fm.getHeight();
-            } else {
-                boolean backward = layer.get(t) <= layer.get(s);
-                double mx = (a[0] + b[0]) / 2;
-                double my = (a[1] + b[1]) / 2 + (backward ? 28 + 10 * Math.abs(layer.get(s) - layer.get(t)) : 0);
-                double[] from = border(a, mx, my);
-                double[] to = border(b, mx, my);
-                g.draw(new QuadCurve2D.Double(from[0], from[1], mx, my, to[0], to[1]));
-                arrowHead(g, mx, my, to);
-                lx = backward ? mx : (from[0] + to[0]) / 2 * 0.5 + mx * 0.5;
-                ly = backward ? my + 4 : my - 4 - (e.getValue().size() - 1) * fm.getHeight();
-            }
-            g.setColor(new Color(20, 60, 140));
-            for (int i = 0; i < e.getValue().size(); i++) {
-                String text = e.getValue().get(i);
-                g.drawString(text, (float) (lx - fm.stringWidth(text) / 2.0), (float) (ly + i * fm.getHeight()));
-            }
-        }
-        for (Map.Entry<Integer, double[]> e : pos.entrySet()) {
-            double[] p = e.getValue();
-            g.setColor(e.getKey().equals(init) ? new Color(220, 235, 255) : new Color(245, 245, 245));
-            g.fill(new Ellipse2D.Double(p[0] - R, p[1] - R, 2 * R, 2 * R));
-            g.setColor(Color.BLACK);
-            g.setStroke(new BasicStroke(e.getKey().equals(init) ? 2f : 1f));
-            g.draw(new Ellipse2D.Double(p[0] - R, p[1] - R, 2 * R, 2 * R));
-            String name = "s" + e.getKey();
-            g.drawString(name, (float) (p[0] - fm.stringWidth(name) / 2.0), (float) (p[1] + fm.getAscent() / 2.0 - 1));
-        }
-        return g.getSVGElement(key);
+    /** {@code g} drawn as an {@code <svg>} element; {@code key} keeps element ids unique within a page. */
+    public static String svg(MachineGraph g, String key) {
+        return svg(MachineLayout.of(g), key);
     }
 
-    /** One drawn edge. */
-    private record Edge(Integer target, String label) {
+    /** {@code layout} drawn as an {@code <svg>} element; {@code key} keeps element ids unique within a page. */
+    public static String svg(MachineLayout layout, String key) {
+        StringBuilder s = new StringBuilder(8192);
+        String arrow = key + "arrow";
+        s.append(String.format(Locale.ROOT, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"mealy\" "
+                        + "width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" "
+                        + "font-size=\"%d\">\n", Math.ceil(layout.width()), Math.ceil(layout.height()),
+                Math.ceil(layout.width()), Math.ceil(layout.height()), MachineLayout.FONT.getSize()));
+        s.append("<defs><marker id=\"").append(arrow).append("\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" "
+                + "markerWidth=\"7\" markerHeight=\"7\" orient=\"auto\"><path d=\"M0,0L10,5L0,10z\" fill=\"")
+                .append(EDGE).append("\"/></marker></defs>\n");
+        s.append("<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<g fill=\"none\" stroke=\"").append(EDGE)
+                .append("\" stroke-width=\"1.2\">\n");
+        for (MachineLayout.Line e : layout.edges()) {
+            List<double[]> p = clipped(layout, e);
+            s.append("<path d=\"");
+            for (int i = 0; i < p.size(); i++) {
+                s.append(i == 0 ? "M" : !e.curve() ? "L" : i % 3 == 1 ? "C" : " ")
+                        .append(num(p.get(i)[0])).append(',').append(num(p.get(i)[1]));
+            }
+            s.append("\" marker-end=\"url(#").append(arrow).append(")\"/>\n");
+        }
+        s.append("</g>\n");
+        // Circles after the edges, texts after the circles: a text is never hidden.
+        for (MachineLayout.State st : layout.states()) {
+            MachineLayout.Box b = st.box();
+            s.append("<circle cx=\"").append(num(b.x() + b.w() / 2)).append("\" cy=\"").append(num(b.y() + b.h() / 2))
+                    .append("\" r=\"").append(num(b.w() / 2)).append(st.initial()
+                            ? "\" fill=\"#dce8fb\" stroke=\"#000\" stroke-width=\"2\"/>\n"
+                            : "\" fill=\"#f4f4f4\" stroke=\"#000\" stroke-width=\"1\"/>\n");
+        }
+        // State names plain (inside their circle), labels with a white halo.
+        for (boolean label : new boolean[] {false, true}) {
+            s.append(label ? "<g fill=\"" + LABEL + "\" stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\" "
+                    + "paint-order=\"stroke\">\n" : "<g>\n");
+            for (MachineLayout.Text t : layout.texts()) {
+                if (t.label() == label) {
+                    s.append("<text x=\"").append(num(t.box().x())).append("\" y=\"").append(num(t.baseline()))
+                            .append("\" textLength=\"").append(num(t.box().w()))
+                            .append("\" lengthAdjust=\"spacingAndGlyphs\">").append(esc(t.text())).append("</text>\n");
+                }
+            }
+            s.append("</g>\n");
+        }
+        return s.append("</svg>").toString();
     }
 
     /**
-     * The edges drawn from {@code s}: a query whose successor only waits for {@code Delta} becomes one edge
-     * {@code input / reply} to where the reply leads; any other transition is drawn as it is.
+     * The edge's points with both ends moved from the state's bounding box onto its circle, along the end
+     * segment (ELK routes to the box; the gap would show between a circle and its arrow).
      */
-    private static List<Edge> edges(CompactMealy<String, String> m, List<String> inputs, Integer s) {
-        List<Edge> out = new ArrayList<>();
-        for (String in : inputs) {
-            // Boxed on purpose: the int overload of getSuccessor answers -1, not null, for a missing transition.
-            Integer t = m.getSuccessor(s, in);
-            if (t == null) {
-                continue;
-            }
-            String answer = m.getOutput(s, in);
-            if (!in.equals(MealyMapping.DELTA) && MealyMapping.OK.equals(answer) && onlyWaits(m, inputs, t)) {
-                out.add(new Edge(m.getSuccessor(t, MealyMapping.DELTA), in + " / " + m.getOutput(t, MealyMapping.DELTA)));
-            } else {
-                out.add(new Edge(t, MealyMapping.OK.equals(answer) ? in : in + " / " + answer));
-            }
+    private static List<double[]> clipped(MachineLayout layout, MachineLayout.Line e) {
+        List<double[]> p = new ArrayList<>(e.points());
+        if (p.size() < 2) {
+            return p;
         }
-        return out;
+        stateOf(layout, e.source()).ifPresent(b -> p.set(0, ontoCircle(p.get(0), p.get(1), b)));
+        int n = p.size();
+        stateOf(layout, e.target()).ifPresent(b -> p.set(n - 1, ontoCircle(p.get(n - 1), p.get(n - 2), b)));
+        return p;
     }
 
-    /** Whether {@code t}'s only transition is {@code Delta}: the state between a query and its reply. */
-    private static boolean onlyWaits(CompactMealy<String, String> m, List<String> inputs, Integer t) {
-        for (String in : inputs) {
-            if (m.getSuccessor(t, in) != null && !in.equals(MealyMapping.DELTA)) {
-                return false;
-            }
+    private static Optional<MachineLayout.Box> stateOf(MachineLayout layout, int id) {
+        return layout.states().stream().filter(s -> s.id() == id).map(MachineLayout.State::box).findFirst();
+    }
+
+    /**
+     * Moves {@code end} along the direction from {@code prev} to it until it meets the circle inscribed in
+     * {@code b}; unchanged when that line misses the circle.
+     */
+    private static double[] ontoCircle(double[] end, double[] prev, MachineLayout.Box b) {
+        double cx = b.x() + b.w() / 2;
+        double cy = b.y() + b.h() / 2;
+        double r = b.w() / 2;
+        double dx = end[0] - prev[0];
+        double dy = end[1] - prev[1];
+        double len = Math.hypot(dx, dy);
+        if (len == 0) {
+            return end;
         }
-        return m.getSuccessor(t, MealyMapping.DELTA) != null;
+        dx /= len;
+        dy /= len;
+        // |end + t*d - c| = r, for the smallest t: t^2 + 2t(d.(end-c)) + |end-c|^2 - r^2 = 0.
+        double ox = end[0] - cx;
+        double oy = end[1] - cy;
+        double bq = dx * ox + dy * oy;
+        double disc = bq * bq - (ox * ox + oy * oy - r * r);
+        if (disc < 0) {
+            return end;
+        }
+        double t = -bq - Math.sqrt(disc);
+        return new double[] {end[0] + t * dx, end[1] + t * dy};
     }
 
-    /** Where the line from the centre {@code c} towards {@code (x, y)} leaves the state's circle. */
-    private static double[] border(double[] c, double x, double y) {
-        double dx = x - c[0];
-        double dy = y - c[1];
-        double d = Math.max(1e-9, Math.hypot(dx, dy));
-        return new double[] {c[0] + dx / d * R, c[1] + dy / d * R};
+    private static String num(double d) {
+        return String.format(Locale.ROOT, "%.1f", d);
     }
 
-    private static void arrowHead(SVGGraphics2D g, double fromX, double fromY, double[] tip) {
-        double angle = Math.atan2(tip[1] - fromY, tip[0] - fromX);
-        Path2D head = new Path2D.Double();
-        head.moveTo(tip[0], tip[1]);
-        head.lineTo(tip[0] - 8 * Math.cos(angle - 0.4), tip[1] - 8 * Math.sin(angle - 0.4));
-        head.lineTo(tip[0] - 8 * Math.cos(angle + 0.4), tip[1] - 8 * Math.sin(angle + 0.4));
-        head.closePath();
-        g.fill(head);
+    private static String esc(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
     }
 }

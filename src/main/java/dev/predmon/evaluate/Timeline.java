@@ -1,33 +1,116 @@
 package dev.predmon.evaluate;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.compact.IoPair;
+import dev.predmon.parse.Clock;
+import dev.predmon.pipeline.PipelineListener;
+import dev.predmon.pipeline.TracePipeline;
+
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.parse.LogReader;
+import dev.predmon.parse.LogRecord;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * The values a run's safety property watches (the battery level) over time, for plotting. Read with the same
  * parser and the same {@link SafetyRule#valueOf} as the built-in safety monitor, so the plotted violation is
  * the one the monitor reported.
  *
- * @param times  time stamps
+ * <p>Times are the log's own, and {@link #start} is the time of its first record, whatever it is: plots count
+ * from there ({@link #sinceStart}), since a log with epoch times would otherwise put {@code 1,646,377,250} on
+ * the axis. {@link #clock} says what a time unit is, so that a log whose clock is the tree's tick number is
+ * labelled in ticks.
+ *
+ * @param start  time of the log's first record, in {@code clock} units
+ * @param times  time stamps of the values, in {@code clock} units
  * @param values the watched values, same length
+ * @param clock  what the times count
  */
-public record Timeline(double[] times, double[] values) {
+public record Timeline(double start, double[] times, double[] values, Clock clock) {
+
+    /** The time axis's label: {@code time (s from start)}, {@code time (ticks from start)}. */
+    public static String axisLabel(Clock clock) {
+        return "time (" + clock.unit() + " from start)";
+    }
+
+    /** A duration in this clock, for text: {@code 3.9 s}, {@code 12 ticks}. */
+    public static String amount(Clock clock, double d) {
+        return clock == Clock.TICKS ? String.format(Locale.ROOT, "%.0f ticks", d)
+                : String.format(Locale.ROOT, "%.1f s", d);
+    }
+
+    /**
+     * The timeline of one run as {@link RunResult#log()} names it ({@code file}, or {@code file#k} for run k of a log
+     * that holds several), cut into runs by the abstraction's rule as the monitor cuts it; the clock is the log's own.
+     */
+    public static Timeline ofRun(String runName, Abstraction abstraction, SafetyRule rule, int maxPoints)
+            throws IOException {
+        int hash = runName.lastIndexOf('#');
+        int run = 0;
+        Path log = Path.of(runName);
+        if (hash > 0 && runName.substring(hash + 1).matches("\\d+")) {
+            run = Integer.parseInt(runName.substring(hash + 1));
+            log = Path.of(runName.substring(0, hash));
+        }
+        List<double[]> points = new ArrayList<>();
+        double[] first = {Double.NaN};
+        Clock[] clock = {Clock.SECONDS};
+        int wanted = run;
+        TracePipeline[] pipeline = new TracePipeline[1];
+        pipeline[0] = new TracePipeline(abstraction, new PipelineListener() {
+            @Override
+            public void record(LogRecord r) {
+                if (pipeline[0].run() != wanted) {
+                    return;
+                }
+                clock[0] = r.clock();
+                if (Double.isNaN(first[0])) {
+                    first[0] = r.time();
+                }
+                double v = rule.valueOf(r);
+                if (!Double.isNaN(v)) {
+                    points.add(new double[] {r.time(), v});
+                }
+            }
+
+            @Override
+            public void pair(IoPair pair, LogRecord trigger) {
+            }
+        });
+        LogReader.read(log, pipeline[0]::accept, p -> {
+        });
+        return thinned(points, first[0], maxPoints, clock[0]);
+    }
+
+    /** The timeline of {@code log} in seconds; see {@link #read(Path, SafetyRule, int, Clock)}. */
+    public static Timeline read(Path log, SafetyRule rule, int maxPoints) throws IOException {
+        return read(log, rule, maxPoints, Clock.SECONDS);
+    }
 
     /** The timeline of {@code log}, thinned to at most {@code maxPoints} points (every n-th value kept). */
-    public static Timeline read(Path log, SafetyRule rule, int maxPoints) throws IOException {
+    public static Timeline read(Path log, SafetyRule rule, int maxPoints, Clock clock) throws IOException {
         List<double[]> points = new ArrayList<>();
+        double[] first = {Double.NaN};
         LogReader.read(log, r -> {
+            if (Double.isNaN(first[0])) {
+                first[0] = r.time();
+            }
             double v = rule.valueOf(r);
             if (!Double.isNaN(v)) {
                 points.add(new double[] {r.time(), v});
             }
         }, p -> {
         });
+        return thinned(points, first[0], maxPoints, clock);
+    }
+
+    /** The points thinned to at most {@code maxPoints} (every n-th kept). */
+    private static Timeline thinned(List<double[]> points, double first, int maxPoints, Clock clock) {
         int step = Math.max(1, (points.size() + maxPoints - 1) / maxPoints);
         int n = (points.size() + step - 1) / step;
         double[] t = new double[n];
@@ -36,6 +119,11 @@ public record Timeline(double[] times, double[] values) {
             t[i] = points.get(i * step)[0];
             v[i] = points.get(i * step)[1];
         }
-        return new Timeline(t, v);
+        return new Timeline(Double.isNaN(first) ? 0 : first, t, v, clock);
+    }
+
+    /** {@code time} (a log time, such as a warning's) counted from {@link #start}. */
+    public double sinceStart(double time) {
+        return time - start;
     }
 }
