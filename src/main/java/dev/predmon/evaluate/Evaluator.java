@@ -103,7 +103,7 @@ public final class Evaluator {
         try {
             return Replay.run(log, s.name(), s.faulty(), fold, models, abstraction, threshold);
         } catch (IOException e) {
-            throw new BadInputException(log + ": cannot read: " + e.getMessage());
+            throw BadInputException.cannotRead(log, e);
         }
     }
 
@@ -117,7 +117,7 @@ public final class Evaluator {
                 try {
                     trace = Traces.read(log, abstraction);
                 } catch (IOException e) {
-                    throw new BadInputException(log + ": cannot read: " + e.getMessage());
+                    throw BadInputException.cannotRead(log, e);
                 }
                 if (trace.pairs().isEmpty()) {
                     notes.add(log + ": no skill-component interface message; not learned from");

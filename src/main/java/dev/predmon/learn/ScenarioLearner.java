@@ -34,7 +34,7 @@ public final class ScenarioLearner {
             try {
                 trace = Traces.read(log, abstraction);
             } catch (IOException e) {
-                throw new BadInputException(log + ": cannot read: " + e.getMessage());
+                throw BadInputException.cannotRead(log, e);
             }
             trace.problems().forEach(p -> problems.add(p.format(log.toString())));
             trace.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
