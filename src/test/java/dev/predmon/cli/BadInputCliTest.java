@@ -181,7 +181,11 @@ class BadInputCliTest {
         Cli r = watch(Files.writeString(tmp.resolve("run.log"), HandRuns.depleted().text()),
                 "--abstraction", other.toString());
         assertEquals(ExitCodes.BAD_INPUT, r.code());
-        oneLine(r, models.resolve("index.json"), "learned with abstraction");
+        oneLine(r, models.resolve("index.json"), "learned with another version of abstraction 'thesis-tables-4.1-4.2-bands-5.2'");
+        assertTrue(r.err().contains("they differ at locations.charging_station, locations.dock"), r.err());
+        assertTrue(r.err().contains("omit --abstraction to use the one they were learned with ("
+                + models.resolve("abstraction.json") + ")"), r.err());
+        assertEquals(1, r.err().split("'thesis-tables-4.1-4.2-bands-5.2'", -1).length - 1, "the name once: " + r.err());
     }
 
     @Test
