@@ -359,7 +359,7 @@ public final class Abstraction {
         try {
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
-            throw new AbstractionException(file + ": cannot read: " + e, e);
+            throw new AbstractionException(file + ": cannot read: " + dev.predmon.BadInputException.reason(e), e);
         }
         return fromJson(file.toString(), text);
     }

@@ -1,7 +1,9 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.BadInputException;
+
 /** A bad abstraction file; the message names the file, the position and the reason. */
-public final class AbstractionException extends Exception {
+public final class AbstractionException extends BadInputException {
     public AbstractionException(String message) {
         super(message);
     }

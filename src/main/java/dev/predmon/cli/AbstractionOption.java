@@ -31,7 +31,7 @@ final class AbstractionOption {
         Path file = Path.of(value);
         if (Files.exists(file) || Abstraction.builtin(value).isEmpty()) {
             if (!Files.exists(file)) {
-                throw new AbstractionException(value + ": no such file, and not a built-in abstraction (one of "
+                throw new AbstractionException(value + ": cannot read: no such file (nor a built-in abstraction: "
                         + String.join(", ", Abstraction.BUILTIN_NAMES) + ")");
             }
             return Abstraction.load(file);

@@ -1,13 +1,13 @@
 package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
-import dev.predmon.abstraction.AbstractionException;
 import picocli.CommandLine;
 import picocli.CommandLine.IExecutionExceptionHandler;
 import picocli.CommandLine.ParseResult;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.FileSystemException;
 
 /**
  * The one place where failures become a message and an exit code: known bad input is one line naming the
@@ -22,11 +22,11 @@ final class ErrorHandler implements IExecutionExceptionHandler {
                 || (parsed.subcommand() != null && parsed.subcommand().hasMatchedOption("--verbose"));
         Throwable e = ex instanceof UncheckedIOException u ? u.getCause() : ex;
         int code;
-        if (e instanceof BadInputException || e instanceof AbstractionException) {
+        if (e instanceof BadInputException) {
             cl.getErr().println("predmon: " + e.getMessage());
             code = ExitCodes.BAD_INPUT;
-        } else if (e instanceof IOException) {
-            cl.getErr().println("predmon: " + describe(e));
+        } else if (e instanceof IOException io) {
+            cl.getErr().println("predmon: " + describe(io));
             code = ExitCodes.BAD_INPUT;
         } else {
             cl.getErr().println("predmon: internal error: " + e + (verbose ? "" : " (rerun with --verbose for details)"));
@@ -39,13 +39,11 @@ final class ErrorHandler implements IExecutionExceptionHandler {
         return code;
     }
 
-    private static String describe(Throwable e) {
-        if (e instanceof java.nio.file.NoSuchFileException n) {
-            return n.getFile() + ": no such file";
+    /** The file and what went wrong with it, in words (never a Java class name). */
+    private static String describe(IOException e) {
+        if (e instanceof FileSystemException f && f.getFile() != null) {
+            return f.getFile() + ": " + BadInputException.reason(e);
         }
-        if (e instanceof java.nio.file.AccessDeniedException a) {
-            return a.getFile() + ": permission denied";
-        }
-        return "I/O error: " + e.getMessage();
+        return "I/O error: " + BadInputException.reason(e);
     }
 }

@@ -23,7 +23,10 @@ import java.util.concurrent.Callable;
                 "--logs holds one directory per scenario with its *.log files and a scenario.json "
                         + "{\"faulty\": true|false, \"description\": \"...\"}. Runs of a scenario that disagree "
                         + "after the same inputs are split into conflict-free groups, one machine each "
-                        + "(<scenario>-<k>.dot). Writes <models>/*.dot and <models>/index.json atomically."})
+                        + "(<scenario>-<k>.dot). Writes <models>/*.dot, <models>/index.json and "
+                        + "<models>/abstraction.json atomically.",
+                "--models must be new, empty or a model directory learn wrote, and apart from --logs: anything "
+                        + "else is refused (exit 3) and left untouched."})
 final class LearnCommand implements Callable<Integer> {
 
     @Spec
@@ -44,12 +47,14 @@ final class LearnCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
         Map<String, Long> unmapped = new TreeMap<>();
-        List<LearnedScenario> learned = Learning.learnAndWrite(logs, models, abstraction, l -> {
+        Learning.Result result = Learning.learnAndWrite(logs, models, abstraction, l -> {
             l.problems().forEach(err::println);
             l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));
             l.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
             report(out, l);
         });
+        List<LearnedScenario> learned = result.scenarios();
+        result.notes().forEach(n -> err.println("predmon: note: " + n));
         if (!unmapped.isEmpty()) {
             err.println("predmon: interface messages that no abstraction rule maps (not learned):");
             unmapped.forEach((k, n) -> err.println("  " + n + " x " + k));

@@ -113,7 +113,7 @@ public final class Evaluator {
         try {
             return Replay.run(log, s.name(), s.faulty(), s.runs(), fold, models, abstraction, threshold, confirm);
         } catch (IOException e) {
-            throw new BadInputException(log + ": cannot read: " + e.getMessage());
+            throw BadInputException.cannotRead(log, e);
         }
     }
 
@@ -127,7 +127,7 @@ public final class Evaluator {
                 try {
                     trace = Traces.read(log, abstraction);
                 } catch (IOException e) {
-                    throw new BadInputException(log + ": cannot read: " + e.getMessage());
+                    throw BadInputException.cannotRead(log, e);
                 }
                 if (trace.samples(s.runs()).isEmpty()) {
                     notes.add(log + ": no skill-component interface message; not learned from");

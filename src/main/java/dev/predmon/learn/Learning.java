@@ -19,12 +19,24 @@ public final class Learning {
     }
 
     /**
-     * Learns every scenario under {@code logs} and replaces {@code models} atomically.
+     * What a learn made.
+     *
+     * @param scenarios every scenario learned, sorted by name
+     * @param notes     what the user should know about the model directory (usually nothing)
+     */
+    public record Result(List<LearnedScenario> scenarios, List<String> notes) {
+    }
+
+    /**
+     * Learns every scenario under {@code logs} and replaces {@code models} atomically. Whether {@code models} may
+     * be replaced (new, empty or written by predmon; not the logs) is checked before learning starts, so a refusal
+     * comes at once and changes nothing.
      *
      * @param each receives each scenario as soon as it is learned (for progress and reports)
      */
-    public static List<LearnedScenario> learnAndWrite(Path logs, Path models, Abstraction abstraction,
-                                                      Consumer<LearnedScenario> each) throws BadInputException, IOException {
+    public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each)
+            throws BadInputException, IOException {
+        ModelStore.checkWritable(models, logs);
         List<LearnedScenario> learned = new ArrayList<>();
         List<ScenarioSpec> specs = ScenarioLayout.scan(logs, abstraction);
         List<Path> all = specs.stream().flatMap(s -> s.logs().stream()).toList();
@@ -38,9 +50,9 @@ public final class Learning {
             each.accept(l);
             learned.add(l);
         }
-        ModelStore.write(models, LearnedModels.index(learned, tuned),
-                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)));
-        return List.copyOf(learned);
+        List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
+                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson());
+        return new Result(List.copyOf(learned), notes);
     }
 
     /**

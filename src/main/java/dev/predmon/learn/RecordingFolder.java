@@ -60,7 +60,7 @@ public final class RecordingFolder {
             try {
                 trace = Traces.read(log, abstraction);
             } catch (IOException e) {
-                throw new BadInputException(log + ": cannot read: " + e.getMessage());
+                throw BadInputException.cannotRead(log, e);
             }
             if (trace.runs().stream().anyMatch(LogTrace.Run::violated)) {
                 violating.add(log);

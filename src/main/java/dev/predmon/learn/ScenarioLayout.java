@@ -41,7 +41,7 @@ public final class ScenarioLayout {
         try (Stream<Path> s = Files.list(logsDir)) {
             dirs = s.filter(Files::isDirectory).sorted().toList();
         } catch (IOException e) {
-            throw new BadInputException(logsDir + ": cannot list: " + e.getMessage());
+            throw new BadInputException(logsDir + ": cannot list: " + BadInputException.reason(e), e);
         }
         if (dirs.stream().noneMatch(d -> Files.isRegularFile(d.resolve("scenario.json")))) {
             List<ScenarioSpec> labelled = RecordingFolder.scenarios(logsDir, abstraction);
@@ -75,7 +75,7 @@ public final class ScenarioLayout {
             throw new BadInputException(json + ":" + e.getLocation().getLineNr() + ":" + e.getLocation().getColumnNr()
                     + ": invalid JSON: " + e.getOriginalMessage());
         } catch (IOException e) {
-            throw new BadInputException(json + ": cannot read: " + e.getMessage());
+            throw BadInputException.cannotRead(json, e);
         }
         if (node == null || !node.isObject() || !node.path("faulty").isBoolean()) {
             throw new BadInputException(json + ": expected an object with a boolean \"faulty\"");
@@ -84,7 +84,7 @@ public final class ScenarioLayout {
         try (Stream<Path> s = Files.list(dir)) {
             logs = s.filter(p -> p.getFileName().toString().endsWith(".log") && Files.isRegularFile(p)).sorted().toList();
         } catch (IOException e) {
-            throw new BadInputException(dir + ": cannot list: " + e.getMessage());
+            throw new BadInputException(dir + ": cannot list: " + BadInputException.reason(e), e);
         }
         if (logs.isEmpty()) {
             throw new BadInputException(dir + ": no *.log files for scenario '" + name + "'");

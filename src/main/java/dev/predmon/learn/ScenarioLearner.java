@@ -39,7 +39,7 @@ public final class ScenarioLearner {
                 try {
                     traces.put(log, Traces.read(log, abstraction));
                 } catch (IOException e) {
-                    throw new BadInputException(log + ": cannot read: " + e.getMessage());
+                    throw BadInputException.cannotRead(log, e);
                 }
             }
         }

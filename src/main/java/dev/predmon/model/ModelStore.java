@@ -29,23 +29,28 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.Stream;
+import java.util.Optional;
+import java.util.function.Consumer;
 
 /**
- * Reads and writes a model directory: one Graphviz DOT file per machine and {@code index.json}.
+ * Reads and writes a model directory: one Graphviz DOT file per machine, {@code index.json}, and
+ * {@code abstraction.json}, the abstraction the models were learned with.
  *
- * <p>Writing is atomic at the directory level: everything goes to a sibling staging directory, which then
- * replaces the old directory by two renames. A learn that fails or is killed leaves the previous models in
- * place; if it is killed between the two renames, the previous models are in {@code <dir>.old}, and
- * {@link #read} takes them from there. There is no moment without readable models: {@code .old} is deleted
- * only once the new models are in place, and staging directories of killed learns are removed by the next one.
+ * <p>Writing never destroys a user's files: it replaces only a directory predmon wrote (or an empty one) and
+ * refuses anything else before changing anything ({@link ModelDirectory}). It is atomic at the directory level:
+ * everything goes to a sibling staging directory, which then replaces the old directory by two renames. A learn
+ * that fails or is killed leaves the previous models in place; if it is killed between the two renames, the
+ * previous models are in the set-aside sibling {@code <dir>.old-<pid>-<n>}, and {@link #read} takes them from
+ * there. There is no moment without readable models: a set-aside directory is deleted only once new models are
+ * in place, and staging directories of killed learns are removed by the next one. What can fail is checked first
+ * (ownership, permissions), so a failed learn leaves exactly the previous state.
  */
 public final class ModelStore {
 
     /** Name of the index file inside a model directory. */
-    public static final String INDEX = "index.json";
-    /** Infix of staging directories: {@code <dir>.new-<pid>-<random>}. */
-    private static final String STAGING = ".new-";
+    public static final String INDEX = ModelDirectory.INDEX;
+    /** Name of the file holding the abstraction the models were learned with (its SHA-256 is the fingerprint). */
+    public static final String ABSTRACTION = ModelDirectory.ABSTRACTION;
 
     private static final ObjectMapper JSON = new ObjectMapper()
             .enable(SerializationFeature.INDENT_OUTPUT)
@@ -74,42 +79,150 @@ public final class ModelStore {
     }
 
     /**
-     * Replaces {@code dir} with the given machines and index, atomically.
-     *
-     * @param dots DOT text by file name
+     * Checks, before learning starts, that {@link #write} may replace {@code models} with models learned from
+     * {@code logs}: the directory is new, empty or predmon's own, everything needed is writable, and it is not the
+     * log directory, inside it, or around it (replacing it would delete the logs, or learn them as a scenario).
      */
-    public static void write(Path dir, ModelIndex index, Map<String, String> dots) throws IOException {
-        Path target = dir.toAbsolutePath().normalize();
-        Path parent = target.getParent();
-        Files.createDirectories(parent);
-        String stagingPrefix = target.getFileName() + STAGING;
-        deleteAbandonedStaging(parent, stagingPrefix);
-        Path staging = Files.createTempDirectory(parent, stagingPrefix + ProcessHandle.current().pid() + "-");
+    public static void checkWritable(Path models, Path logs) throws BadInputException {
+        ModelDirectory target = ModelDirectory.of(models);
+        Path logsPath = realish(logs);
+        Path modelsPath = target.path();
+        if (modelsPath.equals(logsPath)) {
+            throw new BadInputException(models + ": is the log directory --logs; choose another --models");
+        }
+        if (modelsPath.startsWith(logsPath)) {
+            throw new BadInputException(models + ": is inside the log directory " + logs + "; choose --models outside it");
+        }
+        if (logsPath.startsWith(modelsPath)) {
+            throw new BadInputException(models + ": holds the log directory " + logs + ", which learn would "
+                    + "replace; choose another --models");
+        }
+        target.requireReplaceable();
+    }
+
+    /** The absolute path, with the part that exists resolved to its real path (links followed). */
+    private static Path realish(Path p) {
+        Path abs = p.toAbsolutePath().normalize();
+        Path existing = abs;
+        while (existing != null && !Files.exists(existing)) {
+            existing = existing.getParent();
+        }
+        if (existing == null) {
+            return abs;
+        }
         try {
+            return existing.toRealPath().resolve(existing.relativize(abs));
+        } catch (IOException e) {
+            return abs;
+        }
+    }
+
+    /**
+     * Replaces {@code dir} with the given machines, index and abstraction, atomically, if it is new, empty or a
+     * model directory predmon wrote; else refuses and changes nothing.
+     *
+     * @param dots            DOT text by file name
+     * @param abstractionJson the abstraction's canonical JSON, written as {@value #ABSTRACTION}
+     * @return notes for the user (a set-aside directory that could not be removed), usually none
+     */
+    public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson)
+            throws IOException, BadInputException {
+        return write(dir, index, dots, abstractionJson, step -> { });
+    }
+
+    /**
+     * As above; {@code step} is told each step just before it is taken: {@code write} (the files, into the staging
+     * directory), {@code set-aside} (rename the previous models aside), {@code move-in} (rename the staging
+     * directory into place), {@code clean-up} (delete the previous models), so that a test can kill a learn at each.
+     */
+    static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson,
+                              Consumer<String> step) throws IOException, BadInputException {
+        ModelDirectory d = ModelDirectory.of(dir);
+        d.requireReplaceable();
+        Path target = d.path();
+        Files.createDirectories(d.parent());
+        for (Path abandoned : d.siblings(ModelDirectory.Sibling.STAGING, true)) {
+            ModelDirectory.delete(abandoned);
+        }
+        boolean hasModels = Files.isRegularFile(target.resolve(INDEX));
+        if (hasModels) {
+            // the models in place are the ones to keep: what earlier killed learns set aside is garbage
+            for (Path abandoned : d.siblings(ModelDirectory.Sibling.SET_ASIDE, true)) {
+                ModelDirectory.delete(abandoned);
+            }
+        }
+        Path staging = d.createSibling(ModelDirectory.Sibling.STAGING);
+        List<String> notes = new ArrayList<>();
+        try {
+            if (Files.isDirectory(target)) {
+                ModelDirectory.copyPermissions(target, staging);
+            }
+            step.accept("write");
             for (Map.Entry<String, String> e : dots.entrySet()) {
                 writeDurably(staging.resolve(e.getKey()), e.getValue());
             }
+            writeDurably(staging.resolve(ABSTRACTION), abstractionJson);
             writeDurably(staging.resolve(INDEX), JSON.writeValueAsString(index) + "\n");
-            Path old = oldOf(target);
+            Path aside = null;
             if (Files.exists(target)) {
-                deleteTree(old); // the previous models are in target, so an older .old is garbage
-                Files.move(target, old, StandardCopyOption.ATOMIC_MOVE);
+                step.accept("set-aside");
+                aside = d.sibling(ModelDirectory.Sibling.SET_ASIDE);
+                Files.move(target, aside, StandardCopyOption.ATOMIC_MOVE);
             }
-            // Otherwise .old may hold the only readable models (a learn killed between the renames): it must
-            // survive until the new models are in place.
-            Files.move(staging, target, StandardCopyOption.ATOMIC_MOVE);
-            deleteTree(old);
+            step.accept("move-in");
+            try {
+                Files.move(staging, target, StandardCopyOption.ATOMIC_MOVE);
+            } catch (IOException e) {
+                if (aside != null) {
+                    Files.move(aside, target, StandardCopyOption.ATOMIC_MOVE); // put the previous models back
+                }
+                throw e;
+            }
+            step.accept("clean-up");
+            // The new models are in place: what is set aside (now, or by a learn killed between its renames) goes.
+            List<Path> garbage = new ArrayList<>(d.siblings(ModelDirectory.Sibling.SET_ASIDE, true));
+            if (aside != null) {
+                garbage.add(aside);
+            }
+            for (Path p : garbage) {
+                try {
+                    ModelDirectory.delete(p);
+                } catch (IOException e) {
+                    notes.add(p + ": the previous models could not be removed (" + BadInputException.reason(e)
+                            + "); the new ones are in place: remove it by hand");
+                }
+            }
         } finally {
-            deleteTree(staging);
+            ModelDirectory.delete(staging);
+        }
+        return List.copyOf(notes);
+    }
+
+    /**
+     * The abstraction file a model directory carries ({@value #ABSTRACTION}), if it has one: where {@link #read}
+     * would read the models from.
+     */
+    public static Optional<Path> storedAbstraction(Path dir) {
+        Path file = modelsAt(dir).resolve(ABSTRACTION);
+        return Files.isRegularFile(file) ? Optional.of(file) : Optional.empty();
+    }
+
+    /** Where the models of {@code dir} are: {@code dir}, or what a learn killed between its renames set aside. */
+    private static Path modelsAt(Path dir) {
+        Path abs = dir.toAbsolutePath().normalize();
+        if (Files.isRegularFile(dir.resolve(INDEX)) || abs.getParent() == null || abs.getFileName() == null) {
+            return dir;
+        }
+        try {
+            return ModelDirectory.lenient(dir).setAside().orElse(dir);
+        } catch (IOException e) {
+            return dir; // the parent cannot be listed: read reports the directory itself
         }
     }
 
     /** Reads a model directory and checks it against the abstraction in use. */
     public static ModelSet read(Path dir, Abstraction abstraction) throws BadInputException {
-        Path base = dir;
-        if (!Files.isRegularFile(dir.resolve(INDEX)) && Files.isRegularFile(oldOf(dir).resolve(INDEX))) {
-            base = oldOf(dir); // a learn was killed between its two renames: the previous models are here
-        }
+        Path base = modelsAt(dir);
         Path indexFile = base.resolve(INDEX);
         if (!Files.isDirectory(base)) {
             throw new BadInputException(dir + ": no model directory; run 'predmon learn' first");
@@ -123,17 +236,16 @@ public final class ModelStore {
             throw new BadInputException(indexFile + ":" + e.getLocation().getLineNr() + ": not a predmon model index: "
                     + e.getOriginalMessage());
         } catch (IOException e) {
-            throw new BadInputException(indexFile + ": cannot read: " + e.getMessage());
+            throw BadInputException.cannotRead(indexFile, e);
         }
         if (index.format() != ModelIndex.FORMAT || index.abstraction() == null || index.scenarios() == null
                 || index.alphabet() == null) {
             throw new BadInputException(indexFile + ": not a predmon model index of format " + ModelIndex.FORMAT);
         }
         if (!abstraction.fingerprint().equals(index.abstraction().fingerprint())) {
-            throw new BadInputException(indexFile + ": models were learned with abstraction '"
-                    + index.abstraction().name() + "' (" + shortFp(index.abstraction().fingerprint())
-                    + "), not the one in use, '" + abstraction.name() + "' (" + shortFp(abstraction.fingerprint())
-                    + "); relearn, or pass the abstraction they were learned with");
+            Path stored = Files.isRegularFile(base.resolve(ABSTRACTION)) ? base.resolve(ABSTRACTION) : null;
+            throw new BadInputException(indexFile + ": " + AbstractionMismatch.describe(index.abstraction(),
+                    abstraction, stored));
         }
         Alphabet<String> alphabet = alphabetOf(abstraction);
         if (!index.alphabet().equals(new ArrayList<>(alphabet))) {
@@ -157,7 +269,9 @@ public final class ModelStore {
             data = DOTParsers.mealy().readModel(in);
         } catch (NoSuchFileException e) {
             throw new BadInputException(file + ": missing (listed in " + INDEX + ")");
-        } catch (IOException | RuntimeException e) {
+        } catch (IOException e) {
+            throw BadInputException.cannotRead(file, e);
+        } catch (RuntimeException e) {
             throw new BadInputException(file + ": not a Mealy machine in DOT (edges labelled 'input / output'): "
                     + firstLine(e.getMessage()));
         }
@@ -178,36 +292,6 @@ public final class ModelStore {
         return full;
     }
 
-    /**
-     * Deletes staging directories of learns that were killed while writing: those whose owning process (the pid
-     * in their name) is gone. A staging directory named without a pid (older versions) goes once it is an hour
-     * old. A learn still running keeps its own.
-     */
-    private static void deleteAbandonedStaging(Path parent, String prefix) throws IOException {
-        List<Path> candidates;
-        try (Stream<Path> s = Files.list(parent)) {
-            candidates = s.filter(p -> p.getFileName().toString().startsWith(prefix) && Files.isDirectory(p)).toList();
-        }
-        for (Path p : candidates) {
-            String rest = p.getFileName().toString().substring(prefix.length());
-            int dash = rest.indexOf('-');
-            boolean abandoned;
-            if (dash > 0 && dash <= 18 && rest.substring(0, dash).chars().allMatch(Character::isDigit)) {
-                abandoned = ProcessHandle.of(Long.parseLong(rest.substring(0, dash))).map(h -> !h.isAlive()).orElse(true);
-            } else {
-                abandoned = Files.getLastModifiedTime(p).toInstant()
-                        .isBefore(java.time.Instant.now().minus(java.time.Duration.ofHours(1)));
-            }
-            if (abandoned) {
-                deleteTree(p);
-            }
-        }
-    }
-
-    private static String shortFp(String fp) {
-        return fp == null ? "none" : fp.substring(0, Math.min(12, fp.length()));
-    }
-
     private static String firstLine(String s) {
         if (s == null) {
             return "unreadable";
@@ -216,26 +300,10 @@ public final class ModelStore {
         return nl < 0 ? s : s.substring(0, nl);
     }
 
-    private static Path oldOf(Path dir) {
-        Path abs = dir.toAbsolutePath().normalize();
-        return abs.resolveSibling(abs.getFileName() + ".old");
-    }
-
     private static void writeDurably(Path file, String text) throws IOException {
         try (FileChannel ch = FileChannel.open(file, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE)) {
             ch.write(java.nio.ByteBuffer.wrap(text.getBytes(StandardCharsets.UTF_8)));
             ch.force(true);
-        }
-    }
-
-    private static void deleteTree(Path dir) throws IOException {
-        if (!Files.exists(dir)) {
-            return;
-        }
-        try (Stream<Path> walk = Files.walk(dir)) {
-            for (Path p : walk.sorted(Comparator.reverseOrder()).toList()) {
-                Files.deleteIfExists(p);
-            }
         }
     }
 }

@@ -131,6 +131,29 @@ class BadInputCliTest {
         assertTrue(r.out().contains("0 records"), r.out());
     }
 
+    /** Files that cannot be read are named, with the reason in words: no Java class name in any message. */
+    @Test
+    void filesThatCannotBeReadAreNamedWithoutJavaClassNames() throws Exception {
+        Path run = Files.writeString(tmp.resolve("run.log"), HandRuns.depleted().text());
+        Path missing = tmp.resolve("missing.json");
+        Cli abstraction = watch(run, "--abstraction", missing.toString());
+        assertEquals(ExitCodes.BAD_INPUT, abstraction.code());
+        oneLine(abstraction, missing, missing + ": cannot read: no such file");
+        Path dir = Files.createDirectories(tmp.resolve("dir.json"));
+        Cli directory = Cli.run("learn", "--logs", logs.toString(), "--models", models.toString(), "--abstraction", dir.toString());
+        assertEquals(ExitCodes.BAD_INPUT, directory.code());
+        oneLine(directory, dir, dir + ": cannot read: is a directory");
+        Path scenarioJson = logs.resolve("recharge/scenario.json");
+        Files.delete(scenarioJson);
+        Files.createDirectory(scenarioJson);
+        Cli scenario = Cli.run("learn", "--logs", logs.toString(), "--models", models.toString());
+        assertEquals(ExitCodes.BAD_INPUT, scenario.code());
+        oneLine(scenario, scenarioJson, "scenario.json");
+        for (Cli r : List.of(abstraction, directory, scenario)) {
+            assertFalse(r.err().matches("(?s).*\\b(java|javax|sun)\\.[a-z]+\\..*|.*Exception.*"), r.err());
+        }
+    }
+
     @Test
     void aDotThatIsNotAMealyMachine() throws Exception {
         Files.writeString(models.resolve("depleted.dot"), "digraph g { s0 -> s1 [label=\"a\"]; }");
@@ -158,7 +181,11 @@ class BadInputCliTest {
         Cli r = watch(Files.writeString(tmp.resolve("run.log"), HandRuns.depleted().text()),
                 "--abstraction", other.toString());
         assertEquals(ExitCodes.BAD_INPUT, r.code());
-        oneLine(r, models.resolve("index.json"), "learned with abstraction");
+        oneLine(r, models.resolve("index.json"), "learned with another version of abstraction 'thesis-tables-4.1-4.2-bands-5.2'");
+        assertTrue(r.err().contains("they differ at locations.charging_station, locations.dock"), r.err());
+        assertTrue(r.err().contains("omit --abstraction to use the one they were learned with ("
+                + models.resolve("abstraction.json") + ")"), r.err());
+        assertEquals(1, r.err().split("'thesis-tables-4.1-4.2-bands-5.2'", -1).length - 1, "the name once: " + r.err());
     }
 
     @Test

@@ -30,6 +30,18 @@ class DemoAndShippedDataTest {
             assertEquals(Files.readString(MODELS.resolve(dot)), Files.readString(relearned.resolve(dot)),
                     dot + " is stale: run scripts/regenerate-samples.sh");
         }
+        assertEquals(Files.readString(relearned.resolve("abstraction.json")), Files.readString(MODELS.resolve("abstraction.json")),
+                "abstraction.json is stale: run scripts/regenerate-samples.sh");
+    }
+
+    /** The models carry the abstraction they were learned with: its SHA-256 is the index's fingerprint. */
+    @Test
+    void shippedModelsCarryTheirAbstraction() throws Exception {
+        String text = Files.readString(MODELS.resolve("abstraction.json"));
+        String sha = java.util.HexFormat.of().formatHex(java.security.MessageDigest.getInstance("SHA-256")
+                .digest(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        assertTrue(Files.readString(MODELS.resolve("index.json")).contains("\"fingerprint\" : \"" + sha + "\""));
+        assertEquals(sha, dev.predmon.abstraction.Abstraction.load(MODELS.resolve("abstraction.json")).fingerprint());
     }
 
     private static List<String> dots(Path dir) throws IOException {

@@ -46,7 +46,7 @@ class RecordingsCliTest {
         Cli missing = Cli.run("learn", "--logs", dir.toString(), "--models", dir.resolve("m").toString(),
                 "--abstraction", "scope-fech");
         assertEquals(ExitCodes.BAD_INPUT, missing.code());
-        assertTrue(missing.err().contains("scope-fech: no such file, and not a built-in abstraction"), missing.err());
+        assertTrue(missing.err().contains("scope-fech: cannot read: no such file (nor a built-in abstraction: thesis, scope-fetch)"), missing.err());
     }
 
     @Test

@@ -39,9 +39,10 @@ class ModelStoreTest {
         return List.of(ScenarioLearner.learnSamples(spec, List.of(run), ModelStore.alphabetOf(ABSTRACTION)));
     }
 
-    private void writeModels(Path dir) throws IOException {
+    private void writeModels(Path dir) throws IOException, BadInputException {
         List<LearnedScenario> l = learned();
-        ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), LearnedModels.dots(l, ModelStore.alphabetOf(ABSTRACTION)));
+        ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), LearnedModels.dots(l, ModelStore.alphabetOf(ABSTRACTION)),
+                ABSTRACTION.canonicalJson());
     }
 
     @Test
@@ -74,7 +75,8 @@ class ModelStoreTest {
         bad.put("ok.dot", "digraph g {}");
         bad.put("no/such/dir.dot", "x");
         List<LearnedScenario> l = learned();
-        assertThrows(IOException.class, () -> ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), bad));
+        assertThrows(IOException.class, () -> ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), bad,
+                ABSTRACTION.canonicalJson()));
         assertEquals(before, Files.readString(dir.resolve("direct.dot")));
         assertTrue(Files.notExists(dir.resolve("ok.dot")));
         ModelStore.read(dir, ABSTRACTION);
@@ -84,10 +86,10 @@ class ModelStoreTest {
     }
 
     @Test
-    void modelsLeftInOldByAKilledLearnAreStillRead() throws Exception {
+    void modelsSetAsideByAKilledLearnAreStillRead() throws Exception {
         Path dir = tmp.resolve("models");
         writeModels(dir);
-        Files.move(dir, tmp.resolve("models.old")); // killed between the two renames
+        Files.move(dir, tmp.resolve("models.old-999999999-1")); // killed between the two renames
         assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size());
     }
 
@@ -96,27 +98,28 @@ class ModelStoreTest {
     void afterAKillBetweenTheRenamesTheNextLearnSucceeds() throws Exception {
         Path dir = tmp.resolve("models");
         writeModels(dir);
-        Files.move(dir, tmp.resolve("models.old"));
+        Files.move(dir, tmp.resolve("models.old-999999999-2"));
         Path staging = Files.createDirectories(tmp.resolve("models.new-999999999-1"));
         Files.writeString(staging.resolve("direct.dot"), "digraph g {"); // half-written
         assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size());
         writeModels(dir);
         assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size());
         assertTrue(Files.isRegularFile(dir.resolve("index.json")));
-        assertTrue(Files.notExists(tmp.resolve("models.old")), "cleaned up once the new models are in place");
+        assertTrue(Files.notExists(tmp.resolve("models.old-999999999-2")), "cleaned up once the new models are in place");
     }
 
     /**
-     * When the previous models are only in {@code .old} and the rename into place then fails (here a dangling
-     * link named like the model directory blocks it), those models must not have been deleted first.
+     * When the previous models are only set aside and the model directory cannot be written (here a dangling link
+     * named like it), the learn is refused and those models stay readable.
      */
     @Test
-    void modelsOnlyInOldSurviveAFailedRenameIntoPlace() throws Exception {
+    void modelsOnlySetAsideSurviveARefusedWrite() throws Exception {
         Path dir = tmp.resolve("models");
         writeModels(dir);
-        Files.move(dir, tmp.resolve("models.old"));
+        Files.move(dir, tmp.resolve("models.old-999999999-3"));
         Files.createSymbolicLink(dir, tmp.resolve("nowhere"));
-        assertThrows(IOException.class, () -> writeModels(dir));
+        BadInputException e = assertThrows(BadInputException.class, () -> writeModels(dir));
+        assertTrue(e.getMessage().contains("symbolic link"), e.getMessage());
         assertEquals(1, ModelStore.read(dir, ABSTRACTION).models().size(), "the previous models are still readable");
     }
 
