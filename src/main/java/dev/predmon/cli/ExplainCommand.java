@@ -4,15 +4,15 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.evaluate.Explanation;
 import dev.predmon.model.ModelSet;
+import dev.predmon.pipeline.Evidence;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
@@ -20,44 +20,36 @@ import java.util.concurrent.Callable;
 @Command(name = "explain", mixinStandardHelpOptions = true,
         description = {"Explain a run: its abstract trace pair by pair and, for each model, where it stopped "
                 + "matching and why (the reply it expected versus the one seen), then what 'watch' concluded.",
-                "Exit 1 when watch would warn on this log, 0 otherwise."})
+                "Exit as watch --no-follow would on this log: 1 when it warns, 5 when no model matches the run, 0 "
+                        + "otherwise; 3 when the log holds nothing to judge."})
 final class ExplainCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to explain.")
-    Path log;
-
     @Mixin
-    ThresholdOption threshold;
-
-    @Option(names = "--json", description = "Print the explanation as one JSON document.")
-    boolean json;
-
-    @Mixin
-    ModelOptions models;
-
-    @Mixin
-    AbstractionOption abstractionOption;
+    LogAgainstModels input;
 
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        Abstraction abstraction = abstractionOption.load();
-        ModelSet set = models.load(abstraction);
-        if (!Files.isRegularFile(log)) {
-            throw new BadInputException(log + ": no such file");
+        ModelSet set = input.models();
+        Abstraction abstraction = input.abstraction();
+        input.checkLog();
+        LogTrace trace = Traces.read(input.log, abstraction);
+        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
+        if (missing != null) {
+            throw new BadInputException(missing);
         }
-        Explanation x = Explanation.of(log, set, abstraction, threshold.value);
-        if (json) {
-            out.println(new com.fasterxml.jackson.databind.ObjectMapper()
-                    .enable(com.fasterxml.jackson.databind.SerializationFeature.INDENT_OUTPUT).writeValueAsString(x));
+        Problems.print(spec.commandLine().getErr(), input.log, trace);
+        Explanation x = Explanation.of(trace, set, abstraction, input.threshold());
+        if (input.json) {
+            out.println(Json.document(x));
         } else {
             print(out, x);
         }
         out.flush();
-        return x.run().warningTime() != null ? ExitCodes.WARNING : ExitCodes.OK;
+        return ExitCodes.of(x.run().noMatch(), x.run().warningTime() != null);
     }
 
     private static void print(PrintWriter out, Explanation x) {
@@ -90,7 +82,12 @@ final class ExplainCommand implements Callable<Integer> {
                     : faulty ? "a nominal model matched until the faulty ones were gone"
                     : "no model was left when the nominal ones were eliminated"));
         }
-        out.println(r.violationTime() == null ? "the safety property holds throughout the log"
-                : String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime()));
+        if (r.noMatch()) {
+            out.println("no model matches the whole run: it is unlike every learned scenario (no prediction)");
+        }
+        out.println(r.violationTime() != null
+                ? String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime())
+                : r.safetyObserved() ? "the safety property holds throughout the log"
+                : "the safety property is not observed in the log (no value for it): no verdict on it");
     }
 }

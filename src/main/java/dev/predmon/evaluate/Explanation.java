@@ -58,7 +58,13 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
 
     /** Explains {@code log} against {@code models}. */
     public static Explanation of(Path log, ModelSet models, Abstraction abstraction, int threshold) throws IOException {
-        LogTrace trace = Traces.read(log, abstraction);
+        return of(Traces.read(log, abstraction), models, abstraction, threshold);
+    }
+
+    /** Explains the log of a trace already read with {@code abstraction} against {@code models}. */
+    public static Explanation of(LogTrace trace, ModelSet models, Abstraction abstraction, int threshold)
+            throws IOException {
+        Path log = trace.log();
         List<Step> steps = new ArrayList<>();
         for (int i = 0; i < trace.pairs().size(); i++) {
             IoPair p = trace.pairs().get(i);

@@ -58,6 +58,6 @@ public final class Replay {
                 warning == null ? null : warning.line(), warning == null ? List.of() : warning.scenarios(),
                 warning == null ? null : warning.battery(), violationTime, lead, noMatch != null,
                 noMatch == null ? null : noMatch.time(), monitor.pipeline().records(), monitor.pairs(), problems[0],
-                List.copyOf(eliminations));
+                List.copyOf(eliminations), monitor.battery() != null);
     }
 }

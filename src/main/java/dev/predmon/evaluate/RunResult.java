@@ -22,11 +22,13 @@ import java.util.List;
  * @param pairs            compacted pairs matched
  * @param problems         parse problems in the log
  * @param eliminations     every model's elimination, in log order
+ * @param safetyObserved   whether the log had a value for the safety property at all (without one, "held" would
+ *                         be a verdict on no evidence)
  */
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
-                        List<Elimination> eliminations) {
+                        List<Elimination> eliminations, boolean safetyObserved) {
 
     /**
      * A model stopped matching.

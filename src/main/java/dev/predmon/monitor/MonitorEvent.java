@@ -4,7 +4,7 @@ import java.util.List;
 
 /** What the predictive monitor reports, in log order. Times are the log's time stamps. */
 public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.Violation, MonitorEvent.Eliminated,
-        MonitorEvent.NoMatch, MonitorEvent.Restarted {
+        MonitorEvent.NoMatch, MonitorEvent.Restarted, MonitorEvent.Unmapped {
 
     /**
      * Every nominal scenario is eliminated while a faulty one still matches: the run is predicted to fail.
@@ -45,6 +45,17 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
 
     /** No model matches any more: the run is unlike every learned scenario. */
     record NoMatch(double time, long line) implements MonitorEvent {
+    }
+
+    /**
+     * The first interface message of its kind that no abstraction rule maps (since the start or a restart): it is
+     * not matched, and is reported rather than silently dropped.
+     *
+     * @param time    its time
+     * @param line    its line
+     * @param message its kind, {@code Protocol/command}
+     */
+    record Unmapped(double time, long line, String message) implements MonitorEvent {
     }
 
     /** The log was truncated or replaced; matching starts over. */

@@ -93,6 +93,11 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     @Override
+    public void unmapped(String key, LogRecord record) {
+        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
+    }
+
+    @Override
     public void pair(IoPair pair, LogRecord trigger) {
         pairs++;
         for (ModelTracker t : trackers) {
@@ -134,6 +139,11 @@ public final class PredictiveMonitor implements PipelineListener {
     /** The safety violation, once seen. */
     public Optional<MonitorEvent.Violation> violation() {
         return Optional.ofNullable(violation);
+    }
+
+    /** Whether a point came where no model, nominal or faulty, matched the run any more (since the last restart). */
+    public boolean noMatch() {
+        return noMatch;
     }
 
     /** Every model's tracker, in model order. */
