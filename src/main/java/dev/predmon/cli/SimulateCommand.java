@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.BadInputException;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.RealtimeWriter;
 import dev.predmon.simulate.Scenario;
@@ -88,7 +89,7 @@ public final class SimulateCommand implements Callable<Integer> {
     boolean crlf;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws IOException, BadInputException {
         Scenario s;
         SimOptions options;
         try {
@@ -128,7 +129,11 @@ public final class SimulateCommand implements Callable<Integer> {
         }
     }
 
-    private void writeBatch(Scenario s, SimOptions options) throws IOException {
+    private void writeBatch(Scenario s, SimOptions options) throws IOException, BadInputException {
+        String other = TruthWriter.otherScenario(s, outDir);
+        if (other != null) {
+            throw new BadInputException(other);
+        }
         Files.createDirectories(outDir);
         int n = runs == null ? 1 : runs;
         for (long k = seed; k < seed + n; k++) {
