@@ -6,18 +6,32 @@ import picocli.CommandLine.Option;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 
-/** {@code --abstraction NAME|FILE}, shared by the commands that read logs. */
+/** {@code --abstraction NAME|FILE}, shared by the commands that read logs: the one place the option is resolved. */
 final class AbstractionOption {
 
     @Option(names = "--abstraction", paramLabel = "NAME|FILE",
             description = "A built-in abstraction by name (thesis: the thesis's Tables 4.1/4.2 with the Section 5.2 "
                     + "bands, the default; scope-fetch: the R1 fetch-and-carry tree of the SCOPE recordings), or an "
-                    + "abstraction JSON file ('predmon abstraction show NAME' prints one to start from).")
+                    + "abstraction JSON file ('predmon abstraction show NAME' prints one to start from). Commands "
+                    + "that read models default to the one the models were learned with.")
     String value;
 
+    /** The abstraction the option names, or the default when it is not given. */
     Abstraction load() throws AbstractionException {
         return resolve(value);
+    }
+
+    /**
+     * For commands that read models: the abstraction the option names when it is given, else the one the models
+     * were learned with ({@code stored}, their {@code abstraction.json}), else the default.
+     */
+    Abstraction loadFor(Optional<Path> stored) throws AbstractionException {
+        if (value == null && stored.isPresent()) {
+            return Abstraction.load(stored.get());
+        }
+        return load();
     }
 
     /**

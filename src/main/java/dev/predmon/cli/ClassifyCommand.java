@@ -1,112 +1,97 @@
 package dev.predmon.cli;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
+import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
 import dev.predmon.mealy.MealyTrace;
-import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.RunLabel;
+import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
-import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.Callable;
 
 /** {@code predmon classify}: Algorithm 7 on a complete log. */
 @Command(name = "classify", mixinStandardHelpOptions = true,
         description = {"Classify a complete log against every model (thesis Algorithm 7): discrepancies per model, "
                 + "models that could not take the trace, the best match and whether it is faulty.",
-                "Exit 1 when the best match is a faulty scenario, 0 otherwise."})
+                "Exit 1 when the best match is a faulty scenario, 5 when no model matches, 0 otherwise; 3 when the "
+                        + "log holds nothing to judge."})
 final class ClassifyCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to classify.")
-    Path log;
-
     @Mixin
-    ThresholdOption threshold;
-
-    @Option(names = "--json", description = "Print the result as one JSON object.")
-    boolean json;
-
-    @Mixin
-    ModelOptions models;
-
-    @Mixin
-    AbstractionOption abstractionOption;
+    LogAgainstModels input;
 
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        Abstraction abstraction = abstractionOption.load();
-        ModelSet set = models.load(abstraction);
-        abstraction = set.tune(abstraction); // the hysteresis learn estimated from the training runs' sensor noise
-        LogTrace trace = Traces.read(log, abstraction);
-        Problems.print(spec.commandLine().getErr(), log, trace);
+        ModelSet set = input.models();
+        Abstraction abstraction = input.tuned();
+        input.checkLog();
+        LogTrace trace = Traces.read(input.log, abstraction);
+        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
+        if (missing != null) {
+            throw new BadInputException(missing);
+        }
+        Problems.print(spec.commandLine().getErr(), input.log, trace);
         // A log of several runs (the tick counter started again) is classified run by run.
         List<MealyTrace> runs = trace.runs().size() > 1 ? trace.samples(RunLabel.ALL) : List.of(trace.mealy());
-        boolean faulty = false;
-        List<Map<String, Object>> results = new ArrayList<>();
+        List<Result> results = new ArrayList<>();
+        List<Integer> codes = new ArrayList<>();
         for (MealyTrace run : runs) {
-            Classifier.Result r = Classifier.classify(set, run, threshold.value);
-            faulty |= r.faulty();
-            if (json) {
-                results.add(toJson(r, run));
+            Classifier.Result r = Classifier.classify(set, run, input.threshold());
+            codes.add(ExitCodes.of(r.best().isEmpty(), r.faulty()));
+            if (input.json) {
+                List<Score> scores = r.scores().stream().map(s -> new Score(s.model().id(), s.model().scenario(),
+                        s.model().faulty(), s.deleted(), s.discrepancies(),
+                        s.failure() == null ? null : s.failure().describe())).toList();
+                results.add(new Result(run.source(), run.length() / 2, scores,
+                        r.best().map(s -> s.model().id()).orElse(null),
+                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty()));
             } else {
                 print(out, r, run);
             }
         }
-        if (json) {
-            Object o = results.size() == 1 ? results.get(0) : Map.of("log", log.toString(), "runs", results);
-            out.println(new ObjectMapper().writeValueAsString(o));
+        if (input.json) {
+            out.println(Json.line(results.size() == 1 ? results.get(0) : new Runs(input.log.toString(), results)));
         }
         out.flush();
-        return faulty ? ExitCodes.WARNING : ExitCodes.OK;
-    }
-
-    private Map<String, Object> toJson(Classifier.Result r, MealyTrace run) {
-        List<Map<String, Object>> scores = new ArrayList<>();
-        for (Classifier.Score s : r.scores()) {
-            Map<String, Object> m = new LinkedHashMap<>();
-            m.put("model", s.model().id());
-            m.put("scenario", s.model().scenario());
-            m.put("faulty", s.model().faulty());
-            m.put("deleted", s.deleted());
-            m.put("discrepancies", s.discrepancies());
-            m.put("reason", s.failure() == null ? null : s.failure().describe());
-            scores.add(m);
-        }
-        Map<String, Object> o = new LinkedHashMap<>();
-        o.put("log", run.source());
-        o.put("pairs", run.length() / 2);
-        o.put("models", scores);
-        o.put("best", r.best().map(s -> s.model().id()).orElse(null));
-        o.put("scenario", r.best().map(s -> s.model().scenario()).orElse(null));
-        o.put("faulty", r.faulty());
-        return o;
+        return ExitCodes.ofRuns(codes.stream().mapToInt(Integer::intValue));
     }
 
     private void print(PrintWriter out, Classifier.Result r, MealyTrace run) {
         out.println(run.source() + ": " + run.length() / 2 + " compacted pairs");
         for (Classifier.Score s : r.scores()) {
             out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
-                s.deleted() ? "deleted: " + s.failure().describe()
-                        : s.discrepancies() + " discrepancies" + (s.failure() == null ? "" : "; first: " + s.failure().describe()));
+                    s.deleted() ? "deleted: " + s.failure().describe()
+                            : s.discrepancies() + " discrepancies" + (s.failure() == null ? "" : "; first: " + s.failure().describe()));
         }
         out.println(r.best().map(s -> "best match: " + s.model().scenario() + " (" + s.model().id() + ", "
                 + s.discrepancies() + " discrepancies)" + (s.model().faulty() ? ": FAULTY" : ""))
-                .orElse("no model matches within threshold " + threshold.value));
+                .orElse("no model matches within threshold " + input.threshold()
+                        + ": the run is unlike every learned scenario"));
+    }
+
+    /** The {@code --json} document of a log that holds several runs: one result per run. */
+    record Runs(String log, List<Result> runs) {
+    }
+
+    /** One model's score in {@code --json}. */
+    record Score(String model, String scenario, boolean faulty, boolean deleted, int discrepancies, String reason) {
+    }
+
+    /** The {@code --json} document. */
+    record Result(String log, int pairs, List<Score> models, String best, String scenario, boolean faulty) {
     }
 }

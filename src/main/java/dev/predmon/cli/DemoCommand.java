@@ -15,6 +15,7 @@ import dev.predmon.simulate.Simulator;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 import java.io.IOException;
@@ -22,10 +23,13 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * {@code predmon demo}: the main job on a fresh machine. A faulty ({@code depleted}) run is simulated live into a
@@ -65,20 +69,32 @@ final class DemoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (!(seconds > 0) || Double.isInfinite(seconds)) {
+            throw new ParameterException(spec.commandLine(), "--seconds must be a positive number, got " + seconds);
+        }
         PrintWriter out = spec.commandLine().getOut();
-        Abstraction abstraction = Abstraction.defaults();
         if (!Files.isRegularFile(models.resolve(ModelStore.INDEX))) {
             out.println("no models in " + models + ": learning them from " + logs);
             out.flush();
-            Learning.learnAndWrite(logs, models, abstraction, l -> { });
+            Learning.learnAndWrite(logs, models, Abstraction.defaults(), l -> { });
         }
+        Optional<Path> stored = ModelStore.storedAbstraction(models);
+        Abstraction abstraction = stored.isPresent() ? Abstraction.load(stored.get()) : Abstraction.defaults();
         ModelSet set = ModelStore.read(models, abstraction);
         out.println("predmon demo: " + set.models().size() + " learned machines in " + models + " ("
                 + String.join(", ", set.index().scenarios().stream()
                 .map(s -> s.name() + (s.faulty() ? " faulty" : " nominal")).toList()) + ")");
         Path dir = work != null ? Files.createDirectories(work) : Files.createTempDirectory("predmon-demo-");
-        boolean depletedOk = live(out, set, abstraction, dir, Scenario.DEPLETED, depletedSeed);
-        boolean rechargeOk = live(out, set, abstraction, dir, Scenario.RECHARGE, rechargeSeed);
+        boolean depletedOk;
+        boolean rechargeOk;
+        try {
+            depletedOk = live(out, set, abstraction, dir, Scenario.DEPLETED, depletedSeed);
+            rechargeOk = live(out, set, abstraction, dir, Scenario.RECHARGE, rechargeSeed);
+        } finally {
+            if (work == null) {
+                removeLogs(dir); // a directory of its own: nothing of it is left behind
+            }
+        }
         out.println(depletedOk && rechargeOk
                 ? "demo done: the faulty run was predicted before its violation; the nominal run raised no warning"
                 : "demo done, but not as expected: see above");
@@ -106,8 +122,10 @@ final class DemoCommand implements Callable<Integer> {
                 out.flush();
             }
         });
+        AtomicReference<Throwable> failed = new AtomicReference<>();
         Thread writer = new Thread(() -> write(run, log, speed), "predmon-demo-writer");
         writer.setDaemon(true);
+        writer.setUncaughtExceptionHandler((t, e) -> failed.set(e)); // rethrown below, not printed by the thread
         writer.start();
         try (LogWatcher watcher = new LogWatcher(log, monitor, p -> out.println("  " + p.format(log.toString())))) {
             while (writer.isAlive()) {
@@ -116,6 +134,7 @@ final class DemoCommand implements Callable<Integer> {
                 }
             }
             writer.join();
+            rethrow(failed.get());
             watcher.drain();
         }
         return verdict(out, scenario, monitor);
@@ -127,6 +146,35 @@ final class DemoCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /** What the writer thread failed with, on the command's thread, so the one error handler reports it. */
+    private static void rethrow(Throwable e) throws IOException {
+        if (e == null) {
+            return;
+        }
+        if (e instanceof UncheckedIOException u) {
+            throw u.getCause();
+        }
+        if (e instanceof RuntimeException r) {
+            throw r;
+        }
+        if (e instanceof Error err) {
+            throw err;
+        }
+        throw new IllegalStateException("the demo's log writer failed", e);
+    }
+
+    /** Deletes the demo's own temporary directory and the logs it wrote there. */
+    private static void removeLogs(Path dir) throws IOException {
+        for (Scenario s : Scenario.values()) {
+            try (DirectoryStream<Path> logs = Files.newDirectoryStream(dir, s.id() + "-*.log")) {
+                for (Path log : logs) {
+                    Files.deleteIfExists(log);
+                }
+            }
+        }
+        Files.deleteIfExists(dir);
     }
 
     private static boolean verdict(PrintWriter out, Scenario scenario, PredictiveMonitor m) {

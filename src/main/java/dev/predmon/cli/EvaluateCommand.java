@@ -1,7 +1,5 @@
 package dev.predmon.cli;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.evaluate.Confusion;
 import dev.predmon.evaluate.Evaluation;
@@ -109,8 +107,8 @@ final class EvaluateCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    static String toJson(Evaluation e) throws com.fasterxml.jackson.core.JsonProcessingException {
-        return new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValueAsString(e);
+    static String toJson(Evaluation e) {
+        return Json.document(e);
     }
 
     private static void printTables(PrintWriter out, Evaluation e) {

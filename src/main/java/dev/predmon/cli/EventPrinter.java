@@ -1,14 +1,11 @@
 package dev.predmon.cli;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.Clock;
 
 import java.io.PrintWriter;
-import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.function.Consumer;
 
 /**
@@ -17,8 +14,6 @@ import java.util.function.Consumer;
  * each warning immediately.
  */
 final class EventPrinter implements Consumer<MonitorEvent> {
-
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     private final PrintWriter out;
     private final boolean json;
@@ -34,6 +29,9 @@ final class EventPrinter implements Consumer<MonitorEvent> {
 
     @Override
     public void accept(MonitorEvent e) {
+        if (e instanceof MonitorEvent.Unmapped) {
+            return; // the caller reports these with the parse problems
+        }
         if (json) {
             out.println(toJson(e));
         } else {
@@ -45,63 +43,49 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         out.flush();
     }
 
-    /** The JSON object of an event. */
+    /** The JSON object of an event ({@link MonitorEvent.Unmapped} is not one: it goes to stderr with the problems). */
     static String toJson(MonitorEvent e) {
-        Map<String, Object> o = new LinkedHashMap<>();
+        Object o;
         if (e instanceof MonitorEvent.Warning w) {
-            o.put("event", "warning");
-            o.put("time", w.time());
-            o.put("unit", w.clock().unit());
-            o.put("line", w.line());
-            o.put("run", w.run());
-            o.put("scenario", w.scenarios().get(0));
-            o.put("scenarios", w.scenarios());
-            o.put("battery", w.battery());
-            o.put("pairs", w.pairs());
+            o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.scenarios().get(0),
+                    w.scenarios(), w.battery(), w.pairs());
         } else if (e instanceof MonitorEvent.Violation v) {
-            o.put("event", "violation");
-            o.put("time", v.time());
-            o.put("unit", v.clock().unit());
-            o.put("line", v.line());
-            o.put("run", v.run());
-            o.put("property", v.property());
-            o.put("battery", v.value());
-            o.put("before", v.before());
+            o = new ViolationJson("violation", v.time(), v.clock().unit(), v.line(), v.run(), v.property(), v.value(),
+                    v.before());
         } else if (e instanceof MonitorEvent.Eliminated x) {
-            o.put("event", "eliminated");
-            o.put("time", x.time());
-            o.put("unit", x.clock().unit());
-            o.put("line", x.line());
-            o.put("run", x.run());
-            o.put("model", x.model());
-            o.put("scenario", x.scenario());
-            o.put("faulty", x.faulty());
-            o.put("reason", x.reason());
+            o = new EliminatedJson("eliminated", x.time(), x.clock().unit(), x.line(), x.run(), x.model(), x.scenario(),
+                    x.faulty(), x.reason());
         } else if (e instanceof MonitorEvent.NoMatch n) {
-            o.put("event", "no-match");
-            o.put("time", n.time());
-            o.put("unit", n.clock().unit());
-            o.put("line", n.line());
-            o.put("run", n.run());
+            o = new NoMatchJson("no-match", n.time(), n.clock().unit(), n.line(), n.run());
         } else if (e instanceof MonitorEvent.RunStarted r) {
-            o.put("event", "run");
-            o.put("run", r.run());
-            o.put("time", r.time());
-            o.put("unit", r.clock().unit());
-            o.put("line", r.line());
+            o = new RunJson("run", r.run(), r.time(), r.clock().unit(), r.line());
         } else if (e instanceof MonitorEvent.Restarted r) {
-            o.put("event", "restarted");
-            o.put("reason", r.reason());
+            o = new RestartedJson("restarted", r.reason());
+        } else {
+            throw new IllegalArgumentException("not printed as a JSON event: " + e);
         }
-        return write(o);
+        return Json.line(o);
     }
 
-    static String write(Map<String, Object> o) {
-        try {
-            return JSON.writeValueAsString(o);
-        } catch (JsonProcessingException ex) {
-            throw new IllegalStateException("maps of plain values always serialise", ex);
-        }
+    record WarningJson(String event, double time, String unit, long line, int run, String scenario,
+                       List<String> scenarios, Double battery, long pairs) {
+    }
+
+    record ViolationJson(String event, double time, String unit, long line, int run, String property, double battery,
+                         Double before) {
+    }
+
+    record EliminatedJson(String event, double time, String unit, long line, int run, String model, String scenario,
+                          boolean faulty, String reason) {
+    }
+
+    record NoMatchJson(String event, double time, String unit, long line, int run) {
+    }
+
+    record RunJson(String event, int run, double time, String unit, long line) {
+    }
+
+    record RestartedJson(String event, String reason) {
     }
 
     String toText(MonitorEvent e) {

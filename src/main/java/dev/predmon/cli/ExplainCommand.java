@@ -4,62 +4,53 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.evaluate.Explanation;
 import dev.predmon.model.ModelSet;
+import dev.predmon.pipeline.Evidence;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 
 /** {@code predmon explain}: why did it warn, why did it not. */
 @Command(name = "explain", mixinStandardHelpOptions = true,
         description = {"Explain a run: its abstract trace pair by pair and, for each model, where it stopped "
                 + "matching and why (the reply it expected versus the one seen), then what 'watch' concluded.",
-                "Exit 1 when watch would warn on this log, 0 otherwise."})
+                "Exit as watch --no-follow would on this log: 1 when it warns, 5 when no model matches the run, 0 "
+                        + "otherwise; 3 when the log holds nothing to judge."})
 final class ExplainCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to explain.")
-    Path log;
-
     @Mixin
-    ThresholdOption threshold;
+    LogAgainstModels input;
 
     @Mixin
     ConfirmOption confirm;
 
-    @Option(names = "--json", description = "Print the explanation as one JSON document.")
-    boolean json;
-
-    @Mixin
-    ModelOptions models;
-
-    @Mixin
-    AbstractionOption abstractionOption;
-
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        Abstraction abstraction = abstractionOption.load();
-        ModelSet set = models.load(abstraction);
-        abstraction = set.tune(abstraction); // the hysteresis learn estimated from the training runs' sensor noise
-        if (!Files.isRegularFile(log)) {
-            throw new BadInputException(log + ": no such file");
+        ModelSet set = input.models();
+        Abstraction abstraction = input.tuned();
+        input.checkLog();
+        LogTrace trace = Traces.read(input.log, abstraction);
+        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
+        if (missing != null) {
+            throw new BadInputException(missing);
         }
-        List<Explanation> runs = Explanation.of(log, set, abstraction, threshold.value, confirm.value(abstraction));
-        if (json) {
-            // One object for a log of one run, as always; a log of several runs gives one object per run.
-            Object value = runs.size() == 1 ? runs.get(0) : java.util.Map.of("runs", runs);
-            out.println(new com.fasterxml.jackson.databind.ObjectMapper()
-                    .enable(com.fasterxml.jackson.databind.SerializationFeature.INDENT_OUTPUT).writeValueAsString(value));
+        Problems.print(spec.commandLine().getErr(), input.log, trace);
+        List<Explanation> runs = Explanation.of(trace, set, abstraction, input.threshold(), confirm.value(abstraction));
+        if (input.json) {
+            // One document for a log of one run, as always; a log of several runs gives one per run.
+            out.println(Json.document(runs.size() == 1 ? runs.get(0) : Map.of("runs", runs)));
         } else {
             for (int i = 0; i < runs.size(); i++) {
                 if (i > 0) {
@@ -69,7 +60,7 @@ final class ExplainCommand implements Callable<Integer> {
             }
         }
         out.flush();
-        return runs.stream().anyMatch(x -> x.run().warningTime() != null) ? ExitCodes.WARNING : ExitCodes.OK;
+        return ExitCodes.ofRuns(runs.stream().mapToInt(x -> ExitCodes.of(x.run().noMatch(), x.run().warningTime() != null)));
     }
 
     private static void print(PrintWriter out, Explanation x) {
@@ -102,7 +93,12 @@ final class ExplainCommand implements Callable<Integer> {
                     : faulty ? "a nominal model matched until the faulty ones were gone"
                     : "no model was left when the nominal ones were eliminated"));
         }
-        out.println(r.violationTime() == null ? "the safety property holds throughout the log"
-                : String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime()));
+        if (r.noMatch()) {
+            out.println("no model matches the whole run: it is unlike every learned scenario (no prediction)");
+        }
+        out.println(r.violationTime() != null
+                ? String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime())
+                : r.safetyObserved() ? "the safety property holds throughout the log"
+                : "the safety property is not observed in the log (no value for it): no verdict on it");
     }
 }

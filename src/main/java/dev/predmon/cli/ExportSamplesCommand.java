@@ -12,10 +12,13 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 
 /** {@code predmon export-samples}: the Mealy samples of {@code learn}, for other learners. */
@@ -43,15 +46,39 @@ final class ExportSamplesCommand implements Callable<Integer> {
         PrintWriter o = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
-        Files.createDirectories(out);
+        // Everything is learned before anything is written: a failure (a bad log, a bad scenario.json) leaves no
+        // empty or half-written --out behind.
+        List<LearnedScenario> learned = new ArrayList<>();
         for (ScenarioSpec s : ScenarioLayout.scan(logs, abstraction)) {
             // learn() itself, so the samples are exactly those learn feeds LearnLib, grouped as it groups them.
             LearnedScenario l = ScenarioLearner.learn(s, abstraction);
             l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));
-            Path file = out.resolve(s.name() + ".txt");
-            Files.writeString(file, SampleFile.text(l), StandardCharsets.UTF_8);
-            int n = l.machines().stream().mapToInt(m -> m.samples().size()).sum();
-            o.println("wrote " + file + ": " + n + " trace(s)");
+            learned.add(l);
+        }
+        Path created = null; // the topmost directory this run creates, if any
+        for (Path p = out.toAbsolutePath().normalize(); p != null && !Files.exists(p); p = p.getParent()) {
+            created = p;
+        }
+        List<Path> written = new ArrayList<>();
+        try {
+            Files.createDirectories(out);
+            for (LearnedScenario l : learned) {
+                Path file = out.resolve(l.spec().name() + ".txt");
+                Files.writeString(file, SampleFile.text(l), StandardCharsets.UTF_8);
+                written.add(file);
+                int n = l.machines().stream().mapToInt(m -> m.samples().size()).sum();
+                o.println("wrote " + file + ": " + n + " trace(s)");
+            }
+        } catch (IOException e) {
+            if (created != null) { // directories of its own: remove what this run put there
+                for (Path f : written) {
+                    Files.deleteIfExists(f);
+                }
+                for (Path d = out.toAbsolutePath().normalize(); d != null && d.startsWith(created); d = d.getParent()) {
+                    Files.deleteIfExists(d);
+                }
+            }
+            throw e;
         }
         o.flush();
         err.flush();

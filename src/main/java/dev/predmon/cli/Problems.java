@@ -12,27 +12,15 @@ final class Problems {
     private Problems() {
     }
 
+    /** The parse problems of a log that gave evidence, then the interface messages no rule maps. */
     static void print(PrintWriter err, Path log, LogTrace trace) {
         trace.problems().forEach(p -> err.println(p.format(log.toString())));
-        interfaceMessages(err, log, trace.records(), trace.interfaceRecords(), trace.unmapped());
+        unmapped(err, log, trace.unmapped());
     }
 
-    /**
-     * What the abstraction could not use: when it mapped nothing, one line saying so (a verdict on an unmonitored
-     * log would be silently wrong), else one line per kind of interface message no rule maps.
-     */
-    static void interfaceMessages(PrintWriter err, Path log, long records, long interfaceRecords,
-                                  Map<String, Long> unmapped) {
-        long mapped = interfaceRecords - unmapped.values().stream().mapToLong(Long::longValue).sum();
-        if (mapped == 0) {
-            err.println(log + ": warning: no skill-component interface message the abstraction maps in "
-                    + records + " records" + (unmapped.isEmpty() ? "" : " (only "
-                    + String.join(", ", unmapped.keySet().stream().limit(3).toList())
-                    + (unmapped.size() > 3 ? ", ..." : "") + ")")
-                    + "; is this a YARP monitor log of the case study, and the right --abstraction?");
-        } else {
-            unmapped.forEach((k, n) -> err.println(log + ": warning: " + n + " interface message(s) no rule maps: " + k));
-        }
+    /** One line per kind of interface message no abstraction rule maps, with its count: never silently dropped. */
+    static void unmapped(PrintWriter err, Path log, Map<String, Long> unmapped) {
+        unmapped.forEach((k, n) -> err.println(log + ": warning: " + n + " interface message(s) no rule maps: " + k));
         err.flush();
     }
 }

@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.BadInputException;
 import dev.predmon.simulate.Day;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.RealtimeWriter;
@@ -99,7 +100,7 @@ public final class SimulateCommand implements Callable<Integer> {
     double noise;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws IOException, BadInputException {
         Scenario s;
         List<Scenario> day = new ArrayList<>();
         SimOptions options;
@@ -151,7 +152,11 @@ public final class SimulateCommand implements Callable<Integer> {
         }
     }
 
-    private void writeBatch(Scenario s, SimOptions options) throws IOException {
+    private void writeBatch(Scenario s, SimOptions options) throws IOException, BadInputException {
+        String other = TruthWriter.otherScenario(s, outDir);
+        if (other != null) {
+            throw new BadInputException(other);
+        }
         Files.createDirectories(outDir);
         int n = runs == null ? 1 : runs;
         for (long k = seed; k < seed + n; k++) {

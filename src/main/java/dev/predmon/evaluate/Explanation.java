@@ -60,7 +60,13 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
     /** Explains {@code log} against {@code models}: one explanation per run the log holds. */
     public static List<Explanation> of(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
             throws IOException {
-        LogTrace trace = Traces.read(log, abstraction);
+        return of(Traces.read(log, abstraction), models, abstraction, threshold, confirm);
+    }
+
+    /** Explains the log of a trace already read with {@code abstraction}: one explanation per run it holds. */
+    public static List<Explanation> of(LogTrace trace, ModelSet models, Abstraction abstraction, int threshold,
+                                       int confirm) throws IOException {
+        Path log = trace.log();
         List<RunResult> verdicts = Replay.run(log, "?", false, RunLabel.ALL, -1, models, abstraction, threshold, confirm);
         List<Explanation> all = new ArrayList<>();
         for (LogTrace.Run r : trace.runs()) {

@@ -72,7 +72,7 @@ public final class Replay {
                     warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.battery(),
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
                     runs.size() == 1 ? monitor.pipeline().records() : -1, o.pairs(), problems[0],
-                    List.copyOf(eliminations), monitor.clock().unit(),
+                    List.copyOf(eliminations), o.safetyObserved(), monitor.clock().unit(),
                     violation != null && sudden(violation, abstraction)));
         }
         return results;

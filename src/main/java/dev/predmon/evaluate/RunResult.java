@@ -22,6 +22,8 @@ import java.util.List;
  * @param pairs            compacted pairs matched
  * @param problems         parse problems in the log
  * @param eliminations     every model's elimination, in log order
+ * @param safetyObserved   whether the log had a value for the safety property at all (without one, "held" would
+ *                         be a verdict on no evidence)
  * @param unit             what the times and the lead count: {@code s}, or {@code ticks} in a log without time stamps
  * @param sudden           whether the violation came in one reading from more than {@link #SUDDEN_MARGIN} points above
  *                         the threshold (the battery set by hand from 65% to 10%, say): the violation is the jump itself,
@@ -30,7 +32,7 @@ import java.util.List;
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
-                        List<Elimination> eliminations, String unit, boolean sudden) {
+                        List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden) {
 
     /**
      * How far above the safety threshold the reading before a violation may be for the violation to count as

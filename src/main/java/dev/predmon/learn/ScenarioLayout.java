@@ -1,8 +1,5 @@
 package dev.predmon.learn;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 
@@ -16,13 +13,12 @@ import java.util.stream.Stream;
 
 /**
  * The layout of a log directory: one subdirectory per scenario, holding its {@code *.log} files and a
- * {@code scenario.json} with at least {@code {"faulty": true|false, "description": "..."}}.
+ * {@code scenario.json}, {@code {"faulty": true|false, "description": "..."}} ({@link ScenarioFile}).
  */
 public final class ScenarioLayout {
 
     /** Scenario names become file names and symbols in reports: keep them plain. */
     private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_][A-Za-z0-9_.-]*");
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     private ScenarioLayout() {
     }
@@ -64,22 +60,7 @@ public final class ScenarioLayout {
         if (!NAME.matcher(name).matches()) {
             throw new BadInputException(dir + ": scenario names may hold only letters, digits, '_', '-' and '.'");
         }
-        Path json = dir.resolve("scenario.json");
-        if (!Files.isRegularFile(json)) {
-            throw new BadInputException(json + ": missing; write {\"faulty\": true|false, \"description\": \"...\"}");
-        }
-        JsonNode node;
-        try {
-            node = JSON.readTree(json.toFile());
-        } catch (JsonProcessingException e) {
-            throw new BadInputException(json + ":" + e.getLocation().getLineNr() + ":" + e.getLocation().getColumnNr()
-                    + ": invalid JSON: " + e.getOriginalMessage());
-        } catch (IOException e) {
-            throw BadInputException.cannotRead(json, e);
-        }
-        if (node == null || !node.isObject() || !node.path("faulty").isBoolean()) {
-            throw new BadInputException(json + ": expected an object with a boolean \"faulty\"");
-        }
+        ScenarioFile file = ScenarioFile.read(dir.resolve(ScenarioFile.NAME));
         List<Path> logs;
         try (Stream<Path> s = Files.list(dir)) {
             logs = s.filter(p -> p.getFileName().toString().endsWith(".log") && Files.isRegularFile(p)).sorted().toList();
@@ -89,6 +70,6 @@ public final class ScenarioLayout {
         if (logs.isEmpty()) {
             throw new BadInputException(dir + ": no *.log files for scenario '" + name + "'");
         }
-        return new ScenarioSpec(name, node.get("faulty").booleanValue(), node.path("description").asText(""), logs);
+        return new ScenarioSpec(name, file.faulty(), file.description(), logs);
     }
 }

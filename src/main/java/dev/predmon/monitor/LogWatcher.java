@@ -21,6 +21,7 @@ public final class LogWatcher implements AutoCloseable {
     private final PredictiveMonitor monitor;
     private final LogParser parser;
     private final LogFollower follower;
+    private long lines;
 
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
         this(log, monitor, problems, record -> { });
@@ -37,16 +38,19 @@ public final class LogWatcher implements AutoCloseable {
         this.follower = new LogFollower(log, new LineSink() {
             @Override
             public void line(String line) {
+                LogWatcher.this.lines++;
                 lines.line(line);
             }
 
             @Override
             public void line(byte[] bytes, int offset, int length) {
+                LogWatcher.this.lines++;
                 lines.line(bytes, offset, length);
             }
 
             @Override
             public void overlongLine(long bytes) {
+                LogWatcher.this.lines++;
                 lines.overlongLine(bytes);
             }
 
@@ -57,6 +61,7 @@ public final class LogWatcher implements AutoCloseable {
 
             @Override
             public void restarted(String reason) {
+                LogWatcher.this.lines = 0;
                 lines.restarted(reason); // reports a record the rotation cut, then starts the parser over
                 monitor.restart(reason);
             }
@@ -73,6 +78,11 @@ public final class LogWatcher implements AutoCloseable {
         follower.drainToEnd();
         parser.endOfInput();
         monitor.endOfInput();
+    }
+
+    /** Lines read since the start or the last rotation. */
+    public long lines() {
+        return lines;
     }
 
     public PredictiveMonitor monitor() {

@@ -9,7 +9,7 @@ import java.util.List;
  * the tree's tick number; each event's {@code clock} says which.
  */
 public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.Violation, MonitorEvent.Eliminated,
-        MonitorEvent.NoMatch, MonitorEvent.Restarted, MonitorEvent.RunStarted {
+        MonitorEvent.NoMatch, MonitorEvent.Restarted, MonitorEvent.RunStarted, MonitorEvent.Unmapped {
 
     /**
      * Every nominal scenario is eliminated while a faulty one still matches: the run is predicted to fail.
@@ -70,6 +70,17 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param line line of its first record
      */
     record RunStarted(int run, double time, long line, Clock clock) implements MonitorEvent {
+    }
+
+    /**
+     * The first interface message of its kind that no abstraction rule maps (since the start or a restart): it is
+     * not matched, and is reported rather than silently dropped.
+     *
+     * @param time    its time
+     * @param line    its line
+     * @param message its kind, {@code Protocol/command}
+     */
+    record Unmapped(double time, long line, String message) implements MonitorEvent {
     }
 
     /** The log was truncated or replaced; matching starts over. */

@@ -125,7 +125,7 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     private RunOutcome current() {
-        return new RunOutcome(run, runLine, warning, violation, noMatch, pairs);
+        return new RunOutcome(run, runLine, warning, violation, noMatch, pairs, battery != null);
     }
 
     /** The outcome of every run so far, the current one last. */
@@ -153,6 +153,11 @@ public final class PredictiveMonitor implements PipelineListener {
             firstViolation = firstViolation == null ? violation : firstViolation;
             events.accept(violation);
         }
+    }
+
+    @Override
+    public void unmapped(String key, LogRecord record) {
+        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
     }
 
     @Override
@@ -207,6 +212,14 @@ public final class PredictiveMonitor implements PipelineListener {
     /** The run being matched: 0, then 1, 2, ... in a log that holds several. */
     public int run() {
         return run;
+    }
+
+    /**
+     * Whether, in some run since the last restart, a point came where no model, nominal or faulty, matched it any
+     * more.
+     */
+    public boolean noMatch() {
+        return noMatch || finished.stream().anyMatch(RunOutcome::noMatch);
     }
 
     /** Every model's tracker, in model order. */

@@ -11,9 +11,11 @@ import java.util.Optional;
  * @param violation its first violation, or null
  * @param noMatch   whether a point came where no model matched
  * @param pairs     compacted pairs matched
+ * @param safetyObserved whether the run had a value for the safety property at all (without one, "held" would be a
+ *                       verdict on no evidence)
  */
 public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
-                         boolean noMatch, long pairs) {
+                         boolean noMatch, long pairs, boolean safetyObserved) {
 
     /** Violation time minus warning time when both happened, in the log's unit. */
     public Optional<Double> lead() {

@@ -10,6 +10,13 @@ public interface PipelineListener {
     default void record(LogRecord record) {
     }
 
+    /**
+     * The first interface message of its kind that no abstraction rule maps (since the start or the last reset):
+     * reported, never silently dropped.
+     */
+    default void unmapped(String key, LogRecord record) {
+    }
+
     /** A compacted query/reply pair; {@code trigger} is the record whose arrival completed it. */
     void pair(IoPair pair, LogRecord trigger);
 

@@ -59,7 +59,9 @@ public final class TracePipeline {
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;
-            unmapped.merge(u.key(), 1L, Long::sum);
+            if (unmapped.merge(u.key(), 1L, Long::sum) == 1L) {
+                listener.unmapped(u.key(), record);
+            }
         }
     }
 

@@ -1,5 +1,6 @@
 package dev.predmon.simulate;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -42,10 +43,41 @@ public final class TruthWriter {
 
     /** Writes {@code dir/scenario.json} describing the runs of {@code scenario} in that directory. */
     public static void writeScenario(Scenario scenario, Path dir) throws IOException {
+        Files.writeString(dir.resolve("scenario.json"), JSON.writeValueAsString(scenarioNode(scenario)) + "\n");
+    }
+
+    /**
+     * Checks, before any run is written, that {@code dir} holds no {@code scenario.json} that says something else
+     * than {@link #writeScenario} would write: a directory of runs of another scenario (or one the user described
+     * differently) is not to be rewritten.
+     *
+     * @return a one-line reason to refuse, or null when the directory may take the runs
+     */
+    public static String otherScenario(Scenario scenario, Path dir) {
+        Path file = dir.resolve("scenario.json");
+        if (!Files.exists(file)) {
+            return null;
+        }
+        JsonNode existing;
+        try {
+            existing = JSON.readTree(file.toFile());
+        } catch (IOException e) {
+            existing = null;
+        }
+        if (scenarioNode(scenario).equals(existing)) {
+            return null;
+        }
+        String says = existing == null || !existing.isObject() ? "is not one simulate wrote"
+                : "says faulty: " + existing.path("faulty") + ", " + existing.path("description");
+        return file + ": " + says + ", not the " + scenario.id() + " scenario (faulty: " + scenario.faulty()
+                + "); it is left as it is: choose another --out-dir";
+    }
+
+    private static ObjectNode scenarioNode(Scenario scenario) {
         ObjectNode node = JSON.createObjectNode();
         node.put("faulty", scenario.faulty());
         node.put("description", scenario.id().toUpperCase(Locale.ROOT).charAt(0) + scenario.id().substring(1)
                 + ": " + scenario.description());
-        Files.writeString(dir.resolve("scenario.json"), JSON.writeValueAsString(node) + "\n");
+        return node;
     }
 }

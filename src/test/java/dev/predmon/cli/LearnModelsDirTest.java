@@ -1,7 +1,6 @@
 package dev.predmon.cli;
 
 import dev.predmon.support.HandRuns;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -12,12 +11,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
-import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -174,9 +171,9 @@ class LearnModelsDirTest {
     @Test
     void modelsDotInARealProcessIsRefused() throws Exception {
         Map<String, String> before = snapshot(tmp);
-        Child r = child(workspace, "learn", "--logs", "runs", "--models", ".");
-        assertEquals(ExitCodes.BAD_INPUT, r.code, r.err);
-        assertEquals(1, r.err.strip().lines().count(), r.err);
+        Child r = Child.run(workspace, "learn", "--logs", "runs", "--models", ".");
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
         assertEquals(before, snapshot(tmp));
     }
 
@@ -186,9 +183,9 @@ class LearnModelsDirTest {
         Path gazebo = Files.createDirectories(workspace.resolve("models/my_robot"));
         Files.writeString(gazebo.resolve("model.urdf"), "<robot name=\"my_robot\"/>\n");
         Map<String, String> before = snapshot(tmp);
-        Child r = child(workspace, "learn", "--logs", "runs");
-        assertEquals(ExitCodes.BAD_INPUT, r.code, r.err);
-        assertTrue(r.err.strip().lines().count() == 1 && r.err.contains("my_robot/"), r.err);
+        Child r = Child.run(workspace, "learn", "--logs", "runs");
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.err());
+        assertTrue(r.err().strip().lines().count() == 1 && r.err().contains("my_robot/"), r.err());
         assertEquals(before, snapshot(tmp));
     }
 
@@ -207,52 +204,16 @@ class LearnModelsDirTest {
         try {
             Map<String, String> before = snapshot(tmp);
             for (int attempt = 1; attempt <= 2; attempt++) {
-                Child r = childWithoutOverride(workspace, "learn", "--logs", "runs", "--models", "models");
-                assertEquals(ExitCodes.BAD_INPUT, r.code, "attempt " + attempt + ": " + r.err);
-                assertTrue(r.err.strip().lines().count() == 1 && r.err.contains("not writable"), r.err);
+                Child r = Child.runBoundByPermissions(workspace, "learn", "--logs", "runs", "--models", "models");
+                assertEquals(ExitCodes.BAD_INPUT, r.code(), "attempt " + attempt + ": " + r.err());
+                assertTrue(r.err().strip().lines().count() == 1 && r.err().contains("not writable"), r.err());
                 assertEquals(before, snapshot(tmp), "attempt " + attempt + ": exactly the previous state");
             }
         } finally {
             Files.setPosixFilePermissions(models, PosixFilePermissions.fromString("rwxr-xr-x"));
         }
-        Child r = childWithoutOverride(workspace, "learn", "--logs", "runs", "--models", "models");
-        assertEquals(ExitCodes.OK, r.code, r.err);
+        Child r = Child.runBoundByPermissions(workspace, "learn", "--logs", "runs", "--models", "models");
+        assertEquals(ExitCodes.OK, r.code(), r.err());
         assertTrue(Files.isRegularFile(models.resolve("direct.dot")));
-    }
-
-    private record Child(int code, String out, String err) {
-    }
-
-    private static Child child(Path cwd, String... args) throws Exception {
-        return run(cwd, List.of(), args);
-    }
-
-    /** As {@link #child}; as root, without the capabilities that override file permissions (setpriv). */
-    private static Child childWithoutOverride(Path cwd, String... args) throws Exception {
-        if (!"root".equals(System.getProperty("user.name"))) {
-            return run(cwd, List.of(), args);
-        }
-        Assumptions.assumeTrue(Files.isExecutable(Path.of("/usr/bin/setpriv")),
-                "as root, permissions can only be tested with setpriv");
-        return run(cwd, List.of("/usr/bin/setpriv", "--inh-caps=-dac_override,-dac_read_search",
-                "--bounding-set=-dac_override,-dac_read_search"), args);
-    }
-
-    private static Child run(Path cwd, List<String> prefix, String... args) throws Exception {
-        List<String> command = new ArrayList<>(prefix);
-        command.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), Main.class.getName()));
-        command.addAll(List.of(args));
-        Path out = Files.createTempFile("learn-out", ".txt");
-        Path err = Files.createTempFile("learn-err", ".txt");
-        try {
-            Process p = new ProcessBuilder(command).directory(cwd.toFile())
-                    .redirectOutput(out.toFile()).redirectError(err.toFile()).start();
-            assertTrue(p.waitFor(60, TimeUnit.SECONDS), "learn finished");
-            return new Child(p.exitValue(), Files.readString(out), Files.readString(err));
-        } finally {
-            Files.deleteIfExists(out);
-            Files.deleteIfExists(err);
-        }
     }
 }

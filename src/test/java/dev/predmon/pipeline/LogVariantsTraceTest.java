@@ -24,7 +24,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 
 /**
- * Every log layout of yarp-monitor-logs.md must give the same abstract trace, end to end, as the plain current
+ * Every log layout of the README (Logs accepted) must give the same abstract trace, end to end, as the plain current
  * format: otherwise models learned from one robot's logs would not recognise another's. A run is simulated,
  * written in each layout, read back through the shared pipeline, and the compacted pairs compared.
  */

@@ -1,0 +1,90 @@
+package dev.predmon.cli;
+
+import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.model.ModelSet;
+import dev.predmon.model.ModelStore;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/**
+ * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
+ * {@code classify}, {@code explain}): {@code --log}, {@code --json}, {@code --models}, {@code --abstraction},
+ * {@code --threshold}, and the checks they share, so that one situation gets one message from all four.
+ */
+final class LogAgainstModels {
+
+    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log.")
+    Path log;
+
+    @Option(names = "--json", description = "Print the result as JSON on stdout (watch: one object per event).")
+    boolean json;
+
+    @Option(names = "--models", paramLabel = "DIR", defaultValue = "models",
+            description = "Model directory written by 'learn' (default: ${DEFAULT-VALUE}).")
+    Path modelsDir;
+
+    @Mixin
+    AbstractionOption abstractionOption;
+
+    @Mixin
+    ThresholdOption threshold;
+
+    private Abstraction abstraction;
+    private ModelSet models;
+
+    /**
+     * The abstraction to read the log with: {@code --abstraction} when given, else the one the models were learned
+     * with ({@code models/abstraction.json}), else the default.
+     */
+    Abstraction abstraction() throws BadInputException {
+        if (abstraction == null) {
+            abstraction = abstractionOption.loadFor(ModelStore.storedAbstraction(modelsDir));
+        }
+        return abstraction;
+    }
+
+    /** The models, checked against {@link #abstraction()}. */
+    ModelSet models() throws BadInputException {
+        if (models == null) {
+            models = ModelStore.read(modelsDir, abstraction());
+        }
+        return models;
+    }
+
+    /**
+     * {@link #abstraction()} as the models were learned with it: with the hysteresis {@code learn} estimated from the
+     * training runs' sensor noise, so that the log abstracts as the training logs did.
+     */
+    Abstraction tuned() throws BadInputException {
+        return models().tune(abstraction());
+    }
+
+    int threshold() {
+        return threshold.value;
+    }
+
+    /** Checks that {@code --log} is a readable file; one message per situation, the same from every command. */
+    void checkLog() throws BadInputException {
+        if (!Files.exists(log)) {
+            throw new BadInputException(log + ": no such file; expected a log file");
+        }
+        checkLogIfPresent();
+    }
+
+    /** As {@link #checkLog()}, but a file that does not exist yet is fine ({@code watch} waits for it). */
+    void checkLogIfPresent() throws BadInputException {
+        if (Files.isDirectory(log)) {
+            throw new BadInputException(log + ": is a directory; expected a log file");
+        }
+        if (Files.exists(log) && !Files.isRegularFile(log)) {
+            throw new BadInputException(log + ": not a regular file; expected a log file");
+        }
+        if (Files.exists(log) && !Files.isReadable(log)) {
+            throw new BadInputException(log + ": permission denied; expected a readable log file");
+        }
+    }
+}

@@ -1,0 +1,58 @@
+package dev.predmon.cli;
+
+import org.junit.jupiter.api.Assumptions;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** predmon run as a real child process (its own JVM, working directory and signals), with what it printed. */
+record Child(int code, String out, String err) {
+
+    /** The command line of {@code predmon ARGS} in a JVM of its own (C1 only: it starts in a third of the time). */
+    static List<String> command(String... args) {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        command.addAll(List.of(args));
+        return command;
+    }
+
+    /** Runs {@code predmon ARGS} in {@code cwd} to its end. */
+    static Child run(Path cwd, String... args) throws Exception {
+        return run(cwd, List.of(), args);
+    }
+
+    /**
+     * As {@link #run}, but as a user whom file permissions bind: as root, without the capabilities that override
+     * them (with setpriv; the test is skipped where there is none).
+     */
+    static Child runBoundByPermissions(Path cwd, String... args) throws Exception {
+        if (!"root".equals(System.getProperty("user.name"))) {
+            return run(cwd, List.of(), args);
+        }
+        Assumptions.assumeTrue(Files.isExecutable(Path.of("/usr/bin/setpriv")),
+                "as root, permissions can only be tested with setpriv");
+        return run(cwd, List.of("/usr/bin/setpriv", "--inh-caps=-dac_override,-dac_read_search",
+                "--bounding-set=-dac_override,-dac_read_search"), args);
+    }
+
+    private static Child run(Path cwd, List<String> prefix, String... args) throws Exception {
+        List<String> command = new ArrayList<>(prefix);
+        command.addAll(command(args));
+        Path out = Files.createTempFile("predmon-out", ".txt");
+        Path err = Files.createTempFile("predmon-err", ".txt");
+        try {
+            Process p = new ProcessBuilder(command).directory(cwd.toFile())
+                    .redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+            assertTrue(p.waitFor(60, TimeUnit.SECONDS), "predmon finished");
+            return new Child(p.exitValue(), Files.readString(out), Files.readString(err));
+        } finally {
+            Files.deleteIfExists(out);
+            Files.deleteIfExists(err);
+        }
+    }
+}
