@@ -9,7 +9,7 @@ import java.util.regex.Pattern;
  * {@code [LEVEL] text} with ANSI colour codes around the level ({@code ESC[01;32mDEBUGESC[00m] Command
  * intercepted:}) and no time stamp anywhere. A record is a {@code <Kind> intercepted:} (or older {@code Message
  * received:}) header followed by its field lines; YARP's own {@code [INFO] |yarp.os.Port| ...} lines and other
- * programs' output ({@code GammaRay server listening on: ...}) between records are skipped.
+ * programs' output (a Qt inspector announcing the port it listens on, say) between records are skipped.
  *
  * <p>With no time stamps, the run's clock is the tree's tick: every record's time is the number of the last
  * {@code Tick} record before it (0 before the first), and a tick record's time is its own number, its
