@@ -1,14 +1,10 @@
 package dev.predmon.cli;
 
-import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
 import dev.predmon.mealy.MealyTrace;
-import dev.predmon.pipeline.Evidence;
-import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.LogTrace;
-import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -38,15 +34,9 @@ final class ClassifyCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         ModelSet set = input.models();
         Abstraction abstraction = input.tuned();
-        input.checkLog();
-        LogTrace trace = Traces.read(input.log, abstraction);
-        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
-        if (missing != null) {
-            throw new BadInputException(missing);
-        }
-        Problems.print(spec.commandLine().getErr(), input.log, trace);
+        LogTrace trace = input.readLog(abstraction, spec.commandLine().getErr());
         // A log of several runs (the tick counter started again) is classified run by run.
-        List<MealyTrace> runs = trace.runs().size() > 1 ? trace.samples(RunLabel.ALL) : List.of(trace.mealy());
+        List<MealyTrace> runs = trace.judgedRuns();
         List<Result> results = new ArrayList<>();
         List<Integer> codes = new ArrayList<>();
         for (MealyTrace run : runs) {

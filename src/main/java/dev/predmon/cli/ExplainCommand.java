@@ -1,12 +1,9 @@
 package dev.predmon.cli;
 
-import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.evaluate.Explanation;
 import dev.predmon.model.ModelSet;
-import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.LogTrace;
-import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -40,13 +37,7 @@ final class ExplainCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         ModelSet set = input.models();
         Abstraction abstraction = input.tuned();
-        input.checkLog();
-        LogTrace trace = Traces.read(input.log, abstraction);
-        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
-        if (missing != null) {
-            throw new BadInputException(missing);
-        }
-        Problems.print(spec.commandLine().getErr(), input.log, trace);
+        LogTrace trace = input.readLog(abstraction, spec.commandLine().getErr());
         List<Explanation> runs = Explanation.of(trace, set, abstraction, input.threshold(), confirm.value(abstraction));
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.

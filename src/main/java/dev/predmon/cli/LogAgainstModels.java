@@ -4,9 +4,14 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
+import dev.predmon.pipeline.Evidence;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
+import java.io.IOException;
+import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
@@ -61,6 +66,21 @@ final class LogAgainstModels {
      */
     Abstraction tuned() throws BadInputException {
         return models().tune(abstraction());
+    }
+
+    /**
+     * Checks {@code --log}, reads it with {@code abstraction} through the shared pipeline, refuses a log that gives
+     * no evidence (no monitor record, nothing the abstraction maps) and prints its parse problems to {@code err}.
+     */
+    LogTrace readLog(Abstraction abstraction, PrintWriter err) throws BadInputException, IOException {
+        checkLog();
+        LogTrace trace = Traces.read(log, abstraction);
+        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
+        if (missing != null) {
+            throw new BadInputException(missing);
+        }
+        Problems.print(err, log, trace);
+        return trace;
     }
 
     int threshold() {

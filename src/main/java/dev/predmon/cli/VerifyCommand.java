@@ -6,10 +6,7 @@ import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Verification;
-import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.LogTrace;
-import dev.predmon.pipeline.RunLabel;
-import dev.predmon.pipeline.Traces;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -49,15 +46,9 @@ final class VerifyCommand implements Callable<Integer> {
             throw new BadInputException(input.modelsDir + ": no scenario '" + scenario + "' (have: "
                     + String.join(", ", set.index().scenarios().stream().map(s -> s.name()).toList()) + ")");
         }
-        input.checkLog();
-        LogTrace trace = Traces.read(input.log, abstraction);
-        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
-        if (missing != null) {
-            throw new BadInputException(missing);
-        }
-        Problems.print(spec.commandLine().getErr(), input.log, trace);
+        LogTrace trace = input.readLog(abstraction, spec.commandLine().getErr());
         // A log of several runs (the tick counter started again) is verified run by run; it matches when each does.
-        List<MealyTrace> runs = trace.runs().size() > 1 ? trace.samples(RunLabel.ALL) : List.of(trace.mealy());
+        List<MealyTrace> runs = trace.judgedRuns();
         boolean all = true;
         List<Result> results = new ArrayList<>();
         for (MealyTrace mealy : runs) {

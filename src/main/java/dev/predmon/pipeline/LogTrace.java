@@ -56,6 +56,14 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
         return samples;
     }
 
+    /**
+     * The samples verify, classify and explain judge: one per run with interface messages in a log of several runs,
+     * else the whole trace.
+     */
+    public List<MealyTrace> judgedRuns() {
+        return runs.size() > 1 ? samples(RunLabel.ALL) : List.of(mealy());
+    }
+
     /** How a run of a log is named in reports: the file, with {@code #k} when the log holds several runs. */
     public static String name(Path log, int run, int runs) {
         return runs > 1 ? log + "#" + run : log.toString();
