@@ -23,23 +23,34 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     private final PrintWriter out;
     private final boolean json;
     private final boolean verbose;
+    private final String log;
     private MonitorEvent.Warning warning;
 
     /** @param eliminations also print each model's elimination (JSON always does) */
     EventPrinter(PrintWriter out, boolean json, boolean eliminations) {
+        this(out, json, eliminations, null);
+    }
+
+    /**
+     * For one log of several: each event says which ({@code "log"} in JSON, a {@code log: } prefix in text).
+     *
+     * @param log the log's name, or null when only one log is watched
+     */
+    EventPrinter(PrintWriter out, boolean json, boolean eliminations, String log) {
         this.out = out;
         this.json = json;
         this.verbose = eliminations;
+        this.log = log;
     }
 
     @Override
     public void accept(MonitorEvent e) {
         if (json) {
-            out.println(toJson(e));
+            out.println(toJson(e, log));
         } else {
             String text = toText(e);
             if (text != null) {
-                out.println(text);
+                out.println(log == null ? text : log + ": " + text);
             }
         }
         out.flush();
@@ -47,6 +58,11 @@ final class EventPrinter implements Consumer<MonitorEvent> {
 
     /** The JSON object of an event. */
     static String toJson(MonitorEvent e) {
+        return toJson(e, null);
+    }
+
+    /** The JSON object of an event of {@code log} ({@code "log"} right after {@code "event"}), or untagged if null. */
+    static String toJson(MonitorEvent e, String log) {
         Map<String, Object> o = new LinkedHashMap<>();
         if (e instanceof MonitorEvent.Warning w) {
             o.put("event", "warning");
@@ -93,7 +109,19 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             o.put("event", "restarted");
             o.put("reason", r.reason());
         }
-        return write(o);
+        return write(log == null ? o : tagged(o, log));
+    }
+
+    /** {@code o} with {@code "log"} after its {@code "event"}. */
+    static Map<String, Object> tagged(Map<String, Object> o, String log) {
+        Map<String, Object> t = new LinkedHashMap<>();
+        o.forEach((k, v) -> {
+            t.put(k, v);
+            if (k.equals("event")) {
+                t.put("log", log);
+            }
+        });
+        return t;
     }
 
     static String write(Map<String, Object> o) {

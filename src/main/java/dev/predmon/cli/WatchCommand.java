@@ -3,9 +3,11 @@ package dev.predmon.cli;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
-import dev.predmon.monitor.LogWatcher;
+import dev.predmon.monitor.Fleet;
+import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
+import dev.predmon.monitor.WatchedLog;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -26,14 +28,18 @@ import java.util.concurrent.Callable;
         description = {"Follow a log as 'tail -F' does (growth, truncation, replacement; waits for a file that does "
                 + "not exist yet) and warn as soon as every nominal model is eliminated while a faulty one still "
                 + "matches. The built-in safety monitor reports the property's violation alongside.",
-                "Exit 1 when a warning was raised, 0 otherwise (with --no-follow, at the end of the file)."})
+                "Several logs (--log repeated, a directory or a glob) are watched in one process, each with its "
+                + "own monitor; each event then names its log.",
+                "Exit 1 when a warning was raised (in any log), 0 otherwise (with --no-follow, at the end of the file)."})
 final class WatchCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log to watch.")
-    Path log;
+    @Option(names = "--log", required = true, paramLabel = "FILE|DIR|GLOB",
+            description = "The log to watch. Repeat it, or name a directory (its *.log and *.txt files, also those "
+                    + "that appear later) or a quoted glob ('logs/robot-*.log'), to watch several logs at once.")
+    List<Path> logs;
 
     @Mixin
     ThresholdOption threshold;
@@ -65,54 +71,42 @@ final class WatchCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
         ModelSet set = models.load(abstraction);
-        if (Files.isDirectory(log)) {
-            throw new BadInputException(log + ": is a directory; expected a log file");
-        }
-        if (noFollow && !Files.exists(log)) {
-            throw new BadInputException(log + ": no such file");
+        LogSources sources = new LogSources(logs);
+        List<Path> found = sources.find();
+        for (Path name : sources.names()) {
+            if (noFollow && LogSources.expand(name).stream().noneMatch(Files::isRegularFile)) {
+                throw new BadInputException(name + (Files.isDirectory(name) ? ": is a directory with no log file "
+                        + "(*.log, *.txt) in it" : LogSources.isGlob(name) ? ": no file matches" : ": no such file"));
+            }
         }
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
         }
-        EventPrinter printer = new EventPrinter(out, json, eliminations || json);
-        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, threshold.value, confirm.value(abstraction), printer);
-        try (LogWatcher watcher = new LogWatcher(log, monitor, p -> {
-            err.println(p.format(log.toString()));
-            err.flush();
-        })) {
+        boolean several = sources.several();
+        try (WatchOutputs outputs = new WatchOutputs(out, err, json, eliminations || json, several);
+             Fleet fleet = new Fleet(set, abstraction, threshold.value, confirm.value(abstraction), outputs)) {
+            found.forEach(fleet::add);
             if (noFollow) {
-                watcher.drain();
-                summary(out, err, monitor);
+                fleet.drain();
+                for (WatchedLog l : fleet.logs()) {
+                    summary(out, err, l.path(), l.monitor(), several);
+                }
             } else {
-                if (!Files.exists(log)) {
-                    err.println("predmon: waiting for " + log + " to appear");
-                    err.flush();
+                for (Path name : sources.names()) {
+                    if (LogSources.expand(name).stream().noneMatch(Files::exists)) {
+                        err.println("predmon: waiting for " + (Files.isDirectory(name) ? "logs in " + name
+                                : LogSources.isGlob(name) ? "logs matching " + name : name) + " to appear");
+                    }
                 }
-                follow(watcher);
+                err.flush();
+                // Until the thread is interrupted, which is how watching is meant to end (Ctrl-C ends the JVM).
+                fleet.follow(sources, pollMillis);
             }
-        }
-        return monitor.warning().isPresent() ? ExitCodes.WARNING : ExitCodes.OK;
-    }
-
-    /**
-     * Follows until the thread is interrupted, which is how watching is meant to end (Ctrl-C in a shell ends the
-     * JVM instead): an interrupt while sleeping or reading is a stop, not an error.
-     */
-    private void follow(LogWatcher watcher) throws java.io.IOException {
-        try {
-            while (!Thread.currentThread().isInterrupted()) {
-                if (!watcher.poll()) {
-                    Thread.sleep(pollMillis);
-                }
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (java.nio.channels.ClosedByInterruptException e) {
-            // interrupted while reading (FileChannel reads are interruptible); the interrupt status stays set
+            return fleet.warned() ? ExitCodes.WARNING : ExitCodes.OK;
         }
     }
 
-    private void summary(PrintWriter out, PrintWriter err, PredictiveMonitor m) {
+    private void summary(PrintWriter out, PrintWriter err, Path log, PredictiveMonitor m, boolean several) {
         Map<String, Long> unmapped = m.pipeline().unmapped();
         Problems.interfaceMessages(err, log, m.pipeline().records(), m.pipeline().interfaceRecords(), unmapped);
         List<RunOutcome> runs = m.runs();
@@ -120,6 +114,9 @@ final class WatchCommand implements Callable<Integer> {
         if (json) {
             Map<String, Object> o = new LinkedHashMap<>();
             o.put("event", "end");
+            if (several) {
+                o.put("log", log.toString());
+            }
             o.put("records", m.pipeline().records());
             o.put("pairs", runs.stream().mapToLong(RunOutcome::pairs).sum());
             o.put("warning", m.warning().isPresent());
