@@ -60,6 +60,9 @@ final class WatchCommand implements Callable<Integer> {
     long pollMillis;
 
     @Mixin
+    HookOptions hookOptions;
+
+    @Mixin
     ModelOptions models;
 
     @Mixin
@@ -83,7 +86,8 @@ final class WatchCommand implements Callable<Integer> {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
         }
         boolean several = sources.several();
-        try (WatchOutputs outputs = new WatchOutputs(out, err, json, eliminations || json, several);
+        try (WatchOutputs outputs = new WatchOutputs(out, err, json, eliminations || json, several,
+                hookOptions.open(err));
              Fleet fleet = new Fleet(set, abstraction, threshold.value, confirm.value(abstraction), outputs)) {
             found.forEach(fleet::add);
             if (noFollow) {
