@@ -2,6 +2,8 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.live.Board;
+import dev.predmon.live.LiveServer;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.LogSources;
@@ -12,6 +14,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
@@ -63,6 +66,9 @@ final class WatchCommand implements Callable<Integer> {
     HookOptions hookOptions;
 
     @Mixin
+    LiveViewOptions liveView;
+
+    @Mixin
     ModelOptions models;
 
     @Mixin
@@ -85,9 +91,14 @@ final class WatchCommand implements Callable<Integer> {
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
         }
+        if (noFollow && liveView.http != null) {
+            throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
+        }
         boolean several = sources.several();
-        try (WatchOutputs outputs = new WatchOutputs(out, err, json, eliminations || json, several,
-                hookOptions.open(err));
+        Board board = liveView.board(set, abstraction);
+        try (LiveServer server = liveView.start(err, board);
+             WatchOutputs outputs = new WatchOutputs(out, err, json, eliminations || json, several,
+                     hookOptions.open(err), board);
              Fleet fleet = new Fleet(set, abstraction, threshold.value, confirm.value(abstraction), outputs)) {
             found.forEach(fleet::add);
             if (noFollow) {
