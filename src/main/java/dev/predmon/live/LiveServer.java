@@ -117,7 +117,8 @@ public final class LiveServer implements AutoCloseable {
             } else if (FILES.containsKey(path)) {
                 String name = FILES.get(path);
                 x.getResponseHeaders().set("Content-Security-Policy", POLICY);
-                Responses.bytes(x, 200, TYPES.get(name.substring(name.lastIndexOf('.') + 1)), files.get(name));
+                Responses.bytes(x, 200, TYPES.get(name.substring(name.lastIndexOf('.') + 1)),
+                        name.equals("index.html") ? page() : files.get(name));
             } else {
                 Responses.text(x, 404, "not found: the live view has /, /events and /status\n");
             }
@@ -127,6 +128,17 @@ public final class LiveServer implements AutoCloseable {
             x.close();
             throw bug;
         }
+    }
+
+    /**
+     * The page with the current {@code /status} in it, as a JSON data block (not a script: the policy allows none
+     * inline), so that it shows every tile as soon as it loads. {@code <} is escaped so that no log name can end
+     * the block.
+     */
+    private byte[] page() throws IOException {
+        String status = JSON.writeValueAsString(board.status(null)).replace("<", "\\u003c");
+        return new String(files.get("index.html"), StandardCharsets.UTF_8).replace("{{status}}", status)
+                .getBytes(StandardCharsets.UTF_8);
     }
 
     /** A query parameter's decoded value, or null. */

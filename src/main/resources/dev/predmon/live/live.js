@@ -28,7 +28,13 @@
   const at = (t, unit) => unit === 'ticks' ? 'tick ' + num(t, 0) : 't=' + num(t, 2);
   const span = (d, unit) => unit === 'ticks' ? num(d, 0) + ' ticks' : num(d, 2) + ' s';
   const pct = (b) => (b === null || b === undefined) ? 'unknown' : num(b, 1) + '%';
-  const shortName = (log) => log.split(/[\\/]/).slice(-2).join('/');
+  // The file's name, with its directory when that is short (robots/r1/monitor.log: r1/monitor.log); the full path
+  // is the title.
+  const shortName = (log) => {
+    const parts = log.split(/[\\/]/).filter(p => p.length > 0);
+    const dir = parts.length > 1 ? parts[parts.length - 2] : '';
+    return dir && dir.length <= 16 ? dir + '/' + parts[parts.length - 1] : parts[parts.length - 1];
+  };
 
   function verdict(t) {
     if (t.light === 'red') {
@@ -96,13 +102,18 @@
       s.appendChild(svg('polyline', {class: 'battery',
         points: pts.map(p => x(p[0]).toFixed(1) + ',' + y(p[1]).toFixed(1)).join(' ')}));
     }
-    const mark = (time, kind, label, anchorRight) => {
+    const mark = (time, kind, label, anchorRight, y0) => {
+      const right = anchorRight || x(time) > W - R - 50; // a label that would leave the plot goes left of its line
       s.appendChild(svg('line', {class: 'mark-' + kind, x1: x(time), x2: x(time), y1: T, y2: H - B}));
-      s.appendChild(svg('text', {class: 'label-' + kind, x: x(time) + (anchorRight ? -3 : 3), y: T - 3,
-        'text-anchor': anchorRight ? 'end' : 'start'}, label));
+      s.appendChild(svg('text', {class: 'label-' + kind, x: x(time) + (right ? -3 : 3), y: y0,
+        'text-anchor': right ? 'end' : 'start'}, label));
     };
-    if (t.warning) mark(t.warning.time, 'warning', 'warning', !!t.violation);
-    if (t.violation) mark(t.violation.time, 'violation', 'violation', false);
+    if (t.warning) mark(t.warning.time, 'warning', 'warning', !!t.violation, T - 3);
+    if (t.violation) {
+      // Close to the warning's mark, its label goes one line lower so that the two do not overlap.
+      const close = t.warning && Math.abs(x(t.violation.time) - x(t.warning.time)) < 60;
+      mark(t.violation.time, 'violation', 'violation', false, close ? T + 10 : T - 3);
+    }
     const unit = t.unit === 'ticks' ? ' ticks' : ' s';
     s.appendChild(svg('text', {class: 'axis', x: L, y: H - 5}, num(t0, 1) + unit));
     s.appendChild(svg('text', {class: 'axis', x: W - R, y: H - 5, 'text-anchor': 'end'}, num(t1, 1) + unit));
@@ -199,10 +210,7 @@
     c.textContent = text;
   }
 
-  async function load(log) {
-    const r = await fetch(log === undefined ? '/status' : '/status?log=' + encodeURIComponent(log), {cache: 'no-store'});
-    if (!r.ok) throw new Error('status ' + r.status);
-    const s = await r.json();
+  function apply(s) {
     document.getElementById('stale-after').textContent = s.staleAfter + ' s';
     for (const t of s.logs) {
       render(t);
@@ -210,6 +218,12 @@
       if (i >= 0) lastLogs[i] = t; else lastLogs.push(t);
     }
     summary();
+  }
+
+  async function load(log) {
+    const r = await fetch(log === undefined ? '/status' : '/status?log=' + encodeURIComponent(log), {cache: 'no-store'});
+    if (!r.ok) throw new Error('status ' + r.status);
+    apply(await r.json());
   }
 
   async function refresh(log) {
@@ -226,6 +240,10 @@
     pending.clear();
     if (logs.length > 8) refresh(); else logs.forEach(refresh);
   }
+
+  // The page arrives with the state it was served with, so it shows the tiles before any request of its own.
+  const initial = document.getElementById('initial-status');
+  if (initial && initial.textContent.trim().startsWith('{')) apply(JSON.parse(initial.textContent));
 
   const events = new EventSource('/events');
   events.onopen = () => { connection('live', 'live'); refresh(); };
