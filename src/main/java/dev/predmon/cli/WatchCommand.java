@@ -1,6 +1,5 @@
 package dev.predmon.cli;
 
-import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
@@ -18,7 +17,6 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -81,12 +79,8 @@ final class WatchCommand implements Callable<Integer> {
         Abstraction abstraction = abstractionOption.load();
         ModelSet set = models.load(abstraction);
         LogSources sources = new LogSources(logs);
-        List<Path> found = sources.find();
-        for (Path name : sources.names()) {
-            if (noFollow && LogSources.expand(name).stream().noneMatch(Files::isRegularFile)) {
-                throw new BadInputException(name + (Files.isDirectory(name) ? ": is a directory with no log file "
-                        + "(*.log, *.txt) in it" : LogSources.isGlob(name) ? ": no file matches" : ": no such file"));
-            }
+        if (noFollow) {
+            sources.requireFiles();
         }
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
@@ -100,19 +94,14 @@ final class WatchCommand implements Callable<Integer> {
              WatchOutputs outputs = new WatchOutputs(out, err, json, eliminations || json, several,
                      hookOptions.open(err), board);
              Fleet fleet = new Fleet(set, abstraction, threshold.value, confirm.value(abstraction), outputs)) {
-            found.forEach(fleet::add);
+            sources.find().forEach(fleet::add);
             if (noFollow) {
                 fleet.drain();
                 for (WatchedLog l : fleet.logs()) {
                     summary(out, err, l.path(), l.monitor(), several);
                 }
             } else {
-                for (Path name : sources.names()) {
-                    if (LogSources.expand(name).stream().noneMatch(Files::exists)) {
-                        err.println("predmon: waiting for " + (Files.isDirectory(name) ? "logs in " + name
-                                : LogSources.isGlob(name) ? "logs matching " + name : name) + " to appear");
-                    }
-                }
+                sources.missing().forEach(m -> err.println("predmon: waiting for " + m + " to appear"));
                 err.flush();
                 // Until the thread is interrupted, which is how watching is meant to end (Ctrl-C ends the JVM).
                 fleet.follow(sources, pollMillis);

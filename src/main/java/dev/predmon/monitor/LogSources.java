@@ -1,5 +1,7 @@
 package dev.predmon.monitor;
 
+import dev.predmon.BadInputException;
+
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.FileSystems;
@@ -65,6 +67,33 @@ public final class LogSources {
             }
         }
         return List.copyOf(found.values());
+    }
+
+    /**
+     * For a single pass ({@code --no-follow}): every name must stand for a file now.
+     *
+     * @throws BadInputException naming the first name that stands for none
+     */
+    public void requireFiles() throws IOException, BadInputException {
+        for (Path name : names) {
+            if (expand(name).stream().noneMatch(Files::isRegularFile)) {
+                throw new BadInputException(name + (isGlob(name) ? ": no file matches"
+                        : Files.isDirectory(name) ? ": is a directory with no log file (*.log, *.txt) in it"
+                        : ": no such file"));
+            }
+        }
+    }
+
+    /** What is still waited for, one phrase per name that stands for no file yet ({@code logs in DIR}, ...). */
+    public List<String> missing() throws IOException {
+        List<String> out = new ArrayList<>();
+        for (Path name : names) {
+            if (expand(name).stream().noneMatch(Files::exists)) {
+                out.add(isGlob(name) ? "logs matching " + name : Files.isDirectory(name) ? "logs in " + name
+                        : name.toString());
+            }
+        }
+        return out;
     }
 
     /** The files one name stands for now. */
