@@ -29,6 +29,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private final Map<WatchedLog, Outlet> outlets = new HashMap<>();
     private final CommandHooks hooks;
     private final Board board;
+    private String lastRescanFailure;
 
     /** Where one log's events go. */
     private record Outlet(EventPrinter printer, Tile tile) {
@@ -92,6 +93,16 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     public void problem(WatchedLog log, ParseProblem p) {
         err.println(p.format(log.name()));
         err.flush();
+    }
+
+    @Override
+    public void rescanFailed(java.io.IOException e) {
+        String message = "predmon: looking for new logs: " + e;
+        if (!message.equals(lastRescanFailure)) { // once, not every second
+            err.println(message);
+            err.flush();
+            lastRescanFailure = message;
+        }
     }
 
     @Override

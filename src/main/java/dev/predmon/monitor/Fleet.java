@@ -49,6 +49,10 @@ public final class Fleet implements AutoCloseable {
         /** A poll found {@code log} grown (or truncated or replaced). */
         default void grew(WatchedLog log) {
         }
+
+        /** Looking for new logs under a directory or glob failed; the fleet goes on and looks again later. */
+        default void rescanFailed(IOException e) {
+        }
     }
 
     /** How each log's monitor matches: the same for every log. */
@@ -118,7 +122,7 @@ public final class Fleet implements AutoCloseable {
         try {
             while (!Thread.currentThread().isInterrupted()) {
                 if (growing && System.nanoTime() - nextScan >= 0) {
-                    sources.find().forEach(this::add);
+                    rescan(sources);
                     nextScan = System.nanoTime() + RESCAN_NANOS;
                 }
                 poll();
@@ -128,6 +132,17 @@ public final class Fleet implements AutoCloseable {
             Thread.currentThread().interrupt();
         } catch (ClosedByInterruptException e) {
             // interrupted while reading (FileChannel reads are interruptible); the interrupt status stays set
+        }
+    }
+
+    private void rescan(LogSources sources) throws ClosedByInterruptException {
+        try {
+            sources.find().forEach(this::add);
+        } catch (ClosedByInterruptException stop) {
+            throw stop;
+        } catch (IOException e) {
+            // A directory that went away or cannot be read while it was walked: the logs watched so far go on.
+            listener.rescanFailed(e);
         }
     }
 

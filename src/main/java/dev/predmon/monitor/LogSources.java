@@ -6,6 +6,8 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.NotDirectoryException;
 import java.nio.file.Path;
 import java.nio.file.PathMatcher;
 import java.util.ArrayList;
@@ -29,14 +31,22 @@ public final class LogSources {
 
     private static final String GLOB_CHARS = "*?[{";
 
-    private final List<Path> names;
+    /** What a name stands for, decided when it is given: a directory that goes away stays a directory. */
+    private enum Kind { FILE, DIRECTORY, GLOB }
+
+    private record Name(Path path, Kind kind) {
+    }
+
+    private final List<Name> names = new ArrayList<>();
 
     /** @param names files, directories or globs; at least one */
     public LogSources(List<Path> names) {
         if (names.isEmpty()) {
             throw new IllegalArgumentException("no log named");
         }
-        this.names = List.copyOf(names);
+        for (Path n : names) {
+            this.names.add(new Name(n, isGlob(n) ? Kind.GLOB : Files.isDirectory(n) ? Kind.DIRECTORY : Kind.FILE));
+        }
     }
 
     /**
@@ -45,23 +55,18 @@ public final class LogSources {
      * a second file appears.
      */
     public boolean several() {
-        return names.size() > 1 || names.stream().anyMatch(n -> isGlob(n) || Files.isDirectory(n));
+        return names.size() > 1 || growing();
     }
 
     /** Whether new files can appear under these names (a directory or a glob), so that they are looked for again. */
     public boolean growing() {
-        return names.stream().anyMatch(n -> isGlob(n) || Files.isDirectory(n));
-    }
-
-    /** The names as given. */
-    public List<Path> names() {
-        return names;
+        return names.stream().anyMatch(n -> n.kind() != Kind.FILE);
     }
 
     /** The files the names stand for now: files named as such whether or not they exist, plus what matches. */
     public List<Path> find() throws IOException {
         Map<Path, Path> found = new LinkedHashMap<>();
-        for (Path name : names) {
+        for (Name name : names) {
             for (Path p : expand(name)) {
                 found.putIfAbsent(p.toAbsolutePath().normalize(), p);
             }
@@ -75,11 +80,13 @@ public final class LogSources {
      * @throws BadInputException naming the first name that stands for none
      */
     public void requireFiles() throws IOException, BadInputException {
-        for (Path name : names) {
+        for (Name name : names) {
             if (expand(name).stream().noneMatch(Files::isRegularFile)) {
-                throw new BadInputException(name + (isGlob(name) ? ": no file matches"
-                        : Files.isDirectory(name) ? ": is a directory with no log file (*.log, *.txt) in it"
-                        : ": no such file"));
+                throw new BadInputException(name.path() + switch (name.kind()) {
+                    case GLOB -> ": no file matches";
+                    case DIRECTORY -> ": is a directory with no log file (*.log, *.txt) in it";
+                    case FILE -> ": no such file";
+                });
             }
         }
     }
@@ -87,26 +94,32 @@ public final class LogSources {
     /** What is still waited for, one phrase per name that stands for no file yet ({@code logs in DIR}, ...). */
     public List<String> missing() throws IOException {
         List<String> out = new ArrayList<>();
-        for (Path name : names) {
+        for (Name name : names) {
             if (expand(name).stream().noneMatch(Files::exists)) {
-                out.add(isGlob(name) ? "logs matching " + name : Files.isDirectory(name) ? "logs in " + name
-                        : name.toString());
+                out.add(switch (name.kind()) {
+                    case GLOB -> "logs matching " + name.path();
+                    case DIRECTORY -> "logs in " + name.path();
+                    case FILE -> name.path().toString();
+                });
             }
         }
         return out;
     }
 
-    /** The files one name stands for now. */
-    public static List<Path> expand(Path name) throws IOException {
-        if (isGlob(name)) {
-            return glob(name);
+    /** The files one name stands for now (none for a directory that is gone). */
+    private static List<Path> expand(Name name) throws IOException {
+        switch (name.kind()) {
+            case GLOB:
+                return glob(name.path());
+            case DIRECTORY:
+                try (Stream<Path> files = Files.list(name.path())) {
+                    return files.filter(p -> Files.isRegularFile(p) && isLogName(p)).sorted().toList();
+                } catch (NoSuchFileException | NotDirectoryException gone) {
+                    return List.of(); // moved away or replaced: its logs are looked for again at the next rescan
+                }
+            default:
+                return List.of(name.path());
         }
-        if (Files.isDirectory(name)) {
-            try (Stream<Path> files = Files.list(name)) {
-                return files.filter(p -> Files.isRegularFile(p) && isLogName(p)).sorted().toList();
-            }
-        }
-        return List.of(name);
     }
 
     /** Whether a name is a glob rather than a file or directory. */

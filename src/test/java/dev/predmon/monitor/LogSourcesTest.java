@@ -49,6 +49,18 @@ class LogSourcesTest {
     }
 
     @Test
+    void aDirectoryThatGoesAwayStaysADirectoryAndIsLookedIntoWhenItIsBack() throws Exception {
+        Path d = Files.createDirectories(dir.resolve("d"));
+        LogSources s = new LogSources(List.of(d));
+        Files.delete(d);
+        assertEquals(List.of(), s.find(), "not taken for a log file named d");
+        assertEquals(List.of("logs in " + d), s.missing());
+        Path back = file("d/r.log");
+        assertEquals(List.of(back), s.find());
+        assertTrue(s.several());
+    }
+
+    @Test
     void aLogNamedTwiceIsWatchedOnce() throws Exception {
         Path a = file("a.log");
         LogSources s = new LogSources(List.of(a, dir.resolve("./a.log"), dir.resolve("*.log")));
