@@ -15,7 +15,8 @@ final class HookOptions {
                     + "or slow command is reported on stderr and not run again.")
     String onWarning;
 
-    @Option(names = "--on-violation", paramLabel = "CMD", description = "The same for each violation of the property.")
+    @Option(names = "--on-violation", paramLabel = "CMD",
+            description = "Run CMD for each violation of the property, as --on-warning does for each warning.")
     String onViolation;
 
     private double timeoutSeconds = 10;
