@@ -16,7 +16,7 @@ import java.util.function.Consumer;
 public final class Benchmarks {
 
     /** The benchmarks, as named on the command line. */
-    public enum Kind { BATCH, LATENCY, MEMORY, LEARN }
+    public enum Kind { BATCH, LATENCY, MEMORY, LEARN, FLEET }
 
     /**
      * Sizes.
@@ -28,9 +28,11 @@ public final class Benchmarks {
      * @param learnRuns       runs per scenario, one learning per value
      * @param modelRuns       runs per scenario the monitored models are learned from
      * @param tempDir         where generated logs go
+     * @param fleetLogs       logs watched at once in the fleet benchmark (measured against one log)
+     * @param fleetSeconds    how long the fleet benchmark runs at robot pace per fleet size (and half that idle)
      */
     public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
-                          List<Integer> learnRuns, int modelRuns, Path tempDir) {
+                          List<Integer> learnRuns, int modelRuns, Path tempDir, int fleetLogs, double fleetSeconds) {
     }
 
     private Benchmarks() {
@@ -40,7 +42,8 @@ public final class Benchmarks {
     public static void run(List<Kind> kinds, Options o, Consumer<String> out) throws Exception {
         Abstraction abstraction = Abstraction.defaults();
         ModelSet models = null;
-        if (kinds.contains(Kind.BATCH) || kinds.contains(Kind.LATENCY) || kinds.contains(Kind.MEMORY)) {
+        if (kinds.contains(Kind.BATCH) || kinds.contains(Kind.LATENCY) || kinds.contains(Kind.MEMORY)
+                || kinds.contains(Kind.FLEET)) {
             models = BenchData.models(abstraction, o.modelRuns());
             out.accept(f("models: %d machines learned from %d runs per scenario", models.models().size(), o.modelRuns()));
         }
@@ -79,6 +82,19 @@ public final class Benchmarks {
                     out.accept(f("watch heap: MB in use after GC, per tenth: %s (max heap %.0f MB); after %d records: "
                                     + "%.1f MB", String.join(" ", heap), r.maxHeapMb(),
                             r.records()[r.records().length - 1], r.heapMb()[r.heapMb().length - 1]));
+                }
+                case FLEET -> {
+                    List<Integer> sizes = o.fleetLogs() == 1 ? List.of(1) : List.of(1, o.fleetLogs());
+                    for (FleetBench.Result r : FleetBench.run(abstraction, models, sizes, o.latencyRuns(),
+                            o.pollMicros(), o.fleetSeconds(), o.tempDir())) {
+                        out.accept(f("fleet: %d log%s in one loop, poll pause %d us: catch-up %.0f ns CPU/record; idle "
+                                        + "%.1f%% of a core; at robot pace (%.0f records/s per log) %.1f%% of a core, "
+                                        + "%.0f ns CPU/record; append->warning median %.3f ms, p99 %.3f ms, max %.3f ms "
+                                        + "(%d samples)", r.logs(), r.logs() == 1 ? "" : "s", r.pollMicros(),
+                                r.catchUpNanos(), 100 * r.idleCore(), r.paceRate(), 100 * r.paceCore(), r.paceNanos(),
+                                r.percentile(0.5), r.percentile(0.99), r.millis()[r.millis().length - 1],
+                                r.millis().length));
+                    }
                 }
                 case LEARN -> {
                     for (int n : o.learnRuns()) {

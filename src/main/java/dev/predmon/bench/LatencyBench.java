@@ -46,14 +46,7 @@ final class LatencyBench {
     }
 
     static Result run(Abstraction abstraction, ModelSet models, int runs, long pollMicros, Path dir) throws Exception {
-        // A depleted run the models warn on, split at the warning's record.
-        String[] parts = null;
-        for (long seed = 20_000; parts == null && seed < 20_100; seed++) {
-            parts = split(BenchData.text(Scenario.DEPLETED, seed), abstraction, models, dir);
-        }
-        if (parts == null) {
-            throw new IllegalStateException("no simulated depleted run raised a warning with these models");
-        }
+        String[] parts = warningRun(abstraction, models, dir);
         byte[] before = parts[0].getBytes(StandardCharsets.UTF_8);
         byte[] trigger = parts[1].getBytes(StandardCharsets.UTF_8);
         double[] millis = new double[runs];
@@ -115,7 +108,19 @@ final class LatencyBench {
         return Math.max(0, warnedAt.get() - written.get()) / 1e6;
     }
 
-    private static long countRecords(byte[] text) {
+    /** A depleted run the models warn on, split at the warning's record: the text before it and its seven lines. */
+    static String[] warningRun(Abstraction abstraction, ModelSet models, Path dir) throws Exception {
+        String[] parts = null;
+        for (long seed = 20_000; parts == null && seed < 20_100; seed++) {
+            parts = split(BenchData.text(Scenario.DEPLETED, seed), abstraction, models, dir);
+        }
+        if (parts == null) {
+            throw new IllegalStateException("no simulated depleted run raised a warning with these models");
+        }
+        return parts;
+    }
+
+    static long countRecords(byte[] text) {
         String s = new String(text, StandardCharsets.UTF_8);
         return s.lines().filter(l -> l.contains(" intercepted:") || l.contains("\tintercepted:")
                 || l.endsWith("intercepted:")).count();

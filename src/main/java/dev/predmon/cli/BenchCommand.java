@@ -16,14 +16,14 @@ import java.util.concurrent.Callable;
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = {"Measure predmon on this machine with simulated logs: batch throughput (vs grep), "
                 + "append-to-warning latency of watch, watch's CPU per record and heap as the log grows, "
-                + "learning time and peak heap.",
+                + "learning time and peak heap, and a fleet of logs watched in one process against one log.",
                 "For the heap figure run: java -Xmx64m -jar predmon.jar bench --only memory"})
 final class BenchCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--only", split = ",", paramLabel = "batch|latency|memory|learn",
+    @Option(names = "--only", split = ",", paramLabel = "batch|latency|memory|learn|fleet",
             description = "Run only these benchmarks (default: all, in this order).")
     List<String> only;
 
@@ -52,6 +52,14 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--tmp", paramLabel = "DIR", description = "Directory for generated logs (default: the system's).")
     Path tmp;
 
+    @Option(names = "--fleet-logs", defaultValue = "100",
+            description = "Logs watched at once by the fleet benchmark, against one (default: ${DEFAULT-VALUE}).")
+    int fleetLogs;
+
+    @Option(names = "--fleet-seconds", defaultValue = "5",
+            description = "Seconds the fleet benchmark appends at robot pace, per fleet size (default: ${DEFAULT-VALUE}).")
+    double fleetSeconds;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -59,7 +67,7 @@ final class BenchCommand implements Callable<Integer> {
                 : only.stream().map(this::kind).toList();
         Path dir = tmp != null ? tmp : Path.of(System.getProperty("java.io.tmpdir"));
         Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, learnRuns,
-                modelRuns, dir), line -> {
+                modelRuns, dir, fleetLogs, fleetSeconds), line -> {
             out.println(line);
             out.flush();
         });
@@ -71,7 +79,7 @@ final class BenchCommand implements Callable<Integer> {
             return Benchmarks.Kind.valueOf(name.trim().toUpperCase(java.util.Locale.ROOT));
         } catch (IllegalArgumentException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                    "--only: unknown benchmark '" + name + "' (expected batch, latency, memory or learn)");
+                    "--only: unknown benchmark '" + name + "' (expected batch, latency, memory, learn or fleet)");
         }
     }
 }

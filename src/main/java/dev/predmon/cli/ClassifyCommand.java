@@ -54,7 +54,7 @@ final class ClassifyCommand implements Callable<Integer> {
             }
         }
         if (input.json) {
-            out.println(Json.line(results.size() == 1 ? results.get(0) : new Runs(input.log.toString(), results)));
+            out.println(Json.line(results.size() == 1 ? results.get(0) : new Runs(input.log().toString(), results)));
         }
         out.flush();
         return ExitCodes.ofRuns(codes.stream().mapToInt(Integer::intValue));

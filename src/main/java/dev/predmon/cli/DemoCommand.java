@@ -2,6 +2,9 @@ package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.Learning;
+import dev.predmon.live.Board;
+import dev.predmon.live.LiveServer;
+import dev.predmon.live.Tile;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.monitor.LogWatcher;
@@ -13,6 +16,7 @@ import dev.predmon.simulate.SimOptions;
 import dev.predmon.simulate.SimRun;
 import dev.predmon.simulate.Simulator;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -67,6 +71,18 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--work", paramLabel = "DIR", description = "Where to write the live logs (default: a new temporary directory).")
     Path work;
 
+    @Mixin
+    LiveViewOptions liveView;
+
+    @Option(names = "--wait-viewer", paramLabel = "S", defaultValue = "30",
+            description = "With --http: wait at most S seconds for a browser to open the page before the first run "
+                    + "(default: ${DEFAULT-VALUE}).")
+    double waitViewer;
+
+    @Option(names = "--linger", paramLabel = "S", defaultValue = "60",
+            description = "With --http: keep the page up S seconds after the runs (default: ${DEFAULT-VALUE}).")
+    double linger;
+
     @Override
     public Integer call() throws Exception {
         if (!(seconds > 0) || Double.isInfinite(seconds)) {
@@ -85,26 +101,36 @@ final class DemoCommand implements Callable<Integer> {
                 + String.join(", ", set.index().scenarios().stream()
                 .map(s -> s.name() + (s.faulty() ? " faulty" : " nominal")).toList()) + ")");
         Path dir = work != null ? Files.createDirectories(work) : Files.createTempDirectory("predmon-demo-");
+        Board board = liveView.board(set, abstraction);
         boolean depletedOk;
         boolean rechargeOk;
-        try {
-            depletedOk = live(out, set, abstraction, dir, Scenario.DEPLETED, depletedSeed);
-            rechargeOk = live(out, set, abstraction, dir, Scenario.RECHARGE, rechargeSeed);
+        try (LiveServer server = liveView.start(out, board)) {
+            if (server != null) {
+                LiveDemo.awaitViewer(out, board, server, waitViewer);
+            }
+            depletedOk = live(out, set, abstraction, dir, Scenario.DEPLETED, depletedSeed, board);
+            rechargeOk = live(out, set, abstraction, dir, Scenario.RECHARGE, rechargeSeed, board);
+            out.println(depletedOk && rechargeOk
+                    ? "demo done: the faulty run was predicted before its violation; the nominal run raised no warning"
+                    : "demo done, but not as expected: see above");
+            out.flush();
+            if (server != null) {
+                LiveDemo.linger(out, server, linger);
+            }
         } finally {
             if (work == null) {
                 removeLogs(dir); // a directory of its own: nothing of it is left behind
             }
         }
-        out.println(depletedOk && rechargeOk
-                ? "demo done: the faulty run was predicted before its violation; the nominal run raised no warning"
-                : "demo done, but not as expected: see above");
-        out.flush();
         return depletedOk && rechargeOk ? ExitCodes.OK : ExitCodes.WARNING;
     }
 
-    /** Simulates one run into a file on a writer thread while following it; whether it behaved as expected. */
-    private boolean live(PrintWriter out, ModelSet set, Abstraction abstraction, Path dir, Scenario scenario, long seed)
-            throws IOException, InterruptedException {
+    /**
+     * Simulates one run into a file on a writer thread while following it; whether it behaved as expected. With a
+     * live view ({@code board} not null) the run's log gets a tile.
+     */
+    private boolean live(PrintWriter out, ModelSet set, Abstraction abstraction, Path dir, Scenario scenario, long seed,
+                         Board board) throws IOException, InterruptedException {
         SimRun run = Simulator.run(scenario, seed, SimOptions.defaults());
         double duration = run.truth().endTime() - run.events().get(0).time();
         double speed = Math.max(1.0, duration / seconds);
@@ -115,11 +141,15 @@ final class DemoCommand implements Callable<Integer> {
         out.flush();
         long start = System.nanoTime();
         EventPrinter text = new EventPrinter(out, false, true);
+        Tile tile = board == null ? null : board.tile(log.toString());
         PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, 0, e -> {
             String line = text.toText(e);
             if (line != null) {
                 out.printf(Locale.ROOT, "  [%5.1f s] %s%n", (System.nanoTime() - start) / 1e9, line);
                 out.flush();
+            }
+            if (tile != null) {
+                board.event(tile, e, EventPrinter.toJson(e, log.toString()));
             }
         });
         AtomicReference<Throwable> failed = new AtomicReference<>();
@@ -127,10 +157,13 @@ final class DemoCommand implements Callable<Integer> {
         writer.setDaemon(true);
         writer.setUncaughtExceptionHandler((t, e) -> failed.set(e)); // rethrown below, not printed by the thread
         writer.start();
-        try (LogWatcher watcher = new LogWatcher(log, monitor, p -> out.println("  " + p.format(log.toString())))) {
+        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> out.println("  " + p.format(log.toString())),
+                tile == null ? r -> { } : tile::record)) {
             while (writer.isAlive()) {
                 if (!watcher.poll()) {
                     Thread.sleep(5);
+                } else if (tile != null) {
+                    board.grew(tile);
                 }
             }
             writer.join();

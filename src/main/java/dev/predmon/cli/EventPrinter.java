@@ -18,13 +18,24 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     private final PrintWriter out;
     private final boolean json;
     private final boolean verbose;
+    private final String log;
     private MonitorEvent.Warning warning;
 
     /** @param eliminations also print each model's elimination (JSON always does) */
     EventPrinter(PrintWriter out, boolean json, boolean eliminations) {
+        this(out, json, eliminations, null);
+    }
+
+    /**
+     * For one log of several: each event says which ({@code "log"} in JSON, a {@code log: } prefix in text).
+     *
+     * @param log the log's name, or null when only one log is watched
+     */
+    EventPrinter(PrintWriter out, boolean json, boolean eliminations, String log) {
         this.out = out;
         this.json = json;
         this.verbose = eliminations;
+        this.log = log;
     }
 
     @Override
@@ -33,11 +44,11 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             return; // the caller reports these with the parse problems
         }
         if (json) {
-            out.println(toJson(e));
+            out.println(toJson(e, log));
         } else {
             String text = toText(e);
             if (text != null) {
-                out.println(text);
+                out.println(log == null ? text : log + ": " + text);
             }
         }
         out.flush();
@@ -45,6 +56,11 @@ final class EventPrinter implements Consumer<MonitorEvent> {
 
     /** The JSON object of an event ({@link MonitorEvent.Unmapped} is not one: it goes to stderr with the problems). */
     static String toJson(MonitorEvent e) {
+        return toJson(e, null);
+    }
+
+    /** The JSON object of an event of {@code log} ({@code "log"} right after {@code "event"}), or untagged if null. */
+    static String toJson(MonitorEvent e, String log) {
         Object o;
         if (e instanceof MonitorEvent.Warning w) {
             o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.scenarios().get(0),
@@ -64,7 +80,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         } else {
             throw new IllegalArgumentException("not printed as a JSON event: " + e);
         }
-        return Json.line(o);
+        return log == null ? Json.line(o) : Json.line(Json.tagged(o, log));
     }
 
     record WarningJson(String event, double time, String unit, long line, int run, String scenario,

@@ -28,6 +28,23 @@ final class Json {
         return write(DOCUMENT, value);
     }
 
+    /** {@code value} as a JSON object with {@code "log": log} right after its first field ({@code "event"}). */
+    static Object tagged(Object value, String log) {
+        com.fasterxml.jackson.databind.node.ObjectNode plain = MAPPER.valueToTree(value);
+        com.fasterxml.jackson.databind.node.ObjectNode tagged = MAPPER.createObjectNode();
+        java.util.Iterator<java.util.Map.Entry<String, com.fasterxml.jackson.databind.JsonNode>> fields = plain.fields();
+        boolean first = true;
+        while (fields.hasNext()) {
+            java.util.Map.Entry<String, com.fasterxml.jackson.databind.JsonNode> f = fields.next();
+            tagged.set(f.getKey(), f.getValue());
+            if (first) {
+                tagged.put("log", log);
+                first = false;
+            }
+        }
+        return tagged;
+    }
+
     private static String write(ObjectWriter writer, Object value) {
         try {
             return writer.writeValueAsString(value);

@@ -14,6 +14,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 /**
  * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
@@ -22,8 +23,10 @@ import java.nio.file.Path;
  */
 final class LogAgainstModels {
 
-    @Option(names = "--log", required = true, paramLabel = "FILE", description = "The log.")
-    Path log;
+    @Option(names = "--log", required = true, paramLabel = "FILE",
+            description = "The log. watch takes several: repeat it, or name a directory (its *.log and *.txt files, "
+                    + "also those that appear later) or a quoted glob ('logs/robot-*.log').")
+    List<Path> logs;
 
     @Option(names = "--json", description = "Print the result as JSON on stdout (watch: one object per event).")
     boolean json;
@@ -74,6 +77,7 @@ final class LogAgainstModels {
      */
     LogTrace readLog(Abstraction abstraction, PrintWriter err) throws BadInputException, IOException {
         checkLog();
+        Path log = log();
         LogTrace trace = Traces.read(log, abstraction);
         String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
         if (missing != null) {
@@ -87,8 +91,18 @@ final class LogAgainstModels {
         return threshold.value;
     }
 
+    /** The one log of verify, classify and explain (watch takes several). */
+    Path log() throws BadInputException {
+        if (logs.size() != 1) {
+            throw new BadInputException("--log is given " + logs.size() + " times; this command judges one log "
+                    + "(watch follows several)");
+        }
+        return logs.get(0);
+    }
+
     /** Checks that {@code --log} is a readable file; one message per situation, the same from every command. */
     void checkLog() throws BadInputException {
+        Path log = log();
         if (!Files.exists(log)) {
             throw new BadInputException(log + ": no such file; expected a log file");
         }
@@ -97,6 +111,7 @@ final class LogAgainstModels {
 
     /** As {@link #checkLog()}, but a file that does not exist yet is fine ({@code watch} waits for it). */
     void checkLogIfPresent() throws BadInputException {
+        Path log = log();
         if (Files.isDirectory(log)) {
             throw new BadInputException(log + ": is a directory; expected a log file");
         }

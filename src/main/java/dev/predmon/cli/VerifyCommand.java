@@ -74,7 +74,7 @@ final class VerifyCommand implements Callable<Integer> {
             }
         }
         if (input.json) {
-            out.println(Json.line(results.size() == 1 ? results.get(0) : new Runs(input.log.toString(), results)));
+            out.println(Json.line(results.size() == 1 ? results.get(0) : new Runs(input.log().toString(), results)));
         } else {
             out.println(all ? "matches scenario " + scenario : "does not match scenario " + scenario);
         }

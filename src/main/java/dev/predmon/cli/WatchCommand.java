@@ -2,23 +2,22 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.live.Board;
+import dev.predmon.live.LiveServer;
 import dev.predmon.model.ModelSet;
-import dev.predmon.monitor.LogWatcher;
-import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.Fleet;
+import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
-import dev.predmon.parse.ParseProblem;
-import dev.predmon.pipeline.Evidence;
-import dev.predmon.pipeline.Traces;
+import dev.predmon.monitor.WatchedLog;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.channels.ClosedByInterruptException;
 import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.List;
@@ -31,6 +30,8 @@ import java.util.concurrent.Callable;
         description = {"Follow a log as 'tail -F' does (growth, truncation, replacement; waits for a file that does "
                 + "not exist yet) and warn as soon as every nominal model is eliminated while a faulty one still "
                 + "matches. The built-in safety monitor reports the property's violation alongside.",
+                "Several logs (--log repeated, a directory or a glob) are watched in one process, each with its "
+                        + "own monitor; each event then names its log.",
                 "Ctrl-C (SIGINT) or SIGTERM stops it: it prints the end summary and exits as below.",
                 "Exit 1 when a warning was raised, 5 when no model matches the run any more, 0 otherwise; 3 when "
                         + "the log held nothing to judge (with --no-follow, at the end of the file)."})
@@ -54,12 +55,14 @@ final class WatchCommand implements Callable<Integer> {
     @Option(names = "--poll-ms", paramLabel = "MS", defaultValue = "2", description = "How often to look for new lines (default: ${DEFAULT-VALUE}).")
     long pollMillis;
 
+    @Mixin
+    HookOptions hookOptions;
+
+    @Mixin
+    LiveViewOptions liveView;
+
     private PrintWriter out;
     private PrintWriter err;
-    /** With --no-follow, problems wait for the end: a log with nothing to judge gets one line, not a list. */
-    private final List<ParseProblem> heldProblems = new ArrayList<>();
-    private long moreProblems;
-    private ParseProblem firstProblem;
 
     @Override
     public Integer call() throws Exception {
@@ -67,127 +70,97 @@ final class WatchCommand implements Callable<Integer> {
         err = spec.commandLine().getErr();
         ModelSet set = input.models();
         Abstraction abstraction = input.abstraction();
-        if (noFollow) {
-            input.checkLog();
-        } else {
-            input.checkLogIfPresent();
+        LogSources sources = new LogSources(input.logs);
+        boolean several = sources.several();
+        if (!several) {
+            if (noFollow) {
+                input.checkLog();
+            } else {
+                input.checkLogIfPresent();
+            }
+        } else if (noFollow) {
+            sources.requireFiles();
+        }
+        if (noFollow && liveView.http != null) {
+            throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
         }
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
         }
-        EventPrinter printer = new EventPrinter(out, input.json, eliminations || input.json);
-        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, input.threshold(),
-                confirm.value(abstraction), e -> {
-            if (e instanceof MonitorEvent.Unmapped u) {
-                if (!noFollow) { // first sighting of each kind while following; with --no-follow the totals say it
-                    err.println(input.log + ":" + u.line() + ": warning: interface message no abstraction rule maps: "
-                            + u.message() + " (first of its kind; the totals come at the stop)");
-                    err.flush();
-                }
-            } else {
-                printer.accept(e);
-            }
-        });
-        try (LogWatcher watcher = new LogWatcher(input.log, monitor, this::problem)) {
+        Board board = liveView.board(set, abstraction);
+        try (LiveServer server = liveView.start(err, board);
+             WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
+                     noFollow, hookOptions.open(err), board, abstraction.name());
+             Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), outputs)) {
+            sources.find().forEach(fleet::add);
+            String stop = "end-of-file";
             if (noFollow) {
-                watcher.drain();
-                Optional<String> missing = evidence(watcher, abstraction).missing();
+                fleet.drain();
+            } else {
+                sources.missing().forEach(m -> err.println("predmon: waiting for " + m + " to appear"));
+                err.flush();
+                try (StopSignals signals = StopSignals.interrupting(Thread.currentThread())) {
+                    fleet.follow(sources, pollMillis);
+                    stop = signals.received() != null ? signals.received() : "interrupted";
+                }
+                Thread.interrupted(); // stopped: the summaries are written in full
+            }
+            List<Integer> codes = new ArrayList<>();
+            for (WatchedLog l : fleet.logs()) {
+                Optional<String> missing = outputs.evidence(l).missing();
+                if (noFollow && missing.isPresent()) {
+                    if (!several) {
+                        throw new BadInputException(missing.get());
+                    }
+                    err.println("predmon: " + missing.get());
+                    codes.add(ExitCodes.BAD_INPUT);
+                    continue;
+                }
+                if (noFollow) {
+                    outputs.flushProblems(l);
+                }
+                int code = summary(l, outputs, stop, several);
                 if (missing.isPresent()) {
-                    throw new BadInputException(missing.get());
+                    err.println("predmon: " + (Files.exists(l.path()) ? missing.get()
+                            : l.name() + ": stopped before the file appeared; no verdict"));
+                    code = ExitCodes.BAD_INPUT;
                 }
-                heldProblems.forEach(p -> err.println(p.format(input.log.toString())));
-                if (moreProblems > 0) {
-                    err.println(input.log + ": " + moreProblems + " more problem(s) not shown");
-                }
-                return summary(watcher, abstraction, "end-of-file");
+                codes.add(code);
             }
-            if (!Files.exists(input.log)) {
-                err.println("predmon: waiting for " + input.log + " to appear");
-                err.flush();
-            }
-            String stop;
-            try (StopSignals signals = StopSignals.interrupting(Thread.currentThread())) {
-                follow(watcher, abstraction);
-                stop = signals.received() != null ? signals.received() : "interrupted";
-            }
-            Thread.interrupted(); // stopped: the summary is written in full
-            int code = summary(watcher, abstraction, stop);
-            Optional<String> missing = evidence(watcher, abstraction).missing();
-            if (missing.isPresent()) {
-                err.println("predmon: " + (Files.exists(input.log) ? missing.get()
-                        : input.log + ": stopped before the file appeared; no verdict"));
-                err.flush();
-                return ExitCodes.BAD_INPUT;
-            }
-            return code;
-        }
-    }
-
-    private void problem(ParseProblem p) {
-        if (firstProblem == null) {
-            firstProblem = p;
-        }
-        if (!noFollow) {
-            err.println(p.format(input.log.toString()));
             err.flush();
-        } else if (heldProblems.size() < Traces.MAX_PROBLEMS) {
-            heldProblems.add(p);
-        } else {
-            moreProblems++;
+            return codes.size() == 1 ? codes.get(0) : fleetCode(codes);
         }
-    }
-
-    private Evidence evidence(LogWatcher watcher, Abstraction abstraction) {
-        PredictiveMonitor m = watcher.monitor();
-        return new Evidence(input.log, watcher::lines, m.pipeline().records(), m.pipeline().interfaceRecords(),
-                m.pairs(), m.pipeline().unmapped(), abstraction.name(), firstProblem);
     }
 
     /**
-     * Follows until the thread is interrupted, which is how watching ends: by SIGINT or SIGTERM
-     * ({@link StopSignals}) or by an interrupt when run in-process. An interrupt while sleeping or reading is a
-     * stop, not an error. After the first lines, says once if nothing recognisable has arrived.
+     * The exit code of several logs: a warning in any log is the fleet's warning, else a log no model matched, else
+     * a log judged quietly; only when no log held anything to judge is it bad input.
      */
-    private void follow(LogWatcher watcher, Abstraction abstraction) throws IOException {
-        boolean settled = false; // something recognisable arrived, or the notice was given
-        try {
-            while (!Thread.currentThread().isInterrupted()) {
-                boolean read = watcher.poll();
-                if (read && !settled) {
-                    Evidence evidence = evidence(watcher, abstraction);
-                    Optional<String> notice = evidence.earlyNotice();
-                    notice.ifPresent(n -> {
-                        err.println("predmon: " + n);
-                        err.flush();
-                    });
-                    settled = notice.isPresent() || evidence.recognised();
-                }
-                if (!read) {
-                    Thread.sleep(pollMillis);
-                }
+    private static int fleetCode(List<Integer> codes) {
+        for (int c : new int[] {ExitCodes.WARNING, ExitCodes.NO_MATCH, ExitCodes.OK}) {
+            if (codes.contains(c)) {
+                return c;
             }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (ClosedByInterruptException e) {
-            // interrupted while reading (FileChannel reads are interruptible); the interrupt status stays set
         }
+        return ExitCodes.BAD_INPUT;
     }
 
-    /** Prints the end summary (unmapped messages to stderr) and returns the exit code of the run's verdict. */
-    private int summary(LogWatcher watcher, Abstraction abstraction, String stop) {
-        PredictiveMonitor m = watcher.monitor();
+    /** Prints a log's end summary (unmapped messages to stderr) and returns the exit code of its verdict. */
+    private int summary(WatchedLog log, WatchOutputs outputs, String stop, boolean several) {
+        PredictiveMonitor m = log.monitor();
         Map<String, Long> unmapped = m.pipeline().unmapped();
-        Problems.unmapped(err, input.log, unmapped);
-        boolean judged = evidence(watcher, abstraction).missing().isEmpty();
+        Problems.unmapped(err, log.path(), unmapped);
+        boolean judged = outputs.evidence(log).missing().isEmpty();
         List<RunOutcome> runs = m.runs();
         RunOutcome first = runs.stream().filter(r -> r.warning() != null).findFirst().orElse(runs.get(0));
         long pairs = runs.stream().mapToLong(RunOutcome::pairs).sum();
         if (input.json) {
             List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
                     r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch())).toList();
-            out.println(Json.line(new End("end", stop, m.pipeline().records(), pairs, m.warning().isPresent(),
+            End end = new End("end", stop, m.pipeline().records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), m.noMatch(), perRun,
-                    unmapped)));
+                    unmapped);
+            out.println(Json.line(several ? Json.tagged(end, log.name()) : end));
         } else {
             if (runs.size() > 1) {
                 for (RunOutcome r : runs) {
@@ -204,7 +177,7 @@ final class WatchCommand implements Callable<Integer> {
                     + (m.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
                     : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
-            out.println("end of " + input.log + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
+            out.println("end of " + log.name() + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
                     + m.pipeline().records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
         }

@@ -24,15 +24,30 @@ public final class LogWatcher implements AutoCloseable {
     private long lines;
 
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
-        this(log, monitor, problems, record -> { });
+        this(log, monitor, problems, record -> { }, record -> { });
     }
 
     /** As above; {@code seen} also gets every record, before the monitor (tests count them across rotations). */
     LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen) {
+        this(log, monitor, problems, seen, record -> { });
+    }
+
+    /**
+     * As the public constructor; {@code taken} also gets every record right after the monitor took it, so that the
+     * monitor's run and battery already include it (the live view plots each battery reading in its run).
+     */
+    public static LogWatcher withRecords(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
+                                         Consumer<LogRecord> taken) {
+        return new LogWatcher(log, monitor, problems, record -> { }, taken);
+    }
+
+    private LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
+                       Consumer<LogRecord> taken) {
         this.monitor = monitor;
         this.parser = new LogParser(record -> {
             seen.accept(record);
             monitor.accept(record);
+            taken.accept(record);
         }, problems);
         LineSink lines = parser.lineSink();
         this.follower = new LogFollower(log, new LineSink() {

@@ -70,9 +70,11 @@ class EvaluateCommandsTest {
     @Test
     void benchPrintsEveryFigureWithTinySizes() {
         Cli r = Cli.run("bench", "--batch-mb", "1", "--latency-runs", "3", "--memory-records", "20000",
-                "--learn-runs", "2", "--model-runs", "2", "--tmp", dir.toString());
+                "--learn-runs", "2", "--model-runs", "2", "--fleet-logs", "3", "--fleet-seconds", "0.2",
+                "--tmp", dir.toString());
         assertEquals(ExitCodes.OK, r.code(), r.err());
-        for (String figure : new String[] {"batch: parse", "grep -c", "latency:", "watch cpu:", "watch heap:", "learn: 2 runs"}) {
+        for (String figure : new String[] {"batch: parse", "grep -c", "latency:", "watch cpu:", "watch heap:", "learn: 2 runs",
+            "fleet: 1 log in one loop", "fleet: 3 logs in one loop"}) {
             assertTrue(r.out().contains(figure), figure + " in\n" + r.out());
         }
         assertEquals(ExitCodes.USAGE, Cli.run("bench", "--only", "nonsense").code());

@@ -1,0 +1,44 @@
+package dev.predmon.cli;
+
+import dev.predmon.hooks.CommandHooks;
+import picocli.CommandLine.Option;
+
+import java.io.PrintWriter;
+import java.time.Duration;
+
+/** {@code --on-warning CMD}, {@code --on-violation CMD} and their timeout: the warning delivered to the robot. */
+final class HookOptions {
+
+    @Option(names = "--on-warning", paramLabel = "CMD",
+            description = "Run CMD with /bin/sh -c for each warning: the event's JSON on its standard input, its main "
+                    + "fields in PREDMON_* environment variables (see the README). Never blocks the monitor; a failing "
+                    + "or slow command is reported on stderr and not run again.")
+    String onWarning;
+
+    @Option(names = "--on-violation", paramLabel = "CMD",
+            description = "Run CMD for each violation of the property, as --on-warning does for each warning.")
+    String onViolation;
+
+    private double timeoutSeconds = 10;
+
+    @Option(names = "--hook-timeout", paramLabel = "S", defaultValue = "10",
+            description = "Kill a hook command still running after S seconds (default: ${DEFAULT-VALUE}).")
+    void timeout(double seconds) {
+        if (!(seconds > 0) || Double.isInfinite(seconds)) {
+            // picocli makes this a usage error naming the option
+            throw new IllegalArgumentException("must be a positive number of seconds, got " + seconds);
+        }
+        timeoutSeconds = seconds;
+    }
+
+    /** The hooks, reporting on {@code err}; null when neither command is given. */
+    CommandHooks open(PrintWriter err) {
+        if (onWarning == null && onViolation == null) {
+            return null;
+        }
+        return new CommandHooks(onWarning, onViolation, Duration.ofMillis(Math.round(timeoutSeconds * 1000)), line -> {
+            err.println("predmon: " + line);
+            err.flush();
+        });
+    }
+}

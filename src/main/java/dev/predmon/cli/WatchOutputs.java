@@ -1,0 +1,187 @@
+package dev.predmon.cli;
+
+import dev.predmon.hooks.CommandHooks;
+import dev.predmon.live.Board;
+import dev.predmon.live.Tile;
+import dev.predmon.monitor.Fleet;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.RunOutcome;
+import dev.predmon.monitor.WatchedLog;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.ParseProblem;
+import dev.predmon.pipeline.Evidence;
+import dev.predmon.pipeline.Traces;
+
+import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * Where {@code watch}'s events go: each log's events to stdout through its own {@link EventPrinter} (each log has
+ * its own warning, hence its own lead), tagged with the log when several are watched; parse problems to stderr
+ * (with {@code --no-follow} held until the log is known to hold something to judge, so that a file that is no log
+ * gets one line, not a list); interface messages no rule maps, at their first sighting while following; to the
+ * live view's tile of the log, and warnings and violations to the hook commands, as JSON that always names the log.
+ */
+final class WatchOutputs implements Fleet.Listener, AutoCloseable {
+
+    private final PrintWriter out;
+    private final PrintWriter err;
+    private final boolean json;
+    private final boolean eliminations;
+    private final boolean several;
+    private final boolean noFollow;
+    private final String abstraction;
+    private final Map<WatchedLog, Outlet> outlets = new HashMap<>();
+    private final CommandHooks hooks;
+    private final Board board;
+    private String lastRescanFailure;
+
+    /** Where one log's events go, and what is known of its evidence so far. */
+    private static final class Outlet {
+        final EventPrinter printer;
+        final Tile tile;
+        final List<ParseProblem> held = new ArrayList<>();
+        long moreProblems;
+        ParseProblem firstProblem;
+        /** Something recognisable arrived, or the notice that nothing did was given. */
+        boolean settled;
+
+        Outlet(EventPrinter printer, Tile tile) {
+            this.printer = printer;
+            this.tile = tile;
+        }
+    }
+
+    /**
+     * @param several     whether events must name their log (several logs, or a directory or glob)
+     * @param hooks       the hook commands, or null; closed with this
+     * @param board       the live view, or null
+     * @param abstraction the abstraction's name, for messages about logs it maps nothing of
+     */
+    WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
+                 CommandHooks hooks, Board board, String abstraction) {
+        this.out = out;
+        this.err = err;
+        this.json = json;
+        this.eliminations = eliminations;
+        this.several = several;
+        this.noFollow = noFollow;
+        this.hooks = hooks;
+        this.board = board;
+        this.abstraction = abstraction;
+    }
+
+    @Override
+    public void added(WatchedLog log) {
+        outlets.put(log, new Outlet(new EventPrinter(out, json, eliminations, several ? log.name() : null),
+                board == null ? null : board.tile(log.name())));
+    }
+
+    @Override
+    public void event(WatchedLog log, MonitorEvent e) {
+        if (e instanceof MonitorEvent.Unmapped u) {
+            if (!noFollow) { // first sighting of each kind while following; with --no-follow the totals say it
+                err.println(log.name() + ":" + u.line() + ": warning: interface message no abstraction rule maps: "
+                        + u.message() + " (first of its kind; the totals come at the stop)");
+                err.flush();
+            }
+            return;
+        }
+        Outlet o = outlets.get(log);
+        o.printer.accept(e);
+        boolean hook = hooks != null && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
+        if (hook || o.tile != null) {
+            String tagged = EventPrinter.toJson(e, log.name());
+            if (o.tile != null) {
+                board.event(o.tile, e, tagged);
+            }
+            if (hook) {
+                hooks.event(log.name(), e, tagged);
+            }
+        }
+    }
+
+    @Override
+    public void record(WatchedLog log, LogRecord r) {
+        Tile tile = outlets.get(log).tile;
+        if (tile != null) {
+            tile.record(r);
+        }
+    }
+
+    /** After the first lines of a followed log, says once if nothing recognisable has arrived. */
+    @Override
+    public void grew(WatchedLog log) {
+        Outlet o = outlets.get(log);
+        if (o.tile != null) {
+            board.grew(o.tile);
+        }
+        if (!noFollow && !o.settled) {
+            Evidence evidence = evidence(log);
+            Optional<String> notice = evidence.earlyNotice();
+            notice.ifPresent(n -> {
+                err.println("predmon: " + n);
+                err.flush();
+            });
+            o.settled = notice.isPresent() || evidence.recognised();
+        }
+    }
+
+    @Override
+    public void problem(WatchedLog log, ParseProblem p) {
+        Outlet o = outlets.get(log);
+        if (o.firstProblem == null) {
+            o.firstProblem = p;
+        }
+        if (!noFollow) {
+            err.println(p.format(log.name()));
+            err.flush();
+        } else if (o.held.size() < Traces.MAX_PROBLEMS) {
+            o.held.add(p);
+        } else {
+            o.moreProblems++;
+        }
+    }
+
+    /** With {@code --no-follow}: prints the problems held for {@code log}. */
+    void flushProblems(WatchedLog log) {
+        Outlet o = outlets.get(log);
+        o.held.forEach(p -> err.println(p.format(log.name())));
+        if (o.moreProblems > 0) {
+            err.println(log.name() + ": " + o.moreProblems + " more problem(s) not shown");
+        }
+        o.held.clear();
+        err.flush();
+    }
+
+    /** What {@code log} has given so far to judge it by. */
+    Evidence evidence(WatchedLog log) {
+        PredictiveMonitor m = log.monitor();
+        long pairs = m.runs().stream().mapToLong(RunOutcome::pairs).sum();
+        return new Evidence(log.path(), log.watcher()::lines, m.pipeline().records(), m.pipeline().interfaceRecords(),
+                pairs, m.pipeline().unmapped(), abstraction, outlets.get(log).firstProblem);
+    }
+
+    @Override
+    public void rescanFailed(java.io.IOException e) {
+        String message = "predmon: looking for new logs: " + e.getMessage();
+        if (!message.equals(lastRescanFailure)) { // once, not every second
+            err.println(message);
+            err.flush();
+            lastRescanFailure = message;
+        }
+    }
+
+    @Override
+    public void close() {
+        if (hooks != null) {
+            hooks.close();
+        }
+        out.flush();
+    }
+}

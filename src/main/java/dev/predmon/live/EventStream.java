@@ -1,0 +1,95 @@
+package dev.predmon.live;
+
+import com.sun.net.httpserver.HttpExchange;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.util.Set;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * {@code /events}: Server-Sent Events, one {@code data:} line per monitor event. {@link #publish} never blocks the
+ * monitor: each client has a bounded queue, and a client that falls that far behind is disconnected (its browser
+ * reconnects by itself and reloads {@code /status}). Each connected client holds one of the server's threads, so
+ * their number is capped.
+ */
+final class EventStream implements AutoCloseable {
+
+    static final int MAX_CLIENTS = 16;
+    static final int QUEUE = 1024;
+    /** A comment line this often keeps proxies from closing the stream and finds clients that went away. */
+    static final long KEEPALIVE_MILLIS = 15_000;
+
+    /** Ends a client's stream; compared by identity, so no event can be mistaken for it. */
+    @SuppressWarnings("StringOperationCanBeSimplified")
+    private static final String CLOSE = new String("close");
+
+    private final Set<BlockingQueue<String>> clients = ConcurrentHashMap.newKeySet();
+    private volatile boolean closed;
+
+    /** Sends {@code json} (one line) to every connected client. */
+    void publish(String json) {
+        for (BlockingQueue<String> q : clients) {
+            if (!q.offer(json)) {
+                clients.remove(q);
+                q.clear();
+                q.offer(CLOSE);
+            }
+        }
+    }
+
+    int clients() {
+        return clients.size();
+    }
+
+    /** Serves one client until it goes away or the stream is closed; returns then. */
+    void serve(HttpExchange x) throws IOException {
+        if (closed || clients.size() >= MAX_CLIENTS) {
+            Responses.text(x, 503, "too many event streams open (" + MAX_CLIENTS + ")\n");
+            return;
+        }
+        BlockingQueue<String> queue = new ArrayBlockingQueue<>(QUEUE);
+        clients.add(queue);
+        try {
+            x.getResponseHeaders().set("Content-Type", "text/event-stream; charset=utf-8");
+            x.getResponseHeaders().set("Cache-Control", "no-store");
+            x.sendResponseHeaders(200, 0);
+            OutputStream out = x.getResponseBody();
+            write(out, "retry: 1000\n\n");
+            while (!closed) {
+                String next = queue.poll(KEEPALIVE_MILLIS, TimeUnit.MILLISECONDS);
+                if (next == CLOSE) {
+                    break;
+                }
+                // Events are single-line JSON; a line break would end the data line, so it is split as SSE says.
+                write(out, next == null ? ": keep-alive\n\n" : "data: " + next.replace("\n", "\ndata: ") + "\n\n");
+            }
+        } catch (IOException gone) {
+            // the client went away: nothing to tell anyone
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            clients.remove(queue);
+            x.close();
+        }
+    }
+
+    private static void write(OutputStream out, String text) throws IOException {
+        out.write(text.getBytes(StandardCharsets.UTF_8));
+        out.flush();
+    }
+
+    /** Ends every client's stream. */
+    @Override
+    public void close() {
+        closed = true;
+        for (BlockingQueue<String> q : clients) {
+            q.clear();
+            q.offer(CLOSE);
+        }
+    }
+}

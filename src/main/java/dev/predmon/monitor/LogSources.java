@@ -1,0 +1,166 @@
+package dev.predmon.monitor;
+
+import dev.predmon.BadInputException;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.FileSystems;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.NotDirectoryException;
+import java.nio.file.Path;
+import java.nio.file.PathMatcher;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Stream;
+
+/**
+ * The logs a fleet watches, as named on the command line. Each name is one of:
+ * <ul>
+ *   <li>a file, watched whether or not it exists yet (as {@code tail -F} does);</li>
+ *   <li>a directory: every {@code *.log} and {@code *.txt} file directly in it, now and as they appear (a robot that
+ *       starts later adds its log there);</li>
+ *   <li>a glob ({@code logs/robot-*.log}, quoted so that the shell leaves it alone, {@code **} for any depth): the
+ *       files below its fixed leading directories that match the rest, now and as they appear.</li>
+ * </ul>
+ * {@link #find()} lists the files in the order the names were given, each name's files sorted, each file once.
+ */
+public final class LogSources {
+
+    private static final String GLOB_CHARS = "*?[{";
+
+    /** What a name stands for, decided when it is given: a directory that goes away stays a directory. */
+    private enum Kind { FILE, DIRECTORY, GLOB }
+
+    private record Name(Path path, Kind kind) {
+    }
+
+    private final List<Name> names = new ArrayList<>();
+
+    /** @param names files, directories or globs; at least one */
+    public LogSources(List<Path> names) {
+        if (names.isEmpty()) {
+            throw new IllegalArgumentException("no log named");
+        }
+        for (Path n : names) {
+            this.names.add(new Name(n, isGlob(n) ? Kind.GLOB : Files.isDirectory(n) ? Kind.DIRECTORY : Kind.FILE));
+        }
+    }
+
+    /**
+     * Whether events must say which log they belong to: more than one name, or a name that can stand for several
+     * files. Decided from the names, not from what they match now, so that the output's shape does not change when
+     * a second file appears.
+     */
+    public boolean several() {
+        return names.size() > 1 || growing();
+    }
+
+    /** Whether new files can appear under these names (a directory or a glob), so that they are looked for again. */
+    public boolean growing() {
+        return names.stream().anyMatch(n -> n.kind() != Kind.FILE);
+    }
+
+    /** The files the names stand for now: files named as such whether or not they exist, plus what matches. */
+    public List<Path> find() throws IOException {
+        Map<Path, Path> found = new LinkedHashMap<>();
+        for (Name name : names) {
+            for (Path p : expand(name)) {
+                found.putIfAbsent(p.toAbsolutePath().normalize(), p);
+            }
+        }
+        return List.copyOf(found.values());
+    }
+
+    /**
+     * For a single pass ({@code --no-follow}): every name must stand for a file now.
+     *
+     * @throws BadInputException naming the first name that stands for none
+     */
+    public void requireFiles() throws IOException, BadInputException {
+        for (Name name : names) {
+            if (expand(name).stream().noneMatch(Files::isRegularFile)) {
+                throw new BadInputException(name.path() + switch (name.kind()) {
+                    case GLOB -> ": no file matches";
+                    case DIRECTORY -> ": is a directory with no log file (*.log, *.txt) in it";
+                    case FILE -> ": no such file";
+                });
+            }
+        }
+    }
+
+    /** What is still waited for, one phrase per name that stands for no file yet ({@code logs in DIR}, ...). */
+    public List<String> missing() throws IOException {
+        List<String> out = new ArrayList<>();
+        for (Name name : names) {
+            if (expand(name).stream().noneMatch(Files::exists)) {
+                out.add(switch (name.kind()) {
+                    case GLOB -> "logs matching " + name.path();
+                    case DIRECTORY -> "logs in " + name.path();
+                    case FILE -> name.path().toString();
+                });
+            }
+        }
+        return out;
+    }
+
+    /** The files one name stands for now (none for a directory that is gone). */
+    private static List<Path> expand(Name name) throws IOException {
+        switch (name.kind()) {
+            case GLOB:
+                return glob(name.path());
+            case DIRECTORY:
+                try (Stream<Path> files = Files.list(name.path())) {
+                    return files.filter(p -> Files.isRegularFile(p) && isLogName(p)).sorted().toList();
+                } catch (NoSuchFileException | NotDirectoryException gone) {
+                    return List.of(); // moved away or replaced: its logs are looked for again at the next rescan
+                }
+            default:
+                return List.of(name.path());
+        }
+    }
+
+    /** Whether a name is a glob rather than a file or directory. */
+    public static boolean isGlob(Path name) {
+        String s = name.toString();
+        return s.chars().anyMatch(c -> GLOB_CHARS.indexOf(c) >= 0);
+    }
+
+    /** The log files of a directory: the names the monitor's captures and yarplogger's files have. */
+    static boolean isLogName(Path p) {
+        String n = p.getFileName().toString();
+        return n.endsWith(".log") || n.endsWith(".txt");
+    }
+
+    /** Files below the glob's fixed leading directories whose path from there matches the rest of the glob. */
+    private static List<Path> glob(Path name) throws IOException {
+        int fixed = 0;
+        while (fixed < name.getNameCount() - 1 && !isGlob(name.getName(fixed))) {
+            fixed++;
+        }
+        Path root = name.getRoot();
+        Path base = fixed == 0 ? root : root == null ? name.subpath(0, fixed) : root.resolve(name.subpath(0, fixed));
+        Path from = base == null ? Path.of(".") : base; // a relative glob with no fixed directory: from here
+        if (!Files.isDirectory(from)) {
+            return List.of();
+        }
+        Path rest = name.subpath(fixed, name.getNameCount());
+        int depth = rest.toString().contains("**") ? Integer.MAX_VALUE : rest.getNameCount();
+        PathMatcher matcher = FileSystems.getDefault().getPathMatcher("glob:" + rest);
+        List<Path> out = new ArrayList<>();
+        try (Stream<Path> walk = Files.walk(from, depth)) {
+            walk.filter(Files::isRegularFile).forEach(p -> {
+                Path relative = from.relativize(p);
+                if (matcher.matches(relative)) {
+                    out.add(base == null ? relative : base.resolve(relative));
+                }
+            });
+        } catch (UncheckedIOException e) {
+            throw e.getCause(); // a directory that went away or cannot be read while walking
+        }
+        out.sort(null);
+        return out;
+    }
+}

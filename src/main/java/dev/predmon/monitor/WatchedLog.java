@@ -1,0 +1,46 @@
+package dev.predmon.monitor;
+
+import java.nio.file.Path;
+
+/**
+ * One log of a {@link Fleet}: its own {@link PredictiveMonitor} (models' states, runs, warning) and its own
+ * {@link LogWatcher}, so that logs never influence each other.
+ */
+public final class WatchedLog {
+
+    private final String name;
+    private final Path path;
+    private final PredictiveMonitor monitor;
+    private final LogWatcher watcher;
+
+    WatchedLog(Path path, Fleet.Settings settings, Fleet.Listener listener) {
+        this.path = path;
+        this.name = path.toString();
+        this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.threshold(),
+                settings.confirm(), e -> listener.event(this, e));
+        this.watcher = LogWatcher.withRecords(path, monitor, p -> listener.problem(this, p),
+                r -> listener.record(this, r));
+    }
+
+    /** The log as named on the command line or found under a directory or glob; events are tagged with it. */
+    public String name() {
+        return name;
+    }
+
+    public Path path() {
+        return path;
+    }
+
+    public PredictiveMonitor monitor() {
+        return monitor;
+    }
+
+    public LogWatcher watcher() {
+        return watcher;
+    }
+
+    @Override
+    public String toString() {
+        return name;
+    }
+}

@@ -1,0 +1,146 @@
+package dev.predmon.cli;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.sun.net.httpserver.HttpServer;
+import dev.predmon.simulate.Scenario;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.List;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+/**
+ * {@code watch --on-warning/--on-violation}: the warning reaches the robot, and the README's two recipes (a YARP
+ * port through {@code yarp write}, an HTTP endpoint through {@code curl}) work as written.
+ */
+class WatchHooksTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final Path MODELS = Path.of("models");
+
+    @TempDir
+    Path dir;
+
+    private Path log;
+
+    @BeforeEach
+    void depletedRun() throws Exception {
+        assumeTrue(Files.isExecutable(Path.of("/bin/sh")), "hook commands run with /bin/sh, which this system lacks");
+        log = Files.writeString(dir.resolve("robot-1.log"), FleetWatchTest.run(Scenario.DEPLETED, 9001));
+    }
+
+    private JsonNode event(Cli w, String kind) throws Exception {
+        for (String line : w.out().strip().split("\n")) {
+            JsonNode e = JSON.readTree(line);
+            if (e.get("event").asText().equals(kind)) {
+                return e;
+            }
+        }
+        throw new AssertionError("no " + kind + " event in " + w.out());
+    }
+
+    @Test
+    void eachWarningAndViolationRunsItsCommandOnceWithTheEventOnStdin() throws Exception {
+        Path warnings = dir.resolve("warnings");
+        Path violations = dir.resolve("violations");
+        Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow", "--json",
+                "--on-warning", "echo this-goes-nowhere; cat >> '" + warnings + "'",
+                "--on-violation", "cat >> '" + violations + "'");
+        assertEquals(ExitCodes.WARNING, w.code(), w.err());
+        JsonNode warning = event(w, "warning");
+        List<String> delivered = Files.readAllLines(warnings);
+        assertEquals(1, delivered.size(), "once: " + delivered);
+        JsonNode got = JSON.readTree(delivered.get(0));
+        assertEquals(log.toString(), got.get("log").asText(), "the hook always hears which log");
+        ((com.fasterxml.jackson.databind.node.ObjectNode) got).remove("log");
+        assertEquals(warning, got, "the same object --json prints");
+        assertEquals("violation", JSON.readTree(Files.readAllLines(violations).get(0)).get("event").asText());
+        assertTrue(!w.out().contains("this-goes-nowhere"), "a hook's stdout does not mix with --json: " + w.out());
+    }
+
+    @Test
+    void aFailingHookIsReportedAndWatchCarriesOn() throws Exception {
+        Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow",
+                "--on-warning", "exit 7");
+        assertEquals(ExitCodes.WARNING, w.code(), "the monitor's own exit code: " + w.err());
+        assertTrue(w.out().contains("VIOLATION"), "events after the failed hook are still printed: " + w.out());
+        assertTrue(w.err().contains("predmon: --on-warning: warning of " + log + " line "), w.err());
+        assertTrue(w.err().contains(": failed with exit code 7"), w.err());
+    }
+
+    @Test
+    void aTimeoutThatIsNotPositiveIsAUsageError() {
+        Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow",
+                "--on-warning", "true", "--hook-timeout", "0");
+        assertEquals(ExitCodes.USAGE, w.code(), w.err());
+        assertTrue(w.err().contains("--hook-timeout"), w.err());
+    }
+
+    /** The README's curl recipe, against an HTTP endpoint on loopback. */
+    @Test
+    void curlRecipePostsTheWarningToAnHttpEndpoint() throws Exception {
+        assumeTrue(onPath("curl"), "curl is not installed: the curl recipe cannot be tried");
+        BlockingQueue<String> bodies = new ArrayBlockingQueue<>(10);
+        HttpServer server = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 0);
+        server.createContext("/predmon/warning", x -> {
+            bodies.add(x.getRequestMethod() + " " + x.getRequestHeaders().getFirst("Content-Type") + " "
+                    + new String(x.getRequestBody().readAllBytes(), StandardCharsets.UTF_8).strip());
+            x.sendResponseHeaders(204, -1);
+            x.close();
+        });
+        server.start();
+        try {
+            String url = "http://127.0.0.1:" + server.getAddress().getPort() + "/predmon/warning";
+            Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow",
+                    "--on-warning", "curl -sS --fail --max-time 5 -H 'Content-Type: application/json' "
+                            + "--data-binary @- " + url);
+            assertEquals(ExitCodes.WARNING, w.code(), w.err());
+            String body = bodies.poll(10, TimeUnit.SECONDS);
+            assertNotNull(body, "the endpoint got nothing: " + w.err());
+            assertTrue(body.startsWith("POST application/json {\"event\":\"warning\",\"log\":"), body);
+            assertTrue(!w.err().contains("--on-warning"), "the post succeeded: " + w.err());
+        } finally {
+            server.stop(0);
+        }
+    }
+
+    /**
+     * The README's YARP recipe, with a stand-in for {@code yarp} (YARP is not installed here) that records what it
+     * was asked to write: the bottle a YARP reader on the robot gets, from the environment variables.
+     */
+    @Test
+    void yarpRecipeWritesOneBottleWithTheWarningsFields() throws Exception {
+        Path bin = Files.createDirectories(dir.resolve("bin"));
+        Path yarp = Files.writeString(bin.resolve("yarp"), "#!/bin/sh\necho \"$@\" > '" + dir.resolve("args")
+                + "'\ncat > '" + dir.resolve("bottle") + "'\n");
+        Files.setPosixFilePermissions(yarp, PosixFilePermissions.fromString("rwxr-xr-x"));
+        String recipe = "echo \"warning $PREDMON_SCENARIO $PREDMON_BATTERY $PREDMON_TIME\" | yarp write ... /robot/predmon:i";
+        Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow", "--json",
+                "--on-warning", "PATH='" + bin + "':$PATH; " + recipe);
+        JsonNode warning = event(w, "warning");
+        assertEquals("write ... /robot/predmon:i", Files.readString(dir.resolve("args")).strip());
+        assertEquals("warning depleted " + warning.get("battery").asDouble() + " " + warning.get("time").asDouble(),
+                Files.readString(dir.resolve("bottle")).strip());
+    }
+
+    private static boolean onPath(String program) {
+        String path = System.getenv("PATH");
+        return path != null && java.util.Arrays.stream(path.split(java.io.File.pathSeparator))
+                .anyMatch(d -> Files.isExecutable(Path.of(d, program)));
+    }
+}

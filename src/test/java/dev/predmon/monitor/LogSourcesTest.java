@@ -1,0 +1,78 @@
+package dev.predmon.monitor;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** How the names given to {@code watch --log} become the logs of a fleet. */
+class LogSourcesTest {
+
+    @TempDir
+    Path dir;
+
+    private Path file(String relative) throws Exception {
+        Path p = dir.resolve(relative);
+        Files.createDirectories(p.getParent());
+        return Files.writeString(p, "x");
+    }
+
+    @Test
+    void aFileIsWatchedBeforeItExistsAndADirectoryGivesItsLogsSorted() throws Exception {
+        Path missing = dir.resolve("later.log");
+        Path b = file("d/b.log");
+        Path a = file("d/a.txt");
+        file("d/a.log.truth.json");
+        file("d/sub/deeper.log");
+        LogSources s = new LogSources(List.of(missing, dir.resolve("d")));
+        assertEquals(List.of(missing, a, b), s.find());
+        assertTrue(s.several() && s.growing());
+        Path c = file("d/c.log");
+        assertEquals(List.of(missing, a, b, c), s.find(), "a log that appears later is found at the next look");
+    }
+
+    @Test
+    void aGlobMatchesBelowItsFixedDirectoriesAndAnyDepthWithTwoStars() throws Exception {
+        Path r1 = file("robots/r1/monitor.log");
+        Path r2 = file("robots/r2/monitor.log");
+        file("robots/r2/other.log");
+        Path deep = file("robots/r3/x/monitor.log");
+        assertEquals(List.of(r1, r2), new LogSources(List.of(dir.resolve("robots/*/monitor.log"))).find());
+        assertEquals(List.of(r1, r2, deep), new LogSources(List.of(dir.resolve("robots/**/monitor.log"))).find());
+        assertEquals(List.of(), new LogSources(List.of(dir.resolve("nowhere/*.log"))).find());
+    }
+
+    @Test
+    void aDirectoryThatGoesAwayStaysADirectoryAndIsLookedIntoWhenItIsBack() throws Exception {
+        Path d = Files.createDirectories(dir.resolve("d"));
+        LogSources s = new LogSources(List.of(d));
+        Files.delete(d);
+        assertEquals(List.of(), s.find(), "not taken for a log file named d");
+        assertEquals(List.of("logs in " + d), s.missing());
+        Path back = file("d/r.log");
+        assertEquals(List.of(back), s.find());
+        assertTrue(s.several());
+    }
+
+    @Test
+    void aLogNamedTwiceIsWatchedOnce() throws Exception {
+        Path a = file("a.log");
+        LogSources s = new LogSources(List.of(a, dir.resolve("./a.log"), dir.resolve("*.log")));
+        assertEquals(List.of(a), s.find());
+    }
+
+    @Test
+    void oneFileIsNotSeveralEvenIfAGlobCouldBe() throws Exception {
+        Path a = file("a.log");
+        assertFalse(new LogSources(List.of(a)).several(), "events keep their single-log shape");
+        assertFalse(new LogSources(List.of(a)).growing());
+        assertTrue(new LogSources(List.of(dir.resolve("a*.log"))).several(),
+                "decided by the name, not by how many files match it now");
+    }
+}
