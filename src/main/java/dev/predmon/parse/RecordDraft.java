@@ -17,11 +17,11 @@ final class RecordDraft {
     /** {@code null} stands for the kind label of the older layout: Command, Reply or Tick. */
     private static final String[] OLDER = {"From", "To", null, "Arguments"};
 
-    final long line;
-    private final double time;
-    private final String level;
-    private final String[] labels;
-    private final String[] values;
+    long line;
+    private double time;
+    private String level;
+    private String[] labels;
+    private String[] values;
     private RecordKind kind;
     private int next;
 
@@ -38,6 +38,24 @@ final class RecordDraft {
         this.labels = kind == null ? OLDER : CURRENT;
         this.values = new String[labels.length];
         this.kind = kind;
+    }
+
+    /**
+     * This draft, emptied and started again as {@code new RecordDraft(line, time, level, kind)} would start: a
+     * layout may reuse the draft of a record already built (its values are in the record, not in the draft).
+     */
+    RecordDraft restart(long line, double time, String level, RecordKind kind) {
+        String[] wanted = kind == null ? OLDER : CURRENT;
+        if (labels != wanted) {
+            labels = wanted;
+            values = new String[wanted.length];
+        }
+        this.line = line;
+        this.time = time;
+        this.level = level;
+        this.kind = kind;
+        this.next = 0;
+        return this;
     }
 
     /** Whether the ASCII bytes are the label expected next (any case); false for the older kind line. */
