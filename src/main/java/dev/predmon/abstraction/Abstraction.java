@@ -634,8 +634,12 @@ public final class Abstraction {
         if (r.kind() != RecordKind.REPLY || continuousInputOf.isEmpty()) {
             return Optional.empty();
         }
-        Classification c = classify(r);
-        if (!(c instanceof Classification.Mapped m)) {
+        return continuousReading(r, classify(r));
+    }
+
+    /** {@link #continuousReading(LogRecord)} of a record already classified as {@code c}: no second classification. */
+    public Optional<Map.Entry<String, Double>> continuousReading(LogRecord r, Classification c) {
+        if (r.kind() != RecordKind.REPLY || !(c instanceof Classification.Mapped m)) {
             return Optional.empty();
         }
         String input = continuousInputOf.get(m.event().symbol());

@@ -1,5 +1,6 @@
 package dev.predmon.pipeline;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogRecord;
 
@@ -8,6 +9,13 @@ public interface PipelineListener {
 
     /** Every parsed record, before abstraction (the safety monitor watches these). */
     default void record(LogRecord record) {
+    }
+
+    /**
+     * A continuous rule's reply with its raw value, by the rule's input ({@link Abstraction#continuousReading}),
+     * after {@link #record} of the same record.
+     */
+    default void reading(String input, double value) {
     }
 
     /** A compacted query/reply pair; {@code trigger} is the record whose arrival completed it. */

@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.Compactor;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordKind;
 
 import java.util.Collections;
 import java.util.Map;
@@ -56,6 +57,9 @@ public final class TracePipeline {
         Classification c = abstraction.classify(record);
         if (c instanceof Classification.Mapped m) {
             interfaceRecords++;
+            if (record.kind() == RecordKind.REPLY) {
+                abstraction.continuousReading(record, c).ifPresent(e -> listener.reading(e.getKey(), e.getValue()));
+            }
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;

@@ -42,7 +42,6 @@ public final class Traces {
 
     /** Collects each run's pairs and whether the safety monitor saw it violate the property. */
     private static final class RunCollector implements PipelineListener {
-        private final Abstraction abstraction;
         private final Optional<SafetyRule> safety;
         private Map<String, List<Double>> readings = new TreeMap<>();
         private final List<IoPair> all;
@@ -52,7 +51,6 @@ public final class Traces {
         private boolean violated;
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
-            this.abstraction = abstraction;
             this.safety = abstraction.safety();
             this.all = all;
         }
@@ -60,8 +58,11 @@ public final class Traces {
         @Override
         public void record(LogRecord record) {
             violated |= safety.isPresent() && safety.get().violatedBy(safety.get().valueOf(record));
-            abstraction.continuousReading(record)
-                    .ifPresent(e -> readings.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(e.getValue()));
+        }
+
+        @Override
+        public void reading(String input, double value) {
+            readings.computeIfAbsent(input, k -> new ArrayList<>()).add(value);
         }
 
         @Override
