@@ -121,14 +121,12 @@ public final class Evaluator {
     private Map<Path, LogTrace> readSamples(List<ScenarioSpec> specs, List<String> notes, Counter c)
             throws BadInputException {
         Map<Path, LogTrace> samples = new LinkedHashMap<>();
+        // Read on every core, then taken in order: the samples do not depend on the thread count.
+        Map<Path, LogTrace> read = ScenarioLearner.read(specs.stream().flatMap(s -> s.logs().stream()).toList(),
+                abstraction);
         for (ScenarioSpec s : specs) {
             for (Path log : s.logs()) {
-                LogTrace trace;
-                try {
-                    trace = Traces.read(log, abstraction);
-                } catch (IOException e) {
-                    throw new BadInputException(log + ": cannot read: " + e.getMessage());
-                }
+                LogTrace trace = read.get(log);
                 if (trace.samples(s.runs()).isEmpty()) {
                     notes.add(log + ": no skill-component interface message; not learned from");
                 } else {

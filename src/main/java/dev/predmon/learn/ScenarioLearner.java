@@ -9,11 +9,9 @@ import dev.predmon.pipeline.Traces;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
-import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -31,19 +29,13 @@ public final class ScenarioLearner {
         return learn(spec, abstraction, read(spec.logs(), abstraction));
     }
 
-    /** Reads logs through the shared pipeline, each once. */
+    /** Reads logs through the shared pipeline, each once, on every core ({@link Traces#readAll}), in their order. */
     public static Map<Path, LogTrace> read(Collection<Path> logs, Abstraction abstraction) throws BadInputException {
-        Map<Path, LogTrace> traces = new LinkedHashMap<>();
-        for (Path log : logs) {
-            if (!traces.containsKey(log)) {
-                try {
-                    traces.put(log, Traces.read(log, abstraction));
-                } catch (IOException e) {
-                    throw new BadInputException(log + ": cannot read: " + e.getMessage());
-                }
-            }
+        try {
+            return Traces.readAll(logs, abstraction);
+        } catch (Traces.ReadFailure e) {
+            throw new BadInputException(e.log() + ": cannot read: " + e.getMessage());
         }
-        return traces;
     }
 
     /** Learns the scenario from its logs' traces, read with {@code abstraction}. */

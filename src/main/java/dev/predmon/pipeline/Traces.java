@@ -10,10 +10,18 @@ import dev.predmon.parse.ParseProblem;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 
 /** Reads whole logs offline through the shared {@link TracePipeline}. */
 public final class Traces {
@@ -38,6 +46,86 @@ public final class Traces {
         pipeline.endOfInput();
         return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), pipeline.records(),
                 pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs());
+    }
+
+    /** A log that could not be read, with the reason ({@link #getCause()}). */
+    public static final class ReadFailure extends IOException {
+        private final Path log;
+
+        ReadFailure(Path log, IOException cause) {
+            super(cause.getMessage(), cause);
+            this.log = log;
+        }
+
+        public Path log() {
+            return log;
+        }
+    }
+
+    /** {@link #readAll(Collection, Abstraction, int)} on every core. */
+    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction) throws ReadFailure {
+        return readAll(logs, abstraction, Runtime.getRuntime().availableProcessors());
+    }
+
+    /**
+     * {@link #read Reads} each distinct log once, {@code threads} logs at a time, into a map in the order of
+     * {@code logs}. Each log's trace depends on that log alone, so the result is the same whatever the thread count:
+     * what is learned from it stays deterministic. Reading (parse, abstract, compact) is what {@code learn} and
+     * {@code evaluate} spend their time on; logs are independent, so it is spread over the cores.
+     *
+     * @throws ReadFailure for the first log, in the order of {@code logs}, that could not be read
+     */
+    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction, int threads)
+            throws ReadFailure {
+        List<Path> distinct = new ArrayList<>(new LinkedHashSet<>(logs));
+        Map<Path, LogTrace> traces = new LinkedHashMap<>();
+        if (threads <= 1 || distinct.size() <= 1) {
+            for (Path log : distinct) {
+                traces.put(log, readOne(log, abstraction));
+            }
+            return traces;
+        }
+        ExecutorService pool = Executors.newFixedThreadPool(Math.min(threads, distinct.size()), task -> {
+            Thread t = new Thread(task, "predmon-read");
+            t.setDaemon(true);
+            return t;
+        });
+        try {
+            List<Future<LogTrace>> pending = new ArrayList<>();
+            for (Path log : distinct) {
+                pending.add(pool.submit(() -> readOne(log, abstraction)));
+            }
+            for (int i = 0; i < distinct.size(); i++) {
+                traces.put(distinct.get(i), pending.get(i).get());
+            }
+            return traces;
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof ReadFailure f) {
+                throw f;
+            }
+            if (e.getCause() instanceof RuntimeException r) {
+                throw r;
+            }
+            if (e.getCause() instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new CancellationException("interrupted while reading logs");
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private static LogTrace readOne(Path log, Abstraction abstraction) throws ReadFailure {
+        try {
+            return read(log, abstraction);
+        } catch (ReadFailure e) {
+            throw e;
+        } catch (IOException e) {
+            throw new ReadFailure(log, e);
+        }
     }
 
     /** Collects each run's pairs and whether the safety monitor saw it violate the property. */
