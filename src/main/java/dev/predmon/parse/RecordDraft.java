@@ -73,9 +73,9 @@ final class RecordDraft {
         return true;
     }
 
-    /** The label expected next, as {@link #offer} compares it. */
-    String expectedLabel() {
-        return labels[next];
+    /** Takes the value of the field expected next, its label already checked ({@link #expects}) and the value trimmed. */
+    void take(String value) {
+        values[next++] = value;
     }
 
     /** Takes the next field if {@code label} is the one expected; returns whether it was. */

@@ -149,7 +149,14 @@ abstract class RecordLayout implements LogLayout {
         if (!draft.expects(b, labelStart, labelEnd - labelStart)) {
             return false;
         }
-        offerField(draft.expectedLabel(), strings.of(b, valueStart, valueEnd - valueStart));
+        // The label was checked and the value trimmed here: what offerField would do again is skipped.
+        draft.take(strings.of(b, valueStart, valueEnd - valueStart));
+        if (draft.complete()) {
+            RecordDraft done = draft;
+            draft = null;
+            records.accept(build(done));
+            spare = done;
+        }
         return true;
     }
 
