@@ -1,6 +1,6 @@
 package dev.predmon.pipeline;
 
-import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogRecord;
 
@@ -12,10 +12,11 @@ public interface PipelineListener {
     }
 
     /**
-     * A continuous rule's reply with its raw value, by the rule's input ({@link Abstraction#continuousReading}),
-     * after {@link #record} of the same record.
+     * {@code record}, after {@link #record}, was mapped by the abstraction to {@code c}'s symbol (before
+     * hysteresis): a listener that needs more of it (the noise readings) reads it from here instead of
+     * classifying the record again.
      */
-    default void reading(String input, double value) {
+    default void mapped(LogRecord record, Classification.Mapped c) {
     }
 
     /** A compacted query/reply pair; {@code trigger} is the record whose arrival completed it. */

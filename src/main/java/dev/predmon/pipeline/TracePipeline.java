@@ -4,7 +4,6 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.Compactor;
 import dev.predmon.parse.LogRecord;
-import dev.predmon.parse.RecordKind;
 
 import java.util.Collections;
 import java.util.Map;
@@ -57,9 +56,7 @@ public final class TracePipeline {
         Classification c = abstraction.classify(record);
         if (c instanceof Classification.Mapped m) {
             interfaceRecords++;
-            if (record.kind() == RecordKind.REPLY) {
-                abstraction.continuousReading(record, c).ifPresent(e -> listener.reading(e.getKey(), e.getValue()));
-            }
+            listener.mapped(record, m);
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;

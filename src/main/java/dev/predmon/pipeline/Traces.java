@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.Classification;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogReader;
@@ -130,6 +131,7 @@ public final class Traces {
 
     /** Collects each run's pairs and whether the safety monitor saw it violate the property. */
     private static final class RunCollector implements PipelineListener {
+        private final Abstraction abstraction;
         private final Optional<SafetyRule> safety;
         private Map<String, List<Double>> readings = new TreeMap<>();
         private final List<IoPair> all;
@@ -139,6 +141,7 @@ public final class Traces {
         private boolean violated;
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
+            this.abstraction = abstraction;
             this.safety = abstraction.safety();
             this.all = all;
         }
@@ -149,8 +152,9 @@ public final class Traces {
         }
 
         @Override
-        public void reading(String input, double value) {
-            readings.computeIfAbsent(input, k -> new ArrayList<>()).add(value);
+        public void mapped(LogRecord record, Classification.Mapped c) {
+            abstraction.continuousReading(record, c)
+                    .ifPresent(e -> readings.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(e.getValue()));
         }
 
         @Override
