@@ -83,6 +83,10 @@ public final class Abstraction {
     private final Map<String, List<Rule>> rulesByCommand;
     /** Symbols with {@code {loc}} already replaced, by template and abbreviation (the set is small and fixed). */
     private final Map<String, Map<String, String>> expanded = new java.util.concurrent.ConcurrentHashMap<>();
+    /** The last reply value {@link #number} parsed the slow way. */
+    private ParsedNumber lastNumber;
+    /** Recent channels, by their strings' identities ({@link #channel}). */
+    private final Channel[] channels = new Channel[64];
     private final Optional<SafetyRule> safety;
     private final int confirm;
     private final RunRule runs;
@@ -519,12 +523,37 @@ public final class Abstraction {
                         + " about unknown location '" + locationCandidate(r) + "'");
             }
             String withLoc = template;
-            template = expanded.computeIfAbsent(withLoc, t -> new java.util.concurrent.ConcurrentHashMap<>())
+            Map<String, String> byLocation = expanded.get(withLoc);
+            String known = byLocation == null ? null : byLocation.get(abbreviation);
+            // A plain look-up first: computeIfAbsent allocates its function on every call, for every record.
+            template = known != null ? known
+                    : expanded.computeIfAbsent(withLoc, t -> new java.util.concurrent.ConcurrentHashMap<>())
                     .computeIfAbsent(abbreviation, a -> withLoc.replace(AbstractionValidator.LOC, a));
         }
         AbstractEvent event = new AbstractEvent(command ? Direction.INPUT : Direction.OUTPUT, template,
-                Channel.of(r), r);
+                channel(r), r);
         return new Classification.Mapped(event);
+    }
+
+    /**
+     * {@link Channel#of} of {@code r}, the same instance as for the last record on that channel when the parser
+     * gave the same strings: a log has a handful of channels and every interface record needs its own. The table
+     * is shared by the threads reading logs in parallel without a lock: a slot holds a complete immutable channel
+     * or a stale one, and a channel is only reused after its four strings were compared.
+     */
+    private Channel channel(LogRecord r) {
+        boolean reply = r.kind() == RecordKind.REPLY;
+        String client = reply ? r.to() : r.from();
+        String server = reply ? r.from() : r.to();
+        int slot = (System.identityHashCode(client) * 31 + System.identityHashCode(r.command())) & (channels.length - 1);
+        Channel c = channels[slot];
+        if (c != null && c.client() == client && c.server() == server && c.protocol() == r.protocol()
+                && c.command() == r.command()) {
+            return c;
+        }
+        c = Channel.of(r);
+        channels[slot] = c;
+        return c;
     }
 
     private static String what(LogRecord r) {
@@ -656,13 +685,26 @@ public final class Abstraction {
         return Optional.of(Map.entry(input, value));
     }
 
-    /** The value of a numeric reply ({@code NUMBER}), else NaN. */
-    private static double number(String value) {
+    /**
+     * The value of a numeric reply ({@code NUMBER}), else NaN. A reply is read by its rule and again for the noise
+     * readings: the last text read is remembered (by identity; an immutable pair, so threads sharing this abstraction
+     * see a whole pair or another one) and a long reading, which only the JDK's parser reads exactly, is parsed once.
+     */
+    private double number(String value) {
+        ParsedNumber last = lastNumber;
+        if (last != null && last.text() == value) {
+            return last.value();
+        }
         double plain = Decimals.plain(value);
         if (!Double.isNaN(plain)) {
             return plain;
         }
-        return NUMBER.matcher(value).matches() ? Double.parseDouble(value) : Double.NaN;
+        double parsed = NUMBER.matcher(value).matches() ? Double.parseDouble(value) : Double.NaN;
+        lastNumber = new ParsedNumber(value, parsed);
+        return parsed;
+    }
+
+    private record ParsedNumber(String text, double value) {
     }
 
     /**
