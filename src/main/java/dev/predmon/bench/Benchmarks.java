@@ -108,9 +108,10 @@ public final class Benchmarks {
                     int most = o.learnRuns().stream().mapToInt(Integer::intValue).max().orElse(0);
                     if (most > 0) {
                         LearnBench.Speedup r = LearnBench.speedup(abstraction, most, o.tempDir());
-                        out.accept(f("learn reading: %d logs (%d runs per scenario, %.1f MB): 1 thread %.2f s, %d threads "
-                                        + "%.2f s: speed-up %.2fx; models byte-identical: %s (logs written in %.1f s, "
-                                        + "not counted)", r.logs(), most, r.bytes() / 1e6, r.oneSeconds(), r.threads(),
+                        out.accept(f("learn reading: %d logs (%d runs per scenario, %.1f MB), parse+abstract+compact, "
+                                        + "median of %d alternated rounds: 1 thread %.2f s, %d threads %.2f s: speed-up "
+                                        + "%.2fx; models byte-identical: %s (logs written in %.1f s, not counted)",
+                                r.logs(), most, r.bytes() / 1e6, LearnBench.ROUNDS, r.oneSeconds(), r.threads(),
                                 r.allSeconds(), r.factor(), r.identical() ? "yes" : "NO", r.prepareSeconds()));
                     }
                 }

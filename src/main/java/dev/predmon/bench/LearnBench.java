@@ -17,6 +17,7 @@ import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
@@ -45,8 +46,8 @@ final class LearnBench {
      * @param logs           logs read
      * @param bytes          their total size
      * @param threads        threads of the parallel reading (the machine's cores)
-     * @param oneSeconds     reading every log on one thread
-     * @param allSeconds     reading them on {@code threads} threads
+     * @param oneSeconds     reading every log on one thread (median of the rounds)
+     * @param allSeconds     reading them on {@code threads} threads (median of the rounds)
      * @param identical      whether the models learned from both readings are byte-identical
      * @param prepareSeconds time to simulate and write the logs (not part of either)
      */
@@ -57,13 +58,16 @@ final class LearnBench {
         }
     }
 
+    static final int ROUNDS = 3;
+
     private LearnBench() {
     }
 
     /**
      * What {@code learn} spends its time on, reading (parse, abstract, compact) {@code runs} logs per scenario, timed
      * on one thread and on every core ({@link Traces#readAll}); then the three scenarios are learned from each
-     * reading and their models compared byte for byte. A warm-up pass over a tenth of the logs comes first.
+     * reading and their models compared byte for byte. A warm-up pass over a tenth of the logs comes first; then
+     * {@value #ROUNDS} rounds of both, alternated, of which the medians are reported.
      */
     static Speedup speedup(Abstraction abstraction, int runs, Path dir) throws Exception {
         long prep = System.nanoTime();
@@ -86,12 +90,22 @@ final class LearnBench {
             double prepareSeconds = (System.nanoTime() - prep) / 1e9;
             int threads = Runtime.getRuntime().availableProcessors();
             Traces.readAll(all.subList(0, Math.max(1, all.size() / 10)), abstraction, threads);
-            long start = System.nanoTime();
-            Map<Path, LogTrace> one = Traces.readAll(all, abstraction, 1);
-            double oneSeconds = (System.nanoTime() - start) / 1e9;
-            start = System.nanoTime();
-            Map<Path, LogTrace> parallel = Traces.readAll(all, abstraction, threads);
-            double allSeconds = (System.nanoTime() - start) / 1e9;
+            Map<Path, LogTrace> one = null;
+            Map<Path, LogTrace> parallel = null;
+            double[] oneTimes = new double[ROUNDS];
+            double[] allTimes = new double[ROUNDS];
+            for (int i = 0; i < ROUNDS; i++) { // alternated, so that both see the same load and JIT state
+                long start = System.nanoTime();
+                one = Traces.readAll(all, abstraction, 1);
+                oneTimes[i] = (System.nanoTime() - start) / 1e9;
+                start = System.nanoTime();
+                parallel = Traces.readAll(all, abstraction, threads);
+                allTimes[i] = (System.nanoTime() - start) / 1e9;
+            }
+            Arrays.sort(oneTimes);
+            Arrays.sort(allTimes);
+            double oneSeconds = BatchBench.median(oneTimes);
+            double allSeconds = BatchBench.median(allTimes);
             boolean identical = models(byScenario, abstraction, one).equals(models(byScenario, abstraction, parallel));
             return new Speedup(all.size(), bytes, threads, oneSeconds, allSeconds, identical, prepareSeconds);
         } finally {
