@@ -122,8 +122,11 @@ public final class Evaluator {
             throws BadInputException {
         Map<Path, LogTrace> samples = new LinkedHashMap<>();
         // Read on every core, then taken in order: the samples do not depend on the thread count.
-        Map<Path, LogTrace> read = ScenarioLearner.read(specs.stream().flatMap(s -> s.logs().stream()).toList(),
-                abstraction);
+        List<Path> logs = specs.stream().flatMap(s -> s.logs().stream()).toList();
+        Map<Path, LogTrace> read = ScenarioLearner.read(logs, abstraction, log -> c.step("read " + log.getFileName()));
+        for (int repeated = logs.size() - read.size(); repeated > 0; repeated--) {
+            c.step("read"); // a log named twice is read once but counted twice
+        }
         for (ScenarioSpec s : specs) {
             for (Path log : s.logs()) {
                 LogTrace trace = read.get(log);
@@ -132,7 +135,6 @@ public final class Evaluator {
                 } else {
                     samples.put(log, trace);
                 }
-                c.step("read " + log.getFileName());
             }
         }
         return samples;

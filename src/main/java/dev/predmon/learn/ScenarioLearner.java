@@ -14,6 +14,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 
 /**
  * Learns one scenario: every log through the shared pipeline, conflicting runs split into groups
@@ -31,8 +32,15 @@ public final class ScenarioLearner {
 
     /** Reads logs through the shared pipeline, each once, on every core ({@link Traces#readAll}), in their order. */
     public static Map<Path, LogTrace> read(Collection<Path> logs, Abstraction abstraction) throws BadInputException {
+        return read(logs, abstraction, log -> {
+        });
+    }
+
+    /** {@link #read(Collection, Abstraction)}, telling {@code read} of each log in order as its trace is in. */
+    public static Map<Path, LogTrace> read(Collection<Path> logs, Abstraction abstraction, Consumer<Path> read)
+            throws BadInputException {
         try {
-            return Traces.readAll(logs, abstraction);
+            return Traces.readAll(logs, abstraction, Runtime.getRuntime().availableProcessors(), read);
         } catch (Traces.ReadFailure e) {
             throw new BadInputException(e.log() + ": cannot read: " + e.getMessage());
         }

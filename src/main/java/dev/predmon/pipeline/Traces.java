@@ -23,6 +23,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.function.Consumer;
 
 /** Reads whole logs offline through the shared {@link TracePipeline}. */
 public final class Traces {
@@ -63,9 +64,17 @@ public final class Traces {
         }
     }
 
-    /** {@link #readAll(Collection, Abstraction, int)} on every core. */
+    /** {@link #readAll(Collection, Abstraction, int, Consumer)} on every core. */
     public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction) throws ReadFailure {
-        return readAll(logs, abstraction, Runtime.getRuntime().availableProcessors());
+        return readAll(logs, abstraction, Runtime.getRuntime().availableProcessors(), log -> {
+        });
+    }
+
+    /** {@link #readAll(Collection, Abstraction, int, Consumer)} without progress. */
+    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction, int threads)
+            throws ReadFailure {
+        return readAll(logs, abstraction, threads, log -> {
+        });
     }
 
     /**
@@ -74,15 +83,18 @@ public final class Traces {
      * what is learned from it stays deterministic. Reading (parse, abstract, compact) is what {@code learn} and
      * {@code evaluate} spend their time on; logs are independent, so it is spread over the cores.
      *
+     * @param read receives each log once its trace is in, on the calling thread and in the order of {@code logs}
+     *             (for progress)
      * @throws ReadFailure for the first log, in the order of {@code logs}, that could not be read
      */
-    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction, int threads)
-            throws ReadFailure {
+    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction, int threads,
+                                              Consumer<Path> read) throws ReadFailure {
         List<Path> distinct = new ArrayList<>(new LinkedHashSet<>(logs));
         Map<Path, LogTrace> traces = new LinkedHashMap<>();
         if (threads <= 1 || distinct.size() <= 1) {
             for (Path log : distinct) {
                 traces.put(log, readOne(log, abstraction));
+                read.accept(log);
             }
             return traces;
         }
@@ -98,6 +110,7 @@ public final class Traces {
             }
             for (int i = 0; i < distinct.size(); i++) {
                 traces.put(distinct.get(i), pending.get(i).get());
+                read.accept(distinct.get(i));
             }
             return traces;
         } catch (ExecutionException e) {
