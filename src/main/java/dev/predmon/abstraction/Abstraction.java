@@ -63,6 +63,8 @@ import java.util.stream.Collectors;
 public final class Abstraction {
 
     private static final String DEFAULT_RESOURCE = "default-abstraction.json";
+    /** Classifications carry no state when dropped: one instance serves every record. */
+    private static final Classification DROPPED = new Classification.Dropped();
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
 
     private static final JsonMapper MAPPER = JsonMapper.builder()
@@ -81,6 +83,10 @@ public final class Abstraction {
     private final Map<String, List<Rule>> rulesByCommand;
     /** Symbols with {@code {loc}} already replaced, by template and abbreviation (the set is small and fixed). */
     private final Map<String, Map<String, String>> expanded = new java.util.concurrent.ConcurrentHashMap<>();
+    /** The last reply value {@link #number} parsed the slow way. */
+    private ParsedNumber lastNumber;
+    /** Recent channels, by their strings' identities ({@link #channel}). */
+    private final Channel[] channels = new Channel[64];
     private final Optional<SafetyRule> safety;
     private final int confirm;
     private final RunRule runs;
@@ -471,16 +477,19 @@ public final class Abstraction {
      */
     public Classification classify(LogRecord r) {
         if (r.kind() != RecordKind.COMMAND && r.kind() != RecordKind.REPLY) {
-            return new Classification.Dropped();
+            return DROPPED;
         }
-        for (DropSpec d : drop) {
-            if (dropped(d, r)) {
-                return new Classification.Dropped();
+        // Indexed loops: called for every record, and the lists' iterators were a tenth of classify's allocation.
+        for (int i = 0; i < drop.size(); i++) {
+            if (dropped(drop.get(i), r)) {
+                return DROPPED;
             }
         }
         boolean command = r.kind() == RecordKind.COMMAND;
         Rule rule = null;
-        for (Rule x : rulesByCommand.getOrDefault(r.command(), List.of())) {
+        List<Rule> candidates = rulesByCommand.getOrDefault(r.command(), List.of());
+        for (int i = 0; i < candidates.size(); i++) {
+            Rule x = candidates.get(i);
             if ((r.protocol().isEmpty() || x.protocol.equals(r.protocol()))
                     && (x.client == null || glob(x.client, command ? r.from() : r.to()))) {
                 rule = x;
@@ -495,8 +504,9 @@ public final class Abstraction {
             template = rule.input;
         } else {
             String value = r.reply();
-            double number = rule.numeric && NUMBER.matcher(value).matches() ? Double.parseDouble(value) : Double.NaN;
-            for (Reply p : rule.replies) {
+            double number = rule.numeric ? number(value) : Double.NaN;
+            for (int i = 0; i < rule.replies.size(); i++) {
+                Reply p = rule.replies.get(i);
                 if (p.matches(value, number)) {
                     template = p.symbol;
                     break;
@@ -513,12 +523,37 @@ public final class Abstraction {
                         + " about unknown location '" + locationCandidate(r) + "'");
             }
             String withLoc = template;
-            template = expanded.computeIfAbsent(withLoc, t -> new java.util.concurrent.ConcurrentHashMap<>())
+            Map<String, String> byLocation = expanded.get(withLoc);
+            String known = byLocation == null ? null : byLocation.get(abbreviation);
+            // A plain look-up first: computeIfAbsent allocates its function on every call, for every record.
+            template = known != null ? known
+                    : expanded.computeIfAbsent(withLoc, t -> new java.util.concurrent.ConcurrentHashMap<>())
                     .computeIfAbsent(abbreviation, a -> withLoc.replace(AbstractionValidator.LOC, a));
         }
         AbstractEvent event = new AbstractEvent(command ? Direction.INPUT : Direction.OUTPUT, template,
-                Channel.of(r), r);
+                channel(r), r);
         return new Classification.Mapped(event);
+    }
+
+    /**
+     * {@link Channel#of} of {@code r}, the same instance as for the last record on that channel when the parser
+     * gave the same strings: a log has a handful of channels and every interface record needs its own. The table
+     * is shared by the threads reading logs in parallel without a lock: a slot holds a complete immutable channel
+     * or a stale one, and a channel is only reused after its four strings were compared.
+     */
+    private Channel channel(LogRecord r) {
+        boolean reply = r.kind() == RecordKind.REPLY;
+        String client = reply ? r.to() : r.from();
+        String server = reply ? r.from() : r.to();
+        int slot = (System.identityHashCode(client) * 31 + System.identityHashCode(r.command())) & (channels.length - 1);
+        Channel c = channels[slot];
+        if (c != null && c.client() == client && c.server() == server && c.protocol() == r.protocol()
+                && c.command() == r.command()) {
+            return c;
+        }
+        c = Channel.of(r);
+        channels[slot] = c;
+        return c;
     }
 
     private static String what(LogRecord r) {
@@ -634,16 +669,42 @@ public final class Abstraction {
         if (r.kind() != RecordKind.REPLY || continuousInputOf.isEmpty()) {
             return Optional.empty();
         }
-        Classification c = classify(r);
-        if (!(c instanceof Classification.Mapped m)) {
+        return continuousReading(r, classify(r));
+    }
+
+    /** {@link #continuousReading(LogRecord)} of a record already classified as {@code c}: no second classification. */
+    public Optional<Map.Entry<String, Double>> continuousReading(LogRecord r, Classification c) {
+        if (r.kind() != RecordKind.REPLY || !(c instanceof Classification.Mapped m)) {
             return Optional.empty();
         }
         String input = continuousInputOf.get(m.event().symbol());
-        String value = r.reply().trim();
-        if (input == null || !NUMBER.matcher(value).matches()) {
+        double value = input == null ? Double.NaN : number(r.reply().trim());
+        if (Double.isNaN(value)) {
             return Optional.empty();
         }
-        return Optional.of(Map.entry(input, Double.parseDouble(value)));
+        return Optional.of(Map.entry(input, value));
+    }
+
+    /**
+     * The value of a numeric reply ({@code NUMBER}), else NaN. A reply is read by its rule and again for the noise
+     * readings: the last text read is remembered (by identity; an immutable pair, so threads sharing this abstraction
+     * see a whole pair or another one) and a long reading, which only the JDK's parser reads exactly, is parsed once.
+     */
+    private double number(String value) {
+        ParsedNumber last = lastNumber;
+        if (last != null && last.text() == value) {
+            return last.value();
+        }
+        double plain = Decimals.plain(value);
+        if (!Double.isNaN(plain)) {
+            return plain;
+        }
+        double parsed = NUMBER.matcher(value).matches() ? Double.parseDouble(value) : Double.NaN;
+        lastNumber = new ParsedNumber(value, parsed);
+        return parsed;
+    }
+
+    private record ParsedNumber(String text, double value) {
     }
 
     /**

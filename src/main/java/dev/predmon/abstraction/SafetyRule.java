@@ -25,8 +25,13 @@ public record SafetyRule(String name, String protocol, String command, String fr
                 || (!from.isEmpty() && !from.equals(r.from())) || (!to.isEmpty() && !to.equals(r.to()))) {
             return Double.NaN;
         }
+        String value = r.reply().trim();
+        double plain = Decimals.plain(value);
+        if (!Double.isNaN(plain)) {
+            return plain; // every reply of a watched sensor: without the JDK parser's allocations
+        }
         try {
-            return Double.parseDouble(r.reply().trim());
+            return Double.parseDouble(value);
         } catch (NumberFormatException e) {
             return Double.NaN;
         }

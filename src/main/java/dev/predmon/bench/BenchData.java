@@ -53,6 +53,11 @@ final class BenchData {
 
     /** Models of the three scenarios learned in memory from {@code runs} runs each (seeds 1..runs). */
     static ModelSet models(Abstraction abstraction, int runs) {
+        return LearnedModels.modelSet(learned(abstraction, runs), abstraction);
+    }
+
+    /** The three scenarios learned in memory from {@code runs} runs each (seeds 1..runs). */
+    static List<LearnedScenario> learned(Abstraction abstraction, int runs) {
         List<LearnedScenario> learned = new ArrayList<>();
         for (Scenario s : Scenario.values()) {
             List<MealyTrace> samples = new ArrayList<>();
@@ -62,7 +67,7 @@ final class BenchData {
             learned.add(ScenarioLearner.learnSamples(new ScenarioSpec(s.id(), s.faulty(), s.description(), List.of()),
                     samples, ModelStore.alphabetOf(abstraction)));
         }
-        return LearnedModels.modelSet(learned, abstraction);
+        return learned;
     }
 
     /**

@@ -121,20 +121,20 @@ public final class Evaluator {
     private Map<Path, LogTrace> readSamples(List<ScenarioSpec> specs, List<String> notes, Counter c)
             throws BadInputException {
         Map<Path, LogTrace> samples = new LinkedHashMap<>();
+        // Read on every core, then taken in order: the samples do not depend on the thread count.
+        List<Path> logs = specs.stream().flatMap(s -> s.logs().stream()).toList();
+        Map<Path, LogTrace> read = ScenarioLearner.read(logs, abstraction, log -> c.step("read " + log.getFileName()));
+        for (int repeated = logs.size() - read.size(); repeated > 0; repeated--) {
+            c.step("read"); // a log named twice is read once but counted twice
+        }
         for (ScenarioSpec s : specs) {
             for (Path log : s.logs()) {
-                LogTrace trace;
-                try {
-                    trace = Traces.read(log, abstraction);
-                } catch (IOException e) {
-                    throw BadInputException.cannotRead(log, e);
-                }
+                LogTrace trace = read.get(log);
                 if (trace.samples(s.runs()).isEmpty()) {
                     notes.add(log + ": no skill-component interface message; not learned from");
                 } else {
                     samples.put(log, trace);
                 }
-                c.step("read " + log.getFileName());
             }
         }
         return samples;

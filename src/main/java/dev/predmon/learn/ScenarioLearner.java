@@ -9,13 +9,12 @@ import dev.predmon.pipeline.Traces;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
-import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 
 /**
  * Learns one scenario: every log through the shared pipeline, conflicting runs split into groups
@@ -31,19 +30,20 @@ public final class ScenarioLearner {
         return learn(spec, abstraction, read(spec.logs(), abstraction));
     }
 
-    /** Reads logs through the shared pipeline, each once. */
+    /** Reads logs through the shared pipeline, each once, on every core ({@link Traces#readAll}), in their order. */
     public static Map<Path, LogTrace> read(Collection<Path> logs, Abstraction abstraction) throws BadInputException {
-        Map<Path, LogTrace> traces = new LinkedHashMap<>();
-        for (Path log : logs) {
-            if (!traces.containsKey(log)) {
-                try {
-                    traces.put(log, Traces.read(log, abstraction));
-                } catch (IOException e) {
-                    throw BadInputException.cannotRead(log, e);
-                }
-            }
+        return read(logs, abstraction, log -> {
+        });
+    }
+
+    /** {@link #read(Collection, Abstraction)}, telling {@code read} of each log in order as its trace is in. */
+    public static Map<Path, LogTrace> read(Collection<Path> logs, Abstraction abstraction, Consumer<Path> read)
+            throws BadInputException {
+        try {
+            return Traces.readAll(logs, abstraction, Runtime.getRuntime().availableProcessors(), read);
+        } catch (Traces.ReadFailure e) {
+            throw BadInputException.cannotRead(e.log(), e.getCause() instanceof java.io.IOException io ? io : e);
         }
-        return traces;
     }
 
     /** Learns the scenario from its logs' traces, read with {@code abstraction}. */

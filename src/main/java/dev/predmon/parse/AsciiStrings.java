@@ -27,6 +27,10 @@ final class AsciiStrings {
             return new String(b, offset, len, StandardCharsets.ISO_8859_1);
         }
         int end = offset + len;
+        if (isDigit(b[offset]) && isDigit(b[end - 1])) {
+            // A number (a tick, a sensor reading): they seldom repeat, and caching one costs a copy and a compare.
+            return new String(b, offset, len, StandardCharsets.ISO_8859_1);
+        }
         int h = len * 31 + b[offset] * 7 + b[end - 1] * 131 + b[offset + len / 2] * 17 + b[end - 1 - len / 3] * 5;
         int slot = (h ^ (h >>> 7)) & (SLOTS - 1);
         byte[] key = keys[slot];
@@ -37,5 +41,9 @@ final class AsciiStrings {
         keys[slot] = Arrays.copyOfRange(b, offset, end);
         strings[slot] = s;
         return s;
+    }
+
+    private static boolean isDigit(byte c) {
+        return c >= '0' && c <= '9';
     }
 }

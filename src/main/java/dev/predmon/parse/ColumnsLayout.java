@@ -27,6 +27,19 @@ final class ColumnsLayout extends RecordLayout {
     private static final Pattern ENTRY = Pattern.compile(
             "\\s*" + NUMBER + "(?:[ \\t]+" + NUMBER + ")?[ \\t]+<?(?:TRACE|DEBUG|INFO|WARNING|ERROR|FATAL)>?(?:[ \\t].*)?");
     static final Pattern TIME = Pattern.compile(NUMBER);
+    /** Exact powers of ten: a double holds 10^k exactly up to k = 22. */
+    private static final double[] POWERS_OF_TEN = new double[23];
+
+    static {
+        POWERS_OF_TEN[0] = 1;
+        for (int k = 1; k < POWERS_OF_TEN.length; k++) {
+            POWERS_OF_TEN[k] = POWERS_OF_TEN[k - 1] * 10;
+        }
+    }
+
+    /** The header's tokens, reused from line to line: a header is read for every record. */
+    private final int[] starts = new int[6];
+    private final int[] ends = new int[6];
 
     ColumnsLayout(Consumer<LogRecord> records, Consumer<ParseProblem> problems) {
         super(records, problems);
@@ -98,8 +111,6 @@ final class ColumnsLayout extends RecordLayout {
 
     /** A header of the usual shape, tokens separated by blanks and tabs; false for anything else. */
     private boolean fastHeader(byte[] b, int offset, int end) {
-        int[] starts = new int[6];
-        int[] ends = new int[6];
         int n = 0;
         int i = offset;
         while (i < end && isRegexBlank((char) b[i])) {
@@ -128,8 +139,8 @@ final class ColumnsLayout extends RecordLayout {
             return false;
         }
         int t = n == 5 ? 1 : 0;
-        double time = Double.parseDouble(new String(b, starts[t], ends[t] - starts[t], StandardCharsets.ISO_8859_1));
-        draft = new RecordDraft(lineNumber, time, strings.of(b, starts[levelAt], ends[levelAt] - starts[levelAt]), kind);
+        double time = decimal(b, starts[t], ends[t]);
+        startDraft(lineNumber, time, strings.of(b, starts[levelAt], ends[levelAt] - starts[levelAt]), kind);
         return true;
     }
 
@@ -157,6 +168,37 @@ final class ColumnsLayout extends RecordLayout {
             }
         }
         return end > start;
+    }
+
+    /**
+     * The value of a {@link #plainNumber}, exactly as {@link Double#parseDouble} gives it. With at most 2^53 as the
+     * digits' integer and at most 22 decimals, both the integer and the power of ten are exact doubles, so their
+     * quotient is the correctly rounded value (Clinger's fast path); anything longer is left to the JDK. Parsing
+     * each header's time through a string was the largest single cost of the fast path.
+     */
+    static double decimal(byte[] b, int start, int end) {
+        boolean negative = b[start] == '-';
+        long digits = 0;
+        int decimals = -1;
+        int count = 0;
+        for (int i = negative ? start + 1 : start; i < end; i++) {
+            if (b[i] == '.') {
+                decimals = 0;
+            } else {
+                if (++count > 18) {
+                    return Double.parseDouble(new String(b, start, end - start, StandardCharsets.ISO_8859_1));
+                }
+                digits = digits * 10 + (b[i] - '0');
+                if (decimals >= 0) {
+                    decimals++;
+                }
+            }
+        }
+        if (digits > (1L << 53) || decimals >= POWERS_OF_TEN.length) {
+            return Double.parseDouble(new String(b, start, end - start, StandardCharsets.ISO_8859_1));
+        }
+        double value = decimals > 0 ? digits / POWERS_OF_TEN[decimals] : (double) digits;
+        return negative ? -value : value;
     }
 
     /** Digits with at most one '.', an optional leading '-': what a log's time column holds. */

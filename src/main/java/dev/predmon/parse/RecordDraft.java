@@ -17,11 +17,11 @@ final class RecordDraft {
     /** {@code null} stands for the kind label of the older layout: Command, Reply or Tick. */
     private static final String[] OLDER = {"From", "To", null, "Arguments"};
 
-    final long line;
-    private final double time;
-    private final String level;
-    private final String[] labels;
-    private final String[] values;
+    long line;
+    private double time;
+    private String level;
+    private String[] labels;
+    private String[] values;
     private RecordKind kind;
     private int next;
 
@@ -40,6 +40,24 @@ final class RecordDraft {
         this.kind = kind;
     }
 
+    /**
+     * This draft, emptied and started again as {@code new RecordDraft(line, time, level, kind)} would start: a
+     * layout may reuse the draft of a record already built (its values are in the record, not in the draft).
+     */
+    RecordDraft restart(long line, double time, String level, RecordKind kind) {
+        String[] wanted = kind == null ? OLDER : CURRENT;
+        if (labels != wanted) {
+            labels = wanted;
+            values = new String[wanted.length];
+        }
+        this.line = line;
+        this.time = time;
+        this.level = level;
+        this.kind = kind;
+        this.next = 0;
+        return this;
+    }
+
     /** Whether the ASCII bytes are the label expected next (any case); false for the older kind line. */
     boolean expects(byte[] b, int offset, int len) {
         String wanted = labels[next];
@@ -55,9 +73,9 @@ final class RecordDraft {
         return true;
     }
 
-    /** The label expected next, as {@link #offer} compares it. */
-    String expectedLabel() {
-        return labels[next];
+    /** Takes the value of the field expected next, its label already checked ({@link #expects}) and the value trimmed. */
+    void take(String value) {
+        values[next++] = value;
     }
 
     /** Takes the next field if {@code label} is the one expected; returns whether it was. */

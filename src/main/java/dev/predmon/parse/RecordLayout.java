@@ -18,6 +18,8 @@ abstract class RecordLayout implements LogLayout {
     private final Consumer<ParseProblem> problems;
     final AsciiStrings strings = new AsciiStrings();
     RecordDraft draft;
+    /** The draft of the last record built, which {@link #startDraft} reuses; {@code null} if none. */
+    private RecordDraft spare;
     /** The number of the line being read. */
     long lineNumber;
 
@@ -98,7 +100,15 @@ abstract class RecordLayout implements LogLayout {
             RecordDraft done = draft;
             draft = null;
             records.accept(build(done));
+            spare = done;
         }
+    }
+
+    /** Starts a record of the current shape, reusing the last record's draft: one fewer allocation per record. */
+    final void startDraft(long line, double time, String level, RecordKind kind) {
+        RecordDraft reused = spare;
+        spare = null;
+        draft = reused == null ? new RecordDraft(line, time, level, kind) : reused.restart(line, time, level, kind);
     }
 
     /**
@@ -139,7 +149,14 @@ abstract class RecordLayout implements LogLayout {
         if (!draft.expects(b, labelStart, labelEnd - labelStart)) {
             return false;
         }
-        offerField(draft.expectedLabel(), strings.of(b, valueStart, valueEnd - valueStart));
+        // The label was checked and the value trimmed here: what offerField would do again is skipped.
+        draft.take(strings.of(b, valueStart, valueEnd - valueStart));
+        if (draft.complete()) {
+            RecordDraft done = draft;
+            draft = null;
+            records.accept(build(done));
+            spare = done;
+        }
         return true;
     }
 

@@ -1,5 +1,6 @@
 package dev.predmon.pipeline;
 
+import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogRecord;
 
@@ -15,6 +16,14 @@ public interface PipelineListener {
      * reported, never silently dropped.
      */
     default void unmapped(String key, LogRecord record) {
+    }
+
+    /**
+     * {@code record}, after {@link #record}, was mapped by the abstraction to {@code c}'s symbol (before
+     * hysteresis): a listener that needs more of it (the noise readings) reads it from here instead of
+     * classifying the record again.
+     */
+    default void mapped(LogRecord record, Classification.Mapped c) {
     }
 
     /** A compacted query/reply pair; {@code trigger} is the record whose arrival completed it. */

@@ -56,6 +56,7 @@ public final class TracePipeline {
         Classification c = abstraction.classify(record);
         if (c instanceof Classification.Mapped m) {
             interfaceRecords++;
+            listener.mapped(record, m);
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;

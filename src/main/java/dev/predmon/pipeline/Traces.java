@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.Classification;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogReader;
@@ -12,10 +13,19 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.function.Consumer;
 
 /** Reads whole logs offline through the shared {@link TracePipeline}. */
 public final class Traces {
@@ -42,6 +52,98 @@ public final class Traces {
                 pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs());
     }
 
+    /** A log that could not be read, with the reason ({@link #getCause()}). */
+    public static final class ReadFailure extends IOException {
+        private final Path log;
+
+        ReadFailure(Path log, IOException cause) {
+            super(cause.getMessage(), cause);
+            this.log = log;
+        }
+
+        public Path log() {
+            return log;
+        }
+    }
+
+    /** {@link #readAll(Collection, Abstraction, int, Consumer)} on every core. */
+    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction) throws ReadFailure {
+        return readAll(logs, abstraction, Runtime.getRuntime().availableProcessors(), log -> {
+        });
+    }
+
+    /** {@link #readAll(Collection, Abstraction, int, Consumer)} without progress. */
+    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction, int threads)
+            throws ReadFailure {
+        return readAll(logs, abstraction, threads, log -> {
+        });
+    }
+
+    /**
+     * {@link #read Reads} each distinct log once, {@code threads} logs at a time, into a map in the order of
+     * {@code logs}. Each log's trace depends on that log alone, so the result is the same whatever the thread count:
+     * what is learned from it stays deterministic. Reading (parse, abstract, compact) is what {@code learn} and
+     * {@code evaluate} spend their time on; logs are independent, so it is spread over the cores.
+     *
+     * @param read receives each log once its trace is in, on the calling thread and in the order of {@code logs}
+     *             (for progress)
+     * @throws ReadFailure for the first log, in the order of {@code logs}, that could not be read
+     */
+    public static Map<Path, LogTrace> readAll(Collection<Path> logs, Abstraction abstraction, int threads,
+                                              Consumer<Path> read) throws ReadFailure {
+        List<Path> distinct = new ArrayList<>(new LinkedHashSet<>(logs));
+        Map<Path, LogTrace> traces = new LinkedHashMap<>();
+        if (threads <= 1 || distinct.size() <= 1) {
+            for (Path log : distinct) {
+                traces.put(log, readOne(log, abstraction));
+                read.accept(log);
+            }
+            return traces;
+        }
+        ExecutorService pool = Executors.newFixedThreadPool(Math.min(threads, distinct.size()), task -> {
+            Thread t = new Thread(task, "predmon-read");
+            t.setDaemon(true);
+            return t;
+        });
+        try {
+            List<Future<LogTrace>> pending = new ArrayList<>();
+            for (Path log : distinct) {
+                pending.add(pool.submit(() -> readOne(log, abstraction)));
+            }
+            for (int i = 0; i < distinct.size(); i++) {
+                traces.put(distinct.get(i), pending.get(i).get());
+                read.accept(distinct.get(i));
+            }
+            return traces;
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof ReadFailure f) {
+                throw f;
+            }
+            if (e.getCause() instanceof RuntimeException r) {
+                throw r;
+            }
+            if (e.getCause() instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new CancellationException("interrupted while reading logs");
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private static LogTrace readOne(Path log, Abstraction abstraction) throws ReadFailure {
+        try {
+            return read(log, abstraction);
+        } catch (ReadFailure e) {
+            throw e;
+        } catch (IOException e) {
+            throw new ReadFailure(log, e);
+        }
+    }
+
     /** Collects each run's pairs and whether the safety monitor saw it violate the property. */
     private static final class RunCollector implements PipelineListener {
         private final Abstraction abstraction;
@@ -62,7 +164,11 @@ public final class Traces {
         @Override
         public void record(LogRecord record) {
             violated |= safety.isPresent() && safety.get().violatedBy(safety.get().valueOf(record));
-            abstraction.continuousReading(record)
+        }
+
+        @Override
+        public void mapped(LogRecord record, Classification.Mapped c) {
+            abstraction.continuousReading(record, c)
                     .ifPresent(e -> readings.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(e.getValue()));
         }
 
