@@ -39,9 +39,7 @@ class BadInputCliTest {
     void learn() throws Exception {
         logs = tmp.resolve("logs");
         models = tmp.resolve("models");
-        CliEndToEndTest.scenario(logs, "recharge", false, HandRuns.recharge().text());
-        CliEndToEndTest.scenario(logs, "depleted", true, HandRuns.depleted().text());
-        assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
+        CliEndToEndTest.learnHandRuns(logs, models, "recharge");
     }
 
     private Cli watch(Path log, String... more) {

@@ -24,6 +24,16 @@ class CliEndToEndTest {
     Path logs;
     Path models;
 
+    /**
+     * Learns the hand-written recharge (nominal, named {@code nominal}) and depleted (faulty) runs from
+     * {@code logs} into {@code models}, as most CLI tests need before they judge a log.
+     */
+    static void learnHandRuns(Path logs, Path models, String nominal) throws Exception {
+        scenario(logs, nominal, false, HandRuns.recharge().text());
+        scenario(logs, "depleted", true, HandRuns.depleted().text());
+        assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
+    }
+
     static void scenario(Path logs, String name, boolean faulty, String... texts) throws Exception {
         Path dir = Files.createDirectories(logs.resolve(name));
         Files.writeString(dir.resolve("scenario.json"), "{\"faulty\": " + faulty + ", \"description\": \"" + name + "\"}");

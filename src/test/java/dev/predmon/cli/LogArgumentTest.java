@@ -29,9 +29,7 @@ class LogArgumentTest {
     void learn() throws Exception {
         Path logs = tmp.resolve("logs");
         models = tmp.resolve("models");
-        CliEndToEndTest.scenario(logs, "recharge", false, HandRuns.recharge().text());
-        CliEndToEndTest.scenario(logs, "depleted", true, HandRuns.depleted().text());
-        assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
+        CliEndToEndTest.learnHandRuns(logs, models, "recharge");
     }
 
     /** The four commands' arguments for {@code log}. */

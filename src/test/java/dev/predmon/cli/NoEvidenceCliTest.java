@@ -30,9 +30,7 @@ class NoEvidenceCliTest {
     void learn() throws Exception {
         Path logs = tmp.resolve("logs");
         models = tmp.resolve("models");
-        CliEndToEndTest.scenario(logs, "direct", false, HandRuns.recharge().text());
-        CliEndToEndTest.scenario(logs, "depleted", true, HandRuns.depleted().text());
-        assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
+        CliEndToEndTest.learnHandRuns(logs, models, "direct");
     }
 
     private List<Cli> allFour(Path log) {

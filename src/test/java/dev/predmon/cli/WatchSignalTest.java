@@ -37,9 +37,7 @@ class WatchSignalTest {
     void learn() throws Exception {
         Path logs = tmp.resolve("logs");
         models = tmp.resolve("models");
-        CliEndToEndTest.scenario(logs, "recharge", false, HandRuns.recharge().text());
-        CliEndToEndTest.scenario(logs, "depleted", true, HandRuns.depleted().text());
-        assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
+        CliEndToEndTest.learnHandRuns(logs, models, "recharge");
     }
 
     /** A child {@code watch} with its stdout collected line by line. */
