@@ -1,39 +1,22 @@
 package dev.predmon.abstraction;
 
-import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.DeserializationFeature;
-import com.fasterxml.jackson.databind.JsonMappingException;
-import com.fasterxml.jackson.databind.MapperFeature;
-import com.fasterxml.jackson.databind.SerializationFeature;
-import com.fasterxml.jackson.databind.exc.MismatchedInputException;
-import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
-import com.fasterxml.jackson.databind.json.JsonMapper;
 import dev.predmon.abstraction.AbstractionSpec.DropSpec;
 import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
-import java.util.HexFormat;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.regex.Pattern;
-import java.util.stream.Collectors;
 
 /**
  * The abstraction of the skill-component interface, loaded from JSON (thesis Tables 4.1/4.2, Section 5.2).
@@ -62,18 +45,10 @@ import java.util.stream.Collectors;
  */
 public final class Abstraction {
 
-    private static final String DEFAULT_RESOURCE = "default-abstraction.json";
     /** Classifications carry no state when dropped: one instance serves every record. */
     private static final Classification DROPPED = new Classification.Dropped();
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
 
-    private static final JsonMapper MAPPER = JsonMapper.builder()
-            .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
-            .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
-            .disable(MapperFeature.ALLOW_COERCION_OF_SCALARS)
-            .enable(MapperFeature.SORT_PROPERTIES_ALPHABETICALLY)
-            .enable(SerializationFeature.ORDER_MAP_ENTRIES_BY_KEYS)
-            .build();
 
     private final String name;
     private final List<DropSpec> drop;
@@ -229,11 +204,11 @@ public final class Abstraction {
             this.fingerprint = fingerprintOf.fingerprint;
         } else {
             try {
-                this.canonicalJson = MAPPER.writeValueAsString(spec);
+                this.canonicalJson = AbstractionFiles.MAPPER.writeValueAsString(spec);
             } catch (JsonProcessingException e) {
                 throw new IllegalStateException("cannot serialise a validated abstraction", e);
             }
-            this.fingerprint = sha256(canonicalJson);
+            this.fingerprint = AbstractionFiles.sha256(canonicalJson);
         }
     }
 
@@ -322,7 +297,6 @@ public final class Abstraction {
      * public SCOPE recordings show).
      */
     public static final List<String> BUILTIN_NAMES = List.of("thesis", "scope-fetch");
-    private static final Map<String, String> BUILTIN = Map.of("thesis", DEFAULT_RESOURCE, "scope-fetch", "scope-fetch.json");
 
     /** The embedded default: the built-in {@code thesis}. */
     public static Abstraction defaults() {
@@ -331,43 +305,17 @@ public final class Abstraction {
 
     /** The built-in abstraction of that name, if there is one. */
     public static Optional<Abstraction> builtin(String name) {
-        String resource = BUILTIN.get(name);
-        if (resource == null) {
-            return Optional.empty();
-        }
-        try {
-            return Optional.of(fromJson("(built-in " + name + ")", builtinJson(name).orElseThrow()));
-        } catch (AbstractionException e) {
-            // The resource ships with the code and is tested, so this is a build defect, not user input.
-            throw new IllegalStateException("the built-in abstraction " + name + " is broken: " + e.getMessage(), e);
-        }
+        return AbstractionFiles.builtin(name);
     }
 
     /** The JSON text of a built-in abstraction, as shipped, for users to start their own from. */
     public static Optional<String> builtinJson(String name) {
-        String resource = BUILTIN.get(name);
-        if (resource == null) {
-            return Optional.empty();
-        }
-        try (InputStream in = Abstraction.class.getResourceAsStream(resource)) {
-            if (in == null) {
-                throw new IllegalStateException("resource " + resource + " is missing from the build");
-            }
-            return Optional.of(new String(in.readAllBytes(), StandardCharsets.UTF_8));
-        } catch (IOException e) {
-            throw new IllegalStateException("cannot read the built-in abstraction " + name, e);
-        }
+        return AbstractionFiles.builtinJson(name);
     }
 
     /** Loads and validates an abstraction file. */
     public static Abstraction load(Path file) throws AbstractionException {
-        String text;
-        try {
-            text = Files.readString(file, StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            throw new AbstractionException(file + ": cannot read: " + dev.predmon.BadInputException.reason(e), e);
-        }
-        return fromJson(file.toString(), text);
+        return AbstractionFiles.load(file);
     }
 
     /**
@@ -377,93 +325,12 @@ public final class Abstraction {
      * @throws AbstractionException one line, {@code source:line:column: reason}, on the first problem
      */
     public static Abstraction fromJson(String source, String json) throws AbstractionException {
-        LocatedJson tree;
-        try {
-            tree = LocatedJson.parse(MAPPER.getFactory(), json);
-        } catch (JsonProcessingException e) {
-            throw new AbstractionException(position(source, e.getLocation()) + "invalid JSON: "
-                    + firstLine(e.getOriginalMessage()), e);
-        } catch (IOException e) {
-            throw new AbstractionException(source + ": cannot read: " + e, e);
-        }
-        AbstractionSpec spec;
-        try {
-            if (!tree.root().isObject()) {
-                throw new AbstractionException(position(source, tree.locate("")) + "expected a JSON object at the top");
-            }
-            spec = MAPPER.treeToValue(tree.root(), AbstractionSpec.class);
-        } catch (JsonMappingException e) {
-            String pointer = pointer(e);
-            String reason;
-            if (e instanceof UnrecognizedPropertyException u) {
-                reason = "unknown key '" + u.getPropertyName() + "' (allowed: " + u.getKnownPropertyIds().stream()
-                        .map(Object::toString).sorted().collect(Collectors.joining(", ")) + ")";
-            } else if (e instanceof MismatchedInputException m && m.getTargetType() != null) {
-                reason = "expected " + describe(m.getTargetType());
-            } else {
-                reason = firstLine(e.getOriginalMessage());
-            }
-            throw new AbstractionException(position(source, tree.locate(pointer)) + at(pointer) + reason, e);
-        } catch (JsonProcessingException e) {
-            throw new AbstractionException(source + ": " + firstLine(e.getOriginalMessage()), e);
-        }
-        try {
-            AbstractionValidator.validate(spec);
-        } catch (AbstractionValidator.Invalid e) {
-            throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
-        }
+        return AbstractionFiles.fromJson(source, json);
+    }
+
+    /** The abstraction of a validated spec. */
+    static Abstraction of(AbstractionSpec spec) {
         return new Abstraction(spec);
-    }
-
-    private static String describe(Class<?> type) {
-        if (Number.class.isAssignableFrom(type)) {
-            return "a number";
-        }
-        if (type == String.class) {
-            return "a string";
-        }
-        if (type == Boolean.class) {
-            return "true or false";
-        }
-        return java.util.Collection.class.isAssignableFrom(type) ? "an array" : "an object";
-    }
-
-    private static String at(String pointer) {
-        return pointer.isEmpty() ? "" : LocatedJson.readable(pointer) + ": ";
-    }
-
-    private static String pointer(JsonMappingException e) {
-        StringBuilder b = new StringBuilder();
-        for (JsonMappingException.Reference ref : e.getPath()) {
-            if (ref.getFieldName() != null) {
-                b.append('/').append(LocatedJson.escape(ref.getFieldName()));
-            } else if (ref.getIndex() >= 0) {
-                b.append('/').append(ref.getIndex());
-            }
-        }
-        return b.toString();
-    }
-
-    private static String position(String source, JsonLocation l) {
-        if (l == null || l.getLineNr() < 1) {
-            return source + ": ";
-        }
-        return source + ":" + l.getLineNr() + ":" + l.getColumnNr() + ": ";
-    }
-
-    private static String firstLine(String message) {
-        String m = message == null ? "" : message.strip();
-        int nl = m.indexOf('\n');
-        return nl < 0 ? m : m.substring(0, nl).strip();
-    }
-
-    private static String sha256(String text) {
-        try {
-            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256")
-                    .digest(text.getBytes(StandardCharsets.UTF_8)));
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException("every Java platform has SHA-256", e);
-        }
     }
 
     /**
