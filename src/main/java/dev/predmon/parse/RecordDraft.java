@@ -130,17 +130,6 @@ final class RecordDraft {
         return new LogRecord(line, at, level, kind, values[0], values[1], "", values[2], arguments, reply, clock);
     }
 
-    /** The kind of the record being read ({@code null} until the older shape's kind line). */
-    RecordKind kind() {
-        return kind;
-    }
-
-    /** The value of the {@code Arguments} field once read, else {@code null}. */
-    String arguments() {
-        int at = labels == CURRENT ? 4 : 3;
-        return next > at ? values[at] : null;
-    }
-
     private static RecordKind olderKind(String label) {
         for (RecordKind candidate : new RecordKind[] {RecordKind.COMMAND, RecordKind.REPLY, RecordKind.TICK}) {
             if (candidate.name().equalsIgnoreCase(label)) {
