@@ -9,15 +9,12 @@ import dev.predmon.simulate.Simulator;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
-import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -130,25 +127,17 @@ class FleetWatchTest {
     @Timeout(60)
     void aLogThatAppearsInAWatchedDirectoryIsFollowed() throws Exception {
         Path robots = Files.createDirectories(dir.resolve("fleet"));
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        AtomicInteger code = new AtomicInteger(-1);
-        Thread watch = new Thread(() -> code.set(cl.execute("watch", "--log", robots.toString(), "--models",
-                MODELS.toString(), "--json")), "watch");
-        watch.start();
+        Cli.Running watch = Cli.start("watch", "--log", robots.toString(), "--models", MODELS.toString(), "--json");
+        StringWriter out = watch.out();
+        StringWriter err = watch.err();
         await(() -> err.toString().contains("waiting for logs in " + robots), "announces that it waits");
         Path quiet = Files.writeString(robots.resolve("robot-2.log"), run(Scenario.RECHARGE, 9002));
         Path late = robots.resolve("robot-7.log");
         Files.writeString(late, run(Scenario.DEPLETED, 9001));
         await(() -> out.toString().contains("\"event\":\"warning\",\"log\":\"" + late + "\""), "warns on the new log");
         await(() -> out.toString().contains("\"log\":\"" + quiet + "\""), "follows the other one");
-        watch.interrupt();
-        watch.join(10_000);
-        assertFalse(watch.isAlive());
-        assertEquals(ExitCodes.WARNING, code.get(), err.toString());
+        watch.stop();
+        assertEquals(ExitCodes.WARNING, watch.code().get(), err.toString());
         assertFalse(out.toString().contains("\"event\":\"warning\",\"log\":\"" + quiet + "\""), out.toString());
     }
 

@@ -134,10 +134,10 @@ class LiveBrowserTest {
                 + cut(other, first(otherTruth, "warning").get("line").asLong(),
                 first(otherTruth, "violation").get("line").asLong())[1]);
 
-        LiveViewTest.Watch watch = LiveViewTest.watch("watch", "--log", robots.toString(), "--models", MODELS.toString(),
+        Cli.Running watch = Cli.start("watch", "--log", robots.toString(), "--models", MODELS.toString(),
                 "--http", "0", "--stale-after", "60");
         try (HeadlessChromium browser = HeadlessChromium.start(chromium.get(), 1400, 940)) {
-            URI url = watch.url();
+            URI url = LiveViewTest.url(watch);
             HeadlessChromium.Page page = browser.open(url);
             List<String> seen = new ArrayList<>();
 

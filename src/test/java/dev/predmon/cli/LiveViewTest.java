@@ -7,10 +7,7 @@ import dev.predmon.simulate.Scenario;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.net.ServerSocket;
 import java.net.InetAddress;
 import java.net.URI;
@@ -27,12 +24,10 @@ import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -49,32 +44,12 @@ class LiveViewTest {
     @TempDir
     Path dir;
 
-    /** A running {@code watch}, in-process. */
-    record Watch(Thread thread, StringWriter out, StringWriter err, AtomicInteger code) {
-        URI url() throws InterruptedException {
-            FleetWatchTest.await(() -> err.toString().contains("live view on "), "announces the live view");
-            Matcher m = Pattern.compile("live view on (\\S+)").matcher(err.toString());
-            assertTrue(m.find());
-            return URI.create(m.group(1));
-        }
-
-        void stop() throws InterruptedException {
-            thread.interrupt();
-            thread.join(10_000);
-            assertFalse(thread.isAlive());
-        }
-    }
-
-    static Watch watch(String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        AtomicInteger code = new AtomicInteger(-1);
-        Thread t = new Thread(() -> code.set(cl.execute(args)), "watch");
-        t.start();
-        return new Watch(t, out, err, code);
+    /** The address a running {@code watch --http} announces. */
+    static URI url(Cli.Running w) throws InterruptedException {
+        FleetWatchTest.await(() -> w.err().toString().contains("live view on "), "announces the live view");
+        Matcher m = Pattern.compile("live view on (\\S+)").matcher(w.err().toString());
+        assertTrue(m.find());
+        return URI.create(m.group(1));
     }
 
     private HttpResponse<String> get(URI uri, String path) throws Exception {
@@ -85,8 +60,8 @@ class LiveViewTest {
     @Timeout(60)
     void eventsStreamWhatJsonPrintsWithTheLogAndStatusShowsTheTile() throws Exception {
         Path log = dir.resolve("robot-1.log");
-        Watch w = watch("watch", "--log", log.toString(), "--models", MODELS.toString(), "--json", "--http", "0");
-        URI url = w.url();
+        Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString(), "--json", "--http", "0");
+        URI url = url(w);
         assertEquals("127.0.0.1", url.getHost(), "loopback by default");
 
         JsonNode before = JSON.readTree(get(url, "/status").body()).get("logs").get(0);
@@ -138,8 +113,8 @@ class LiveViewTest {
     @Test
     @Timeout(30)
     void theServerOnlyShowsAndOnlyToLoopbackNames() throws Exception {
-        Watch w = watch("watch", "--log", dir.resolve("a.log").toString(), "--models", MODELS.toString(), "--http", "0");
-        URI url = w.url();
+        Cli.Running w = Cli.start("watch", "--log", dir.resolve("a.log").toString(), "--models", MODELS.toString(), "--http", "0");
+        URI url = url(w);
         HttpResponse<String> page = get(url, "/");
         assertEquals(200, page.statusCode());
         assertTrue(page.headers().firstValue("Content-Security-Policy").orElse("").contains("default-src 'none'"));

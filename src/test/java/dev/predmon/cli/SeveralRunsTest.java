@@ -14,16 +14,13 @@ import dev.predmon.simulate.SimRun;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
-import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicInteger;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -139,14 +136,9 @@ class SeveralRunsTest {
         Path full = day("live-src.log", 51, Scenario.DEPLETED, Scenario.DIRECT, Scenario.DEPLETED);
         Path log = dir.resolve("live.log");
         Files.write(log, new byte[0]);
-        StringWriter out = new StringWriter();
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(new StringWriter(), true));
-        AtomicInteger code = new AtomicInteger(-1);
-        Thread watcher = new Thread(() -> code.set(cl.execute("watch", "--log", log.toString(), "--models",
-                MODELS.toString(), "--poll-ms", "2", "--json")), "watch");
-        watcher.start();
+        Cli.Running watch = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString(), "--poll-ms", "2",
+                "--json");
+        StringWriter out = watch.out();
         byte[] bytes = Files.readAllBytes(full);
         for (int from = 0; from < bytes.length; from += 4096) {
             Files.write(log, java.util.Arrays.copyOfRange(bytes, from, Math.min(bytes.length, from + 4096)),
@@ -158,8 +150,7 @@ class SeveralRunsTest {
             Thread.sleep(20);
         }
         Thread.sleep(300);
-        watcher.interrupt();
-        watcher.join(5_000);
+        watch.stop();
         List<JsonNode> warnings = new ArrayList<>();
         for (String line : out.toString().strip().split("\n")) {
             JsonNode e = JSON.readTree(line);
@@ -167,7 +158,7 @@ class SeveralRunsTest {
                 warnings.add(e);
             }
         }
-        assertEquals(ExitCodes.WARNING, code.get(), "stopped after warnings");
+        assertEquals(ExitCodes.WARNING, watch.code().get(), "stopped after warnings");
         assertEquals(List.of(0, 2), warnings.stream().map(w -> w.get("run").asInt()).toList(),
                 "the two depleted runs are warned, each in its run: " + out);
     }

@@ -40,15 +40,9 @@ class WatchFollowTest {
         assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
 
         Path log = tmp.resolve("later/run.log");
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        AtomicInteger code = new AtomicInteger(-1);
-        Thread watcher = new Thread(() -> code.set(cl.execute("watch", "--log", log.toString(), "--models",
-                models.toString(), "--poll-ms", "5")), "watch");
-        watcher.start();
+        Cli.Running watch = Cli.start("watch", "--log", log.toString(), "--models", models.toString(), "--poll-ms", "5");
+        StringWriter out = watch.out();
+        StringWriter err = watch.err();
 
         await(() -> err.toString().contains("waiting for " + log), "announces that it waits");
         Thread.sleep(100); // a few polls on a file that is not there
@@ -61,12 +55,10 @@ class WatchFollowTest {
             Thread.sleep(2);
         }
         await(() -> out.toString().contains("WARNING"), "warns");
-        assertTrue(watcher.isAlive(), "follows on after the warning");
+        assertTrue(watch.thread().isAlive(), "follows on after the warning");
 
-        watcher.interrupt();
-        watcher.join(5_000);
-        assertFalse(watcher.isAlive(), "stops when interrupted");
-        assertEquals(ExitCodes.WARNING, code.get(), "interrupted after a warning: " + err);
+        watch.stop();
+        assertEquals(ExitCodes.WARNING, watch.code().get(), "interrupted after a warning: " + err);
         assertFalse(err.toString().contains("internal error"), err.toString());
         assertTrue(out.toString().contains("end of " + log + " (stopped: interrupted): "), out.toString());
         assertTrue(out.toString().contains("; warning raised, property "), out.toString());
