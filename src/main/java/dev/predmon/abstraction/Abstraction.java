@@ -1,7 +1,6 @@
 package dev.predmon.abstraction;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
-import dev.predmon.abstraction.AbstractionSpec.DropSpec;
 import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
 import dev.predmon.parse.LogRecord;
@@ -16,7 +15,6 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
-import java.util.regex.Pattern;
 
 /**
  * The abstraction of the skill-component interface, loaded from JSON (thesis Tables 4.1/4.2, Section 5.2).
@@ -45,23 +43,12 @@ import java.util.regex.Pattern;
  */
 public final class Abstraction {
 
-    /** Classifications carry no state when dropped: one instance serves every record. */
-    private static final Classification DROPPED = new Classification.Dropped();
-    private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
 
 
     private final String name;
-    private final List<DropSpec> drop;
     private final Map<String, String> locations;
-    private final List<Rule> rules;
-    /** Rules by command, in file order: classify runs once per record. */
-    private final Map<String, List<Rule>> rulesByCommand;
-    /** Symbols with {@code {loc}} already replaced, by template and abbreviation (the set is small and fixed). */
-    private final Map<String, Map<String, String>> expanded = new java.util.concurrent.ConcurrentHashMap<>();
-    /** The last reply value {@link #number} parsed the slow way. */
-    private ParsedNumber lastNumber;
-    /** Recent channels, by their strings' identities ({@link #channel}). */
-    private final Channel[] channels = new Channel[64];
+    /** The compiled drop filters and rules: what {@link #classify} decides. */
+    private final Rules rules;
     private final Optional<SafetyRule> safety;
     private final int confirm;
     private final RunRule runs;
@@ -83,29 +70,6 @@ public final class Abstraction {
     /** The Mealy input alphabet: inputs, plus each carried input after each answer of its rule, sorted. */
     private final List<String> mealyInputs;
 
-    /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
-    private record Rule(String protocol, String command, String client, String input, List<Reply> replies,
-                        boolean numeric) {
-        boolean usesLocation() {
-            return input.contains(AbstractionValidator.LOC)
-                    || replies.stream().anyMatch(r -> r.symbol.contains(AbstractionValidator.LOC));
-        }
-    }
-
-    /** A compiled reply: exactly one of {@code any}, {@code values}, {@code band} is set. */
-    private record Reply(boolean any, Set<String> values, Band band, String symbol) {
-        /** @param number the value parsed once per record, NaN when it is not a decimal number */
-        boolean matches(String value, double number) {
-            if (any) {
-                return true;
-            }
-            if (values != null) {
-                return values.contains(value);
-            }
-            return !Double.isNaN(number) && band.contains(number);
-        }
-    }
-
     private Abstraction(AbstractionSpec spec) {
         this(spec, null, Map.of());
     }
@@ -119,29 +83,16 @@ public final class Abstraction {
         this.spec = spec;
         this.learnedHysteresis = Map.copyOf(learned);
         this.name = spec.name();
-        this.drop = spec.drop() == null ? List.of() : List.copyOf(spec.drop());
         this.locations = spec.locations() == null ? Map.of() : Map.copyOf(spec.locations());
-        List<Rule> compiled = new ArrayList<>();
+        this.rules = new Rules(spec);
         Set<String> inputs = new TreeSet<>();
         Set<String> outputs = new TreeSet<>();
         for (RuleSpec r : spec.rules()) {
-            List<Reply> replies = new ArrayList<>();
             for (ReplySpec p : r.replies()) {
-                replies.add(new Reply(p.any() != null, p.values() == null ? null : Set.copyOf(p.values()),
-                        p.range() == null ? null : Band.of(p.range()), p.symbol()));
                 outputs.addAll(expand(p.symbol()));
             }
-            compiled.add(new Rule(r.protocol(), r.command(), r.client(), r.input(), List.copyOf(replies),
-                    replies.stream().anyMatch(x -> x.band() != null)));
             inputs.addAll(expand(r.input()));
         }
-        this.rules = List.copyOf(compiled);
-        Map<String, List<Rule>> byCommand = new HashMap<>();
-        for (Rule r : rules) {
-            byCommand.computeIfAbsent(r.command(), k -> new ArrayList<>()).add(r);
-        }
-        byCommand.replaceAll((k, v) -> List.copyOf(v));
-        this.rulesByCommand = Map.copyOf(byCommand);
         Map<String, List<String>> ordered = new HashMap<>();
         for (RuleSpec r : spec.rules()) {
             if (Boolean.TRUE.equals(r.continuous())) {
@@ -343,165 +294,7 @@ public final class Abstraction {
      * location named by the arguments, else by the reply, else by the last segment of the client port.
      */
     public Classification classify(LogRecord r) {
-        if (r.kind() != RecordKind.COMMAND && r.kind() != RecordKind.REPLY) {
-            return DROPPED;
-        }
-        // Indexed loops: called for every record, and the lists' iterators were a tenth of classify's allocation.
-        for (int i = 0; i < drop.size(); i++) {
-            if (dropped(drop.get(i), r)) {
-                return DROPPED;
-            }
-        }
-        boolean command = r.kind() == RecordKind.COMMAND;
-        Rule rule = null;
-        List<Rule> candidates = rulesByCommand.getOrDefault(r.command(), List.of());
-        for (int i = 0; i < candidates.size(); i++) {
-            Rule x = candidates.get(i);
-            if ((r.protocol().isEmpty() || x.protocol.equals(r.protocol()))
-                    && (x.client == null || glob(x.client, command ? r.from() : r.to()))) {
-                rule = x;
-                break;
-            }
-        }
-        if (rule == null) {
-            return new Classification.Unmapped(command ? what(r) + " command" : what(r) + " reply '" + r.reply() + "'");
-        }
-        String template = null;
-        if (command) {
-            template = rule.input;
-        } else {
-            String value = r.reply();
-            double number = rule.numeric ? number(value) : Double.NaN;
-            for (int i = 0; i < rule.replies.size(); i++) {
-                Reply p = rule.replies.get(i);
-                if (p.matches(value, number)) {
-                    template = p.symbol;
-                    break;
-                }
-            }
-            if (template == null) {
-                return new Classification.Unmapped(what(r) + " reply '" + r.reply() + "'");
-            }
-        }
-        if (template.contains(AbstractionValidator.LOC)) {
-            String abbreviation = location(r);
-            if (abbreviation == null) {
-                return new Classification.Unmapped(what(r) + (command ? " command" : " reply")
-                        + " about unknown location '" + locationCandidate(r) + "'");
-            }
-            String withLoc = template;
-            Map<String, String> byLocation = expanded.get(withLoc);
-            String known = byLocation == null ? null : byLocation.get(abbreviation);
-            // A plain look-up first: computeIfAbsent allocates its function on every call, for every record.
-            template = known != null ? known
-                    : expanded.computeIfAbsent(withLoc, t -> new java.util.concurrent.ConcurrentHashMap<>())
-                    .computeIfAbsent(abbreviation, a -> withLoc.replace(AbstractionValidator.LOC, a));
-        }
-        AbstractEvent event = new AbstractEvent(command ? Direction.INPUT : Direction.OUTPUT, template,
-                channel(r), r);
-        return new Classification.Mapped(event);
-    }
-
-    /**
-     * {@link Channel#of} of {@code r}, the same instance as for the last record on that channel when the parser
-     * gave the same strings: a log has a handful of channels and every interface record needs its own. The table
-     * is shared by the threads reading logs in parallel without a lock: a slot holds a complete immutable channel
-     * or a stale one, and a channel is only reused after its four strings were compared.
-     */
-    private Channel channel(LogRecord r) {
-        boolean reply = r.kind() == RecordKind.REPLY;
-        String client = reply ? r.to() : r.from();
-        String server = reply ? r.from() : r.to();
-        int slot = (System.identityHashCode(client) * 31 + System.identityHashCode(r.command())) & (channels.length - 1);
-        Channel c = channels[slot];
-        if (c != null && c.client() == client && c.server() == server && c.protocol() == r.protocol()
-                && c.command() == r.command()) {
-            return c;
-        }
-        c = Channel.of(r);
-        channels[slot] = c;
-        return c;
-    }
-
-    private static String what(LogRecord r) {
-        return (r.protocol().isEmpty() ? "" : r.protocol() + "/") + r.command();
-    }
-
-    private static boolean dropped(DropSpec d, LogRecord r) {
-        return (d.kind() == null || d.kind().equalsIgnoreCase(r.kind().name()))
-                && (d.from() == null || glob(d.from(), r.from()))
-                && (d.to() == null || glob(d.to(), r.to()))
-                && (d.protocol() == null || glob(d.protocol(), r.protocol()))
-                && (d.command() == null || glob(d.command(), r.command()));
-    }
-
-    /**
-     * Whether {@code text} matches {@code pattern}, where {@code *} stands for any characters (possibly none) and
-     * everything else for itself: BT-to-skill ports are {@code /<Skill>/BT_rpc/client}, one per skill, and the
-     * older log format has no Protocol line to drop them by.
-     */
-    static boolean glob(String pattern, String text) {
-        int firstStar = pattern.indexOf('*');
-        if (firstStar < 0) {
-            return pattern.equals(text);
-        }
-        if (firstStar == 0 && pattern.length() > 2 && pattern.indexOf('*', 1) == pattern.length() - 1) {
-            // "*middle*", the usual shape (a port segment): a plain search, without building the middle
-            int m = pattern.length() - 2;
-            for (int i = 0; i + m <= text.length(); i++) {
-                if (text.regionMatches(i, pattern, 1, m)) {
-                    return true;
-                }
-            }
-            return false;
-        }
-        int p = 0;
-        int t = 0;
-        int star = -1;
-        int mark = 0;
-        while (t < text.length()) {
-            if (p < pattern.length() && pattern.charAt(p) == '*') {
-                star = p++;
-                mark = t;
-            } else if (p < pattern.length() && pattern.charAt(p) == text.charAt(t)) {
-                p++;
-                t++;
-            } else if (star >= 0) {
-                p = star + 1;
-                t = ++mark;
-            } else {
-                return false;
-            }
-        }
-        while (p < pattern.length() && pattern.charAt(p) == '*') {
-            p++;
-        }
-        return p == pattern.length();
-    }
-
-    /** The abbreviation of the location {@code r} is about, or {@code null}. */
-    private String location(LogRecord r) {
-        String args = r.arguments().trim();
-        String known = locations.get(args);
-        if (known == null && !args.isEmpty()) {
-            // The older format prints all arguments space separated; the location is the first.
-            known = locations.get(args.split("\\s+", 2)[0]);
-        }
-        if (known == null) {
-            known = locations.get(r.reply().trim());
-        }
-        if (known == null) {
-            known = locations.get(lastSegment(Channel.of(r).client()));
-        }
-        return known;
-    }
-
-    private static String locationCandidate(LogRecord r) {
-        return !r.arguments().isBlank() ? r.arguments().trim() : lastSegment(Channel.of(r).client());
-    }
-
-    private static String lastSegment(String port) {
-        return port.substring(port.lastIndexOf('/') + 1);
+        return rules.classify(r);
     }
 
     /** Every input symbol the rules can produce, sorted. */
@@ -552,26 +345,9 @@ public final class Abstraction {
         return Optional.of(Map.entry(input, value));
     }
 
-    /**
-     * The value of a numeric reply ({@code NUMBER}), else NaN. A reply is read by its rule and again for the noise
-     * readings: the last text read is remembered (by identity; an immutable pair, so threads sharing this abstraction
-     * see a whole pair or another one) and a long reading, which only the JDK's parser reads exactly, is parsed once.
-     */
-    private double number(String value) {
-        ParsedNumber last = lastNumber;
-        if (last != null && last.text() == value) {
-            return last.value();
-        }
-        double plain = Decimals.plain(value);
-        if (!Double.isNaN(plain)) {
-            return plain;
-        }
-        double parsed = NUMBER.matcher(value).matches() ? Double.parseDouble(value) : Double.NaN;
-        lastNumber = new ParsedNumber(value, parsed);
-        return parsed;
-    }
-
-    private record ParsedNumber(String text, double value) {
+    /** The value of a numeric reply, exactly {@link Double#parseDouble}'s, else NaN ({@link Decimals#parse}). */
+    private static double number(String value) {
+        return Decimals.parse(value);
     }
 
     /**

@@ -13,14 +13,14 @@ class DropGlobTest {
 
     @Test
     void starMatchesAnyCharacters() {
-        assertTrue(Abstraction.glob("*/BT_rpc/*", "/GoToDestination/BT_rpc/client"));
-        assertTrue(Abstraction.glob("*/BT_rpc/*", "/BatteryLevel/BT_rpc/server"));
-        assertFalse(Abstraction.glob("*/BT_rpc/*", "/GoToGoToClient/kitchen"));
-        assertTrue(Abstraction.glob("/tick/monitor", "/tick/monitor"));
-        assertFalse(Abstraction.glob("/tick/monitor", "/tick/monitor2"));
-        assertTrue(Abstraction.glob("a*b*c", "aXXbYYc"));
-        assertFalse(Abstraction.glob("a*b*c", "aXXbYY"));
-        assertTrue(Abstraction.glob("*", ""));
+        assertTrue(Rules.glob("*/BT_rpc/*", "/GoToDestination/BT_rpc/client"));
+        assertTrue(Rules.glob("*/BT_rpc/*", "/BatteryLevel/BT_rpc/server"));
+        assertFalse(Rules.glob("*/BT_rpc/*", "/GoToGoToClient/kitchen"));
+        assertTrue(Rules.glob("/tick/monitor", "/tick/monitor"));
+        assertFalse(Rules.glob("/tick/monitor", "/tick/monitor2"));
+        assertTrue(Rules.glob("a*b*c", "aXXbYYc"));
+        assertFalse(Rules.glob("a*b*c", "aXXbYY"));
+        assertTrue(Rules.glob("*", ""));
     }
 
     @Test
