@@ -30,14 +30,22 @@ final class Rules {
 
     /** Classifications carry no state when dropped: one instance serves every record. */
     static final Classification DROPPED = new Classification.Dropped();
-    private static final int ROUTES = 128;
+    private static final int ROUTES = 256;
+    private static final int PROBES = 4;
 
     /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
     private record Rule(String protocol, String command, String client, String input, List<Reply> replies,
                         boolean numeric) {
         boolean usesLocation() {
-            return input.contains(AbstractionValidator.LOC)
-                    || replies.stream().anyMatch(r -> r.symbol.contains(AbstractionValidator.LOC));
+            if (input.contains(AbstractionValidator.LOC)) {
+                return true;
+            }
+            for (Reply r : replies) {
+                if (r.symbol.contains(AbstractionValidator.LOC)) {
+                    return true;
+                }
+            }
+            return false;
         }
     }
 
@@ -156,14 +164,23 @@ final class Rules {
 
     /** The route of {@code r}'s strings: remembered, or decided now and remembered. */
     private Route route(LogRecord r) {
-        int h = r.from().hashCode() * 31 + r.command().hashCode() + r.kind().ordinal();
-        int slot = (h ^ (h >>> 11)) & (ROUTES - 1);
-        Route known = routes[slot];
-        if (known != null && known.isFor(r)) {
-            return known;
+        int h = (r.from().hashCode() * 31 + r.to().hashCode()) * 31 + r.command().hashCode() + r.kind().ordinal();
+        h ^= h >>> 16;
+        h *= 0x45d9f3b;
+        int home = (h ^ (h >>> 16)) & (ROUTES - 1);
+        // Up to PROBES neighbouring slots: two busy connections whose hashes collide must not evict each other.
+        int free = -1;
+        for (int k = 0; k < PROBES; k++) {
+            int slot = (home + k) & (ROUTES - 1);
+            Route known = routes[slot];
+            if (known == null) {
+                free = free < 0 ? slot : free;
+            } else if (known.isFor(r)) {
+                return known;
+            }
         }
         Route made = decide(r);
-        routes[slot] = made;
+        routes[free < 0 ? home : free] = made;
         return made;
     }
 

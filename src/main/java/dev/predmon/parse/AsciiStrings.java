@@ -4,19 +4,27 @@ import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 
 /**
- * Strings for short ASCII byte runs, reusing the last one built for the same bytes. The fields of a monitor log
- * repeat a handful of values (ports, protocols, commands, locations) on every record, so most values of a
- * record come from here instead of a new allocation. Bounded: a fixed table where a new value replaces an old.
- * The hash looks at the length, both ends and the middle only (cheap; a collision costs one allocation, never a
- * wrong string, since the bytes are compared in full).
+ * Strings for short ASCII byte runs, reusing the one built before for the same bytes. The fields of a monitor log
+ * repeat a handful of values (ports, protocols, commands, locations, acknowledgement codes) on every record, so most
+ * values of a record come from here instead of a new allocation.
+ *
+ * <p>Bounded: a fixed two-way table where a new value replaces an old one. A value is only admitted the second time
+ * its hash misses in its set, so values that never repeat (sensor readings, tick numbers) do not evict the ones that
+ * do; and the hash covers every byte, because ports of one robot differ in their middles
+ * ({@code /GoToDestination/BT_rpc/client}, {@code /IsAtDestination/BT_rpc/client}): a hash of a few sampled bytes made
+ * them evict each other on every record, a third of a large log's allocation. A collision costs one allocation,
+ * never a wrong string, since the bytes are compared in full.
  */
 final class AsciiStrings {
 
-    private static final int SLOTS = 1024;
+    private static final int SETS = 512;
     private static final int MAX_CACHED = 64;
 
-    private final String[] strings = new String[SLOTS];
-    private final byte[][] keys = new byte[SLOTS][];
+    /** Two ways per set: slots {@code 2 * set} and {@code 2 * set + 1}. */
+    private final String[] strings = new String[2 * SETS];
+    private final byte[][] keys = new byte[2 * SETS][];
+    /** Per set, the hash of the last value that missed there; a second miss with it admits the value. */
+    private final int[] missed = new int[SETS];
 
     /** The string of {@code len} ASCII bytes of {@code b} from {@code offset}. */
     String of(byte[] b, int offset, int len) {
@@ -27,23 +35,31 @@ final class AsciiStrings {
             return new String(b, offset, len, StandardCharsets.ISO_8859_1);
         }
         int end = offset + len;
-        if (isDigit(b[offset]) && isDigit(b[end - 1])) {
-            // A number (a tick, a sensor reading): they seldom repeat, and caching one costs a copy and a compare.
-            return new String(b, offset, len, StandardCharsets.ISO_8859_1);
+        int h = len;
+        for (int i = offset; i < end; i++) {
+            h = 31 * h + b[i];
         }
-        int h = len * 31 + b[offset] * 7 + b[end - 1] * 131 + b[offset + len / 2] * 17 + b[end - 1 - len / 3] * 5;
-        int slot = (h ^ (h >>> 7)) & (SLOTS - 1);
+        h ^= h >>> 15;
+        int set = h & (SETS - 1);
+        int slot = 2 * set;
         byte[] key = keys[slot];
         if (key != null && Arrays.equals(key, 0, key.length, b, offset, end)) {
             return strings[slot];
         }
+        key = keys[slot + 1];
+        if (key != null && Arrays.equals(key, 0, key.length, b, offset, end)) {
+            return strings[slot + 1];
+        }
         String s = new String(b, offset, len, StandardCharsets.ISO_8859_1);
+        if (missed[set] != h) {
+            missed[set] = h; // seen once: admitted if it comes again
+            return s;
+        }
+        // The newer entry goes to way 0, the older moves to way 1: the least recently admitted one leaves.
+        keys[slot + 1] = keys[slot];
+        strings[slot + 1] = strings[slot];
         keys[slot] = Arrays.copyOfRange(b, offset, end);
         strings[slot] = s;
         return s;
-    }
-
-    private static boolean isDigit(byte c) {
-        return c >= '0' && c <= '9';
     }
 }

@@ -101,10 +101,8 @@ final class ColumnsLayout extends RecordLayout {
             return fastField(b, offset, len);
         }
         int end = offset + len;
-        for (int k = offset; k < end; k++) {
-            if (b[k] < 0 || b[k] == '<') {
-                return false;
-            }
+        if (!Bytes.asciiWithoutAngle(b, offset, end)) {
+            return false;
         }
         return !mayBeHeader(b, offset, end) || fastHeader(b, offset, end);
     }

@@ -35,17 +35,15 @@ final class LineSplitter {
     void feed(byte[] bytes, int offset, int length) {
         int start = offset;
         int end = offset + length;
-        for (int i = offset; i < end; i++) {
-            if (bytes[i] == '\n') {
-                if (partialLength == 0 && overflow == 0 && i - start <= maxLineBytes) {
-                    // The whole line is in this chunk: hand it over in place, without copying it first.
-                    deliver(bytes, start, i - start);
-                } else {
-                    append(bytes, start, i - start);
-                    deliver(false);
-                }
-                start = i + 1;
+        for (int i = Bytes.indexOfNewline(bytes, start, end); i >= 0; i = Bytes.indexOfNewline(bytes, start, end)) {
+            if (partialLength == 0 && overflow == 0 && i - start <= maxLineBytes) {
+                // The whole line is in this chunk: hand it over in place, without copying it first.
+                deliver(bytes, start, i - start);
+            } else {
+                append(bytes, start, i - start);
+                deliver(false);
             }
+            start = i + 1;
         }
         append(bytes, start, end - start);
     }

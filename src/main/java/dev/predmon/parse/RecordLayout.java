@@ -134,10 +134,8 @@ abstract class RecordLayout implements LogLayout {
             return false;
         }
         int valueStart = i + 1;
-        for (int k = valueStart; k < end; k++) {
-            if (b[k] < 0 || b[k] == '<' || b[k] == 0x1b) {
-                return false; // non-ASCII, a save-file marker or a colour code: the general path decides
-            }
+        if (!Bytes.plain(b, valueStart, end)) {
+            return false; // non-ASCII, a save-file marker or a colour code: the general path decides
         }
         int valueEnd = end;
         while (valueStart < valueEnd && (b[valueStart] & 0xff) <= ' ') {
