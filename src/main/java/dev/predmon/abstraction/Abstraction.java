@@ -3,6 +3,7 @@ package dev.predmon.abstraction;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
+import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 
@@ -322,27 +323,13 @@ public final class Abstraction {
     }
 
     /**
-     * The input (as the file writes it, e.g. {@code level_i}) of the continuous rule whose reply {@code r} is, with
-     * its value; empty for any other record. The learner estimates a sensor's noise from these readings.
+     * The input (as the file writes it, e.g. {@code level_i}) of the continuous rule whose reply {@code c} is, or
+     * null for any other classification. The learner estimates a sensor's noise from these replies' values
+     * ({@link Decimals#parse} of the reply).
      */
-    public Optional<Map.Entry<String, Double>> continuousReading(LogRecord r) {
-        if (r.kind() != RecordKind.REPLY || continuousInputOf.isEmpty()) {
-            return Optional.empty();
-        }
-        return continuousReading(r, classify(r));
-    }
-
-    /** {@link #continuousReading(LogRecord)} of a record already classified as {@code c}: no second classification. */
-    public Optional<Map.Entry<String, Double>> continuousReading(LogRecord r, Classification c) {
-        if (r.kind() != RecordKind.REPLY || !(c instanceof Classification.Mapped m)) {
-            return Optional.empty();
-        }
-        String input = continuousInputOf.get(m.event().symbol());
-        double value = input == null ? Double.NaN : number(r.reply().trim());
-        if (Double.isNaN(value)) {
-            return Optional.empty();
-        }
-        return Optional.of(Map.entry(input, value));
+    public String continuousInput(Classification.Mapped c) {
+        AbstractEvent e = c.event();
+        return e.direction() == Direction.OUTPUT ? continuousInputOf.get(e.symbol()) : null;
     }
 
     /** The value of a numeric reply, exactly {@link Double#parseDouble}'s, else NaN ({@link Decimals#parse}). */

@@ -3,6 +3,7 @@ package dev.predmon.abstraction;
 import dev.predmon.abstraction.AbstractionSpec.DropSpec;
 import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
+import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 

@@ -1,5 +1,6 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 

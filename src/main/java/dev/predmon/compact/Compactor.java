@@ -94,7 +94,9 @@ public final class Compactor {
                 orphans++;
                 return;
             }
-            pending.remove(event.channel());
+            // Answered: the channel keeps its map entry with no command (a null value), so that the channel's next
+            // command replaces a value instead of allocating a new entry; a log has a handful of channels.
+            pending.put(event.channel(), null);
             entry.reply = event;
         }
         drain();
@@ -128,8 +130,10 @@ public final class Compactor {
     /** The input is over: commands still waiting for a reply are dropped (and counted). */
     public void endOfInput() {
         for (Entry e : pending.values()) {
-            e.dropped = true;
-            unansweredDropped++;
+            if (e != null) {
+                e.dropped = true;
+                unansweredDropped++;
+            }
         }
         pending.clear();
         drain();

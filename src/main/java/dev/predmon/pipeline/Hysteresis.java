@@ -4,6 +4,7 @@ import dev.predmon.abstraction.AbstractEvent;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Channel;
 import dev.predmon.abstraction.Direction;
+import dev.predmon.parse.Decimals;
 
 import java.util.HashMap;
 import java.util.Map;
@@ -28,7 +29,7 @@ final class Hysteresis {
             return e;
         }
         String band = abstraction.settle(settled.get(e.channel()), e.symbol(),
-                Double.parseDouble(e.record().reply().trim()));
+                Decimals.parse(e.record().reply().trim()));
         settled.put(e.channel(), band);
         return band.equals(e.symbol()) ? e : new AbstractEvent(e.direction(), band, e.channel(), e.record());
     }

@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.RunRule;
 import dev.predmon.parse.Clock;
+import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 
@@ -48,10 +49,6 @@ final class RunSplitter {
 
     /** A tick record's number: its Arguments, or NaN. */
     private static double tickNumber(LogRecord r) {
-        try {
-            return Double.parseDouble(r.arguments().trim());
-        } catch (NumberFormatException e) {
-            return Double.NaN;
-        }
+        return Decimals.parse(r.arguments().trim());
     }
 }

@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
+import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
@@ -168,8 +169,16 @@ public final class Traces {
 
         @Override
         public void mapped(LogRecord record, Classification.Mapped c) {
-            abstraction.continuousReading(record, c)
-                    .ifPresent(e -> readings.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(e.getValue()));
+            String input = abstraction.continuousInput(c);
+            double value = input == null ? Double.NaN : Decimals.parse(record.reply().trim());
+            if (!Double.isNaN(value)) {
+                List<Double> values = readings.get(input);
+                if (values == null) {
+                    values = new ArrayList<>();
+                    readings.put(input, values);
+                }
+                values.add(value);
+            }
         }
 
         @Override

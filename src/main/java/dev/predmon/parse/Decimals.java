@@ -1,4 +1,4 @@
-package dev.predmon.abstraction;
+package dev.predmon.parse;
 
 /**
  * Reads the decimals a log's replies carry ({@code 87.5}, {@code -3}, {@code .25}, and YARP's 21 significant digits,
@@ -6,31 +6,31 @@ package dev.predmon.abstraction;
  * battery reply is read by its rule and by the safety monitor, and the JDK's parser took about 350 bytes and 300 ns
  * for each of YARP's 21-digit values, a third of what a large log's classification allocated.
  *
- * <p>How, for a decimal of up to 38 significant digits and at most 19 decimals (every sensor value a monitor prints):
+ * <p>How, for a decimal of up to 38 significant digits and at most 27 decimals (every sensor value a monitor prints):
  * <ul>
  *   <li>digits <= 2^53 and at most 22 decimals: integer and power of ten are exact doubles and their quotient is
  *       correctly rounded (Clinger's fast path);</li>
- *   <li>otherwise the digits N (up to 128 bits) and 10^d (up to 64 bits) are divided exactly in integers: a quotient
- *       of 63 or 64 bits, N * 2^s / 10^d, and whether a remainder is left. Rounding that quotient to 53 bits, to
+ *   <li>otherwise the digits N (up to 128 bits) are divided by 5^d (up to 64 bits; N / 10^d is N / 5^d * 2^-d)
+ *       exactly in integers: a quotient of 63 or 64 bits, N * 2^s / 5^d, and whether a remainder is left. Rounding that quotient to 53 bits, to
  *       nearest with ties to even and the remainder as sticky bit, is the correctly rounded value, which is what
  *       {@code parseDouble} returns for any decimal.</li>
  * </ul>
  * Anything else in the grammar (an exponent, more digits or decimals) goes to {@code parseDouble}.
  */
-final class Decimals {
+public final class Decimals {
 
     private static final double[] POWERS_OF_TEN = new double[23];
-    /** 10^k as unsigned 64-bit integers, k = 0..19. */
-    private static final long[] LONG_POWERS_OF_TEN = new long[20];
+    /** 5^k as unsigned 64-bit integers, k = 0..27 (5^27 < 2^64 < 5^28). */
+    private static final long[] POWERS_OF_FIVE = new long[28];
 
     static {
         POWERS_OF_TEN[0] = 1;
         for (int k = 1; k < POWERS_OF_TEN.length; k++) {
             POWERS_OF_TEN[k] = POWERS_OF_TEN[k - 1] * 10;
         }
-        LONG_POWERS_OF_TEN[0] = 1;
-        for (int k = 1; k < LONG_POWERS_OF_TEN.length; k++) {
-            LONG_POWERS_OF_TEN[k] = LONG_POWERS_OF_TEN[k - 1] * 10; // 10^19 wraps into the sign bit: unsigned
+        POWERS_OF_FIVE[0] = 1;
+        for (int k = 1; k < POWERS_OF_FIVE.length; k++) {
+            POWERS_OF_FIVE[k] = POWERS_OF_FIVE[k - 1] * 5; // 5^27 is above 2^63: read as unsigned
         }
     }
 
@@ -43,7 +43,7 @@ final class Decimals {
      * The value of {@code s} if it is a decimal number, {@code [+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?} (no blanks),
      * exactly {@link Double#parseDouble}'s; NaN for anything else.
      */
-    static double parse(String s) {
+    public static double parse(String s) {
         int n = s.length();
         int i = n > 0 && (s.charAt(0) == '-' || s.charAt(0) == '+') ? 1 : 0;
         boolean negative = i == 1 && s.charAt(0) == '-';
@@ -84,7 +84,7 @@ final class Decimals {
             return Double.NaN;
         }
         int scale = Math.max(decimals, 0);
-        if (significant > MAX_DIGITS || scale >= LONG_POWERS_OF_TEN.length || (scale == 0 && hi != 0)) {
+        if (significant > MAX_DIGITS || scale >= POWERS_OF_FIVE.length || (scale == 0 && hi != 0)) {
             return Double.parseDouble(s);
         }
         double value = exact(hi, lo, scale);
@@ -111,12 +111,15 @@ final class Decimals {
         return true;
     }
 
-    /** The double nearest to N / 10^scale, N the unsigned 128-bit (hi, lo), scale <= 19; NaN if N is too large. */
+    /**
+     * The double nearest to N / 10^scale, N the unsigned 128-bit (hi, lo), scale <= 27; NaN if N is too large. As
+     * N / 10^scale = (N / 5^scale) * 2^-scale and scaling by a power of two is exact, the division is by 5^scale.
+     */
     private static double exact(long hi, long lo, int scale) {
-        if (hi == 0 && lo >= 0 && lo <= (1L << 53)) {
+        if (hi == 0 && lo >= 0 && lo <= (1L << 53) && scale < POWERS_OF_TEN.length) {
             return scale > 0 ? lo / POWERS_OF_TEN[scale] : (double) lo;
         }
-        long p = LONG_POWERS_OF_TEN[scale];
+        long p = POWERS_OF_FIVE[scale];
         int bitsN = hi != 0 ? 128 - Long.numberOfLeadingZeros(hi) : 64 - Long.numberOfLeadingZeros(lo);
         int bitsP = 64 - Long.numberOfLeadingZeros(p);
         // N * 2^shift / p then lies in (2^62, 2^64): a quotient of 63 or 64 bits
@@ -160,7 +163,7 @@ final class Decimals {
         int bitsQ = 64 - Long.numberOfLeadingZeros(q);
         int drop = bitsQ - 53;
         if (drop <= 0) {
-            return Math.scalb((double) q, -shift);
+            return Math.scalb((double) q, -shift - scale);
         }
         long mantissa = q >>> drop;
         long rest = q & ((1L << drop) - 1);
@@ -172,7 +175,7 @@ final class Decimals {
                 drop++;
             }
         }
-        return Math.scalb((double) mantissa, drop - shift);
+        return Math.scalb((double) mantissa, drop - shift - scale);
     }
 
     /** The high 64 bits of the unsigned 128-bit product (Java 18 has it as {@code Math.unsignedMultiplyHigh}). */

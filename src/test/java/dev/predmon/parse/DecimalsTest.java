@@ -1,4 +1,4 @@
-package dev.predmon.abstraction;
+package dev.predmon.parse;
 
 import org.junit.jupiter.api.Test;
 
