@@ -39,6 +39,33 @@ final class AsciiStrings {
         for (int i = offset; i < end; i++) {
             h = 31 * h + b[i];
         }
+        return lookUp(b, offset, len, h);
+    }
+
+    /**
+     * {@link #of}, or null when the bytes are not plain ASCII without {@code '<'} and ESC ({@link Bytes#plain}):
+     * checked while hashing, in the same pass over the bytes.
+     */
+    String ofPlain(byte[] b, int offset, int len) {
+        if (len == 0) {
+            return "";
+        }
+        int end = offset + len;
+        if (len > MAX_CACHED) {
+            return Bytes.plain(b, offset, end) ? new String(b, offset, len, StandardCharsets.ISO_8859_1) : null;
+        }
+        int h = len;
+        boolean plain = true;
+        for (int i = offset; i < end; i++) {
+            byte c = b[i];
+            plain &= c >= 0 && c != '<' && c != 0x1b;
+            h = 31 * h + c;
+        }
+        return plain ? lookUp(b, offset, len, h) : null;
+    }
+
+    private String lookUp(byte[] b, int offset, int len, int h) {
+        int end = offset + len;
         h ^= h >>> 15;
         int set = h & (SETS - 1);
         int slot = 2 * set;

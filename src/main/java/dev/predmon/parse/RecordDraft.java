@@ -58,6 +58,11 @@ final class RecordDraft {
         return this;
     }
 
+    /** The index of the field expected next in the current shape (0 for From ... 5 for Reply), -1 in the older one. */
+    int currentField() {
+        return labels == CURRENT ? next : -1;
+    }
+
     /** Whether the ASCII bytes are the label expected next (any case); false for the older kind line. */
     boolean expects(byte[] b, int offset, int len) {
         String wanted = labels[next];

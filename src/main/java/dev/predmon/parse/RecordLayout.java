@@ -1,5 +1,6 @@
 package dev.predmon.parse;
 
+import java.util.Arrays;
 import java.util.Objects;
 import java.util.function.Consumer;
 
@@ -20,6 +21,11 @@ abstract class RecordLayout implements LogLayout {
     RecordDraft draft;
     /** The draft of the last record built, which {@link #startDraft} reuses; {@code null} if none. */
     private RecordDraft spare;
+    /**
+     * Per field of the current shape, the bytes of its last line up to and including the colon: logs indent and pad
+     * labels the same way on every record, so one compare replaces scanning blanks, label and colon.
+     */
+    private final byte[][] prefixes = new byte[6][];
     /** The number of the line being read. */
     long lineNumber;
 
@@ -118,37 +124,52 @@ abstract class RecordLayout implements LogLayout {
      */
     final boolean fastField(byte[] b, int offset, int len) {
         int end = offset + len;
-        int i = offset;
-        while (i < end && isRegexBlank((char) b[i])) {
-            i++;
-        }
-        int labelStart = i;
-        while (i < end && isAsciiLetter((char) b[i])) {
-            i++;
-        }
-        int labelEnd = i;
-        while (i < end && (b[i] == ' ' || b[i] == '\t')) {
-            i++;
-        }
-        if (labelEnd == labelStart || i == end || b[i] != ':') {
-            return false;
-        }
-        int valueStart = i + 1;
-        if (!Bytes.plain(b, valueStart, end)) {
-            return false; // non-ASCII, a save-file marker or a colour code: the general path decides
+        int field = draft.currentField();
+        byte[] known = field >= 0 ? prefixes[field] : null;
+        int valueStart;
+        if (known != null && len >= known.length && Arrays.equals(known, 0, known.length, b, offset, offset + known.length)) {
+            // The same bytes up to the colon as this field's last line: the same label, checked then.
+            valueStart = offset + known.length;
+        } else {
+            int i = offset;
+            while (i < end && isRegexBlank((char) b[i])) {
+                i++;
+            }
+            int labelStart = i;
+            while (i < end && isAsciiLetter((char) b[i])) {
+                i++;
+            }
+            int labelEnd = i;
+            while (i < end && (b[i] == ' ' || b[i] == '\t')) {
+                i++;
+            }
+            if (labelEnd == labelStart || i == end || b[i] != ':' || !draft.expects(b, labelStart, labelEnd - labelStart)) {
+                return false;
+            }
+            valueStart = i + 1;
+            if (field >= 0) {
+                prefixes[field] = Arrays.copyOfRange(b, offset, valueStart);
+            }
         }
         int valueEnd = end;
         while (valueStart < valueEnd && (b[valueStart] & 0xff) <= ' ') {
+            if (b[valueStart] == 0x1b) {
+                return false;
+            }
             valueStart++;
         }
         while (valueEnd > valueStart && (b[valueEnd - 1] & 0xff) <= ' ') {
+            if (b[valueEnd - 1] == 0x1b) {
+                return false;
+            }
             valueEnd--;
         }
-        if (!draft.expects(b, labelStart, labelEnd - labelStart)) {
+        // Non-ASCII, a save-file marker or a colour code: the general path decides (null).
+        String value = strings.ofPlain(b, valueStart, valueEnd - valueStart);
+        if (value == null) {
             return false;
         }
-        // The label was checked and the value trimmed here: what offerField would do again is skipped.
-        draft.take(strings.of(b, valueStart, valueEnd - valueStart));
+        draft.take(value);
         if (draft.complete()) {
             RecordDraft done = draft;
             draft = null;
