@@ -1,6 +1,7 @@
 package dev.predmon.parse;
 
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
 import java.util.function.Consumer;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -40,6 +41,11 @@ final class ColumnsLayout extends RecordLayout {
     /** The header's tokens, reused from line to line: a header is read for every record. */
     private final int[] starts = new int[6];
     private final int[] ends = new int[6];
+    /** The last headers' bytes after their time, with their level and kind ({@link #knownHeader}). */
+    private final byte[][] tails = new byte[4][];
+    private final String[] tailLevels = new String[4];
+    private final RecordKind[] tailKinds = new RecordKind[4];
+    private int nextTail;
 
     ColumnsLayout(Consumer<LogRecord> records, Consumer<ParseProblem> problems) {
         super(records, problems);
@@ -104,7 +110,41 @@ final class ColumnsLayout extends RecordLayout {
         if (!Bytes.asciiWithoutAngle(b, offset, end)) {
             return false;
         }
-        return !mayBeHeader(b, offset, end) || fastHeader(b, offset, end);
+        return knownHeader(b, offset, end) || !mayBeHeader(b, offset, end) || fastHeader(b, offset, end);
+    }
+
+    /**
+     * A header whose bytes after its time are those of a header read before ({@code \tDEBUG\tReply intercepted:}):
+     * the same level and kind, checked then, so only the time is read. False, having done nothing, for anything else.
+     */
+    private boolean knownHeader(byte[] b, int offset, int end) {
+        int i = offset;
+        while (i < end && isRegexBlank((char) b[i])) {
+            i++;
+        }
+        int timeStart = i;
+        while (i < end && b[i] != ' ' && b[i] != '\t') {
+            i++;
+        }
+        int rest = end - i;
+        for (int k = 0; k < tails.length; k++) {
+            byte[] tail = tails[k];
+            if (tail != null && tail.length == rest && Arrays.equals(tail, 0, rest, b, i, end)
+                    && plainNumber(b, timeStart, i)) {
+                startDraft(lineNumber, decimal(b, timeStart, i), tailLevels[k], tailKinds[k]);
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Remembers what follows the time of a header {@link #fastHeader} read: the next such header is known. */
+    private void rememberTail(byte[] b, int tailStart, int end, String level, RecordKind kind) {
+        int k = nextTail;
+        nextTail = (nextTail + 1) % tails.length;
+        tails[k] = Arrays.copyOfRange(b, tailStart, end);
+        tailLevels[k] = level;
+        tailKinds[k] = kind;
     }
 
     /** A header of the usual shape, tokens separated by blanks and tabs; false for anything else. */
@@ -138,7 +178,11 @@ final class ColumnsLayout extends RecordLayout {
         }
         int t = n == 5 ? 1 : 0;
         double time = decimal(b, starts[t], ends[t]);
-        startDraft(lineNumber, time, strings.of(b, starts[levelAt], ends[levelAt] - starts[levelAt]), kind);
+        String level = strings.of(b, starts[levelAt], ends[levelAt] - starts[levelAt]);
+        startDraft(lineNumber, time, level, kind);
+        if (n == 4) {
+            rememberTail(b, ends[0], end, level, kind);
+        }
         return true;
     }
 
