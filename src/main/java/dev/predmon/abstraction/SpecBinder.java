@@ -37,35 +37,45 @@ import java.util.TreeSet;
  */
 final class SpecBinder {
 
-    /** Reads one value that is not {@code null}. */
-    private interface Reader<T> {
-        T read(JsonNode node, String pointer) throws Invalid;
+    /**
+     * What a key's value is read as: the type of its record component. (An enum and a switch rather than a reader
+     * object per type: a dozen lambdas cost milliseconds to bootstrap at every start.)
+     */
+    private enum Type {
+        STRING, NUMBER, INTEGER, BOOLEAN, LOCATIONS, DROP, RULE, REPLY, RANGE, SAFETY, WARNING, RUNS,
+        STRINGS(STRING), DROPS(DROP), RULES(RULE), REPLIES(REPLY);
+
+        /** For a list, the type of its elements. */
+        final Type element;
+
+        Type() {
+            this(null);
+        }
+
+        Type(Type element) {
+            this.element = element;
+        }
     }
 
-    private static final Reader<String> STRING = SpecBinder::string;
-    private static final Reader<Double> DOUBLE = SpecBinder::number;
-    private static final Reader<Boolean> BOOLEAN = SpecBinder::bool;
-
-    // The keys of each record, with the reader of each key's value (what the record component's type asks for).
-    private static final Map<String, Reader<?>> TOP = Map.of("name", STRING, "description", STRING,
-            "drop", list(SpecBinder::drop), "locations", SpecBinder::locations, "rules", list(SpecBinder::rule),
-            "safety", SpecBinder::safety, "warning", SpecBinder::warning, "runs", SpecBinder::runs);
-    private static final Map<String, Reader<?>> DROP = Map.of("kind", STRING, "from", STRING, "to", STRING,
-            "protocol", STRING, "command", STRING, "description", STRING);
-    private static final Map<String, Reader<?>> RULE = Map.of("protocol", STRING, "command", STRING,
-            "client", STRING, "input", STRING, "description", STRING, "continuous", BOOLEAN, "carry", BOOLEAN,
-            "hysteresis", DOUBLE, "replies", list(SpecBinder::reply));
+    // The keys of each record, with the type of each key's value.
+    private static final Map<String, Type> TOP = Map.of("name", Type.STRING, "description", Type.STRING,
+            "drop", Type.DROPS, "locations", Type.LOCATIONS, "rules", Type.RULES, "safety", Type.SAFETY,
+            "warning", Type.WARNING, "runs", Type.RUNS);
+    private static final Map<String, Type> DROP = Map.of("kind", Type.STRING, "from", Type.STRING,
+            "to", Type.STRING, "protocol", Type.STRING, "command", Type.STRING, "description", Type.STRING);
+    private static final Map<String, Type> RULE = Map.of("protocol", Type.STRING, "command", Type.STRING,
+            "client", Type.STRING, "input", Type.STRING, "description", Type.STRING, "continuous", Type.BOOLEAN,
+            "carry", Type.BOOLEAN, "hysteresis", Type.NUMBER, "replies", Type.REPLIES);
     /** {@code equals} is the JSON name of {@link ReplySpec#values()}. */
-    private static final Map<String, Reader<?>> REPLY = Map.of("any", BOOLEAN, "equals", list(STRING),
-            "range", SpecBinder::range, "symbol", STRING);
-    private static final Map<String, Reader<?>> RANGE = Map.of("above", DOUBLE, "atLeast", DOUBLE,
-            "below", DOUBLE, "atMost", DOUBLE);
-    private static final Map<String, Reader<?>> SAFETY = Map.of("name", STRING, "protocol", STRING,
-            "command", STRING, "from", STRING, "to", STRING, "below", DOUBLE);
-    private static final Map<String, Reader<?>> WARNING = Map.of("confirm", (Reader<Integer>) SpecBinder::integer,
-            "description", STRING);
-    private static final Map<String, Reader<?>> RUNS = Map.of("tickRestart", BOOLEAN, "silence", DOUBLE,
-            "description", STRING);
+    private static final Map<String, Type> REPLY = Map.of("any", Type.BOOLEAN, "equals", Type.STRINGS,
+            "range", Type.RANGE, "symbol", Type.STRING);
+    private static final Map<String, Type> RANGE = Map.of("above", Type.NUMBER, "atLeast", Type.NUMBER,
+            "below", Type.NUMBER, "atMost", Type.NUMBER);
+    private static final Map<String, Type> SAFETY = Map.of("name", Type.STRING, "protocol", Type.STRING,
+            "command", Type.STRING, "from", Type.STRING, "to", Type.STRING, "below", Type.NUMBER);
+    private static final Map<String, Type> WARNING = Map.of("confirm", Type.INTEGER, "description", Type.STRING);
+    private static final Map<String, Type> RUNS = Map.of("tickRestart", Type.BOOLEAN, "silence", Type.NUMBER,
+            "description", Type.STRING);
 
     private SpecBinder() {
     }
@@ -119,11 +129,33 @@ final class SpecBinder {
         return new RunsSpec((Boolean) f.get("tickRestart"), (Double) f.get("silence"), (String) f.get("description"));
     }
 
+    /** The value of {@code node} as {@code type}; {@code null} for JSON null. */
+    private static Object read(Type type, JsonNode node, String at) throws Invalid {
+        if (node.isNull()) {
+            return null;
+        }
+        return switch (type) {
+            case STRING -> string(node, at);
+            case NUMBER -> number(node, at);
+            case INTEGER -> integer(node, at);
+            case BOOLEAN -> bool(node, at);
+            case LOCATIONS -> locations(node, at);
+            case DROP -> drop(node, at);
+            case RULE -> rule(node, at);
+            case REPLY -> reply(node, at);
+            case RANGE -> range(node, at);
+            case SAFETY -> safety(node, at);
+            case WARNING -> warning(node, at);
+            case RUNS -> runs(node, at);
+            case STRINGS, DROPS, RULES, REPLIES -> list(type.element, node, at);
+        };
+    }
+
     /**
-     * The values of an object's keys, each read by its reader in {@code keys}; absent keys are absent. Known keys
+     * The values of an object's keys, each read as its type in {@code keys}; absent keys are absent. Known keys
      * are read in the order of the text, so the first bad value is the first reported; then the first unknown key.
      */
-    private static Map<String, Object> fields(JsonNode node, String at, Map<String, Reader<?>> keys) throws Invalid {
+    private static Map<String, Object> fields(JsonNode node, String at, Map<String, Type> keys) throws Invalid {
         if (!node.isObject()) {
             throw expected(at, "an object");
         }
@@ -131,12 +163,12 @@ final class SpecBinder {
         String unknown = null;
         for (Iterator<Map.Entry<String, JsonNode>> it = node.fields(); it.hasNext(); ) {
             Map.Entry<String, JsonNode> e = it.next();
-            Reader<?> reader = keys.get(e.getKey());
-            if (reader == null) {
+            Type type = keys.get(e.getKey());
+            if (type == null) {
                 unknown = unknown == null ? e.getKey() : unknown;
                 continue;
             }
-            values.put(e.getKey(), nullable(reader, e.getValue(), at + "/" + LocatedJson.escape(e.getKey())));
+            values.put(e.getKey(), read(type, e.getValue(), at + "/" + LocatedJson.escape(e.getKey())));
         }
         if (unknown != null) {
             throw new Invalid(at + "/" + LocatedJson.escape(unknown), "unknown key '" + unknown + "' (allowed: "
@@ -145,22 +177,16 @@ final class SpecBinder {
         return values;
     }
 
-    private static <T> T nullable(Reader<T> reader, JsonNode node, String at) throws Invalid {
-        return node.isNull() ? null : reader.read(node, at);
-    }
-
-    /** A list whose elements {@code element} reads; it may hold {@code null}s, so it is an {@link ArrayList}. */
-    private static <T> Reader<List<T>> list(Reader<T> element) {
-        return (node, at) -> {
-            if (!node.isArray()) {
-                throw expected(at, "an array");
-            }
-            List<T> list = new ArrayList<>(node.size());
-            for (int i = 0; i < node.size(); i++) {
-                list.add(nullable(element, node.get(i), at + "/" + i));
-            }
-            return list;
-        };
+    /** A list of {@code element}s; it may hold {@code null}s, so it is an {@link ArrayList}. */
+    private static List<Object> list(Type element, JsonNode node, String at) throws Invalid {
+        if (!node.isArray()) {
+            throw expected(at, "an array");
+        }
+        List<Object> list = new ArrayList<>(node.size());
+        for (int i = 0; i < node.size(); i++) {
+            list.add(read(element, node.get(i), at + "/" + i));
+        }
+        return list;
     }
 
     /** Location names to abbreviations, in the order of the text (the canonical form sorts them). */
@@ -171,7 +197,7 @@ final class SpecBinder {
         Map<String, String> map = new LinkedHashMap<>();
         for (Iterator<Map.Entry<String, JsonNode>> it = node.fields(); it.hasNext(); ) {
             Map.Entry<String, JsonNode> e = it.next();
-            map.put(e.getKey(), nullable(STRING, e.getValue(), at + "/" + LocatedJson.escape(e.getKey())));
+            map.put(e.getKey(), (String) read(Type.STRING, e.getValue(), at + "/" + LocatedJson.escape(e.getKey())));
         }
         return map;
     }
@@ -252,7 +278,13 @@ final class SpecBinder {
         if (!node.isTextual() || node.textValue().isEmpty()) {
             return false;
         }
-        return node.textValue().chars().allMatch(c -> c <= ' ');
+        String text = node.textValue();
+        for (int i = 0; i < text.length(); i++) {
+            if (text.charAt(i) > ' ') {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static Invalid expected(String at, String what) {
