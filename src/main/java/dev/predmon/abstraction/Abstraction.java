@@ -1,6 +1,5 @@
 package dev.predmon.abstraction;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
 import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
 import dev.predmon.parse.Decimals;
@@ -155,11 +154,7 @@ public final class Abstraction {
             this.canonicalJson = fingerprintOf.canonicalJson;
             this.fingerprint = fingerprintOf.fingerprint;
         } else {
-            try {
-                this.canonicalJson = AbstractionFiles.MAPPER.writeValueAsString(spec);
-            } catch (JsonProcessingException e) {
-                throw new IllegalStateException("cannot serialise a validated abstraction", e);
-            }
+            this.canonicalJson = SpecWriter.canonical(spec);
             this.fingerprint = AbstractionFiles.sha256(canonicalJson);
         }
     }

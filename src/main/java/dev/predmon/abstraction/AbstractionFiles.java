@@ -2,13 +2,6 @@ package dev.predmon.abstraction;
 
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.DeserializationFeature;
-import com.fasterxml.jackson.databind.JsonMappingException;
-import com.fasterxml.jackson.databind.MapperFeature;
-import com.fasterxml.jackson.databind.SerializationFeature;
-import com.fasterxml.jackson.databind.exc.MismatchedInputException;
-import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
-import com.fasterxml.jackson.databind.json.JsonMapper;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -20,23 +13,17 @@ import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
 import java.util.Map;
 import java.util.Optional;
-import java.util.stream.Collectors;
 
 /**
  * Abstraction files: the built-in ones, reading and validating a file into an {@link Abstraction} with one-line
  * errors ({@code file:line:column: path: reason}), and the canonical form its fingerprint hashes. The public entry
  * points are {@link Abstraction#load}, {@link Abstraction#fromJson} and {@link Abstraction#builtin}.
+ *
+ * <p>A file is parsed by {@link LocatedJson} and bound by {@link SpecBinder}, its canonical form written by
+ * {@link SpecWriter}: jackson-core and databind's tree nodes only, no {@code ObjectMapper}, whose construction and
+ * data binding were half a second of every start of predmon.
  */
 final class AbstractionFiles {
-
-    /** Strict binding: unknown keys and coerced scalars are errors; keys sorted in the canonical form. */
-    static final JsonMapper MAPPER = JsonMapper.builder()
-            .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
-            .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
-            .disable(MapperFeature.ALLOW_COERCION_OF_SCALARS)
-            .enable(MapperFeature.SORT_PROPERTIES_ALPHABETICALLY)
-            .enable(SerializationFeature.ORDER_MAP_ENTRIES_BY_KEYS)
-            .build();
 
     private AbstractionFiles() {
     }
@@ -98,35 +85,19 @@ final class AbstractionFiles {
     static Abstraction fromJson(String source, String json) throws AbstractionException {
         LocatedJson tree;
         try {
-            tree = LocatedJson.parse(MAPPER.getFactory(), json);
+            tree = LocatedJson.parse(json);
         } catch (JsonProcessingException e) {
             throw new AbstractionException(position(source, e.getLocation()) + "invalid JSON: "
                     + firstLine(e.getOriginalMessage()), e);
         } catch (IOException e) {
             throw new AbstractionException(source + ": cannot read: " + e, e);
         }
+        if (!tree.root().isObject()) {
+            throw new AbstractionException(position(source, tree.locate("")) + "expected a JSON object at the top");
+        }
         AbstractionSpec spec;
         try {
-            if (!tree.root().isObject()) {
-                throw new AbstractionException(position(source, tree.locate("")) + "expected a JSON object at the top");
-            }
-            spec = MAPPER.treeToValue(tree.root(), AbstractionSpec.class);
-        } catch (JsonMappingException e) {
-            String pointer = pointer(e);
-            String reason;
-            if (e instanceof UnrecognizedPropertyException u) {
-                reason = "unknown key '" + u.getPropertyName() + "' (allowed: " + u.getKnownPropertyIds().stream()
-                        .map(Object::toString).sorted().collect(Collectors.joining(", ")) + ")";
-            } else if (e instanceof MismatchedInputException m && m.getTargetType() != null) {
-                reason = "expected " + describe(m.getTargetType());
-            } else {
-                reason = firstLine(e.getOriginalMessage());
-            }
-            throw new AbstractionException(position(source, tree.locate(pointer)) + at(pointer) + reason, e);
-        } catch (JsonProcessingException e) {
-            throw new AbstractionException(source + ": " + firstLine(e.getOriginalMessage()), e);
-        }
-        try {
+            spec = SpecBinder.spec(tree.root());
             AbstractionValidator.validate(spec);
         } catch (AbstractionValidator.Invalid e) {
             throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
@@ -134,33 +105,8 @@ final class AbstractionFiles {
         return Abstraction.of(spec);
     }
 
-    private static String describe(Class<?> type) {
-        if (Number.class.isAssignableFrom(type)) {
-            return "a number";
-        }
-        if (type == String.class) {
-            return "a string";
-        }
-        if (type == Boolean.class) {
-            return "true or false";
-        }
-        return java.util.Collection.class.isAssignableFrom(type) ? "an array" : "an object";
-    }
-
     private static String at(String pointer) {
         return pointer.isEmpty() ? "" : LocatedJson.readable(pointer) + ": ";
-    }
-
-    private static String pointer(JsonMappingException e) {
-        StringBuilder b = new StringBuilder();
-        for (JsonMappingException.Reference ref : e.getPath()) {
-            if (ref.getFieldName() != null) {
-                b.append('/').append(LocatedJson.escape(ref.getFieldName()));
-            } else if (ref.getIndex() >= 0) {
-                b.append('/').append(ref.getIndex());
-            }
-        }
-        return b.toString();
     }
 
     private static String position(String source, JsonLocation l) {

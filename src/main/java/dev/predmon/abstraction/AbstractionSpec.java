@@ -7,9 +7,13 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * The abstraction file as written, bound by Jackson before validation. Absent keys are {@code null};
- * {@link AbstractionValidator} says which are required. Serialised back (without nulls, keys sorted) it is the
- * canonical form that {@link Abstraction#fingerprint()} hashes.
+ * The abstraction file as written, bound by {@link SpecBinder} before validation. Absent keys are {@code null};
+ * {@link AbstractionValidator} says which are required. Written back by {@link SpecWriter} (without nulls, keys
+ * sorted) it is the canonical form that {@link Abstraction#fingerprint()} hashes.
+ *
+ * <p>The Jackson annotations say how Jackson's data binding, which read and wrote these records before, named and
+ * left out keys; the binder and writer do the same by hand (no {@code ObjectMapper} at start-up), and the tests
+ * hold them to data binding's results through these annotations.
  *
  * @param name        identifies the abstraction in models/index.json and reports
  * @param description free text for readers, e.g. how band boundaries are assigned

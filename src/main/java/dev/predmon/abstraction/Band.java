@@ -58,4 +58,23 @@ record Band(double lower, boolean lowerClosed, double upper, boolean upperClosed
     boolean leavesGapBefore(Band next) {
         return upper < next.lower || (upper == next.lower && !upperClosed && !next.lowerClosed);
     }
+
+    /**
+     * As a record's own: each component equal, the doubles as by {@link Double#compare}. Written out because the
+     * record's is bootstrapped through {@code java.lang.runtime.ObjectMethods} on its first call, which spins
+     * method handles for some 25 ms; validation, at every start, keys a map by bands.
+     */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Band b && Double.compare(lower, b.lower) == 0 && lowerClosed == b.lowerClosed
+                && Double.compare(upper, b.upper) == 0 && upperClosed == b.upperClosed;
+    }
+
+    @Override
+    public int hashCode() {
+        int h = Double.hashCode(lower);
+        h = 31 * h + Boolean.hashCode(lowerClosed);
+        h = 31 * h + Double.hashCode(upper);
+        return 31 * h + Boolean.hashCode(upperClosed);
+    }
 }

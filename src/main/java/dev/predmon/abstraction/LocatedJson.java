@@ -11,6 +11,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import java.io.File;
 import java.io.IOException;
 import java.util.HashMap;
 import java.util.Map;
@@ -19,8 +20,16 @@ import java.util.Map;
  * A JSON tree together with where each of its values starts in the text, keyed by JSON pointer
  * ({@code /rules/4/replies/2}). A plain Jackson tree forgets positions, but validation errors found after
  * binding must still say "line:column", so the tree is read token by token here.
+ *
+ * <p>It needs only jackson-core's streaming parser and databind's node classes, never an {@code ObjectMapper}:
+ * building one, and its data binding, cost a third of a second of every start of predmon. Abstraction files and
+ * {@code models/index.json} are read with it and bound by hand.
  */
-final class LocatedJson {
+public final class LocatedJson {
+
+    /** The one factory of parsers and generators: stateless once built, so shared. */
+    static final JsonFactory FACTORY = new JsonFactory();
+
     private final JsonNode root;
     private final Map<String, JsonLocation> locations;
 
@@ -29,7 +38,8 @@ final class LocatedJson {
         this.locations = locations;
     }
 
-    JsonNode root() {
+    /** The value at the top. */
+    public JsonNode root() {
         return root;
     }
 
@@ -38,6 +48,28 @@ final class LocatedJson {
      *
      * @throws JsonProcessingException with the position of the first syntax error
      */
+    public static LocatedJson parse(String text) throws IOException {
+        return parse(FACTORY, text);
+    }
+
+    /**
+     * Reads the first JSON value of {@code file} as {@code ObjectMapper.readValue} did, so that a file it took still
+     * reads: what follows the value is not read, and of duplicate keys the last counts.
+     *
+     * @throws JsonProcessingException with the position of the first syntax error, or of the end of an empty file
+     * @throws java.io.FileNotFoundException when the file cannot be opened, as {@link java.io.FileInputStream} says
+     */
+    public static LocatedJson readValue(File file) throws IOException {
+        Map<String, JsonLocation> locations = new HashMap<>();
+        try (JsonParser p = FACTORY.createParser(file)) {
+            if (p.nextToken() == null) {
+                throw new JsonParseException(p, "No content to map due to end-of-input");
+            }
+            return new LocatedJson(read(p, "", locations), locations);
+        }
+    }
+
+    /** As {@link #parse(String)}, with parsers from {@code factory}. */
     static LocatedJson parse(JsonFactory factory, String text) throws IOException {
         Map<String, JsonLocation> locations = new HashMap<>();
         try (JsonParser p = factory.createParser(text)) {
@@ -99,7 +131,7 @@ final class LocatedJson {
     }
 
     /** The position of {@code pointer}, or of its nearest enclosing value, or {@code null} if unknown. */
-    JsonLocation locate(String pointer) {
+    public JsonLocation locate(String pointer) {
         String p = pointer;
         while (true) {
             JsonLocation l = locations.get(p);
@@ -110,12 +142,13 @@ final class LocatedJson {
         }
     }
 
-    static String escape(String name) {
+    /** A key as a JSON pointer segment. */
+    public static String escape(String name) {
         return name.replace("~", "~0").replace("/", "~1");
     }
 
     /** {@code /rules/4/replies/2} as a reader writes it: {@code rules[4].replies[2]}; the root is {@code (top)}. */
-    static String readable(String pointer) {
+    public static String readable(String pointer) {
         if (pointer.isEmpty()) {
             return "(top)";
         }

@@ -2,6 +2,8 @@ package dev.predmon.cli;
 
 import picocli.CommandLine;
 
+import java.util.List;
+
 /** Entry point of {@code predmon.jar}. */
 public final class Main {
 
@@ -9,12 +11,33 @@ public final class Main {
     }
 
     public static void main(String[] args) {
-        System.exit(commandLine().execute(args));
+        System.exit(commandLine(args).execute(args));
     }
 
-    /** The configured command line: used by {@link #main} and by in-process tests. */
+    /** The configured command line with every subcommand: used by in-process tests. */
     public static CommandLine commandLine() {
+        return configure(PredmonCommand.SUBCOMMANDS);
+    }
+
+    /**
+     * The command line that runs {@code args}. When the first argument is exactly a subcommand's name, only that
+     * subcommand is added: building the other ten (picocli reflects over each command, its mixins and option types)
+     * took a third of a second of every start. Anything else (no arguments, {@code --help}, {@code --version}, a
+     * top-level option, an unknown or misspelt name) gets the full command line, so that usage, "Did you mean"
+     * suggestions and errors list every subcommand. Within a subcommand picocli looks only at that subcommand, so
+     * its help, errors and behaviour are the same either way.
+     */
+    static CommandLine commandLine(String[] args) {
+        return configure(args.length == 0 ? PredmonCommand.SUBCOMMANDS
+                : PredmonCommand.subcommand(args[0]).<List<Class<?>>>map(List::of).orElse(PredmonCommand.SUBCOMMANDS));
+    }
+
+    private static CommandLine configure(List<Class<?>> subcommands) {
         CommandLine cl = new CommandLine(new PredmonCommand());
+        for (Class<?> subcommand : subcommands) {
+            cl.addSubcommand(subcommand);
+        }
+        // after the subcommands: both settings are passed down to the subcommands present when they are set
         cl.setExecutionExceptionHandler(new ErrorHandler());
         cl.setUsageHelpAutoWidth(true);
         return cl;

@@ -6,16 +6,29 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ScopeType;
 import picocli.CommandLine.Spec;
 
-/** The top command: lists the subcommands. */
+import java.util.Arrays;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * The top command. Its subcommands are {@link #SUBCOMMANDS}, added by {@link Main} rather than listed in the
+ * annotation, so that a run of one subcommand need not build the other ten (picocli reflects over every command
+ * class, its mixins and option types when it builds a command line).
+ */
 @Command(name = "predmon", mixinStandardHelpOptions = true, version = "predmon 0.1.0",
         description = "Predictive runtime monitoring of robots: learns one Mealy machine per scenario from YARP "
                 + "monitor logs and warns while a robot runs as soon as the run can only be a faulty scenario.",
-        subcommands = {LearnCommand.class, VerifyCommand.class, ClassifyCommand.class, WatchCommand.class,
-                SimulateCommand.class, EvaluateCommand.class, ExplainCommand.class,
-                ExportSamplesCommand.class, BenchCommand.class, DemoCommand.class, AbstractionCommand.class},
         footer = {"", "Exit codes: 0 ok / no warning, 1 warning raised (verify: mismatch), 2 usage, 3 bad input, "
                 + "4 internal error."})
 public final class PredmonCommand implements Runnable {
+
+    /**
+     * The subcommands, in the order usage lists them: the one list of them. Their names are those of their own
+     * {@code @Command} annotations.
+     */
+    static final List<Class<?>> SUBCOMMANDS = List.of(LearnCommand.class, VerifyCommand.class, ClassifyCommand.class,
+            WatchCommand.class, SimulateCommand.class, EvaluateCommand.class, ExplainCommand.class,
+            ExportSamplesCommand.class, BenchCommand.class, DemoCommand.class, AbstractionCommand.class);
 
     @Spec
     CommandSpec spec;
@@ -23,6 +36,20 @@ public final class PredmonCommand implements Runnable {
     /** Read by {@link ErrorHandler}: print stack traces. */
     @Option(names = "--verbose", scope = ScopeType.INHERIT, description = "Print stack traces of errors.")
     boolean verbose;
+
+    /**
+     * The subcommand called exactly {@code name} (or one of its aliases), if there is one. Reads only the classes'
+     * {@code @Command} annotations: it neither instantiates nor initialises a command.
+     */
+    static Optional<Class<?>> subcommand(String name) {
+        for (Class<?> c : SUBCOMMANDS) {
+            Command command = c.getAnnotation(Command.class);
+            if (command.name().equals(name) || Arrays.asList(command.aliases()).contains(name)) {
+                return Optional.of(c);
+            }
+        }
+        return Optional.empty();
+    }
 
     @Override
     public void run() {

@@ -52,7 +52,13 @@ final class ModelDirectory {
         }
     }
 
-    private static final ObjectMapper JSON = new ObjectMapper();
+    /**
+     * Reads the index of a directory that may be predmon's; built on first use, since reading models only looks
+     * here after a killed learn, and building a mapper is a tenth of a second of a start.
+     */
+    private static final class Json {
+        static final ObjectMapper MAPPER = new ObjectMapper();
+    }
 
     private final Path dir;
     private final Pattern siblingName;
@@ -175,7 +181,7 @@ final class ModelDirectory {
         }
         JsonNode root;
         try {
-            root = JSON.readTree(index.toFile());
+            root = Json.MAPPER.readTree(index.toFile());
         } catch (IOException e) {
             return null;
         }

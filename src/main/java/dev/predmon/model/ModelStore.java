@@ -1,7 +1,5 @@
 package dev.predmon.model;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import dev.predmon.BadInputException;
@@ -52,9 +50,13 @@ public final class ModelStore {
     /** Name of the file holding the abstraction the models were learned with (its SHA-256 is the fingerprint). */
     public static final String ABSTRACTION = ModelDirectory.ABSTRACTION;
 
-    private static final ObjectMapper JSON = new ObjectMapper()
-            .enable(SerializationFeature.INDENT_OUTPUT)
-            .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES);
+    /**
+     * The writer of {@code index.json}, built on first use: only {@code learn} writes, and building a mapper is a
+     * tenth of a second that the commands reading models ({@link IndexReader}) need not spend.
+     */
+    private static final class IndexWriter {
+        static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+    }
 
     private ModelStore() {
     }
@@ -162,7 +164,7 @@ public final class ModelStore {
                 writeDurably(staging.resolve(e.getKey()), e.getValue());
             }
             writeDurably(staging.resolve(ABSTRACTION), abstractionJson);
-            writeDurably(staging.resolve(INDEX), JSON.writeValueAsString(index) + "\n");
+            writeDurably(staging.resolve(INDEX), IndexWriter.JSON.writeValueAsString(index) + "\n");
             Path aside = null;
             if (Files.exists(target)) {
                 step.accept("set-aside");
@@ -227,19 +229,9 @@ public final class ModelStore {
         if (!Files.isDirectory(base)) {
             throw new BadInputException(dir + ": no model directory; run 'predmon learn' first");
         }
-        ModelIndex index;
-        try {
-            index = JSON.readValue(indexFile.toFile(), ModelIndex.class);
-        } catch (NoSuchFileException | java.io.FileNotFoundException e) {
-            throw new BadInputException(indexFile + ": missing; run 'predmon learn' first");
-        } catch (JsonProcessingException e) {
-            throw new BadInputException(indexFile + ":" + e.getLocation().getLineNr() + ": not a predmon model index: "
-                    + e.getOriginalMessage());
-        } catch (IOException e) {
-            throw BadInputException.cannotRead(indexFile, e);
-        }
+        ModelIndex index = IndexReader.read(indexFile);
         if (index.format() != ModelIndex.FORMAT || index.abstraction() == null || index.scenarios() == null
-                || index.alphabet() == null) {
+                || index.alphabet() == null || !complete(index.scenarios())) {
             throw new BadInputException(indexFile + ": not a predmon model index of format " + ModelIndex.FORMAT);
         }
         if (!abstraction.fingerprint().equals(index.abstraction().fingerprint())) {
@@ -260,6 +252,16 @@ public final class ModelStore {
             }
         }
         return new ModelSet(base, index, List.copyOf(models));
+    }
+
+    /** Whether every scenario lists its models and every model its file (null ones were a crash, not a message). */
+    private static boolean complete(List<ModelIndex.Scenario> scenarios) {
+        for (ModelIndex.Scenario s : scenarios) {
+            if (s == null || s.models() == null || s.models().stream().anyMatch(m -> m == null || m.file() == null)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Parses one DOT file into a machine over the full {@code alphabet}. */
