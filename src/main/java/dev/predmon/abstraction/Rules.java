@@ -35,7 +35,7 @@ final class Rules {
     private static final int PROBES = 4;
 
     /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
-    private record Rule(String protocol, String command, String client, String input, List<Reply> replies,
+    private record Rule(String protocol, String command, String client, String input, Reply[] replies,
                         boolean numeric) {
         boolean usesLocation() {
             if (input.contains(AbstractionValidator.LOC)) {
@@ -112,8 +112,10 @@ final class Rules {
                 replies.add(new Reply(p.any() != null, p.values() == null ? null : Set.copyOf(p.values()),
                         p.range() == null ? null : Band.of(p.range()), p.symbol()));
             }
+            // An array, not a List: rules have one to a dozen replies, and List.of's two classes (up to two elements,
+            // more) made the JIT recompile classify's reply loop whenever the other kind came along.
             byCommand.computeIfAbsent(r.command(), k -> new ArrayList<>()).add(new Rule(r.protocol(), r.command(),
-                    r.client(), r.input(), List.copyOf(replies), replies.stream().anyMatch(x -> x.band() != null)));
+                    r.client(), r.input(), replies.toArray(new Reply[0]), replies.stream().anyMatch(x -> x.band() != null)));
         }
         byCommand.replaceAll((k, v) -> List.copyOf(v));
         this.rulesByCommand = Map.copyOf(byCommand);
@@ -139,8 +141,7 @@ final class Rules {
         String value = r.reply();
         double number = rule.numeric ? Decimals.parse(value) : Double.NaN;
         String template = null;
-        for (int i = 0; i < rule.replies.size(); i++) {
-            Reply p = rule.replies.get(i);
+        for (Reply p : rule.replies) {
             if (p.matches(value, number)) {
                 template = p.symbol;
                 break;
