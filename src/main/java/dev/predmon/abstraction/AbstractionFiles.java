@@ -109,14 +109,14 @@ final class AbstractionFiles {
         return pointer.isEmpty() ? "" : LocatedJson.readable(pointer) + ": ";
     }
 
-    private static String position(String source, JsonLocation l) {
+    static String position(String source, JsonLocation l) {
         if (l == null || l.getLineNr() < 1) {
             return source + ": ";
         }
         return source + ":" + l.getLineNr() + ":" + l.getColumnNr() + ": ";
     }
 
-    private static String firstLine(String message) {
+    static String firstLine(String message) {
         String m = message == null ? "" : message.strip();
         int nl = m.indexOf('\n');
         return nl < 0 ? m : m.substring(0, nl).strip();

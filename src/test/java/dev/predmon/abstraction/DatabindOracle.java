@@ -125,15 +125,10 @@ final class DatabindOracle {
     }
 
     private static String position(String source, com.fasterxml.jackson.core.JsonLocation l) {
-        if (l == null || l.getLineNr() < 1) {
-            return source + ": ";
-        }
-        return source + ":" + l.getLineNr() + ":" + l.getColumnNr() + ": ";
+        return AbstractionFiles.position(source, l);
     }
 
     private static String firstLine(String message) {
-        String m = message == null ? "" : message.strip();
-        int nl = m.indexOf('\n');
-        return nl < 0 ? m : m.substring(0, nl).strip();
+        return AbstractionFiles.firstLine(message);
     }
 }
