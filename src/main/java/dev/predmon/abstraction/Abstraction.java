@@ -2,7 +2,6 @@ package dev.predmon.abstraction;
 
 import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
-import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 
@@ -320,16 +319,11 @@ public final class Abstraction {
     /**
      * The input (as the file writes it, e.g. {@code level_i}) of the continuous rule whose reply {@code c} is, or
      * null for any other classification. The learner estimates a sensor's noise from these replies' values
-     * ({@link Decimals#parse} of the reply).
+     * ({@link AbstractEvent#value()}).
      */
     public String continuousInput(Classification.Mapped c) {
         AbstractEvent e = c.event();
         return e.direction() == Direction.OUTPUT ? continuousInputOf.get(e.symbol()) : null;
-    }
-
-    /** The value of a numeric reply, exactly {@link Double#parseDouble}'s, else NaN ({@link Decimals#parse}). */
-    private static double number(String value) {
-        return Decimals.parse(value);
     }
 
     /**

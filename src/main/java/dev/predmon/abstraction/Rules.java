@@ -161,7 +161,7 @@ final class Rules {
             }
             template = expand(template, abbreviation);
         }
-        return new Classification.Mapped(new AbstractEvent(Direction.OUTPUT, template, route.channel, r));
+        return new Classification.Mapped(new AbstractEvent(Direction.OUTPUT, template, route.channel, r, number));
     }
 
     /** The route of {@code r}'s strings: remembered, or decided now and remembered. */

@@ -4,7 +4,6 @@ import dev.predmon.abstraction.AbstractEvent;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Channel;
 import dev.predmon.abstraction.Direction;
-import dev.predmon.parse.Decimals;
 
 import java.util.HashMap;
 import java.util.Map;
@@ -28,10 +27,9 @@ final class Hysteresis {
         if (e.direction() != Direction.OUTPUT || !abstraction.hasHysteresis(e.symbol())) {
             return e;
         }
-        String band = abstraction.settle(settled.get(e.channel()), e.symbol(),
-                Decimals.parse(e.record().reply().trim()));
+        String band = abstraction.settle(settled.get(e.channel()), e.symbol(), e.value());
         settled.put(e.channel(), band);
-        return band.equals(e.symbol()) ? e : new AbstractEvent(e.direction(), band, e.channel(), e.record());
+        return band.equals(e.symbol()) ? e : new AbstractEvent(e.direction(), band, e.channel(), e.record(), e.value());
     }
 
     void reset() {

@@ -4,7 +4,6 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
-import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
@@ -170,8 +169,8 @@ public final class Traces {
         @Override
         public void mapped(LogRecord record, Classification.Mapped c) {
             String input = abstraction.continuousInput(c);
-            double value = input == null ? Double.NaN : Decimals.parse(record.reply().trim());
-            if (!Double.isNaN(value)) {
+            double value = c.event().value();
+            if (input != null && !Double.isNaN(value)) {
                 List<Double> values = readings.get(input);
                 if (values == null) {
                     values = new ArrayList<>();
