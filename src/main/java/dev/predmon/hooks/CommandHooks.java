@@ -180,8 +180,11 @@ public final class CommandHooks implements AutoCloseable {
 
     /** Kills a command and whatever it started (a shell's children would otherwise live on). */
     private static void kill(Process p) {
-        p.descendants().forEach(ProcessHandle::destroyForcibly);
+        // The shell first, then what it started: a shell that outlives its children prints "Killed" for each on
+        // watch's stderr, beside the report line that already says so.
+        List<ProcessHandle> children = p.descendants().toList();
         p.destroyForcibly();
+        children.forEach(ProcessHandle::destroyForcibly);
     }
 
     private static String seconds(Duration d) {
