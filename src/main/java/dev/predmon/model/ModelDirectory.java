@@ -1,8 +1,8 @@
 package dev.predmon.model;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.BadInputException;
+import dev.predmon.abstraction.LocatedJson;
 
 import java.io.IOException;
 import java.nio.file.FileAlreadyExistsException;
@@ -50,14 +50,6 @@ final class ModelDirectory {
         Sibling(String infix) {
             this.infix = infix;
         }
-    }
-
-    /**
-     * Reads the index of a directory that may be predmon's; built on first use, since reading models only looks
-     * here after a killed learn, and building a mapper is a tenth of a second of a start.
-     */
-    private static final class Json {
-        static final ObjectMapper MAPPER = new ObjectMapper();
     }
 
     private final Path dir;
@@ -181,7 +173,7 @@ final class ModelDirectory {
         }
         JsonNode root;
         try {
-            root = Json.MAPPER.readTree(index.toFile());
+            root = LocatedJson.readValue(index.toFile()).root();
         } catch (IOException e) {
             return null;
         }
