@@ -14,6 +14,7 @@ import net.automatalib.util.automaton.copy.AutomatonCopyMethod;
 import net.automatalib.util.automaton.copy.AutomatonLowLevelCopy;
 
 import java.io.IOException;
+import java.io.ByteArrayInputStream;
 import java.io.InputStream;
 import java.io.StringWriter;
 import java.nio.channels.FileChannel;
@@ -264,15 +265,36 @@ public final class ModelStore {
         return true;
     }
 
+    /**
+     * {@code machine} as it reads back from its DOT file: the same machine, its states numbered as every command that
+     * loads a model directory numbers them. Learning renumbers through this, so that statistics kept by state number
+     * fit the machine in memory and on disk alike.
+     */
+    public static CompactMealy<String, String> canonical(CompactMealy<String, String> machine, Alphabet<String> alphabet) {
+        try {
+            return fromDot(Path.of("(learned machine)"), new ByteArrayInputStream(
+                    toDot(machine, alphabet).getBytes(StandardCharsets.UTF_8)), alphabet);
+        } catch (BadInputException | IOException e) {
+            throw new IllegalStateException("a learned machine does not read back from its own DOT text", e);
+        }
+    }
+
     /** Parses one DOT file into a machine over the full {@code alphabet}. */
     static CompactMealy<String, String> readDot(Path file, Alphabet<String> alphabet) throws BadInputException {
-        InputModelData<String, CompactMealy<String, String>> data;
         try (InputStream in = Files.newInputStream(file)) {
-            data = DOTParsers.mealy().readModel(in);
+            return fromDot(file, in, alphabet);
         } catch (NoSuchFileException e) {
             throw new BadInputException(file + ": missing (listed in " + INDEX + ")");
         } catch (IOException e) {
             throw BadInputException.cannotRead(file, e);
+        }
+    }
+
+    private static CompactMealy<String, String> fromDot(Path file, InputStream in, Alphabet<String> alphabet)
+            throws BadInputException, IOException {
+        InputModelData<String, CompactMealy<String, String>> data;
+        try {
+            data = DOTParsers.mealy().readModel(in);
         } catch (RuntimeException e) {
             throw new BadInputException(file + ": not a Mealy machine in DOT (edges labelled 'input / output'): "
                     + firstLine(e.getMessage()));

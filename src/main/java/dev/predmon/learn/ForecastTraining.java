@@ -1,0 +1,117 @@
+package dev.predmon.learn;
+
+import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.Forecaster;
+import dev.predmon.forecast.StatsLearner;
+import dev.predmon.forecast.ThresholdChoice;
+import dev.predmon.mealy.MealyTrace;
+import dev.predmon.pipeline.LogTrace;
+import net.automatalib.alphabet.Alphabet;
+import net.automatalib.automaton.transducer.CompactMealy;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Learns the forecast that goes with the machines: the per-state statistics over every training run
+ * ({@link StatsLearner}), and the warning threshold chosen by cross-validation over the same runs: each fold's
+ * machines and statistics are learned without it, its runs are forecast pair by pair, and each run's highest
+ * forecast before its violation decides ({@link ThresholdChoice}).
+ */
+public final class ForecastTraining {
+
+    /** Folds of the threshold's cross-validation (fewer with fewer logs). */
+    static final int FOLDS = 5;
+
+    private ForecastTraining() {
+    }
+
+    /**
+     * The forecast of {@code machines} (by id), learned from the runs of {@code specs} in {@code traces}.
+     *
+     * @param limit the safety property's threshold, NaN without a property
+     */
+    public static ForecastModel train(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                      Map<String, CompactMealy<String, String>> machines, Alphabet<String> alphabet,
+                                      double limit) {
+        List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
+        String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
+        ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
+        List<Path> logs = specs.stream().flatMap(s -> s.logs().stream()).filter(traces::containsKey).distinct()
+                .sorted().toList();
+        int k = Math.min(FOLDS, logs.size());
+        if (k < 2) {
+            return stats.withThreshold(ThresholdChoice.DEFAULT, "default " + ThresholdChoice.DEFAULT
+                    + ": too few logs to cross-validate");
+        }
+        List<ThresholdChoice.Peak> peaks = new ArrayList<>();
+        for (int f = 0; f < k; f++) {
+            int fold = f;
+            List<Path> held = new ArrayList<>();
+            for (int i = fold; i < logs.size(); i += k) {
+                held.add(logs.get(i));
+            }
+            Map<String, CompactMealy<String, String>> foldMachines = new LinkedHashMap<>();
+            for (ScenarioSpec s : specs) {
+                List<MealyTrace> samples = s.logs().stream().filter(traces::containsKey).filter(l -> !held.contains(l))
+                        .flatMap(l -> traces.get(l).samples(s.runs()).stream()).toList();
+                if (!samples.isEmpty()) {
+                    ScenarioLearner.learnSamples(s, samples, alphabet).machines()
+                            .forEach(m -> foldMachines.put(m.id(), m.machine()));
+                }
+            }
+            ForecastModel foldStats = StatsLearner.learn(foldMachines, runsOf(specs, traces, l -> !held.contains(l)),
+                    unit, limit);
+            Forecaster forecaster = new Forecaster(foldStats, foldMachines);
+            for (LogTrace.Run r : runsOf(specs, traces, held::contains)) {
+                peaks.add(new ThresholdChoice.Peak(peak(forecaster, r), r.violated()));
+            }
+        }
+        ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
+        return stats.withThreshold(c.threshold(), c.note());
+    }
+
+    /** The run's highest forecast before its violation (or its end). */
+    public static double peak(Forecaster forecaster, LogTrace.Run run) {
+        double peak = 0;
+        for (Forecast f : forecast(forecaster, run)) {
+            peak = Math.max(peak, f.probability());
+        }
+        return peak;
+    }
+
+    /** The forecast after each pair of {@code run} before its violation. */
+    public static List<Forecast> forecast(Forecaster forecaster, LogTrace.Run run) {
+        forecaster.reset();
+        List<Forecast> out = new ArrayList<>();
+        for (int i = 0; i < run.pairs().size(); i++) {
+            double t = run.timing().time(i);
+            if (run.violated() && !(t < run.timing().violationTime())) {
+                break;
+            }
+            out.add(forecaster.pair(run.pairs().get(i).input(), run.pairs().get(i).output(), t,
+                    run.timing().value(i), i));
+        }
+        return out;
+    }
+
+    /** The runs of the logs {@code include} selects, each of the runs its scenario learns from. */
+    private static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                             java.util.function.Predicate<Path> include) {
+        List<LogTrace.Run> runs = new ArrayList<>();
+        for (ScenarioSpec s : specs) {
+            for (Path log : s.logs()) {
+                LogTrace t = traces.get(log);
+                if (t != null && include.test(log)) {
+                    t.runs().stream().filter(r -> !r.pairs().isEmpty() && s.runs().selects(r.violated()))
+                            .forEach(runs::add);
+                }
+            }
+        }
+        return runs;
+    }
+}
