@@ -2,6 +2,8 @@ package dev.predmon.evaluate;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.learn.ForecastTraining;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.Learning;
 import dev.predmon.learn.LearnedScenario;
@@ -160,6 +162,7 @@ public final class Evaluator {
             }
         }
         List<LearnedScenario> learned = new ArrayList<>();
+        List<ScenarioSpec> learnedSpecs = new ArrayList<>();
         for (ScenarioSpec s : train) {
             Map<Path, LogTrace> read = traces;
             List<MealyTrace> own = s.logs().stream().flatMap(log -> read.get(log).samples(s.runs()).stream()).toList();
@@ -168,8 +171,11 @@ public final class Evaluator {
                 continue;
             }
             learned.add(ScenarioLearner.learnSamples(s, own, alphabet));
+            learnedSpecs.add(s);
         }
-        return LearnedModels.modelSet(learned, tuned);
+        ForecastModel forecast = ForecastTraining.train(learnedSpecs, traces, LearnedModels.machines(learned), alphabet,
+                ForecastTraining.limit(tuned));
+        return LearnedModels.modelSet(learned, tuned, forecast);
     }
 
     private static int count(List<ScenarioSpec> specs) {

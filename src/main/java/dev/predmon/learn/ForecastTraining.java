@@ -1,5 +1,7 @@
 package dev.predmon.learn;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Forecaster;
@@ -73,6 +75,11 @@ public final class ForecastTraining {
         }
         ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
         return stats.withThreshold(c.threshold(), c.note());
+    }
+
+    /** The safety property's threshold, NaN when the abstraction has no property. */
+    public static double limit(Abstraction abstraction) {
+        return abstraction.safety().map(SafetyRule::below).orElse(Double.NaN);
     }
 
     /** The run's highest forecast before its violation (or its end). */

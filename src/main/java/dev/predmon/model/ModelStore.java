@@ -4,6 +4,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastFile;
+import dev.predmon.forecast.ForecastModel;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.alphabet.Alphabets;
 import net.automatalib.automaton.transducer.CompactMealy;
@@ -26,6 +28,7 @@ import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -131,6 +134,16 @@ public final class ModelStore {
     public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson)
             throws IOException, BadInputException {
         return write(dir, index, dots, abstractionJson, step -> { });
+    }
+
+    /** As above, with the forecast's statistics, written as {@value ForecastFile#NAME} and listed in the index. */
+    public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson,
+                                     ForecastModel forecast) throws IOException, BadInputException {
+        Map<String, String> files = new LinkedHashMap<>(dots);
+        files.put(ForecastFile.NAME, ForecastFile.write(forecast));
+        ModelIndex listed = new ModelIndex(index.format(), index.abstraction(), index.alphabet(), index.scenarios(),
+                ForecastFile.NAME);
+        return write(dir, listed, files, abstractionJson, step -> { });
     }
 
     /**
@@ -252,7 +265,24 @@ public final class ModelStore {
                         alphabet));
             }
         }
-        return new ModelSet(base, index, List.copyOf(models));
+        return new ModelSet(base, index, List.copyOf(models), forecast(base, index));
+    }
+
+    /** The forecast the index lists, or null when it lists none (a directory learned before forecasts were). */
+    private static ForecastModel forecast(Path base, ModelIndex index) throws BadInputException {
+        if (index.forecast() == null) {
+            return null;
+        }
+        Path file = base.resolve(index.forecast());
+        try {
+            return ForecastFile.read(Files.readString(file, StandardCharsets.UTF_8));
+        } catch (NoSuchFileException e) {
+            throw new BadInputException(file + ": missing (listed in " + INDEX + "); run 'predmon learn' again");
+        } catch (IOException e) {
+            throw BadInputException.cannotRead(file, e);
+        } catch (IllegalArgumentException e) {
+            throw new BadInputException(file + ": not a predmon forecast: " + e.getMessage());
+        }
     }
 
     /** Whether every scenario lists its models and every model its file (null ones were a crash, not a message). */
