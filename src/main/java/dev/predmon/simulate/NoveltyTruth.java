@@ -32,7 +32,8 @@ public record NoveltyTruth(double startTime, Double gapBefore, boolean ticks, St
      * @param location  where the robot was heading ({@code charging_station} or the tour location)
      * @param stuckFrom when the robot stopped at the blocked point
      * @param abortTime when the {@code getStatus} reply said ABORT (3)
-     * @param retryTime when the tree sent {@code goTo} to the same location again, or null if the run ended first
+     * @param retryTime when the tree sent {@code goTo} to the same location again, or null when it did not (the
+ *                  battery had reached the early warning, so the tree headed for the charging station instead)
      * @param level     the last {@code level} reply before the abort, or null
      */
     public record Abort(String location, double stuckFrom, double abortTime, Double retryTime, Double level) {
