@@ -48,8 +48,8 @@ final class NoveltyOptions {
     boolean noTicks;
 
     @Option(names = "--gap", paramLabel = "SECONDS|LOW..HIGH",
-            description = "Seconds of silence between two runs of one log, drawn per gap from the seed when a range "
-                    + "(e.g. 5..30). Default: 5.")
+            description = "Seconds of silence between two runs of one log; a range such as 5..30 is drawn per gap "
+                    + "from the seed. Default: 5.")
     String gap;
 
     /** The novelties asked for; {@link Novelties#NONE} when none is. */

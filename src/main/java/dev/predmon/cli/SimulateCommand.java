@@ -37,15 +37,19 @@ import java.util.concurrent.Callable;
         description = {"Simulate the robot case study (behaviour tree, skills, battery and navigation components) "
                 + "and write the YARP monitor log of a run of the chosen scenario.",
                 "Scenarios: direct (nominal), recharge (nominal, recharges on the way), depleted (faulty: "
-                        + "the battery falls below 20%% before the charging station)."})
+                        + "the battery falls below 20%% before the charging station).",
+                "Novelties a real robot shows and default runs do not (blocked paths that abort, a slower robot, a "
+                        + "new place, several runs per log without Tick records) keep each run's scenario and are "
+                        + "told in the truth sidecar; docs/simulate.md describes them."})
 public final class SimulateCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
     @Option(names = "--scenario", required = true, paramLabel = "direct|recharge|depleted[,...]",
-            description = "The story to simulate. With --out and --runs, a comma-separated list: the log holds the "
-                    + "runs one after another, the list taken in turn (a robot's day: 'direct,depleted').")
+            description = "The story to simulate. With --out and --runs (or --runs-per-log), a comma-separated list: "
+                    + "the log holds the runs one after another, the list taken in turn (a robot's day: "
+                    + "'direct,depleted').")
     String scenario;
 
     @Option(names = "--seed", defaultValue = "1", description = "Seed of the run (first seed with --runs); "
