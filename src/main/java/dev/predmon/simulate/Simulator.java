@@ -1,8 +1,8 @@
 package dev.predmon.simulate;
 
+import dev.predmon.parse.RecordKind;
 import dev.predmon.simulate.BehaviorTree.Node;
 import dev.predmon.simulate.BehaviorTree.Status;
-import dev.predmon.parse.RecordKind;
 import dev.predmon.simulate.SimParameters.Point;
 
 import java.util.List;
