@@ -37,6 +37,7 @@ public final class ForecastFile {
         root.put("violating", m.violating());
         root.put("threshold", m.threshold());
         root.put("thresholdNote", m.thresholdNote());
+        root.put("thresholdValidated", m.validated());
         ArrayNode starts = root.putArray("startInputs");
         m.startInputs().forEach(starts::add);
         lows(root, m.lows());
@@ -113,7 +114,7 @@ public final class ForecastFile {
         required(root, "startInputs").forEach(s -> starts.add(s.asText()));
         return new ForecastModel(format, required(root, "unit").asText(), number(root, "limit"),
                 integer(root, "runs"), integer(root, "violating"), lows(root), number(root, "threshold"),
-                required(root, "thresholdNote").asText(), states, starts);
+                required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states, starts);
     }
 
     private static void lows(ObjectNode n, Lows lows) {

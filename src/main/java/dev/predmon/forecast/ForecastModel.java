@@ -16,10 +16,12 @@ import java.util.Map;
  * @param threshold   the probability at or above which the forecast rule warns, chosen by cross-validation over the
  *                    training runs ({@link ThresholdChoice})
  * @param thresholdNote how it was chosen, in one line
+ * @param validated   whether held-out runs of both outcomes chose the threshold (else it is a default, and the
+ *                    forecast rule is not the default rule)
  * @param states      by machine id, by state number: what the runs did from there
  * @param startInputs the inputs the training runs began with: where the tree starts over
  */
-public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold, String thresholdNote,
+public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs) {
 
     /** Current format. */
@@ -53,8 +55,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     }
 
     /** This model with another warning threshold. */
-    public ForecastModel withThreshold(double p, String note) {
-        return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, states,
+    public ForecastModel withThreshold(double p, String note, boolean validated) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
                 startInputs);
     }
 
@@ -63,7 +65,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         return o instanceof ForecastModel m && format == m.format && unit.equals(m.unit)
                 && Double.compare(limit, m.limit) == 0 && runs == m.runs && violating == m.violating
                 && lows.equals(m.lows)
-                && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote)
+                && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
                 && states.equals(m.states) && startInputs.equals(m.startInputs);
     }
 

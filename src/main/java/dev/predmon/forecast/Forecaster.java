@@ -90,7 +90,7 @@ public final class Forecaster {
         recentIn[recent % WINDOW] = input;
         recentOut[recent % WINDOW] = output;
         recent++;
-        reading(time, value);
+        remember(time, value);
         violated |= !Double.isNaN(value) && !Double.isNaN(stats.limit()) && value < stats.limit();
         boolean any = false;
         for (int m = 0; m < machines.size(); m++) {
@@ -113,6 +113,16 @@ public final class Forecaster {
             }
             resynchronise();
         }
+        return forecast(value);
+    }
+
+    /**
+     * The property read a new value between pairs: the same states, forecast again at that value (the battery moves
+     * while the interface repeats itself, and the compacted trace then has no pair to tell).
+     */
+    public Forecast reading(double time, double value) {
+        remember(time, value);
+        violated |= !Double.isNaN(value) && !Double.isNaN(stats.limit()) && value < stats.limit();
         return forecast(value);
     }
 
@@ -158,7 +168,7 @@ public final class Forecaster {
         return ends;
     }
 
-    private void reading(double time, double value) {
+    private void remember(double time, double value) {
         if (Double.isNaN(value) || Double.isNaN(time)) {
             return;
         }

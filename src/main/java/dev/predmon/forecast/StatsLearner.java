@@ -59,7 +59,7 @@ public final class StatsLearner {
             }
         }
         return new ForecastModel(ForecastModel.FORMAT, unit, limit, counted, violated,
-                new Lows(toArray(safe), toArray(violating)), 0.5, "not chosen", states, List.copyOf(starts));
+                new Lows(toArray(safe), toArray(violating)), 0.5, "not chosen", false, states, List.copyOf(starts));
     }
 
     /** Per state of {@code machine}: counts, times and drift over the runs it takes. */

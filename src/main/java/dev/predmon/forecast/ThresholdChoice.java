@@ -26,8 +26,8 @@ public final class ThresholdChoice {
     public record Peak(double probability, boolean violated) {
     }
 
-    /** The chosen threshold and why, in one line. */
-    public record Choice(double threshold, String note) {
+    /** The chosen threshold, why in one line, and whether held-out runs of both outcomes chose it. */
+    public record Choice(double threshold, String note, boolean validated) {
     }
 
     /** Chooses from {@code peaks}. */
@@ -36,7 +36,7 @@ public final class ThresholdChoice {
         long good = peaks.size() - bad;
         if (bad == 0 || good == 0) {
             return new Choice(DEFAULT, String.format(Locale.ROOT, "default %.2f: the %d held-out run(s) %s",
-                    DEFAULT, peaks.size(), bad == 0 ? "all held" : "all violated"));
+                    DEFAULT, peaks.size(), bad == 0 ? "all held" : "all violated"), false);
         }
         TreeSet<Double> distinct = new TreeSet<>();
         peaks.forEach(p -> distinct.add(p.probability()));
@@ -71,7 +71,7 @@ public final class ThresholdChoice {
         }
         return new Choice(best, String.format(Locale.ROOT,
                 "%.2f by cross-validation on %d held-out runs: warned %d of %d violations, %d false alarm(s) in %d",
-                best, peaks.size(), hits, bad, alarms, good));
+                best, peaks.size(), hits, bad, alarms, good), true);
     }
 
     private static int errors(List<Peak> peaks, double t) {

@@ -9,6 +9,7 @@ import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunTiming;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -48,7 +49,7 @@ public final class ForecastTraining {
         int k = Math.min(FOLDS, logs.size());
         if (k < 2) {
             return stats.withThreshold(ThresholdChoice.DEFAULT, "default " + ThresholdChoice.DEFAULT
-                    + ": too few logs to cross-validate");
+                    + ": too few logs to cross-validate", false);
         }
         List<ThresholdChoice.Peak> peaks = new ArrayList<>();
         for (int f = 0; f < k; f++) {
@@ -66,15 +67,18 @@ public final class ForecastTraining {
                             .forEach(m -> foldMachines.put(m.id(), m.machine()));
                 }
             }
-            ForecastModel foldStats = StatsLearner.learn(foldMachines, runsOf(specs, traces, l -> !held.contains(l)),
-                    unit, limit);
+            List<LogTrace.Run> training = runsOf(specs, traces, l -> !held.contains(l));
+            if (training.stream().allMatch(LogTrace.Run::violated) || training.stream().noneMatch(LogTrace.Run::violated)) {
+                continue; // a fold that trains on one outcome only says nothing about where to draw the line
+            }
+            ForecastModel foldStats = StatsLearner.learn(foldMachines, training, unit, limit);
             Forecaster forecaster = new Forecaster(foldStats, foldMachines);
             for (LogTrace.Run r : runsOf(specs, traces, held::contains)) {
                 peaks.add(new ThresholdChoice.Peak(peak(forecaster, r), r.violated()));
             }
         }
         ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
-        return stats.withThreshold(c.threshold(), c.note());
+        return stats.withThreshold(c.threshold(), c.note(), c.validated());
     }
 
     /** The safety property's threshold, NaN when the abstraction has no property. */
@@ -91,17 +95,32 @@ public final class ForecastTraining {
         return peak;
     }
 
-    /** The forecast after each pair of {@code run} before its violation. */
+    /**
+     * The forecasts of {@code run} before its violation, in the order {@code watch} makes them: after each new value
+     * of the property and after each pair.
+     */
     public static List<Forecast> forecast(Forecaster forecaster, LogTrace.Run run) {
         forecaster.reset();
         List<Forecast> out = new ArrayList<>();
-        for (int i = 0; i < run.pairs().size(); i++) {
-            double t = run.timing().time(i);
-            if (run.violated() && !(t < run.timing().violationTime())) {
+        RunTiming t = run.timing();
+        List<RunTiming.Reading> readings = t.readings();
+        int r = 0;
+        for (int i = 0; i <= run.pairs().size(); i++) {
+            for (; r < readings.size() && readings.get(r).pairsBefore() <= i; r++) {
+                RunTiming.Reading x = readings.get(r);
+                if (run.violated() && !(x.time() < t.violationTime())) {
+                    return out;
+                }
+                out.add(forecaster.reading(x.time(), x.value()));
+            }
+            if (i == run.pairs().size()) {
                 break;
             }
-            out.add(forecaster.pair(run.pairs().get(i).input(), run.pairs().get(i).output(), t,
-                    run.timing().value(i), i));
+            if (run.violated() && !(t.time(i) < t.violationTime())) {
+                break;
+            }
+            out.add(forecaster.pair(run.pairs().get(i).input(), run.pairs().get(i).output(), t.time(i), t.value(i),
+                    i));
         }
         return out;
     }

@@ -43,7 +43,16 @@ final class ForecastTracker {
 
     /** Forecasts after one pair; returns the forecast when it is news, else null. */
     Forecast pair(String input, String output, double time, double value, long line) {
-        last = forecaster.pair(input, output, time, value, line);
+        return news(forecaster.pair(input, output, time, value, line));
+    }
+
+    /** Forecasts at a new value of the property; returns the forecast when it is news, else null. */
+    Forecast reading(double time, double value) {
+        return news(forecaster.reading(time, value));
+    }
+
+    private Forecast news(Forecast f) {
+        last = f;
         if (told == null || material(told, last)) {
             told = last;
             return last;

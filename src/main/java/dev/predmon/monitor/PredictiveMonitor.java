@@ -141,9 +141,12 @@ public final class PredictiveMonitor implements PipelineListener {
         events.accept(new MonitorEvent.RunStarted(number, first.time(), first.line(), first.clock()));
     }
 
-    /** The rule used when none is asked for: the forecast's when the models carry one, else the thesis's. */
+    /**
+     * The rule used when none is asked for: the forecast's when the models carry one whose threshold held-out runs
+     * chose, else the thesis's (too few training runs to know where to warn).
+     */
     public static WarningRule defaultRule(ModelSet models) {
-        return models.forecast() == null ? WarningRule.MATCH : WarningRule.FORECAST;
+        return models.forecast() != null && models.forecast().validated() ? WarningRule.FORECAST : WarningRule.MATCH;
     }
 
     private void startRun(int number, long line) {
@@ -191,6 +194,37 @@ public final class PredictiveMonitor implements PipelineListener {
             firstViolation = firstViolation == null ? violation : firstViolation;
             events.accept(violation);
         }
+        if (forecast != null && (before == null || before != v)) {
+            Forecast f = told(forecast.reading(record.time(), v), record);
+            if (warning == null && violation == null && rule == WarningRule.FORECAST
+                    && f.probability() >= forecast.threshold()) {
+                warn(record, List.of(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
+                        v)), f);
+            }
+        }
+    }
+
+    /** Reports {@code news} if it is news, and returns the latest forecast. */
+    private Forecast told(Forecast news, LogRecord trigger) {
+        Forecast f = forecast.last();
+        everyForecast.accept(f, run);
+        if (news != null) {
+            events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(), run));
+        }
+        return f;
+    }
+
+    private String forecastReason(Forecast f, String where) {
+        return String.format(Locale.ROOT, "%s reaches the warning threshold %.2f; %s; %s; %s",
+                ForecastWords.probability(f), forecast.threshold(), ForecastWords.time(f), ForecastWords.evidence(f),
+                where);
+    }
+
+    private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f) {
+        warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, battery, pairs, trigger.clock(),
+                run, rule, f, reason);
+        firstWarning = firstWarning == null ? warning : firstWarning;
+        events.accept(warning);
     }
 
     @Override
@@ -225,32 +259,18 @@ public final class PredictiveMonitor implements PipelineListener {
         if (!nominalAlive && !faultyAlive.isEmpty()) {
             sinceNominalGone++;
         }
-        Forecast f = null;
-        if (forecast != null) {
-            Forecast news = forecast.pair(pair.input(), pair.output(), trigger.time(),
-                    battery == null ? Double.NaN : battery, trigger.line());
-            f = forecast.last();
-            everyForecast.accept(f, run);
-            if (news != null) {
-                events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(),
-                        run));
-            }
-        }
+        Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
+                battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
             if (rule == WarningRule.MATCH && !nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
                 reason = "the run can only be faulty scenario " + String.join(", ", faultyAlive)
                         + " (every nominal model eliminated)";
             } else if (rule == WarningRule.FORECAST && f != null && f.probability() >= forecast.threshold()) {
-                reason = String.format(Locale.ROOT, "%s reaches the warning threshold %.2f; %s; %s after %s -> %s",
-                        ForecastWords.probability(f), forecast.threshold(), ForecastWords.time(f),
-                        ForecastWords.evidence(f), pair.input(), pair.output());
+                reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
             }
             if (reason != null) {
-                warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), List.copyOf(faultyAlive), battery,
-                        pairs, trigger.clock(), run, rule, f, reason);
-                firstWarning = firstWarning == null ? warning : firstWarning;
-                events.accept(warning);
+                warn(trigger, List.copyOf(faultyAlive), reason, f);
             }
         }
         if (!noMatch && !nominalAlive && faultyAlive.isEmpty()) {

@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * When the pairs of one run came and what the safety property's channel read then: the forecast learns from it how
@@ -13,9 +14,21 @@ import java.util.Arrays;
  * @param lowestSafeValue the property's lowest value before the violation (in the whole run when it held), NaN
  *                      without a reading: how low the run went while still safe
  * @param unit          what the times count: {@code s}, or {@code ticks} in a log without time stamps
+ * @param readings      every change of the property's value in the run, in order, with the number of pairs completed
+ *                      before it: the forecast moves with the value between pairs too
  */
 public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
-                        double lowestSafeValue, String unit) {
+                        double lowestSafeValue, String unit, List<Reading> readings) {
+
+    /**
+     * A new value of the property.
+     *
+     * @param time        its record's time
+     * @param value       the value
+     * @param pairsBefore pairs of the run completed before it
+     */
+    public record Reading(double time, double value, int pairsBefore) {
+    }
 
     public RunTiming {
         if (times.length != values.length) {
@@ -24,13 +37,14 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
         }
         times = times.clone();
         values = values.clone();
+        readings = List.copyOf(readings);
     }
 
     /** No timing known for {@code pairs} pairs (every time and value NaN). */
     public static RunTiming none(int pairs) {
         double[] nan = new double[pairs];
         Arrays.fill(nan, Double.NaN);
-        return new RunTiming(nan, nan, Double.NaN, Double.NaN, Double.NaN, "s");
+        return new RunTiming(nan, nan, Double.NaN, Double.NaN, Double.NaN, "s", List.of());
     }
 
     /** The time of pair {@code i}. */
@@ -61,7 +75,7 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
     public boolean equals(Object o) {
         return o instanceof RunTiming t && Arrays.equals(times, t.times) && Arrays.equals(values, t.values)
                 && Double.compare(violationTime, t.violationTime) == 0 && Double.compare(endTime, t.endTime) == 0
-                && Double.compare(lowestSafeValue, t.lowestSafeValue) == 0 && unit.equals(t.unit);
+                && Double.compare(lowestSafeValue, t.lowestSafeValue) == 0 && unit.equals(t.unit) && readings.equals(t.readings);
     }
 
     @Override

@@ -161,6 +161,7 @@ public final class Traces {
         private double violationTime = Double.NaN;
         private double endTime = Double.NaN;
         private String unit = "s";
+        private List<RunTiming.Reading> changes = new ArrayList<>();
         private double[] times = new double[64];
         private double[] values = new double[64];
 
@@ -182,6 +183,9 @@ public final class Traces {
             double v = safety.get().valueOf(record);
             if (Double.isNaN(v)) {
                 return;
+            }
+            if (v != value) {
+                changes.add(new RunTiming.Reading(record.time(), v, pairs.size()));
             }
             value = v;
             if (safety.get().violatedBy(v)) {
@@ -231,7 +235,8 @@ public final class Traces {
             Map<String, List<Double>> frozen = new TreeMap<>();
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
             RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
-                    violationTime, endTime, lowestSafe, unit);
+                    violationTime, endTime, lowestSafe, unit, changes);
+            changes = new ArrayList<>();
             done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated,
                     Collections.unmodifiableMap(frozen), timing));
             pairs = new ArrayList<>();
