@@ -147,15 +147,18 @@ public final class Abstraction {
                 spec.runs().tickRestart() == null || spec.runs().tickRestart(),
                 spec.runs().silence() == null ? RunRule.DEFAULT_SILENCE : spec.runs().silence());
         this.confirm = spec.warning() == null || spec.warning().confirm() == null ? 0 : spec.warning().confirm();
-        this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
-                s.from() == null ? "" : s.from(), s.to() == null ? "" : s.to(), s.below()));
         if (fingerprintOf != null) {
             this.canonicalJson = fingerprintOf.canonicalJson;
             this.fingerprint = fingerprintOf.fingerprint;
         } else {
             this.canonicalJson = SpecWriter.canonical(spec);
-            this.fingerprint = AbstractionFiles.sha256(canonicalJson);
+            // The recommended action is advice to operators: it changes no trace, so models stay valid when it does.
+            this.fingerprint = AbstractionFiles.sha256(spec.safety() == null || spec.safety().action() == null
+                    ? canonicalJson : SpecWriter.canonical(spec.withoutAction()));
         }
+        this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
+                s.from() == null ? "" : s.from(), s.to() == null ? "" : s.to(), s.below(),
+                s.action() != null ? s.action() : AbstractionFiles.builtinAction(fingerprint)));
     }
 
     /**
@@ -376,7 +379,10 @@ public final class Abstraction {
         return canonicalJson;
     }
 
-    /** SHA-256 hex of {@link #canonicalJson()}: tells whether models were learned with this abstraction. */
+    /**
+     * SHA-256 hex of {@link #canonicalJson()} (without the safety property's {@code action}, which is advice and
+     * changes no trace): tells whether models were learned with this abstraction.
+     */
     public String fingerprint() {
         return fingerprint;
     }

@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
+import java.util.HashMap;
 import java.util.HexFormat;
 import java.util.Map;
 import java.util.Optional;
@@ -120,6 +121,30 @@ final class AbstractionFiles {
         String m = message == null ? "" : message.strip();
         int nl = m.indexOf('\n');
         return nl < 0 ? m : m.substring(0, nl).strip();
+    }
+
+    /**
+     * The recommended action of the built-in abstraction with this fingerprint, or null. An abstraction file that is
+     * a built-in but for its action (the {@code models/abstraction.json} of models learned before actions existed)
+     * thus gets the built-in's.
+     */
+    static String builtinAction(String fingerprint) {
+        Map<String, String> actions = BuiltinActions.BY_FINGERPRINT;
+        return actions == null ? null : actions.get(fingerprint); // null while the built-ins themselves are read
+    }
+
+    /** Read on first use: most runs of predmon never need it. */
+    private static final class BuiltinActions {
+        static final Map<String, String> BY_FINGERPRINT = read();
+
+        private static Map<String, String> read() {
+            Map<String, String> byFingerprint = new HashMap<>();
+            for (String name : BUILTIN.keySet()) {
+                builtin(name).ifPresent(a -> a.safety().map(SafetyRule::action)
+                        .ifPresent(action -> byFingerprint.put(a.fingerprint(), action)));
+            }
+            return Map.copyOf(byFingerprint);
+        }
     }
 
     static String sha256(String text) {

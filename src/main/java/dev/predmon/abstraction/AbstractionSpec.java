@@ -28,6 +28,12 @@ import java.util.Map;
 record AbstractionSpec(String name, String description, List<DropSpec> drop, Map<String, String> locations,
                        List<RuleSpec> rules, SafetySpec safety, WarningSpec warning, RunsSpec runs) {
 
+    /** This spec without the safety property's action (see {@link SafetySpec#withoutAction()}). */
+    AbstractionSpec withoutAction() {
+        return new AbstractionSpec(name, description, drop, locations, rules,
+                safety == null ? null : safety.withoutAction(), warning, runs);
+    }
+
     /**
      * A log holds one run after another (a robot's day): {@code tickRestart} (default true) starts a run where the
      * tree's tick counter starts again (a {@code Tick} record whose number is not above the previous one);
@@ -82,8 +88,17 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
     record RangeSpec(Double above, Double atLeast, Double below, Double atMost) {
     }
 
-    /** See {@link SafetyRule}; {@code from} and {@code to} are optional. */
+    /**
+     * See {@link SafetyRule}; {@code from}, {@code to} and {@code action} (what an operator should do when the property
+     * is predicted to fail or fails, e.g. {@code send the robot to the charging station}) are optional.
+     */
     @JsonInclude(JsonInclude.Include.NON_NULL)
-    record SafetySpec(String name, String protocol, String command, String from, String to, Double below) {
+    record SafetySpec(String name, String protocol, String command, String from, String to, Double below,
+                      String action) {
+
+        /** This property without its action: what the fingerprint hashes (advice does not change a trace). */
+        SafetySpec withoutAction() {
+            return new SafetySpec(name, protocol, command, from, to, below, null);
+        }
     }
 }

@@ -31,6 +31,9 @@ final class AbstractionValidator {
     /** Symbols the I/O-automaton-to-Mealy mapping adds itself (thesis Section 4.2, Figure 4.9). */
     static final Set<String> RESERVED = Set.of("Delta", "OK");
 
+    /** The longest recommended action: it must fit one line of a tile. */
+    static final int MAX_ACTION = 120;
+
     private static final Pattern PLACEHOLDER = Pattern.compile("\\{[^}]*}");
 
     /** A validation failure at {@code pointer}. */
@@ -250,6 +253,13 @@ final class AbstractionValidator {
         required(s.below(), "/safety", "below");
         if (!Double.isFinite(s.below())) {
             throw new Invalid("/safety/below", "'below' must be a finite number");
+        }
+        String action = s.action();
+        // The action is shown to operators on one line of the live view: words, not a blank or a paragraph.
+        if (action != null && (action.isBlank() || action.length() > MAX_ACTION
+                || action.chars().anyMatch(Character::isISOControl))) {
+            throw new Invalid("/safety/action", "'action' must say in one line of at most " + MAX_ACTION
+                    + " characters what an operator should do, e.g. \"send the robot to the charging station\"");
         }
     }
 

@@ -15,8 +15,16 @@ import dev.predmon.parse.RecordKind;
  * @param from     the reply's sending port (the server); empty matches any
  * @param to       the reply's receiving port (the client); empty matches any
  * @param below    the property is violated by the first value strictly below this
+ * @param action   what an operator should do when the property is predicted to fail or fails, in words (e.g.
+ *                 {@code send the robot to the charging station}), or null when the abstraction gives none
  */
-public record SafetyRule(String name, String protocol, String command, String from, String to, double below) {
+public record SafetyRule(String name, String protocol, String command, String from, String to, double below,
+                         String action) {
+
+    /** A property without a recommended action. */
+    public SafetyRule(String name, String protocol, String command, String from, String to, double below) {
+        this(name, protocol, command, from, to, below, null);
+    }
 
     /** The watched numeric value carried by {@code r}, or NaN when {@code r} is not a watched reply. */
     public double valueOf(LogRecord r) {

@@ -72,7 +72,7 @@ final class SpecBinder {
     private static final Map<String, Type> RANGE = Map.of("above", Type.NUMBER, "atLeast", Type.NUMBER,
             "below", Type.NUMBER, "atMost", Type.NUMBER);
     private static final Map<String, Type> SAFETY = Map.of("name", Type.STRING, "protocol", Type.STRING,
-            "command", Type.STRING, "from", Type.STRING, "to", Type.STRING, "below", Type.NUMBER);
+            "command", Type.STRING, "from", Type.STRING, "to", Type.STRING, "below", Type.NUMBER, "action", Type.STRING);
     private static final Map<String, Type> WARNING = Map.of("confirm", Type.INTEGER, "description", Type.STRING);
     private static final Map<String, Type> RUNS = Map.of("tickRestart", Type.BOOLEAN, "silence", Type.NUMBER,
             "description", Type.STRING);
@@ -116,7 +116,7 @@ final class SpecBinder {
     private static SafetySpec safety(JsonNode node, String at) throws Invalid {
         Map<String, Object> f = fields(node, at, SAFETY);
         return new SafetySpec((String) f.get("name"), (String) f.get("protocol"), (String) f.get("command"),
-                (String) f.get("from"), (String) f.get("to"), (Double) f.get("below"));
+                (String) f.get("from"), (String) f.get("to"), (Double) f.get("below"), (String) f.get("action"));
     }
 
     private static WarningSpec warning(JsonNode node, String at) throws Invalid {

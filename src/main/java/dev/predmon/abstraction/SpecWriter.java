@@ -162,6 +162,7 @@ final class SpecWriter {
 
     private static void safety(JsonGenerator g, SafetySpec s) throws IOException {
         g.writeStartObject();
+        string(g, "action", s.action());
         number(g, "below", s.below());
         string(g, "command", s.command());
         string(g, "from", s.from());

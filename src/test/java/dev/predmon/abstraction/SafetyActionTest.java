@@ -1,0 +1,70 @@
+package dev.predmon.abstraction;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The safety property's recommended {@code action}: optional, validated, kept in the canonical form, and advice only,
+ * so that it changes no fingerprint and models learned before it stay valid.
+ */
+class SafetyActionTest {
+
+    private static final String RULES = "\"rules\": [{\"protocol\": \"B\", \"command\": \"level\", \"input\": \"level_i\","
+            + " \"replies\": [{\"any\": true, \"symbol\": \"o_level\"}]}]";
+
+    @TempDir
+    Path dir;
+
+    private static String file(String actionKey) {
+        return "{\"name\": \"mine\", " + RULES + ", \"safety\": {\"name\": \"level >= 20\", \"protocol\": \"B\","
+                + " \"command\": \"level\", \"below\": 20" + actionKey + "}}";
+    }
+
+    @Test
+    void theActionIsReadKeptAndChangesNoFingerprint() throws Exception {
+        Abstraction with = Abstraction.fromJson("with.json", file(", \"action\": \"plug the robot in\""));
+        Abstraction without = Abstraction.fromJson("without.json", file(""));
+        assertEquals("plug the robot in", with.safety().orElseThrow().action());
+        assertNull(without.safety().orElseThrow().action(), "no action given, and no built-in is this file");
+        assertTrue(with.canonicalJson().contains("\"action\":\"plug the robot in\""), with.canonicalJson());
+        assertEquals(without.fingerprint(), with.fingerprint(), "advice changes no trace");
+        Abstraction again = Abstraction.fromJson("again.json", with.canonicalJson());
+        assertEquals(with.canonicalJson(), again.canonicalJson(), "the canonical form reads back to itself");
+        assertEquals("plug the robot in", again.safety().orElseThrow().action());
+    }
+
+    @Test
+    void theBuiltInsRecommendChargingAndLendItToACopyWithoutAnAction() throws Exception {
+        for (String name : Abstraction.BUILTIN_NAMES) {
+            assertEquals("send the robot to the charging station",
+                    Abstraction.builtin(name).orElseThrow().safety().orElseThrow().action(), name);
+        }
+        // models/abstraction.json of models learned before actions existed: the built-in but for the action.
+        String stored = Abstraction.defaults().canonicalJson().replace(
+                "\"action\":\"send the robot to the charging station\",", "");
+        assertFalse(stored.contains("action"), stored);
+        Abstraction old = Abstraction.fromJson("models/abstraction.json", stored);
+        assertEquals(Abstraction.defaults().fingerprint(), old.fingerprint());
+        assertEquals("send the robot to the charging station", old.safety().orElseThrow().action());
+    }
+
+    @Test
+    void aBlankOrMultiLineActionIsOneLineOfError() throws Exception {
+        for (String bad : new String[] {"\"\"", "\"  \"", "\"first\\nsecond\"", "\"" + "x".repeat(121) + "\""}) {
+            Path f = Files.writeString(dir.resolve("bad.json"), file(",\n \"action\": " + bad));
+            AbstractionException e = assertThrows(AbstractionException.class, () -> Abstraction.load(f), bad);
+            assertFalse(e.getMessage().contains("\n"), e.getMessage());
+            assertTrue(e.getMessage().startsWith(f + ":2:"), e.getMessage());
+            assertTrue(e.getMessage().contains("safety.action"), e.getMessage());
+        }
+    }
+}
