@@ -30,6 +30,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.Callable;
@@ -101,7 +102,7 @@ final class DemoCommand implements Callable<Integer> {
                 + String.join(", ", set.index().scenarios().stream()
                 .map(s -> s.name() + (s.faulty() ? " faulty" : " nominal")).toList()) + ")");
         Path dir = work != null ? Files.createDirectories(work) : Files.createTempDirectory("predmon-demo-");
-        Board board = liveView.board(set, abstraction);
+        Board board = liveView.board(set, abstraction, true, List.of("the demo's runs, written into " + dir));
         boolean depletedOk;
         boolean rechargeOk;
         try (LiveServer server = liveView.start(out, board)) {

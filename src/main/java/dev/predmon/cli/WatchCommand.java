@@ -97,7 +97,7 @@ final class WatchCommand implements Callable<Integer> {
             err.println("predmon: note: " + set.dir() + " was learned without a forecast; warnings follow the match "
                     + "rule. Run 'predmon learn' again to add it");
         }
-        Board board = liveView.board(set, abstraction);
+        Board board = liveView.board(set, abstraction, several, sources.described());
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
                      noFollow, hookOptions.open(err), board, abstraction.name());

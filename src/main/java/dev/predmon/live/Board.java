@@ -1,6 +1,5 @@
 package dev.predmon.live;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
@@ -11,42 +10,62 @@ import dev.predmon.monitor.MonitorEvent;
 
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.LongSupplier;
 
+import static dev.predmon.live.TileJson.JSON;
+
 /**
- * The live view's state: one {@link Tile} per watched log, in the order the logs were added, and the stream of
- * events sent to {@code /events}. The monitor's thread feeds it; the server's threads read it.
+ * The live view's state: one {@link Tile} per watched log, named after its robot, and the stream of events sent to
+ * {@code /events}. The monitor's thread feeds it; the server's threads read it.
  */
 public final class Board {
 
-    private static final ObjectMapper JSON = new ObjectMapper();
+    /** The order of {@code /status} and of the page: worst first (see {@link TileState}), then by robot. */
+    private static final List<String> ORDER = List.of("violation", "warning", "unknown", "ok", "waiting", "ended");
 
     private final List<LearnedModel> models;
     private final Optional<SafetyRule> safety;
     private final long staleMillis;
     private final LongSupplier clock;
+    private final RobotNames names;
     private final Map<String, Tile> tiles = new LinkedHashMap<>();
     private final EventStream stream = new EventStream();
+    private volatile List<String> watching = List.of();
 
-    /** @param staleAfter a log that has not grown for this long is marked STALE */
-    public Board(ModelSet models, Abstraction abstraction, Duration staleAfter) {
-        this(models.models(), abstraction.safety(), staleAfter, System::currentTimeMillis);
+    /** @param staleAfter a log that has not grown for this long is marked STALE (or its run ended, see Tile) */
+    public Board(ModelSet models, Abstraction abstraction, Duration staleAfter, RobotNames names) {
+        this(models.models(), abstraction.safety(), staleAfter, System::currentTimeMillis, names);
     }
 
     Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock) {
+        this(models, safety, staleAfter, clock, RobotNames.byFile());
+    }
+
+    Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock,
+          RobotNames names) {
         this.models = List.copyOf(models);
         this.safety = safety;
         this.staleMillis = staleAfter.toMillis();
         this.clock = clock;
+        this.names = names;
     }
 
     /** The tile of {@code log}, made on first use. */
     public synchronized Tile tile(String log) {
-        return tiles.computeIfAbsent(log, l -> new Tile(l, models, safety, clock.getAsLong()));
+        return tiles.computeIfAbsent(log, l -> new Tile(l, names.of(l), models, safety, clock.getAsLong()));
+    }
+
+    /**
+     * What is watched, in words ({@code logs (*.log, *.txt) in /robots}): the page says it while no log is there
+     * yet.
+     */
+    public void watching(List<String> what) {
+        watching = List.copyOf(what);
     }
 
     /** An event of {@code tile}'s log: the tile takes it, and {@code /events} sends its JSON (which names the log). */
@@ -61,8 +80,8 @@ public final class Board {
     }
 
     /**
-     * {@code /status}: {@code {"staleAfter": seconds, "logs": [tile, ...]}}, every tile, or only {@code log}'s
-     * ({@code logs} is then empty for a log not watched).
+     * {@code /status}: {@code {"staleAfter": seconds, "watching": [...], "logs": [tile, ...]}}, every tile worst
+     * first, or only {@code log}'s ({@code logs} is then empty for a log not watched).
      */
     public ObjectNode status(String log) {
         List<Tile> all;
@@ -71,13 +90,26 @@ public final class Board {
                     : tiles.containsKey(log) ? List.of(tiles.get(log)) : List.of();
         }
         long now = clock.getAsLong();
+        String action = safety.map(SafetyRule::action).orElse(null);
+        List<ObjectNode> snapshots = new ArrayList<>();
+        for (Tile t : all) {
+            snapshots.add(t.snapshot(now, staleMillis, action));
+        }
+        snapshots.sort(Comparator.comparingInt(Board::rank).thenComparing(s -> s.get("name").asText())
+                .thenComparing(s -> s.get("log").asText()));
         ObjectNode o = JSON.createObjectNode();
         o.put("staleAfter", staleMillis / 1000.0);
+        ArrayNode w = o.putArray("watching");
+        watching.forEach(w::add);
         ArrayNode logs = o.putArray("logs");
-        for (Tile t : all) {
-            logs.add(t.snapshot(now, staleMillis));
-        }
+        snapshots.forEach(logs::add);
         return o;
+    }
+
+    /** Where a tile sorts: by its state, a log quiet mid-run with the unknown ones (nobody knows what it does now). */
+    static int rank(ObjectNode tile) {
+        int r = ORDER.indexOf(tile.get("state").asText());
+        return tile.get("stale").asBoolean() && r > ORDER.indexOf("unknown") ? ORDER.indexOf("unknown") : r;
     }
 
     /** How many pages are connected to {@code /events} now. */

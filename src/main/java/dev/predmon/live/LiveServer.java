@@ -34,7 +34,7 @@ public final class LiveServer implements AutoCloseable {
     /** The page's own files, and nothing else. */
     private static final Map<String, String> FILES = Map.of(
             "/", "index.html", "/index.html", "index.html", "/live.js", "live.js", "/live.css", "live.css",
-            "/favicon.svg", "favicon.svg");
+            "/favicon.svg", "favicon.svg", "/words.js", "words.js", "/tile.js", "tile.js", "/plot.js", "plot.js");
     private static final Map<String, String> TYPES = Map.of(
             "html", "text/html; charset=utf-8", "js", "text/javascript; charset=utf-8",
             "css", "text/css; charset=utf-8", "svg", "image/svg+xml");

@@ -1,11 +1,10 @@
 package dev.predmon.live;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.Clock;
@@ -18,11 +17,15 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 
+import static dev.predmon.live.TileJson.JSON;
+import static dev.predmon.live.TileJson.number;
+
 /**
- * What the live view shows of one watched log: the property's light in the conventions of robot monitors (grey: no
- * data yet; green: held, no faulty prediction; yellow: warning, the run can only be a faulty scenario; red:
- * violated), the battery over the current run with the warning and the violation, the models still alive and those
- * eliminated with the reason, the last events, the lead once both happened, the run number, and the verdicts of
+ * What the live view shows of one watched log: its robot's {@link TileState} (waiting, ok, unknown, warning,
+ * violation, ended) with its light, the forecast (probability and time to the violation, with what it rests on), the
+ * warning's reason and the property's recommended action, the battery over the current run with the warning and the
+ * violation, this run's history (a violation stays in it after the property holds again), the models still alive and
+ * those eliminated with the reason, the last events, the lead once both happened, the run number, and the verdicts of
  * the earlier runs. A new run (or a rotated log) resets the light, the plot and the models.
  *
  * <p>Fed from the monitor's thread ({@link #event}, {@link #record}, {@link #grew}) and read from the server's
@@ -34,10 +37,10 @@ public final class Tile {
     static final int PLOT_POINTS = 240;
     static final int LAST_EVENTS = 12;
     static final int EARLIER_RUNS = 20;
-
-    private static final ObjectMapper JSON = new ObjectMapper();
+    static final int HISTORY = 8;
 
     private final String log;
+    private final String name;
     private final List<LearnedModel> models;
     private final Optional<SafetyRule> safety;
 
@@ -45,8 +48,15 @@ public final class Tile {
     private long runLine = 1;
     private long runRecords;
     private MonitorEvent.Warning warning;
+    private JsonNode warningJson;
     private MonitorEvent.Violation violation;
     private boolean noMatch;
+    private long noMatchLine;
+    private Forecast forecast;
+    private JsonNode forecastJson;
+    private boolean recovered;
+    private final Deque<ObjectNode> history = new ArrayDeque<>();
+    private final RunRest rest = new RunRest();
     private final Map<String, String> eliminated = new LinkedHashMap<>();
     private final BatterySeries battery = new BatterySeries(PLOT_POINTS);
     private final Deque<JsonNode> lastEvents = new ArrayDeque<>();
@@ -57,8 +67,9 @@ public final class Tile {
     private Clock clock = Clock.SECONDS;
     private long grewAtMillis;
 
-    Tile(String log, List<LearnedModel> models, Optional<SafetyRule> safety, long nowMillis) {
+    Tile(String log, String name, List<LearnedModel> models, Optional<SafetyRule> safety, long nowMillis) {
         this.log = log;
+        this.name = name;
         this.models = List.copyOf(models);
         this.safety = safety;
         this.grewAtMillis = nowMillis;
@@ -68,20 +79,38 @@ public final class Tile {
         return log;
     }
 
+    /** The robot's name. */
+    public String name() {
+        return name;
+    }
+
     /** An event of this log's monitor, with its JSON. */
     public synchronized void event(MonitorEvent e, String json) {
-        lastEvents.addLast(parse(json));
+        JsonNode node = TileJson.parse(json);
+        if (e instanceof MonitorEvent.ForecastChanged f) {
+            // Forecasts change often: the tile shows the latest, and the last events keep room for the rest.
+            setForecast(f.forecast(), node);
+            return;
+        }
+        lastEvents.addLast(node);
         if (lastEvents.size() > LAST_EVENTS) {
             lastEvents.removeFirst();
         }
         if (e instanceof MonitorEvent.Warning w) {
             warning = w;
+            warningJson = node;
+            note(TileJson.moment("warning", w.time(), w.line(), w.battery() == null ? Double.NaN : w.battery()));
+            if (w.forecast() != null) {
+                setForecast(w.forecast(), node);
+            }
         } else if (e instanceof MonitorEvent.Violation v) {
             violation = v;
+            note(TileJson.moment("violation", v.time(), v.line(), v.value()));
         } else if (e instanceof MonitorEvent.Eliminated x) {
             eliminated.put(x.model(), "line " + x.line() + ": " + x.reason());
-        } else if (e instanceof MonitorEvent.NoMatch) {
+        } else if (e instanceof MonitorEvent.NoMatch n) {
             noMatch = true;
+            noMatchLine = n.line();
         } else if (e instanceof MonitorEvent.RunStarted r) {
             earlier.addLast(verdict());
             if (earlier.size() > EARLIER_RUNS) {
@@ -97,13 +126,32 @@ public final class Tile {
         }
     }
 
+    private void setForecast(Forecast f, JsonNode event) {
+        forecast = f;
+        forecastJson = TileJson.forecastOf(event);
+    }
+
+    private void note(ObjectNode moment) {
+        history.addLast(moment);
+        if (history.size() > HISTORY) {
+            history.removeFirst();
+        }
+    }
+
     private void startRun(int number, long first) {
         run = number;
         runLine = first;
         runRecords = 0;
         warning = null;
+        warningJson = null;
         violation = null;
         noMatch = false;
+        noMatchLine = 0;
+        forecast = null;
+        forecastJson = null;
+        recovered = false;
+        history.clear();
+        rest.reset();
         eliminated.clear();
         battery.clear();
     }
@@ -114,10 +162,16 @@ public final class Tile {
         runRecords++;
         line = r.line();
         clock = r.clock();
+        rest.record(r);
         if (safety.isPresent()) {
             double v = safety.get().valueOf(r);
             if (!Double.isNaN(v)) {
                 battery.add(r.time(), v);
+                // After a violation the property may hold again (the robot recharged): the tile says so, and when.
+                if (violation != null && recovered == safety.get().violatedBy(v)) {
+                    recovered = !recovered;
+                    note(TileJson.moment(recovered ? "recovered" : "violated again", r.time(), r.line(), v));
+                }
             }
         }
     }
@@ -128,27 +182,43 @@ public final class Tile {
     }
 
     /**
-     * The light: red once the property is violated in this run, else yellow once warned, else green once there is
-     * data (a reading of the property; any record where there is no property), else grey.
+     * The state: a violation while the property is violated; the run ended once its log went quiet with the tree at
+     * rest; a warning; unknown where no model matches or the run does something no model does; ok once there is data
+     * (a reading of the property; any record where there is no property); else waiting.
+     *
+     * @param quiet whether the log has not grown for the stale time
      */
-    public synchronized String light() {
-        if (violation != null) {
-            return "red";
-        }
-        if (warning != null) {
-            return "yellow";
-        }
+    synchronized TileState state(boolean quiet) {
         boolean data = safety.isPresent() ? !battery.isEmpty() : runRecords > 0;
-        return data ? "green" : "grey";
+        if (violation != null && !recovered) {
+            return TileState.VIOLATION;
+        }
+        if (quiet && runRecords > 0 && rest.atRest()) {
+            return TileState.ENDED;
+        }
+        if (warning != null && violation == null) {
+            return TileState.WARNING;
+        }
+        if (violation != null) {
+            return TileState.OK; // it holds again; the violation stays in the history
+        }
+        if (noMatch || forecast != null && (forecast.novel() || forecast.basis() == Forecast.Basis.VALUE_ONLY)) {
+            return TileState.UNKNOWN;
+        }
+        return data ? TileState.OK : TileState.WAITING;
     }
 
     /** The tile as {@code /status} gives it; {@code stale} when the log has not grown for {@code staleMillis}. */
-    public synchronized ObjectNode snapshot(long nowMillis, long staleMillis) {
+    public synchronized ObjectNode snapshot(long nowMillis, long staleMillis, String action) {
+        long quiet = Math.max(0, nowMillis - grewAtMillis);
+        TileState state = state(quiet >= staleMillis);
         ObjectNode o = JSON.createObjectNode();
         o.put("log", log);
-        o.put("light", light());
-        long quiet = Math.max(0, nowMillis - grewAtMillis);
-        o.put("stale", quiet >= staleMillis);
+        o.put("name", name);
+        o.put("state", state.id());
+        o.put("light", state.light());
+        // Quiet mid-run is STALE (a logger or robot that stopped); quiet at rest is a run that ended.
+        o.put("stale", quiet >= staleMillis && state != TileState.ENDED);
         o.put("quietSeconds", quiet / 1000.0);
         o.put("run", run);
         o.put("runLine", runLine);
@@ -156,24 +226,26 @@ public final class Tile {
         o.put("line", line);
         o.put("unit", clock.unit());
         o.put("property", safety.map(SafetyRule::name).orElse(null));
+        o.put("action", action);
         if (safety.isPresent()) {
             o.put("threshold", safety.get().below());
         }
-        putNumber(o, "battery", battery.last());
-        o.set("warning", warning == null ? null : warningNode(warning));
-        o.set("violation", violation == null ? null : violationNode(violation));
-        putNumber(o, "lead", warning != null && violation != null ? violation.time() - warning.time() : Double.NaN);
+        number(o, "battery", battery.last());
+        o.set("forecast", forecastJson);
+        o.set("warning", warning == null ? null : TileJson.warning(warning, warningJson));
+        o.set("violation", violation == null ? null : TileJson.violation(violation));
+        o.put("recovered", violation != null && recovered);
+        number(o, "lead", warning != null && violation != null ? violation.time() - warning.time() : Double.NaN);
         o.put("noMatch", noMatch);
-        ArrayNode ms = o.putArray("models");
-        for (LearnedModel m : models) {
-            ObjectNode x = ms.addObject();
-            x.put("model", m.id());
-            x.put("scenario", m.scenario());
-            x.put("faulty", m.faulty());
-            String reason = eliminated.get(m.id());
-            x.put("alive", reason == null);
-            x.put("reason", reason);
+        if (noMatch) {
+            o.put("noMatchLine", noMatchLine);
         }
+        o.put("treeAtRest", rest.known() ? rest.atRest() : null);
+        ArrayNode running = o.putArray("running");
+        rest.running().forEach(running::add);
+        ArrayNode moments = o.putArray("history");
+        history.forEach(moments::add);
+        o.set("models", TileJson.models(models, eliminated));
         ArrayNode points = o.putArray("series");
         for (double[] p : battery.points()) {
             points.addArray().add(p[0]).add(p[1]);
@@ -186,51 +258,21 @@ public final class Tile {
         return o;
     }
 
+    /** The run shown so far, as a line of the earlier runs. */
     private ObjectNode verdict() {
         ObjectNode o = JSON.createObjectNode();
         o.put("run", run);
         o.put("line", runLine);
         o.put("warning", warning != null);
         o.put("violation", violation != null);
-        putNumber(o, "lead", warning != null && violation != null ? violation.time() - warning.time() : Double.NaN);
+        number(o, "lead", warning != null && violation != null ? violation.time() - warning.time() : Double.NaN);
         o.put("noMatch", noMatch);
-        o.put("light", light());
+        o.put("recovered", violation != null && recovered);
+        // A run that another followed is over: its light is what it came to.
+        TileState state = state(false);
+        o.put("state", state.id());
+        o.put("light", state.light());
+        number(o, "probability", forecast == null ? Double.NaN : forecast.probability());
         return o;
-    }
-
-    private static JsonNode warningNode(MonitorEvent.Warning w) {
-        ObjectNode o = JSON.createObjectNode();
-        o.put("time", w.time());
-        o.put("line", w.line());
-        if (w.battery() != null) {
-            o.put("battery", w.battery());
-        }
-        ArrayNode s = o.putArray("scenarios");
-        w.scenarios().forEach(s::add);
-        return o;
-    }
-
-    private static JsonNode violationNode(MonitorEvent.Violation v) {
-        ObjectNode o = JSON.createObjectNode();
-        o.put("time", v.time());
-        o.put("line", v.line());
-        o.put("battery", v.value());
-        return o;
-    }
-
-    private static JsonNode parse(String json) {
-        try {
-            return JSON.readTree(json);
-        } catch (JsonProcessingException e) {
-            throw new IllegalArgumentException("an event's JSON does not parse: " + json, e);
-        }
-    }
-
-    private static void putNumber(ObjectNode o, String key, double value) {
-        if (Double.isNaN(value)) {
-            o.putNull(key);
-        } else {
-            o.put(key, value);
-        }
     }
 }

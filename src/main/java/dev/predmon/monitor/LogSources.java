@@ -96,14 +96,23 @@ public final class LogSources {
         List<String> out = new ArrayList<>();
         for (Name name : names) {
             if (expand(name).stream().noneMatch(Files::exists)) {
-                out.add(switch (name.kind()) {
-                    case GLOB -> "logs matching " + name.path();
-                    case DIRECTORY -> "logs in " + name.path();
-                    case FILE -> name.path().toString();
-                });
+                out.add(phrase(name));
             }
         }
         return out;
+    }
+
+    /** Every name as a phrase of what it stands for ({@code logs in DIR}, ...): what the live view waits on. */
+    public List<String> described() {
+        return names.stream().map(LogSources::phrase).toList();
+    }
+
+    private static String phrase(Name name) {
+        return switch (name.kind()) {
+            case GLOB -> "logs matching " + name.path();
+            case DIRECTORY -> "logs in " + name.path();
+            case FILE -> name.path().toString();
+        };
     }
 
     /** The files one name stands for now (none for a directory that is gone). */

@@ -1,260 +1,248 @@
-// predmon live view: one tile per watched log, kept up to date from /status, refreshed at once when /events says
-// that a log has news. Hand-written, no library, nothing fetched from elsewhere. Text from logs goes into the page
-// through textContent only.
+// predmon live view: one tile (or, in the compact view, one row) per robot, worst first, kept up to date from
+// /status and refreshed at once when /events says that a log has news. Hand-written, no library, nothing fetched from
+// elsewhere. Acknowledgements and the alert switches are kept in this browser (localStorage): the server only shows.
 'use strict';
-(() => {
-  const SVG = 'http://www.w3.org/2000/svg';
-  const tilesEl = document.getElementById('tiles');
-  const tiles = new Map(); // log -> <article>
-  const pending = new Set();
-  let flushTimer = null;
-  let lastLogs = [];
+import {STATES, STATE_WORDS} from './words.js';
+import {NEEDS_ATTENTION, el, renderRow, renderTile} from './tile.js';
 
-  function el(tag, cls, text) {
-    const e = document.createElement(tag);
-    if (cls) e.className = cls;
-    if (text !== undefined && text !== null) e.textContent = text;
-    return e;
+const tilesEl = document.getElementById('tiles');
+const emptyEl = document.getElementById('empty');
+const logs = new Map(); // log -> its latest JSON from /status
+const nodes = new Map(); // log -> its element on the page
+const open = new Map(); // a tile section ('models') -> whether it is open, for every tile alike
+let view = new URLSearchParams(location.search).get('view') === 'compact' ? 'compact' : 'tiles';
+let watching = [];
+const pending = new Set();
+let flushTimer = null;
+
+// ---- kept in this browser ------------------------------------------------------------------------------------
+function stored(key, fallback) {
+  try {
+    const v = localStorage.getItem('predmon.' + key);
+    return v === null ? fallback : JSON.parse(v);
+  } catch (e) {
+    return fallback; // storage refused (a private window): nothing is remembered
   }
+}
 
-  function svg(tag, attrs, text) {
-    const e = document.createElementNS(SVG, tag);
-    for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
-    if (text !== undefined) e.textContent = text;
-    return e;
+function store(key, value) {
+  try {
+    localStorage.setItem('predmon.' + key, JSON.stringify(value));
+  } catch (e) {
+    // as above
   }
+}
 
-  const num = (x, digits) => (x === null || x === undefined) ? '?' : Number(x).toFixed(digits);
-  const at = (t, unit) => unit === 'ticks' ? 'tick ' + num(t, 0) : 't=' + num(t, 2);
-  const span = (d, unit) => unit === 'ticks' ? num(d, 0) + ' ticks' : num(d, 2) + ' s';
-  const pct = (b) => (b === null || b === undefined) ? 'unknown' : num(b, 1) + '%';
-  // The file's name, with its directory when that is short (robots/r1/monitor.log: r1/monitor.log); the full path
-  // is the title.
-  const shortName = (log) => {
-    const parts = log.split(/[\\/]/).filter(p => p.length > 0);
-    const dir = parts.length > 1 ? parts[parts.length - 2] : '';
-    return dir && dir.length <= 16 ? dir + '/' + parts[parts.length - 1] : parts[parts.length - 1];
-  };
+// An acknowledgement holds for the state it was given in: any change of state (or run, or staleness) lifts it.
+const ackKey = (t) => t.run + '|' + t.state + '|' + t.stale;
+let acks = stored('acks', {});
 
-  function verdict(t) {
-    if (t.light === 'red') {
-      return 'VIOLATED at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery) + ')'
-        + (t.warning ? ', predicted' : ', not predicted');
+const ui = {
+  acked: (t) => acks[t.log] === ackKey(t),
+  acknowledge(t, yes) {
+    if (yes) acks[t.log] = ackKey(t); else delete acks[t.log];
+    store('acks', acks);
+    show();
+  },
+  isOpen: (key) => open.get(key) === true,
+  setOpen: (key, isOpen) => open.set(key, isOpen),
+};
+
+// ---- order and drawing ---------------------------------------------------------------------------------------
+/** Worst first; a log quiet mid-run sorts with the unknown ones; acknowledged after the others of their state. */
+function rank(t) {
+  const r = STATES.indexOf(t.state);
+  return t.stale && r > STATES.indexOf('unknown') ? STATES.indexOf('unknown') : r;
+}
+
+function compare(a, b) {
+  return rank(a) - rank(b) || (ui.acked(a) ? 1 : 0) - (ui.acked(b) ? 1 : 0)
+    || a.name.localeCompare(b.name, undefined, {numeric: true}) || a.log.localeCompare(b.log);
+}
+
+function node(t) {
+  let n = nodes.get(t.log);
+  if (!n) {
+    n = el(view === 'compact' ? 'div' : 'article', view === 'compact' ? 'row' : 'tile');
+    n.dataset.log = t.log;
+    if (view === 'compact') {
+      n.tabIndex = 0;
+      n.addEventListener('click', () => showInFull(n.dataset.log));
+      n.addEventListener('keydown', (e) => { if (e.key === 'Enter') showInFull(n.dataset.log); });
     }
-    if (t.light === 'yellow') {
-      return 'WARNING: the run can only be faulty scenario ' + t.warning.scenarios.join(', ');
-    }
-    if (t.light === 'green') {
-      return t.noMatch ? 'held; no learned scenario matches this run' : 'held; no faulty prediction';
-    }
-    return t.records === 0 ? 'no data yet: waiting for the log' : 'no data yet';
+    nodes.set(t.log, n);
   }
-
-  function eventText(e, unit) {
-    const u = e.unit || unit;
-    const where = (e.time !== undefined ? at(e.time, u) + ' ' : '') + (e.line !== undefined ? 'line ' + e.line + ': ' : '');
-    switch (e.event) {
-      case 'eliminated':
-        return where + 'model ' + e.model + ' (' + (e.faulty ? 'faulty' : 'nominal') + ') eliminated: ' + e.reason;
-      case 'warning':
-        return where + 'WARNING: only ' + e.scenarios.join(', ') + ' left; battery ' + pct(e.battery);
-      case 'violation':
-        return where + 'VIOLATION of ' + e.property + ': ' + pct(e.battery);
-      case 'no-match':
-        return where + 'no learned scenario matches this run any more';
-      case 'run':
-        return where + 'run ' + e.run + ' begins: every model starts over';
-      case 'restarted':
-        return 'log ' + e.reason + ': monitoring starts over';
-      default:
-        return where + e.event;
-    }
+  n.dataset.state = t.state;
+  n.dataset.light = t.light;
+  n.dataset.stale = String(t.stale);
+  n.dataset.run = String(t.run);
+  n.dataset.ack = String(ui.acked(t));
+  // Drawn again only when something shown changed (the quiet time counts in whole seconds).
+  const sig = JSON.stringify([t, ui.acked(t), Math.floor(t.quietSeconds)], (k, v) => k === 'quietSeconds' ? 0 : v);
+  if (n.sig !== sig) {
+    n.sig = sig;
+    if (view === 'compact') renderRow(n, t, ui); else renderTile(n, t, ui);
   }
+  return n;
+}
 
-  function plot(t) {
-    const W = 440, H = 150, L = 36, R = 10, T = 14, B = 20;
-    const s = svg('svg', {class: 'plot', viewBox: '0 0 ' + W + ' ' + H, role: 'img',
-      'aria-label': 'battery over time in run ' + t.run});
-    s.appendChild(svg('rect', {class: 'frame', x: L, y: T, width: W - L - R, height: H - T - B}));
-    const pts = t.series;
-    const times = pts.map(p => p[0]);
-    if (t.warning) times.push(t.warning.time);
-    if (t.violation) times.push(t.violation.time);
-    if (times.length === 0) {
-      s.appendChild(svg('text', {class: 'empty', x: L + 10, y: T + 24}, 'no reading of the property yet'));
-      return s;
-    }
-    let t0 = Math.min(...times), t1 = Math.max(...times);
-    if (t1 - t0 < 1e-9) t1 = t0 + 1;
-    const values = pts.map(p => p[1]);
-    const lo = Math.min(0, ...values), hi = Math.max(100, ...values);
-    const x = (tv) => L + (tv - t0) / (t1 - t0) * (W - L - R);
-    const y = (v) => T + (hi - v) / (hi - lo) * (H - T - B);
-    for (const g of [0, 25, 50, 75, 100]) {
-      if (g < lo || g > hi) continue;
-      s.appendChild(svg('line', {class: 'grid', x1: L, x2: W - R, y1: y(g), y2: y(g)}));
-      s.appendChild(svg('text', {class: 'axis', x: L - 4, y: y(g) + 3, 'text-anchor': 'end'}, String(g)));
-    }
-    if (t.threshold !== undefined && t.threshold !== null) {
-      s.appendChild(svg('line', {class: 'threshold', x1: L, x2: W - R, y1: y(t.threshold), y2: y(t.threshold)}));
-    }
-    if (pts.length > 0) {
-      s.appendChild(svg('polyline', {class: 'battery',
-        points: pts.map(p => x(p[0]).toFixed(1) + ',' + y(p[1]).toFixed(1)).join(' ')}));
-    }
-    const mark = (time, kind, label, anchorRight, y0) => {
-      const right = anchorRight || x(time) > W - R - 50; // a label that would leave the plot goes left of its line
-      s.appendChild(svg('line', {class: 'mark-' + kind, x1: x(time), x2: x(time), y1: T, y2: H - B}));
-      s.appendChild(svg('text', {class: 'label-' + kind, x: x(time) + (right ? -3 : 3), y: y0,
-        'text-anchor': right ? 'end' : 'start'}, label));
-    };
-    if (t.warning) mark(t.warning.time, 'warning', 'warning', !!t.violation, T - 3);
-    if (t.violation) {
-      // Close to the warning's mark, its label goes one line lower so that the two do not overlap.
-      const close = t.warning && Math.abs(x(t.violation.time) - x(t.warning.time)) < 60;
-      mark(t.violation.time, 'violation', 'violation', false, close ? T + 10 : T - 3);
-    }
-    const unit = t.unit === 'ticks' ? ' ticks' : ' s';
-    s.appendChild(svg('text', {class: 'axis', x: L, y: H - 5}, num(t0, 1) + unit));
-    s.appendChild(svg('text', {class: 'axis', x: W - R, y: H - 5, 'text-anchor': 'end'}, num(t1, 1) + unit));
-    return s;
+function show() {
+  const all = [...logs.values()].sort(compare);
+  const order = all.map(node);
+  // Moved only when the order changed, so that a tile being read does not jump on every refresh.
+  if (order.length !== tilesEl.children.length || order.some((n, i) => tilesEl.children[i] !== n)) {
+    tilesEl.replaceChildren(...order);
   }
-
-  function render(t) {
-    let tile = tiles.get(t.log);
-    if (!tile) {
-      tile = el('article', 'tile');
-      tile.dataset.log = t.log;
-      tiles.set(t.log, tile);
-      tilesEl.appendChild(tile);
-    }
-    tile.dataset.light = t.light;
-    tile.dataset.stale = String(t.stale);
-    tile.dataset.run = String(t.run);
-
-    const head = el('header');
-    const h2 = el('h2', null, shortName(t.log));
-    h2.title = t.log;
-    head.append(h2, el('span', 'run', 'run ' + t.run));
-    if (t.stale) head.append(el('span', 'badge stale', 'STALE ' + num(t.quietSeconds, 0) + ' s'));
-
-    const status = el('div', 'status');
-    const light = el('span', 'light ' + t.light);
-    light.setAttribute('role', 'img');
-    light.setAttribute('aria-label', t.light);
-    const words = el('div');
-    words.append(el('div', 'property', t.property || 'prediction'), el('div', 'verdict', verdict(t)));
-    status.append(light, words, el('div', 'battery-now', t.battery === null ? '' : pct(t.battery)));
-
-    const lead = el('p', t.lead === null ? 'lead none' : 'lead');
-    if (t.lead !== null) {
-      lead.textContent = 'lead ' + span(t.lead, t.unit) + ': warning at ' + pct(t.warning.battery)
-        + ', violation at ' + pct(t.violation.battery);
-    }
-
-    const models = el('section', 'models');
-    const alive = t.models.filter(m => m.alive).length;
-    models.append(el('h3', null, 'models: ' + alive + ' of ' + t.models.length + ' still match'));
-    const ml = el('ul');
-    for (const m of t.models) {
-      const li = el('li', m.alive ? 'alive' : 'gone');
-      li.append(el('span', 'id', m.model), el('small', null, ' ' + (m.faulty ? 'faulty' : 'nominal')
-        + (m.alive ? '' : ' \u2014 ' + m.reason)));
-      if (!m.alive) li.title = m.reason;
-      ml.appendChild(li);
-    }
-    models.appendChild(ml);
-
-    const events = el('section', 'events');
-    events.appendChild(el('h3', null, 'last events'));
-    const ol = el('ol');
-    for (const e of t.events.slice().reverse()) {
-      const li = el('li', e.event, eventText(e, t.unit));
-      li.title = li.textContent;
-      ol.appendChild(li);
-    }
-    if (t.events.length === 0) ol.appendChild(el('li', null, 'none yet'));
-    events.appendChild(ol);
-
-    const parts = [head, status, lead, plot(t), models, events];
-    if (t.earlierRuns.length > 0) {
-      const runs = el('section', 'runs');
-      runs.appendChild(el('h3', null, 'earlier runs'));
-      const ul = el('ul');
-      if (t.earlierRunsOmitted > 0) ul.appendChild(el('li', null, t.earlierRunsOmitted + ' earlier not shown'));
-      for (const r of t.earlierRuns) {
-        const li = el('li');
-        li.append(el('span', 'light ' + r.light), 'run ' + r.run + ' (line ' + r.line + '): '
-          + (r.warning ? 'warned' : 'no warning') + ', ' + (r.violation ? 'violated' : 'held')
-          + (r.lead !== null ? ', lead ' + span(r.lead, t.unit) : '') + (r.noMatch ? ', no match' : ''));
-        ul.appendChild(li);
-      }
-      runs.appendChild(ul);
-      parts.push(runs);
-    }
-    parts.push(el('footer', null, t.records + ' records, line ' + t.line + ' \u00b7 log grew '
-      + num(t.quietSeconds, 1) + ' s ago'));
-    tile.replaceChildren(...parts);
+  tilesEl.className = view;
+  document.body.dataset.view = view;
+  emptyEl.hidden = all.length > 0;
+  if (all.length === 0) {
+    const list = document.getElementById('watching');
+    list.replaceChildren(...(watching.length ? watching : ['the logs given to watch']).map(w => el('li', null, w)));
   }
+  summary(all);
+}
 
-  function summary() {
-    const count = (light) => lastLogs.filter(t => t.light === light).length;
-    const stale = lastLogs.filter(t => t.stale).length;
-    document.getElementById('summary').textContent = lastLogs.length + (lastLogs.length === 1 ? ' log: ' : ' logs: ')
-      + ['red', 'yellow', 'green', 'grey'].map(l => count(l) + ' ' + l).join(', ') + (stale ? '; ' + stale + ' stale' : '');
+function summary(all) {
+  const count = (s) => all.filter(t => t.state === s).length;
+  const parts = STATES.filter(s => count(s) > 0).map(s => count(s) + ' ' + STATE_WORDS[s].toLowerCase());
+  const stale = all.filter(t => t.stale).length;
+  const acked = all.filter(t => ui.acked(t)).length;
+  document.getElementById('summary').textContent = all.length + (all.length === 1 ? ' robot' : ' robots')
+    + (parts.length ? ': ' + parts.join(', ') : '') + (stale ? ' \u00b7 ' + stale + ' stale' : '')
+    + (acked ? ' \u00b7 ' + acked + ' acknowledged' : '');
+  const worst = all.length ? all[0].state : 'waiting';
+  document.title = (NEEDS_ATTENTION.has(worst) && !ui.acked(all[0]) ? STATE_WORDS[worst] + ' \u2014 ' : '')
+    + 'predmon live';
+}
+
+function setView(v) {
+  view = v;
+  nodes.clear();
+  tilesEl.replaceChildren();
+  const url = new URL(location.href);
+  if (v === 'compact') url.searchParams.set('view', 'compact'); else url.searchParams.delete('view');
+  history.replaceState(null, '', url);
+  document.getElementById('view').textContent = v === 'compact' ? 'show tiles' : 'compact view';
+  show();
+}
+
+function showInFull(log) {
+  setView('tiles');
+  const n = nodes.get(log);
+  if (n) n.scrollIntoView({block: 'start'});
+}
+
+// ---- alerts: opt-in, in this browser -------------------------------------------------------------------------
+let notify = stored('notify', false);
+let sound = stored('sound', false);
+let audio = null;
+
+function beep() {
+  if (!audio) audio = new AudioContext();
+  if (audio.state === 'suspended') audio.resume();
+  for (const [at, f] of [[0, 880], [0.22, 660]]) {
+    const o = audio.createOscillator();
+    const g = audio.createGain();
+    o.frequency.value = f;
+    g.gain.setValueAtTime(0.2, audio.currentTime + at);
+    g.gain.exponentialRampToValueAtTime(0.001, audio.currentTime + at + 0.18);
+    o.connect(g).connect(audio.destination);
+    o.start(audio.currentTime + at);
+    o.stop(audio.currentTime + at + 0.2);
   }
+}
 
-  function connection(state, text) {
-    const c = document.getElementById('connection');
-    c.dataset.state = state;
-    c.textContent = text;
+function alert(t) {
+  if (ui.acked(t)) return;
+  const title = t.name + ': ' + STATE_WORDS[t.state];
+  const body = (t.state === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
+  if (notify && 'Notification' in window && Notification.permission === 'granted') {
+    new Notification(title, {body: body, tag: t.log});
   }
+  if (sound) beep();
+}
 
-  function apply(s) {
-    document.getElementById('stale-after').textContent = s.staleAfter + ' s';
-    for (const t of s.logs) {
-      render(t);
-      const i = lastLogs.findIndex(x => x.log === t.log);
-      if (i >= 0) lastLogs[i] = t; else lastLogs.push(t);
-    }
-    summary();
+function switches() {
+  const n = document.getElementById('notify');
+  const available = 'Notification' in window && window.isSecureContext;
+  n.disabled = !available;
+  n.textContent = !available ? 'notifications: need localhost or https'
+    : notify && Notification.permission === 'granted' ? 'notifications on' : 'notifications off';
+  n.setAttribute('aria-pressed', String(notify));
+  const s = document.getElementById('sound');
+  s.textContent = sound ? 'sound on' : 'sound off';
+  s.setAttribute('aria-pressed', String(sound));
+}
+
+document.getElementById('notify').addEventListener('click', async () => {
+  if (!notify && Notification.permission !== 'granted') await Notification.requestPermission();
+  notify = !notify && Notification.permission === 'granted';
+  store('notify', notify);
+  switches();
+});
+document.getElementById('sound').addEventListener('click', () => {
+  sound = !sound;
+  store('sound', sound);
+  if (sound) beep(); // the click lets the page make a sound from now on, and says what it sounds like
+  switches();
+});
+document.getElementById('view').addEventListener('click', () => setView(view === 'compact' ? 'tiles' : 'compact'));
+
+// ---- data ----------------------------------------------------------------------------------------------------
+function apply(s, full) {
+  document.getElementById('stale-after').textContent = s.staleAfter + ' s';
+  watching = s.watching || [];
+  const seen = new Set();
+  for (const t of s.logs) {
+    const before = logs.get(t.log);
+    logs.set(t.log, t);
+    seen.add(t.log);
+    if (before && before.state !== t.state && (t.state === 'warning' || t.state === 'violation')) alert(t);
   }
+  if (full) {
+    for (const log of [...logs.keys()]) if (!seen.has(log)) logs.delete(log);
+  }
+  show();
+}
 
-  async function load(log) {
+function connection(state, text) {
+  const c = document.getElementById('connection');
+  c.dataset.state = state;
+  c.textContent = text;
+}
+
+async function refresh(log) {
+  try {
     const r = await fetch(log === undefined ? '/status' : '/status?log=' + encodeURIComponent(log), {cache: 'no-store'});
     if (!r.ok) throw new Error('status ' + r.status);
-    apply(await r.json());
+    apply(await r.json(), log === undefined);
+  } catch (e) {
+    connection('lost', 'server unreachable: showing the last state');
   }
+}
 
-  async function refresh(log) {
-    try {
-      await load(log);
-    } catch (e) {
-      connection('lost', 'server unreachable: showing the last state');
-    }
-  }
+function flush() {
+  flushTimer = null;
+  const batch = [...pending];
+  pending.clear();
+  if (batch.length > 8) refresh(); else batch.forEach(refresh);
+}
 
-  function flush() {
-    flushTimer = null;
-    const logs = [...pending];
-    pending.clear();
-    if (logs.length > 8) refresh(); else logs.forEach(refresh);
-  }
+// The page arrives with the state it was served with, so it shows the tiles before any request of its own.
+switches();
+document.getElementById('view').textContent = view === 'compact' ? 'show tiles' : 'compact view';
+const initial = document.getElementById('initial-status');
+if (initial && initial.textContent.trim().startsWith('{')) apply(JSON.parse(initial.textContent), true);
 
-  // The page arrives with the state it was served with, so it shows the tiles before any request of its own.
-  const initial = document.getElementById('initial-status');
-  if (initial && initial.textContent.trim().startsWith('{')) apply(JSON.parse(initial.textContent));
-
-  const events = new EventSource('/events');
-  events.onopen = () => { connection('live', 'live'); refresh(); };
-  events.onerror = () => connection('lost', 'reconnecting\u2026');
-  events.onmessage = (m) => {
-    const e = JSON.parse(m.data);
-    pending.add(e.log);
-    if (!flushTimer) flushTimer = setTimeout(flush, 50);
-  };
-  // Readings and staleness change without events: a full refresh every second (every 5 s for a big fleet).
-  (function tick() {
-    refresh().finally(() => setTimeout(tick, lastLogs.length > 20 ? 5000 : 1000));
-  })();
+const events = new EventSource('/events');
+events.onopen = () => { connection('live', 'live'); refresh(); };
+events.onerror = () => connection('lost', 'reconnecting\u2026');
+events.onmessage = (m) => {
+  pending.add(JSON.parse(m.data).log);
+  if (!flushTimer) flushTimer = setTimeout(flush, 50);
+};
+// Readings and staleness change without events: a full refresh every second (every 5 s for a big fleet).
+(function tick() {
+  refresh().finally(() => setTimeout(tick, logs.size > 20 ? 5000 : 1000));
 })();

@@ -1,0 +1,186 @@
+// predmon live view: a tile (the full view) and a row (the compact view) of one robot. Text from logs goes into the
+// page through textContent only.
+'use strict';
+import {GLYPHS, STATE_WORDS, at, basisWords, chance, earlierText, eventText, forecastWords, momentText, num, pct, span,
+  verdict, whenWords} from './words.js';
+import {plot} from './plot.js';
+
+export function el(tag, cls, text) {
+  const e = document.createElement(tag);
+  if (cls) e.className = cls;
+  if (text !== undefined && text !== null) e.textContent = text;
+  return e;
+}
+
+/** States that ask for someone's attention: they can be acknowledged, and a warning or violation alerts. */
+export const NEEDS_ATTENTION = new Set(['violation', 'warning', 'unknown']);
+
+function light(t, small) {
+  const l = el('span', 'light ' + t.light + (small ? ' small' : ''), GLYPHS[t.state] || '');
+  l.setAttribute('role', 'img');
+  l.setAttribute('aria-label', STATE_WORDS[t.state] || t.state);
+  return l;
+}
+
+function ackButton(t, ui) {
+  if (!NEEDS_ATTENTION.has(t.state) && !t.stale) return null;
+  const acked = ui.acked(t);
+  const b = el('button', 'ack', acked ? 'acknowledged' : 'acknowledge');
+  b.type = 'button';
+  b.setAttribute('aria-pressed', String(acked));
+  b.title = acked ? 'silenced until this robot\u2019s state changes; click to undo'
+    : 'silence this robot until its state changes (this browser only)';
+  // On press, not on release: the page redraws every second, and a click whose button was redrawn in between
+  // would be lost. A key (Enter, Space) gives a click of detail 0.
+  const act = (ev) => {
+    ev.stopPropagation();
+    ev.preventDefault();
+    ui.acknowledge(t, !acked);
+  };
+  b.addEventListener('pointerdown', act);
+  b.addEventListener('click', (ev) => {
+    ev.stopPropagation();
+    if (ev.detail === 0) act(ev);
+  });
+  return b;
+}
+
+function badges(t) {
+  const out = [];
+  if (t.state === 'ended') out.push(el('span', 'badge ended', 'RUN ENDED'));
+  if (t.stale) {
+    const b = el('span', 'badge stale', 'STALE ' + num(t.quietSeconds, 0) + ' s');
+    b.title = 'the log has not grown for ' + num(t.quietSeconds, 0) + ' s'
+      + (t.running.length ? ' while ' + t.running.join(', ') + ' was running' : '');
+    out.push(b);
+  }
+  return out;
+}
+
+/** What to do, when something is to be done. */
+function actionLine(t) {
+  if (!t.action || (t.state !== 'warning' && t.state !== 'violation')) return null;
+  const p = el('p', 'action');
+  p.append(el('b', null, 'Do now: '), t.action);
+  return p;
+}
+
+function forecastLine(t) {
+  const f = t.forecast;
+  if (!f || t.state === 'ended' || t.state === 'violation') return null;
+  const p = el('div', 'forecast');
+  p.title = f.explanation || '';
+  p.append(el('span', 'chance', chance(f.probability)), el('span', 'when', ' chance of a violation, ' + whenWords(f)),
+    el('small', 'basis', basisWords(f)));
+  return p;
+}
+
+function details(key, ui, summary, body) {
+  const d = el('details', key);
+  d.open = ui.isOpen(key, d);
+  d.addEventListener('toggle', () => ui.setOpen(key, d.open));
+  d.append(el('summary', null, summary), body);
+  return d;
+}
+
+/** The tile of {@code t}, into {@code tile} (an article that keeps its place on the page). */
+export function renderTile(tile, t, ui) {
+  const head = el('header');
+  const h2 = el('h2', null, t.name);
+  h2.title = t.log;
+  head.append(light(t), h2, el('span', 'run', 'run ' + t.run), ...badges(t));
+  const ack = ackButton(t, ui);
+  if (ack) head.append(ack);
+
+  const status = el('div', 'status');
+  const words = el('div', 'words');
+  words.append(el('div', 'property', t.property || 'prediction'), el('div', 'verdict', verdict(t)));
+  status.append(words, el('div', 'battery-now', t.battery === null ? '' : pct(t.battery, t.threshold)));
+
+  const lead = el('p', t.lead === null ? 'lead none' : 'lead');
+  if (t.lead !== null) {
+    lead.textContent = 'lead ' + (t.unit === 'ticks' ? num(t.lead, 0) + ' ticks' : num(t.lead, 2) + ' s')
+      + ': warning at ' + pct(t.warning.battery, t.threshold) + ', violation at '
+      + pct(t.violation.battery, t.threshold);
+  }
+  const parts = [head, status];
+  for (const p of [actionLine(t), forecastLine(t)]) if (p) parts.push(p);
+  parts.push(lead);
+  if (t.history.length > 0) {
+    const h = el('p', 'history');
+    h.append(el('b', null, 'this run: '), t.history.map(m => momentText(m, t)).join(' \u2192 '));
+    parts.push(h);
+  }
+  parts.push(plot(t));
+
+  const alive = t.models.filter(m => m.alive).length;
+  const ml = el('ul');
+  for (const m of t.models) {
+    const li = el('li', m.alive ? 'alive' : 'gone');
+    li.append(el('span', 'id', m.model), el('small', null, ' ' + (m.faulty ? 'faulty' : 'nominal')
+      + (m.alive ? '' : ' \u2014 ' + m.reason)));
+    ml.appendChild(li);
+  }
+  parts.push(details('models', ui, 'models: ' + alive + ' of ' + t.models.length + ' still match', ml));
+
+  const ol = el('ol');
+  for (const e of t.events.slice().reverse()) ol.appendChild(el('li', e.event, eventText(e, t)));
+  if (t.events.length === 0) ol.appendChild(el('li', null, 'none yet'));
+  const events = el('section', 'events');
+  events.append(el('h3', null, 'last events'), ol);
+  parts.push(events);
+
+  if (t.earlierRuns.length > 0) {
+    const ul = el('ul');
+    if (t.earlierRunsOmitted > 0) ul.appendChild(el('li', null, t.earlierRunsOmitted + ' earlier not shown'));
+    for (const r of t.earlierRuns) {
+      const li = el('li');
+      li.append(el('span', 'light small ' + r.light), earlierText(r, t.unit));
+      ul.appendChild(li);
+    }
+    const runs = el('section', 'runs');
+    runs.append(el('h3', null, 'earlier runs'), ul);
+    parts.push(runs);
+  }
+  parts.push(el('footer', null, t.log + ' \u00b7 ' + t.records + ' records, line ' + t.line + ' \u00b7 log grew '
+    + num(t.quietSeconds, 1) + ' s ago'));
+  tile.replaceChildren(...parts);
+}
+
+/** The second line of a compact row: the state and what matters most about it. */
+function rowWords(t) {
+  const f = t.forecast;
+  const state = STATE_WORDS[t.state] || t.state;
+  switch (t.state) {
+    case 'violation':
+      return state + ' at ' + at(t.violation.time, t.unit) + (t.action ? ' \u00b7 ' + t.action : '');
+    case 'warning':
+      return state + (f ? ' \u00b7 ' + chance(f.probability) + ' ' + (f.timeToViolation === null ? ''
+        : 'in ~' + span(f.timeToViolation, f.unit)) : '') + (t.action ? ' \u00b7 ' + t.action : '');
+    case 'unknown':
+      return state + (t.noMatch ? ' \u00b7 no model matches' : ' \u00b7 new behaviour')
+        + (f ? ' \u00b7 ' + chance(f.probability) : '');
+    case 'ok':
+      return (t.recovered ? 'OK again after a violation' : state) + (f ? ' \u00b7 ' + chance(f.probability)
+        + (f.timeToViolation === null ? '' : ' in ~' + span(f.timeToViolation, f.unit)) : '');
+    default:
+      return t.state === 'ended' ? state : 'waiting for data';
+  }
+}
+
+/** The compact row of {@code t}: one light per property, the robot, its value and the state in a few words. */
+export function renderRow(row, t, ui) {
+  const name = el('span', 'name', t.name);
+  name.title = t.log;
+  const line1 = el('div', 'line1');
+  line1.append(name, ...badges(t), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
+  const line2 = el('div', 'line2', rowWords(t));
+  line2.title = verdict(t) + (forecastWords(t.forecast) ? '\n' + forecastWords(t.forecast) : '');
+  const text = el('div', 'text');
+  text.append(line1, line2);
+  const parts = [light(t, true), text];
+  const ack = ackButton(t, ui);
+  if (ack) parts.push(ack);
+  row.replaceChildren(...parts);
+  row.title = 'show ' + t.name + ' in full';
+}

@@ -1,0 +1,163 @@
+// predmon live view: a tile's data in an operator's words. No DOM here.
+'use strict';
+
+/** The states worst first, as the page sorts them, with their names on the page. */
+export const STATES = ['violation', 'warning', 'unknown', 'ok', 'waiting', 'ended'];
+export const STATE_WORDS = {violation: 'VIOLATION', warning: 'WARNING', unknown: 'UNKNOWN', ok: 'OK',
+  waiting: 'WAITING', ended: 'RUN ENDED'};
+/** A glyph on each light, so that the state does not rest on colour alone. */
+export const GLYPHS = {violation: '\u2715', warning: '!', unknown: '?', ok: '\u2713', waiting: '\u2026',
+  ended: '\u25A0'};
+
+const missing = (x) => x === null || x === undefined || Number.isNaN(x);
+
+export const num = (x, digits) => missing(x) ? '?' : Number(x).toFixed(digits);
+
+/**
+ * A value of the property with two decimals. Below the threshold it is rounded down, so that a violating 19.995
+ * never reads as the threshold itself.
+ */
+export function value(x, threshold) {
+  if (missing(x)) return '?';
+  const v = Number(x);
+  if (!missing(threshold) && v < threshold) return (Math.floor(v * 100) / 100).toFixed(2);
+  return v.toFixed(2);
+}
+
+export const pct = (x, threshold) => missing(x) ? 'unknown' : value(x, threshold) + '%';
+
+/** A point in the log's time: t=27.91 s, or tick 188. */
+export const at = (t, unit) => unit === 'ticks' ? 'tick ' + num(t, 0) : 't=' + num(t, 2) + ' s';
+
+/** A duration: 5.0 s, 48 ticks. */
+export function span(d, unit) {
+  if (missing(d)) return '?';
+  if (unit === 'ticks') return num(d, 0) + ' ticks';
+  return (Math.abs(d) >= 100 ? num(d, 0) : Math.abs(d) >= 10 ? num(d, 1) : num(d, 2)) + ' s';
+}
+
+/** The probability of a violation in this run: 98%, or <1% / >99% at the ends. */
+export function chance(p) {
+  if (missing(p)) return '?';
+  const v = Math.round(p * 100);
+  if (p > 0 && v === 0) return '<1%';
+  if (p < 1 && v === 100) return '>99%';
+  return v + '%';
+}
+
+/** When the violation comes, if it does: "in about 5.0 s (4.8-5.4 s)", or "no violation in sight". */
+export function whenWords(f) {
+  if (!f || missing(f.timeToViolation)) return 'no violation in sight';
+  const u = f.unit;
+  const range = missing(f.low) ? '' : missing(f.high) ? ' (' + span(f.low, u) + ' or more)'
+    : ' (' + span(f.low, u) + '\u2013' + span(f.high, u) + ')';
+  return 'in about ' + span(f.timeToViolation, u) + range;
+}
+
+/** What the forecast rests on, for an operator. */
+export function basisWords(f) {
+  if (!f) return '';
+  const runs = f.violated + ' of ' + f.runs + ' training runs';
+  switch (f.basis) {
+    case 'matched':
+      return 'matched: ' + runs + ' that were where this run is violated';
+    case 'resynchronised':
+      return 'new behaviour since line ' + f.novelSince + '; matched again on the latest steps: ' + runs
+        + ' violated';
+    case 'value only':
+      return 'nothing learned fits' + (missing(f.novelSince) ? '' : ' since line ' + f.novelSince)
+        + ': from the value alone, ' + runs + ' that went this low violated';
+    case 'violated':
+      return 'the property is violated';
+    default:
+      return f.basis;
+  }
+}
+
+/** The forecast on one line: "98% chance of a violation, in about 5.0 s (4.8-5.4 s)". */
+export function forecastWords(f) {
+  if (!f) return null;
+  if (f.basis === 'violated') return 'violated';
+  return chance(f.probability) + ' chance of a violation, ' + whenWords(f);
+}
+
+/** The state in a sentence: what holds now, and why. */
+export function verdict(t) {
+  const thr = t.threshold;
+  switch (t.state) {
+    case 'violation':
+      return 'VIOLATED since ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
+        + (t.warning ? ', predicted ' + span(t.lead, t.unit) + ' ahead' : ', not predicted');
+    case 'warning':
+      return 'WARNING: ' + (t.warning.reason || 'the run is predicted to violate ' + (t.property || 'the property'));
+    case 'unknown':
+      return 'UNKNOWN: ' + unknownWhy(t);
+    case 'ok':
+      if (t.recovered) {
+        return 'holds again (' + pct(t.battery, thr) + '); violated at ' + at(t.violation.time, t.unit)
+          + ' (' + pct(t.violation.battery, thr) + ')';
+      }
+      return 'OK: the property holds and no violation is predicted';
+    case 'ended':
+      return 'Run ended: ' + runOutcome(t);
+    default:
+      return t.records === 0 ? 'waiting for the log' : 'waiting for a reading of the property';
+  }
+}
+
+function unknownWhy(t) {
+  const f = t.forecast;
+  if (t.noMatch) {
+    return 'no learned scenario matches this run since line ' + t.noMatchLine
+      + (f ? '; the forecast rests on ' + (f.basis === 'value only' ? 'the value alone' : 'the latest steps') : '');
+  }
+  if (f && f.basis === 'value only') return 'nothing learned fits the latest steps; the forecast rests on the value alone';
+  if (f && !missing(f.novelSince)) return 'the run does something no training run did, since line ' + f.novelSince;
+  return 'the models cannot judge this run';
+}
+
+function runOutcome(t) {
+  const thr = t.threshold;
+  const parts = [];
+  parts.push(t.violation ? 'violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
+    : 'the property held' + (t.battery === null ? '' : ' (last ' + pct(t.battery, thr) + ')'));
+  if (t.warning) parts.push('warned at ' + at(t.warning.time, t.unit));
+  if (t.noMatch) parts.push('no model matched');
+  return parts.join(', ');
+}
+
+/** The last events, one line each. */
+export function eventText(e, t) {
+  const u = e.unit || t.unit;
+  const thr = t.threshold;
+  const where = (e.time !== undefined ? at(e.time, u) + ' ' : '') + (e.line !== undefined ? 'line ' + e.line + ': ' : '');
+  switch (e.event) {
+    case 'eliminated':
+      return where + 'model ' + e.model + ' (' + (e.faulty ? 'faulty' : 'nominal') + ') eliminated: ' + e.reason;
+    case 'warning':
+      return where + 'WARNING at ' + pct(e.battery, thr) + ': ' + (e.reason || 'only ' + e.scenarios.join(', ') + ' left');
+    case 'violation':
+      return where + 'VIOLATION of ' + e.property + ': ' + pct(e.battery, thr);
+    case 'no-match':
+      return where + 'no learned scenario matches this run any more';
+    case 'run':
+      return where + 'run ' + e.run + ' begins: every model starts over';
+    case 'restarted':
+      return 'log ' + e.reason + ': monitoring starts over';
+    default:
+      return where + e.event;
+  }
+}
+
+/** This run's moments: "warned t=27.91 s (32.10%)". */
+export function momentText(m, t) {
+  const words = {warning: 'warned', violation: 'violated', recovered: 'holds again', 'violated again': 'violated again'};
+  return (words[m.what] || m.what) + ' ' + at(m.time, t.unit) + ' (' + pct(m.battery, t.threshold) + ')';
+}
+
+/** An earlier run in one line. */
+export function earlierText(r, unit) {
+  return 'run ' + r.run + ' (line ' + r.line + '): ' + (r.warning ? 'warned' : 'no warning') + ', '
+    + (r.violation ? 'violated' + (r.recovered ? ', then held again' : '') : 'held')
+    + (r.lead !== null ? ', lead ' + span(r.lead, unit) : '') + (r.noMatch ? ', no model matched' : '');
+}
