@@ -217,8 +217,9 @@ public final class Tile {
         o.put("name", name);
         o.put("state", state.id());
         o.put("light", state.light());
-        // Quiet mid-run is STALE (a logger or robot that stopped); quiet at rest is a run that ended.
-        o.put("stale", quiet >= staleMillis && state != TileState.ENDED);
+        // Quiet mid-run is STALE (a logger or robot that stopped); quiet at rest is a run that ended, and a log that
+        // never had a record is still waiting.
+        o.put("stale", quiet >= staleMillis && state != TileState.ENDED && records > 0);
         o.put("quietSeconds", quiet / 1000.0);
         o.put("run", run);
         o.put("runLine", runLine);

@@ -60,8 +60,8 @@ export function plot(t) {
     t.unit === 'ticks' ? 'tick of the tree' : 'time in the log (s)'));
   if (t.threshold !== undefined && t.threshold !== null) {
     s.appendChild(svg('line', {class: 'threshold', x1: L, x2: W - R, y1: y(t.threshold), y2: y(t.threshold)}));
-    s.appendChild(svg('text', {class: 'label-threshold', x: W - R - 3, y: y(t.threshold) - 3, 'text-anchor': 'end'},
-      'limit ' + value(t.threshold)));
+    // At the left, where the run begins high above it; the warning and the violation come at the right.
+    s.appendChild(svg('text', {class: 'label-threshold', x: L + 3, y: y(t.threshold) - 3}, 'limit ' + value(t.threshold)));
   }
   if (pts.length > 0) {
     s.appendChild(svg('polyline', {class: 'battery',

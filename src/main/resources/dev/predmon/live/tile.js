@@ -1,8 +1,8 @@
 // predmon live view: a tile (the full view) and a row (the compact view) of one robot. Text from logs goes into the
 // page through textContent only.
 'use strict';
-import {GLYPHS, STATE_WORDS, at, basisWords, chance, earlierText, eventText, forecastWords, momentText, num, pct, span,
-  verdict, whenWords} from './words.js';
+import {GLYPHS, STATE_WORDS, at, basisWords, chance, earlierText, eventText, forecastWords, momentText, num, pct,
+  shortSpan, verdict, whenWords} from './words.js';
 import {plot} from './plot.js';
 
 export function el(tag, cls, text) {
@@ -22,10 +22,10 @@ function light(t, small) {
   return l;
 }
 
-function ackButton(t, ui) {
+function ackButton(t, ui, compact) {
   if (!NEEDS_ATTENTION.has(t.state) && !t.stale) return null;
   const acked = ui.acked(t);
-  const b = el('button', 'ack', acked ? 'acknowledged' : 'acknowledge');
+  const b = el('button', 'ack', compact ? (acked ? 'acked' : 'ack') : acked ? 'acknowledged' : 'acknowledge');
   b.type = 'button';
   b.setAttribute('aria-pressed', String(acked));
   b.title = acked ? 'silenced until this robot\u2019s state changes; click to undo'
@@ -45,11 +45,11 @@ function ackButton(t, ui) {
   return b;
 }
 
-function badges(t) {
+function badges(t, compact) {
   const out = [];
-  if (t.state === 'ended') out.push(el('span', 'badge ended', 'RUN ENDED'));
+  if (t.state === 'ended' && !compact) out.push(el('span', 'badge ended', 'RUN ENDED'));
   if (t.stale) {
-    const b = el('span', 'badge stale', 'STALE ' + num(t.quietSeconds, 0) + ' s');
+    const b = el('span', 'badge stale', 'STALE' + (compact ? '' : ' ' + num(t.quietSeconds, 0) + ' s'));
     b.title = 'the log has not grown for ' + num(t.quietSeconds, 0) + ' s'
       + (t.running.length ? ' while ' + t.running.join(', ') + ' was running' : '');
     out.push(b);
@@ -72,6 +72,14 @@ function forecastLine(t) {
   p.title = f.explanation || '';
   p.append(el('span', 'chance', chance(f.probability)), el('span', 'when', ' chance of a violation, ' + whenWords(f)),
     el('small', 'basis', basisWords(f)));
+  return p;
+}
+
+/** Why the monitor warned, in its words (which rule, what the forecast rests on). */
+function whyLine(t) {
+  if (t.state !== 'warning' || !t.warning.reason) return null;
+  const p = el('p', 'why');
+  p.append(el('b', null, 'Why: '), t.warning.reason);
   return p;
 }
 
@@ -104,7 +112,7 @@ export function renderTile(tile, t, ui) {
       + pct(t.violation.battery, t.threshold);
   }
   const parts = [head, status];
-  for (const p of [actionLine(t), forecastLine(t)]) if (p) parts.push(p);
+  for (const p of [actionLine(t), forecastLine(t), whyLine(t)]) if (p) parts.push(p);
   parts.push(lead);
   if (t.history.length > 0) {
     const h = el('p', 'history');
@@ -153,16 +161,16 @@ function rowWords(t) {
   const state = STATE_WORDS[t.state] || t.state;
   switch (t.state) {
     case 'violation':
-      return state + ' at ' + at(t.violation.time, t.unit) + (t.action ? ' \u00b7 ' + t.action : '');
+      return state + ' since ' + at(t.violation.time, t.unit) + (t.action ? ' \u2192 ' + t.action : '');
     case 'warning':
-      return state + (f ? ' \u00b7 ' + chance(f.probability) + ' ' + (f.timeToViolation === null ? ''
-        : 'in ~' + span(f.timeToViolation, f.unit)) : '') + (t.action ? ' \u00b7 ' + t.action : '');
+      return state + (f ? ' ' + chance(f.probability) + (f.timeToViolation === null ? ''
+        : ' ~' + shortSpan(f.timeToViolation, f.unit)) : '') + (t.action ? ' \u2192 ' + t.action : '');
     case 'unknown':
       return state + (t.noMatch ? ' \u00b7 no model matches' : ' \u00b7 new behaviour')
         + (f ? ' \u00b7 ' + chance(f.probability) : '');
     case 'ok':
       return (t.recovered ? 'OK again after a violation' : state) + (f ? ' \u00b7 ' + chance(f.probability)
-        + (f.timeToViolation === null ? '' : ' in ~' + span(f.timeToViolation, f.unit)) : '');
+        + (f.timeToViolation === null ? '' : ' in ~' + shortSpan(f.timeToViolation, f.unit)) : '');
     default:
       return t.state === 'ended' ? state : 'waiting for data';
   }
@@ -173,13 +181,13 @@ export function renderRow(row, t, ui) {
   const name = el('span', 'name', t.name);
   name.title = t.log;
   const line1 = el('div', 'line1');
-  line1.append(name, ...badges(t), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
+  line1.append(name, ...badges(t, true), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
   const line2 = el('div', 'line2', rowWords(t));
   line2.title = verdict(t) + (forecastWords(t.forecast) ? '\n' + forecastWords(t.forecast) : '');
   const text = el('div', 'text');
   text.append(line1, line2);
   const parts = [light(t, true), text];
-  const ack = ackButton(t, ui);
+  const ack = ackButton(t, ui, true);
   if (ack) parts.push(ack);
   row.replaceChildren(...parts);
   row.title = 'show ' + t.name + ' in full';

@@ -36,6 +36,12 @@ export function span(d, unit) {
   return (Math.abs(d) >= 100 ? num(d, 0) : Math.abs(d) >= 10 ? num(d, 1) : num(d, 2)) + ' s';
 }
 
+/** A duration in few characters, for the compact view: 6.5 s, 48 s, 48 ticks. */
+export function shortSpan(d, unit) {
+  if (missing(d)) return '?';
+  return unit === 'ticks' ? num(d, 0) + ' ticks' : (Math.abs(d) >= 10 ? num(d, 0) : num(d, 1)) + ' s';
+}
+
 /** The probability of a violation in this run: 98%, or <1% / >99% at the ends. */
 export function chance(p) {
   if (missing(p)) return '?';
@@ -89,7 +95,8 @@ export function verdict(t) {
       return 'VIOLATED since ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
         + (t.warning ? ', predicted ' + span(t.lead, t.unit) + ' ahead' : ', not predicted');
     case 'warning':
-      return 'WARNING: ' + (t.warning.reason || 'the run is predicted to violate ' + (t.property || 'the property'));
+      return 'WARNING: a violation is predicted' + (t.warning.scenarios.length
+        ? ' (the run can only be faulty scenario ' + t.warning.scenarios.join(', ') + ')' : '');
     case 'unknown':
       return 'UNKNOWN: ' + unknownWhy(t);
     case 'ok':
@@ -97,7 +104,7 @@ export function verdict(t) {
         return 'holds again (' + pct(t.battery, thr) + '); violated at ' + at(t.violation.time, t.unit)
           + ' (' + pct(t.violation.battery, thr) + ')';
       }
-      return 'OK: the property holds and no violation is predicted';
+      return 'OK: the property holds and no warning is raised';
     case 'ended':
       return 'Run ended: ' + runOutcome(t);
     default:
@@ -135,7 +142,9 @@ export function eventText(e, t) {
     case 'eliminated':
       return where + 'model ' + e.model + ' (' + (e.faulty ? 'faulty' : 'nominal') + ') eliminated: ' + e.reason;
     case 'warning':
-      return where + 'WARNING at ' + pct(e.battery, thr) + ': ' + (e.reason || 'only ' + e.scenarios.join(', ') + ' left');
+      // The reason's first clause: the whole of it is under the tile's verdict.
+      return where + 'WARNING at ' + pct(e.battery, thr) + ': '
+        + (e.reason ? e.reason.split(';')[0] : 'only ' + e.scenarios.join(', ') + ' left');
     case 'violation':
       return where + 'VIOLATION of ' + e.property + ': ' + pct(e.battery, thr);
     case 'no-match':

@@ -113,6 +113,7 @@ class TileTest {
     void aLogThatStopsGrowingIsStale() {
         Board b = board();
         Tile t = b.tile("a.log");
+        t.record(level(1, 80));
         now.addAndGet(9_000);
         assertFalse(snap(b, "a.log").get("stale").asBoolean());
         now.addAndGet(1_000);
@@ -121,6 +122,9 @@ class TileTest {
         JsonNode s = snap(b, "a.log");
         assertFalse(s.get("stale").asBoolean());
         assertEquals(0.0, s.get("quietSeconds").asDouble());
+        b.tile("never.log");
+        now.addAndGet(60_000);
+        assertFalse(snap(b, "never.log").get("stale").asBoolean(), "a log never written is waiting, not stale");
     }
 
     @Test

@@ -1,0 +1,79 @@
+package dev.predmon.cli;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.live.Board;
+import dev.predmon.live.HttpAddress;
+import dev.predmon.live.LiveServer;
+import dev.predmon.live.RobotNames;
+import dev.predmon.live.Tile;
+import dev.predmon.model.ModelSet;
+import dev.predmon.model.ModelStore;
+import dev.predmon.monitor.LogWatcher;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+
+import java.io.IOException;
+import java.net.URI;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A live view served in-process, its tiles fed as {@code watch} feeds them (each log through its own monitor, each event
+ * as {@code watch --json} prints it), so that a test decides what each robot has shown and when its log last grew.
+ */
+final class LiveScene implements AutoCloseable {
+
+    final ModelSet models;
+    final Abstraction abstraction;
+    final Board board;
+    private final Map<Path, LogWatcher> watchers = new HashMap<>();
+    final LiveServer server;
+
+    LiveScene(Path modelsDir, Duration staleAfter, RobotNames names, List<String> watching) throws Exception {
+        abstraction = Abstraction.load(ModelStore.storedAbstraction(modelsDir).orElseThrow());
+        models = ModelStore.read(modelsDir, abstraction);
+        board = new Board(models, abstraction, staleAfter, names);
+        board.watching(watching);
+        server = LiveServer.start(HttpAddress.parse("0"), board);
+    }
+
+    /**
+     * Reads what {@code log} holds beyond what was read of it before into its tile, as a followed log: pending pairs
+     * wait for more.
+     */
+    Tile follow(Path log) throws Exception {
+        Tile tile = board.tile(log.toString());
+        LogWatcher w = watchers.get(log);
+        if (w == null) {
+            PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> event(tile, e));
+            w = LogWatcher.withRecords(log, monitor, p -> { }, tile::record);
+            watchers.put(log, w);
+        }
+        while (w.poll()) {
+            board.grew(tile);
+        }
+        return tile;
+    }
+
+    /** {@code e} of {@code tile}'s log, as watch gives it to the live view. */
+    void event(Tile tile, MonitorEvent e) {
+        if (!(e instanceof MonitorEvent.Unmapped)) {
+            board.event(tile, e, EventPrinter.toJson(e, tile.log()));
+        }
+    }
+
+    URI url() {
+        return server.url();
+    }
+
+    @Override
+    public void close() throws IOException {
+        server.close();
+        for (LogWatcher w : watchers.values()) {
+            w.close();
+        }
+    }
+}

@@ -1,0 +1,251 @@
+package dev.predmon.live;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.model.LearnedModel;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.WarningRule;
+import dev.predmon.parse.Clock;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.support.Records;
+import org.junit.jupiter.api.Test;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The states an operator reads on a tile, and {@code /status} with the forecast: unknown where the models cannot judge,
+ * a run that ended apart from a log that stopped mid-run, a violation that recovers, the warning's reason and the
+ * property's action, the robot's name, worst first.
+ */
+class TileStateTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final Abstraction A = Abstraction.defaults();
+    private final AtomicLong now = new AtomicLong(1_000_000);
+
+    private Board board(RobotNames names) {
+        return new Board(List.<LearnedModel>of(), A.safety(), Duration.ofSeconds(10), now::get, names);
+    }
+
+    private Board board() {
+        return board(RobotNames.byFile());
+    }
+
+    private static LogRecord level(double time, double level) {
+        return new Records().at(time).level(level).list().get(1);
+    }
+
+    /** The tree starting or stopping a skill, as the monitor logs it (protocol Skill_request, dropped by the abstraction). */
+    private static List<LogRecord> skill(String skill, String command) {
+        return new Records().call("/" + skill + "/BT_rpc/client", "/" + skill + "/BT_rpc/server", "Skill_request",
+                command, "", "").list();
+    }
+
+    private static Forecast forecast(double p, Double ttv, Forecast.Basis basis, Long novelSince) {
+        return new Forecast(p, ttv, ttv == null ? null : ttv * 0.9, ttv == null ? null : ttv * 1.2, basis, novelSince,
+                12, 9, 31.5, -2.4, "s");
+    }
+
+    /** The event's JSON as {@code watch --json} prints its forecast object (the fields of cli.ForecastJson). */
+    private static String forecastEvent(double time, long line, Forecast f) {
+        ObjectNode o = JSON.createObjectNode().put("event", "forecast").put("log", "x").put("time", time)
+                .put("line", line);
+        o.set("forecast", forecastJson(f));
+        return o.toString();
+    }
+
+    private static ObjectNode forecastJson(Forecast f) {
+        ObjectNode j = JSON.createObjectNode().put("probability", f.probability());
+        j.put("timeToViolation", f.timeToViolation()).put("low", f.low()).put("high", f.high()).put("unit", f.unit())
+                .put("basis", f.basis().label()).put("novelSince", f.novelSince()).put("runs", f.runs())
+                .put("violated", f.violated()).put("value", f.value()).put("drift", f.drift())
+                .put("explanation", "P(violation) " + f.probability());
+        return j;
+    }
+
+    private static JsonNode snap(Board b, String log) {
+        return b.status(log).get("logs").get(0);
+    }
+
+    private static String state(Board b, String log) {
+        return snap(b, log).get("state").asText();
+    }
+
+    @Test
+    void noModelMatchingOrNovelBehaviourIsUnknownNeitherGreenNorRed() {
+        Board b = board();
+        Tile t = b.tile("a.log");
+        t.record(level(1, 80));
+        assertEquals("ok", state(b, "a.log"));
+        assertEquals("green", snap(b, "a.log").get("light").asText());
+        b.event(t, new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0), "{\"event\":\"no-match\",\"line\":40}");
+        JsonNode s = snap(b, "a.log");
+        assertEquals("unknown", s.get("state").asText());
+        assertEquals("blue", s.get("light").asText());
+        assertEquals(40, s.get("noMatchLine").asLong());
+
+        Tile n = b.tile("b.log");
+        n.record(level(1, 80));
+        Forecast novel = forecast(0.4, 60.0, Forecast.Basis.RESYNCHRONISED, 33L);
+        b.event(n, new MonitorEvent.ForecastChanged(2, 50, novel, Clock.SECONDS, 0), forecastEvent(2, 50, novel));
+        assertEquals("unknown", state(b, "b.log"), "novel behaviour: matching resumed, but on less evidence");
+        Forecast valueOnly = forecast(0.4, 60.0, Forecast.Basis.VALUE_ONLY, null);
+        b.event(n, new MonitorEvent.ForecastChanged(3, 60, valueOnly, Clock.SECONDS, 0), forecastEvent(3, 60, valueOnly));
+        assertEquals("unknown", state(b, "b.log"));
+        Forecast matched = forecast(0.4, 60.0, Forecast.Basis.MATCHED, null);
+        b.event(n, new MonitorEvent.ForecastChanged(4, 70, matched, Clock.SECONDS, 0), forecastEvent(4, 70, matched));
+        assertEquals("ok", state(b, "b.log"), "matched again: the forecast is trusted again");
+        assertEquals(0, snap(b, "b.log").get("events").size(), "forecasts are shown, not listed as events");
+
+        // A forecast-rule warning with no scenario left: a warning, not unknown, with its reason and the action.
+        Forecast high = forecast(0.97, 5.0, Forecast.Basis.VALUE_ONLY, 20L);
+        String reason = "P(violation) 0.97 reaches the warning threshold 0.92; about 5.00 s to the violation";
+        MonitorEvent.Warning w = new MonitorEvent.Warning(6, 80, List.of(), 31.5, 9, Clock.SECONDS, 0,
+                WarningRule.FORECAST, high, reason);
+        ObjectNode wj = JSON.createObjectNode().put("event", "warning").put("reason", reason);
+        wj.set("forecast", forecastJson(high));
+        b.event(t, w, wj.toString());
+        s = snap(b, "a.log");
+        assertEquals("warning", s.get("state").asText());
+        assertEquals(reason, s.get("warning").get("reason").asText());
+        assertEquals("forecast", s.get("warning").get("rule").asText());
+        assertEquals(0, s.get("warning").get("scenarios").size());
+        assertEquals("send the robot to the charging station", s.get("action").asText());
+        assertEquals(0.97, s.get("forecast").get("probability").asDouble());
+    }
+
+    @Test
+    void statusCarriesTheForecastAsWatchJsonPrintsIt() {
+        Board b = board();
+        Tile t = b.tile("r.log");
+        t.record(level(1, 35));
+        Forecast f = forecast(0.71, 6.88, Forecast.Basis.MATCHED, null);
+        b.event(t, new MonitorEvent.ForecastChanged(2, 90, f, Clock.SECONDS, 0), forecastEvent(2, 90, f));
+        JsonNode fj = snap(b, "r.log").get("forecast");
+        assertEquals(forecastJson(f), fj, "the same object, field for field");
+        List<String> fields = new ArrayList<>();
+        fj.fieldNames().forEachRemaining(fields::add);
+        assertEquals(List.of("probability", "timeToViolation", "low", "high", "unit", "basis", "novelSince", "runs",
+                "violated", "value", "drift", "explanation"), fields);
+
+        b.event(t, new MonitorEvent.RunStarted(1, 100, 500, Clock.SECONDS), "{\"event\":\"run\"}");
+        JsonNode s = snap(b, "r.log");
+        assertTrue(s.get("forecast").isNull(), "a new run has no forecast yet");
+        assertEquals(0.71, s.get("earlierRuns").get(0).get("probability").asDouble(), "the run's last forecast");
+    }
+
+    @Test
+    void aRunThatEndsAtRestIsEndedAndOneThatStopsMidRunIsStale() {
+        Board b = board();
+        Tile done = b.tile("done.log");
+        Tile dead = b.tile("dead.log");
+        for (Tile t : List.of(done, dead)) {
+            skill("GoToDestination", "send_start").forEach(t::record);
+            t.record(level(1, 80));
+        }
+        skill("GoToDestination", "send_stop").forEach(done::record);
+        now.addAndGet(9_000);
+        assertEquals("ok", state(b, "done.log"), "quiet for less than the stale time");
+        assertEquals("ok", state(b, "dead.log"));
+        now.addAndGet(1_000);
+        JsonNode ended = snap(b, "done.log");
+        assertEquals("ended", ended.get("state").asText());
+        assertFalse(ended.get("stale").asBoolean(), "a run that ended is not stale");
+        JsonNode stale = snap(b, "dead.log");
+        assertEquals("ok", stale.get("state").asText());
+        assertTrue(stale.get("stale").asBoolean());
+        assertEquals(List.of("GoToDestination"), List.of(stale.get("running").get(0).asText()));
+        assertEquals(List.of("dead.log", "done.log"), order(b), "quiet mid-run sorts before a run that ended");
+
+        b.grew(done);
+        assertEquals("ok", state(b, "done.log"), "it grows again: a new run is under way");
+        Tile capture = b.tile("capture.log"); // no tree-to-skill traffic: it cannot tell, and stays stale
+        capture.record(level(1, 80));
+        now.addAndGet(10_000);
+        assertTrue(snap(b, "capture.log").get("stale").asBoolean());
+        assertTrue(snap(b, "capture.log").get("treeAtRest").isNull());
+    }
+
+    @Test
+    void aViolationThatRecoversShowsWhatHoldsNowAndKeepsTheViolationInTheHistory() {
+        Board b = board();
+        Tile t = b.tile("r.log");
+        t.record(level(1, 25));
+        b.event(t, new MonitorEvent.Violation(2, 20, "battery", 19.95, 20.1, Clock.SECONDS, 0), "{\"event\":\"violation\"}");
+        t.record(level(2, 19.95));
+        assertEquals("violation", state(b, "r.log"));
+        t.record(level(30, 96.7));
+        JsonNode s = snap(b, "r.log");
+        assertEquals("ok", s.get("state").asText(), "it holds again");
+        assertTrue(s.get("recovered").asBoolean());
+        assertEquals(19.95, s.get("violation").get("battery").asDouble(), "the violation stays");
+        assertEquals(List.of("violation", "recovered"), moments(s));
+        assertEquals(96.7, s.get("history").get(1).get("battery").asDouble());
+        t.record(level(40, 12));
+        s = snap(b, "r.log");
+        assertEquals("violation", s.get("state").asText());
+        assertEquals(List.of("violation", "recovered", "violated again"), moments(s));
+    }
+
+    @Test
+    void worstFirstWithTheRobotsNamesAndWhatIsWatched() {
+        Board b = board(RobotNames.pattern("{dir}"));
+        b.watching(List.of("logs in /robots"));
+        assertEquals("logs in /robots", b.status(null).get("watching").get(0).asText());
+        assertEquals(0, b.status(null).get("logs").size(), "nothing yet: the page says what it waits for");
+        Tile ok = b.tile("/robots/r1/monitor.log");
+        ok.record(level(1, 80));
+        Tile warned = b.tile("/robots/r2/monitor.log");
+        warned.record(level(1, 40));
+        b.event(warned, new MonitorEvent.Warning(3, 30, List.of("depleted"), 40.0, 4, Clock.SECONDS, 0),
+                "{\"event\":\"warning\"}");
+        b.tile("/robots/r3/monitor.log");
+        Tile red = b.tile("/robots/r4/monitor.log");
+        b.event(red, new MonitorEvent.Violation(2, 20, "battery", 12, 20.1, Clock.SECONDS, 0), "{\"event\":\"violation\"}");
+        Tile unknown = b.tile("/robots/r5/monitor.log");
+        unknown.record(level(1, 80));
+        b.event(unknown, new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0), "{\"event\":\"no-match\"}");
+        List<String> names = new ArrayList<>();
+        List<String> states = new ArrayList<>();
+        b.status(null).get("logs").forEach(s -> {
+            names.add(s.get("name").asText());
+            states.add(s.get("state").asText());
+        });
+        assertEquals(List.of("r4", "r2", "r5", "r1", "r3"), names);
+        assertEquals(List.of("violation", "warning", "unknown", "ok", "waiting"), states);
+    }
+
+    @Test
+    void robotNamesComeFromTheOptionOrThePath() {
+        assertEquals("r1", RobotNames.byFile().of("logs/r1.log"));
+        assertEquals("r1", RobotNames.pattern("{dir}").of("robots/r1/monitor.log"));
+        assertEquals("r1-monitor", RobotNames.pattern("{dir}-{file}").of("robots/r1/monitor.txt"));
+        assertEquals("Marvin", RobotNames.fixed(" Marvin ").of("whatever.log"));
+        assertThrows(IllegalArgumentException.class, () -> RobotNames.pattern("{robot}"));
+        assertThrows(IllegalArgumentException.class, () -> RobotNames.pattern("robot"));
+        assertThrows(IllegalArgumentException.class, () -> RobotNames.fixed(" "));
+    }
+
+    private static List<String> moments(JsonNode tile) {
+        List<String> out = new ArrayList<>();
+        tile.get("history").forEach(m -> out.add(m.get("what").asText()));
+        return out;
+    }
+
+    private static List<String> order(Board b) {
+        List<String> out = new ArrayList<>();
+        b.status(null).get("logs").forEach(s -> out.add(s.get("log").asText()));
+        return out;
+    }
+}
