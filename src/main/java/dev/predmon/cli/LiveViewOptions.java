@@ -37,8 +37,8 @@ final class LiveViewOptions {
     private double staleSeconds = 10;
 
     @Option(names = "--stale-after", paramLabel = "S", defaultValue = "10",
-            description = "In the live view, mark a log STALE when it has not grown for S seconds (default: "
-                    + "${DEFAULT-VALUE}).")
+            description = "In the live view, a log that has not grown for S seconds is STALE, or its run ended when "
+                    + "the tree had stopped every action it started (default: ${DEFAULT-VALUE}).")
     void staleAfter(double seconds) {
         if (!(seconds > 0) || Double.isInfinite(seconds)) {
             throw new IllegalArgumentException("must be a positive number of seconds, got " + seconds);

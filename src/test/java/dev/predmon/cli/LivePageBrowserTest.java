@@ -29,6 +29,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -42,7 +43,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
  * message, on a machine without Chromium.
  *
  * <p>Screenshots go to {@code target/}, and to {@code -Dpredmon.screenshots=DIR} when given: the documentation's
- * {@code docs/live.png} and {@code docs/live-compact.png} are made with
+ * {@code docs/live-fleet.png} and {@code docs/live-compact.png} are made with
  * {@code mvn -q test -Dtest=LivePageBrowserTest -Dpredmon.screenshots=docs}.
  */
 class LivePageBrowserTest {
@@ -50,6 +51,8 @@ class LivePageBrowserTest {
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final int WIDTH = 1920;
     private static final int HEIGHT = 1080;
+    /** The screenshots the documentation shows. */
+    private static final Set<String> DOCUMENTED = Set.of("live-fleet.png", "live-compact.png");
     private static HeadlessChromium browser;
     private final List<HeadlessChromium.Page> pages = new ArrayList<>();
 
@@ -134,7 +137,7 @@ class LivePageBrowserTest {
     private static void screenshot(HeadlessChromium.Page page, String name) throws Exception {
         page.screenshot(Path.of("target", name));
         String docs = System.getProperty("predmon.screenshots");
-        if (docs != null && !docs.isBlank()) {
+        if (docs != null && !docs.isBlank() && DOCUMENTED.contains(name)) {
             page.screenshot(Path.of(docs, name));
         }
     }
@@ -388,7 +391,7 @@ class LivePageBrowserTest {
                 assertTrue(ticks.get("x").asInt() >= 8, "several labelled ticks on the axes: " + ticks);
                 assertEquals("0", page.eval("String([...document.querySelectorAll('.events li')].filter(li =>"
                         + " getComputedStyle(li).textOverflow === 'ellipsis').length)"), "no event is cut off");
-                screenshot(page, "live.png");
+                screenshot(page, "live-fleet.png");
             } finally {
                 keepAlive.interrupt();
                 keepAlive.join();
