@@ -300,18 +300,7 @@ class LivePageBrowserTest {
                     live.add(t);
                 }
             }
-            Thread keepAlive = new Thread(() -> {
-                while (!Thread.currentThread().isInterrupted()) {
-                    live.forEach(scene.board::grew);
-                    try {
-                        Thread.sleep(300);
-                    } catch (InterruptedException e) {
-                        return;
-                    }
-                }
-            });
-            keepAlive.start();
-            try {
+            try (AutoCloseable growing = scene.growing(live)) {
                 HeadlessChromium.Page page = open(scene.url().resolve("/?view=compact"));
                 waitFor(page, "document.querySelectorAll('#tiles.compact .row').length === 100", "100 rows");
                 waitFor(page, "document.querySelectorAll('.row[data-state=ended]').length === 9", "the ended runs");
@@ -335,9 +324,6 @@ class LivePageBrowserTest {
                 click(page, "document.getElementById('view')");
                 waitFor(page, "document.querySelectorAll('#tiles.tiles article.tile').length === 100", "the tiles");
                 assertFalse(page.eval("location.search").contains("compact"));
-            } finally {
-                keepAlive.interrupt();
-                keepAlive.join();
             }
         }
     }
@@ -367,18 +353,7 @@ class LivePageBrowserTest {
                 tiles.add(scene.follow(p));
             }
             scene.board.tile(dir.resolve("robots/r6/monitor.log").toString());
-            Thread keepAlive = new Thread(() -> {
-                while (!Thread.currentThread().isInterrupted()) {
-                    tiles.forEach(scene.board::grew);
-                    try {
-                        Thread.sleep(300);
-                    } catch (InterruptedException e) {
-                        return;
-                    }
-                }
-            });
-            keepAlive.start();
-            try {
+            try (AutoCloseable growing = scene.growing(tiles)) {
                 HeadlessChromium.Page page = open(scene.url());
                 waitFor(page, "document.querySelectorAll('article.tile').length === 6", "six tiles");
                 waitFor(page, "document.querySelector('[data-state=ended]') !== null", "r5's run ended");
@@ -392,9 +367,6 @@ class LivePageBrowserTest {
                 assertEquals("0", page.eval("String([...document.querySelectorAll('.events li')].filter(li =>"
                         + " getComputedStyle(li).textOverflow === 'ellipsis').length)"), "no event is cut off");
                 screenshot(page, "live-fleet.png");
-            } finally {
-                keepAlive.interrupt();
-                keepAlive.join();
             }
         }
     }

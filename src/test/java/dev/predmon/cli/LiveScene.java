@@ -65,6 +65,25 @@ final class LiveScene implements AutoCloseable {
         }
     }
 
+    /** Until closed, the logs of {@code tiles} look as if they kept growing (as live robots' logs do). */
+    AutoCloseable growing(List<Tile> tiles) {
+        Thread beat = new Thread(() -> {
+            while (!Thread.currentThread().isInterrupted()) {
+                tiles.forEach(board::grew);
+                try {
+                    Thread.sleep(300);
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+        }, "live-scene-growing");
+        beat.start();
+        return () -> {
+            beat.interrupt();
+            beat.join();
+        };
+    }
+
     URI url() {
         return server.url();
     }
