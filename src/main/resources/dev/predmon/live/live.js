@@ -190,14 +190,20 @@ document.getElementById('sound').addEventListener('click', () => {
 document.getElementById('view').addEventListener('click', () => setView(view === 'compact' ? 'tiles' : 'compact'));
 
 // ---- data ----------------------------------------------------------------------------------------------------
-function apply(s, full) {
+// Answers may arrive out of order (a full refresh overtaken by one log's): each log keeps the newest request's.
+let requests = 0;
+const answered = new Map(); // log -> the number of the request whose answer it shows
+
+function apply(s, full, request) {
   document.getElementById('stale-after').textContent = s.staleAfter + ' s';
   watching = s.watching || [];
   const seen = new Set();
   for (const t of s.logs) {
+    seen.add(t.log);
+    if ((answered.get(t.log) || 0) > request) continue;
+    answered.set(t.log, request);
     const before = logs.get(t.log);
     logs.set(t.log, t);
-    seen.add(t.log);
     if (before && before.state !== t.state && (t.state === 'warning' || t.state === 'violation')) alert(t);
   }
   if (full) {
@@ -213,10 +219,11 @@ function connection(state, text) {
 }
 
 async function refresh(log) {
+  const request = ++requests;
   try {
     const r = await fetch(log === undefined ? '/status' : '/status?log=' + encodeURIComponent(log), {cache: 'no-store'});
     if (!r.ok) throw new Error('status ' + r.status);
-    apply(await r.json(), log === undefined);
+    apply(await r.json(), log === undefined, request);
   } catch (e) {
     connection('lost', 'server unreachable: showing the last state');
   }
@@ -233,7 +240,7 @@ function flush() {
 switches();
 document.getElementById('view').textContent = view === 'compact' ? 'show tiles' : 'compact view';
 const initial = document.getElementById('initial-status');
-if (initial && initial.textContent.trim().startsWith('{')) apply(JSON.parse(initial.textContent), true);
+if (initial && initial.textContent.trim().startsWith('{')) apply(JSON.parse(initial.textContent), true, ++requests);
 
 const events = new EventSource('/events');
 events.onopen = () => { connection('live', 'live'); refresh(); };
