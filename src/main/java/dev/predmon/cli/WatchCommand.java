@@ -32,7 +32,7 @@ import java.util.concurrent.Callable;
                 + "matches. The built-in safety monitor reports the property's violation alongside.",
                 "Several logs (--log repeated, a directory or a glob) are watched in one process, each with its "
                         + "own monitor; each event then names its log.",
-                "Ctrl-C (SIGINT) or SIGTERM stops it: it prints the end summary and exits as below.",
+                "Ctrl-C (SIGINT), SIGTERM or SIGHUP stops it: it prints the end summary and exits as below.",
                 "Exit 1 when a warning was raised, 5 when no model matches the run any more, 0 otherwise; 3 when "
                         + "the log held nothing to judge (with --no-follow, at the end of the file)."})
 final class WatchCommand implements Callable<Integer> {
