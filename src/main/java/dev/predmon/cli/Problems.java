@@ -14,13 +14,13 @@ final class Problems {
 
     /** The parse problems of a log that gave evidence, then the interface messages no rule maps. */
     static void print(PrintWriter err, Path log, LogTrace trace) {
-        trace.problems().forEach(p -> err.println(p.format(log.toString())));
+        trace.problems().forEach(p -> err.println(Terminal.line(p.format(log.toString()))));
         unmapped(err, log, trace.unmapped());
     }
 
     /** One line per kind of interface message no abstraction rule maps, with its count: never silently dropped. */
     static void unmapped(PrintWriter err, Path log, Map<String, Long> unmapped) {
-        unmapped.forEach((k, n) -> err.println(log + ": warning: " + n + " interface message(s) no rule maps: " + k));
+        unmapped.forEach((k, n) -> err.println(Terminal.line(log + ": warning: " + n + " interface message(s) no rule maps: " + k)));
         err.flush();
     }
 }

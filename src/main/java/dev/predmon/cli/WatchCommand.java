@@ -85,7 +85,7 @@ final class WatchCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
         }
         if (!set.hasFaulty()) {
-            err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
+            err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " has no faulty scenario, so no warning can ever be raised");
         }
         Board board = liveView.board(set, abstraction);
         try (LiveServer server = liveView.start(err, board);
@@ -97,7 +97,7 @@ final class WatchCommand implements Callable<Integer> {
             if (noFollow) {
                 fleet.drain();
             } else {
-                sources.missing().forEach(m -> err.println("predmon: waiting for " + m + " to appear"));
+                sources.missing().forEach(m -> err.println("predmon: waiting for " + Terminal.line(m) + " to appear"));
                 err.flush();
                 try (StopSignals signals = StopSignals.interrupting(Thread.currentThread())) {
                     fleet.follow(sources, pollMillis);
@@ -112,7 +112,7 @@ final class WatchCommand implements Callable<Integer> {
                     if (!several) {
                         throw new BadInputException(missing.get());
                     }
-                    err.println("predmon: " + missing.get());
+                    err.println("predmon: " + Terminal.line(missing.get()));
                     codes.add(ExitCodes.BAD_INPUT);
                     continue;
                 }
@@ -121,7 +121,7 @@ final class WatchCommand implements Callable<Integer> {
                 }
                 int code = summary(l, outputs, stop, several);
                 if (missing.isPresent()) {
-                    err.println("predmon: " + (Files.exists(l.path()) ? missing.get()
+                    err.println("predmon: " + Terminal.line(Files.exists(l.path()) ? missing.get()
                             : l.name() + ": stopped before the file appeared; no verdict"));
                     code = ExitCodes.BAD_INPUT;
                 }
@@ -177,7 +177,7 @@ final class WatchCommand implements Callable<Integer> {
                     + (m.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
                     : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
-            out.println("end of " + log.name() + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
+            out.println("end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
                     + m.pipeline().records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
         }

@@ -86,8 +86,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     public void event(WatchedLog log, MonitorEvent e) {
         if (e instanceof MonitorEvent.Unmapped u) {
             if (!noFollow) { // first sighting of each kind while following; with --no-follow the totals say it
-                err.println(log.name() + ":" + u.line() + ": warning: interface message no abstraction rule maps: "
-                        + u.message() + " (first of its kind; the totals come at the stop)");
+                err.println(Terminal.line(log.name() + ":" + u.line() + ": warning: interface message no abstraction "
+                        + "rule maps: " + u.message() + " (first of its kind; the totals come at the stop)"));
                 err.flush();
             }
             return;
@@ -125,7 +125,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             Evidence evidence = evidence(log);
             Optional<String> notice = evidence.earlyNotice();
             notice.ifPresent(n -> {
-                err.println("predmon: " + n);
+                err.println("predmon: " + Terminal.line(n));
                 err.flush();
             });
             o.settled = notice.isPresent() || evidence.recognised();
@@ -139,7 +139,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             o.firstProblem = p;
         }
         if (!noFollow) {
-            err.println(p.format(log.name()));
+            err.println(Terminal.line(p.format(log.name())));
             err.flush();
         } else if (o.held.size() < Traces.MAX_PROBLEMS) {
             o.held.add(p);
@@ -151,9 +151,9 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     /** With {@code --no-follow}: prints the problems held for {@code log}. */
     void flushProblems(WatchedLog log) {
         Outlet o = outlets.get(log);
-        o.held.forEach(p -> err.println(p.format(log.name())));
+        o.held.forEach(p -> err.println(Terminal.line(p.format(log.name()))));
         if (o.moreProblems > 0) {
-            err.println(log.name() + ": " + o.moreProblems + " more problem(s) not shown");
+            err.println(Terminal.line(log.name()) + ": " + o.moreProblems + " more problem(s) not shown");
         }
         o.held.clear();
         err.flush();
@@ -169,7 +169,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
 
     @Override
     public void rescanFailed(java.io.IOException e) {
-        String message = "predmon: looking for new logs: " + e.getMessage();
+        String message = "predmon: looking for new logs: " + Terminal.line(e.getMessage());
         if (!message.equals(lastRescanFailure)) { // once, not every second
             err.println(message);
             err.flush();
