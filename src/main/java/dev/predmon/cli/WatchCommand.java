@@ -148,7 +148,7 @@ final class WatchCommand implements Callable<Integer> {
     /** Prints a log's end summary (unmapped messages to stderr) and returns the exit code of its verdict. */
     private int summary(WatchedLog log, WatchOutputs outputs, String stop, boolean several) {
         PredictiveMonitor m = log.monitor();
-        Map<String, Long> unmapped = m.pipeline().unmapped();
+        Map<String, Long> unmapped = m.unmapped();
         Problems.unmapped(err, log.path(), unmapped);
         boolean judged = outputs.evidence(log).missing().isEmpty();
         List<RunOutcome> runs = m.runs();
@@ -157,14 +157,16 @@ final class WatchCommand implements Callable<Integer> {
         if (input.json) {
             List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
                     r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch())).toList();
-            End end = new End("end", stop, m.pipeline().records(), pairs, m.warning().isPresent(),
+            End end = new End("end", stop, m.records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), m.noMatch(), perRun,
                     unmapped);
             out.println(Json.line(several ? Json.tagged(end, log.name()) : end));
         } else {
             if (runs.size() > 1) {
                 for (RunOutcome r : runs) {
-                    out.println("run " + r.run() + " (from line " + r.firstLine() + "): " + r.pairs() + " compacted pairs; "
+                    out.println("run " + r.run() + " (from line " + r.firstLine()
+                            + outputs.restartBefore(log, r.run()).map(how -> ", after the log was " + how).orElse("")
+                            + "): " + r.pairs() + " compacted pairs; "
                             + (r.warning() != null ? "warning raised" : "no warning")
                             + (r.noMatch() ? ", no model matches the run" : "")
                             + (r.violation() != null ? ", property violated"
@@ -178,7 +180,7 @@ final class WatchCommand implements Callable<Integer> {
                     + (m.violation().isPresent() ? ", property violated"
                     : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
             out.println("end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
-                    + m.pipeline().records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
+                    + m.records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
         }
         out.flush();

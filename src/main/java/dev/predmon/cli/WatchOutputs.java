@@ -50,6 +50,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         ParseProblem firstProblem;
         /** Something recognisable arrived, or the notice that nothing did was given. */
         boolean settled;
+        /** The runs that began where the log was truncated or replaced, with which of the two. */
+        final Map<Integer, String> restarts = new HashMap<>();
 
         Outlet(EventPrinter printer, Tile tile) {
             this.printer = printer;
@@ -93,6 +95,9 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             return;
         }
         Outlet o = outlets.get(log);
+        if (e instanceof MonitorEvent.Restarted r) {
+            o.restarts.put(log.monitor().run(), r.reason()); // the monitor has begun the run that follows it
+        }
         o.printer.accept(e);
         boolean hook = hooks != null && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
         if (hook || o.tile != null) {
@@ -159,12 +164,17 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         err.flush();
     }
 
+    /** How run {@code run} of {@code log} began, when it began where the log was truncated or replaced. */
+    Optional<String> restartBefore(WatchedLog log, int run) {
+        return Optional.ofNullable(outlets.get(log).restarts.get(run));
+    }
+
     /** What {@code log} has given so far to judge it by. */
     Evidence evidence(WatchedLog log) {
         PredictiveMonitor m = log.monitor();
         long pairs = m.runs().stream().mapToLong(RunOutcome::pairs).sum();
-        return new Evidence(log.path(), log.watcher()::lines, m.pipeline().records(), m.pipeline().interfaceRecords(),
-                pairs, m.pipeline().unmapped(), abstraction, outlets.get(log).firstProblem);
+        return new Evidence(log.path(), log.watcher()::lines, m.records(), m.interfaceRecords(), pairs, m.unmapped(),
+                abstraction, outlets.get(log).firstProblem);
     }
 
     @Override

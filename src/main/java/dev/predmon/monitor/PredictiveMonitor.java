@@ -12,7 +12,9 @@ import dev.predmon.pipeline.TracePipeline;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.function.Consumer;
 
@@ -56,6 +58,12 @@ public final class PredictiveMonitor implements PipelineListener {
     private final int confirm;
     /** Pairs matched since every nominal model was eliminated with a faulty one alive; -1 before. */
     private long sinceNominalGone = -1;
+    /** Runs before the last restart: the runs after it are numbered on from there. */
+    private int runsBefore;
+    /** What the pipeline counted before the last restart (it counts from 0 after each). */
+    private long recordsBefore;
+    private long interfaceRecordsBefore;
+    private final Map<String, Long> unmappedBefore = new TreeMap<>();
 
     /**
      * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
@@ -94,13 +102,21 @@ public final class PredictiveMonitor implements PipelineListener {
         pipeline.endOfInput();
     }
 
-    /** The log was truncated or replaced: start over as for a new log. */
+    /**
+     * The log was truncated or replaced: every model starts over as for a new log, in a new run. The runs before
+     * stay, with their warnings and violations: what {@code watch} reports at its end, and its exit code, cover
+     * every run watched since it started, whatever rotation came between them.
+     */
     public void restart(String reason) {
+        if (pipeline.records() > 0) {
+            finished.add(current());
+        }
+        recordsBefore += pipeline.records();
+        interfaceRecordsBefore += pipeline.interfaceRecords();
+        pipeline.unmapped().forEach((k, n) -> unmappedBefore.merge(k, n, Long::sum));
         pipeline.reset();
-        startRun(0, 1);
-        finished.clear();
-        firstWarning = null;
-        firstViolation = null;
+        runsBefore = finished.size();
+        startRun(runsBefore, 1);
         events.accept(new MonitorEvent.Restarted(reason));
     }
 
@@ -108,8 +124,8 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         finished.add(current());
-        startRun(number, first.line());
-        events.accept(new MonitorEvent.RunStarted(number, first.time(), first.line(), first.clock()));
+        startRun(runsBefore + number, first.line());
+        events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
     }
 
     private void startRun(int number, long line) {
@@ -199,6 +215,23 @@ public final class PredictiveMonitor implements PipelineListener {
         }
     }
 
+    /** Records of the log since the start, across truncations and replacements. */
+    public long records() {
+        return recordsBefore + pipeline.records();
+    }
+
+    /** Records of the skill-component interface since the start, mapped or not. */
+    public long interfaceRecords() {
+        return interfaceRecordsBefore + pipeline.interfaceRecords();
+    }
+
+    /** Interface messages no rule maps since the start, by key, sorted. */
+    public Map<String, Long> unmapped() {
+        Map<String, Long> all = new TreeMap<>(unmappedBefore);
+        pipeline.unmapped().forEach((k, n) -> all.merge(k, n, Long::sum));
+        return all;
+    }
+
     /** The first warning of the log (of any run), once raised. */
     public Optional<MonitorEvent.Warning> warning() {
         return Optional.ofNullable(firstWarning);
@@ -215,7 +248,7 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
-     * Whether, in some run since the last restart, a point came where no model, nominal or faulty, matched it any
+     * Whether, in some run since the start, a point came where no model, nominal or faulty, matched it any
      * more.
      */
     public boolean noMatch() {
