@@ -90,7 +90,7 @@ final class WatchCommand implements Callable<Integer> {
         Board board = liveView.board(set, abstraction);
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
-                     noFollow, hookOptions.open(err), board, abstraction.name());
+                     noFollow, hookOptions.open(err), board, abstraction.name(), p -> !sources.named(p));
              Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), outputs)) {
             sources.find().forEach(fleet::add);
             String stop = "end-of-file";
@@ -106,9 +106,14 @@ final class WatchCommand implements Callable<Integer> {
                 Thread.interrupted(); // stopped: the summaries are written in full
             }
             List<Integer> codes = new ArrayList<>();
+            boolean anyJudged = fleet.logs().stream().anyMatch(l -> outputs.evidence(l).missing().isEmpty());
             for (WatchedLog l : fleet.logs()) {
                 Optional<String> missing = outputs.evidence(l).missing();
-                if (noFollow && missing.isPresent()) {
+                boolean beside = outputs.besideTheLogs(l);
+                if (beside && anyJudged) {
+                    continue; // not a log, beside one that was judged: skipped silently
+                }
+                if ((noFollow || beside) && missing.isPresent()) { // said once, and no summary of nothing
                     if (!several) {
                         throw new BadInputException(missing.get());
                     }

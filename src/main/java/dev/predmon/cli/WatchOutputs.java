@@ -14,11 +14,13 @@ import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.Traces;
 
 import java.io.PrintWriter;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Predicate;
 
 /**
  * Where {@code watch}'s events go: each log's events to stdout through its own {@link EventPrinter} (each log has
@@ -36,6 +38,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private final boolean several;
     private final boolean noFollow;
     private final String abstraction;
+    private final Predicate<Path> found;
     private final Map<WatchedLog, Outlet> outlets = new HashMap<>();
     private final CommandHooks hooks;
     private final Board board;
@@ -64,9 +67,10 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
      * @param hooks       the hook commands, or null; closed with this
      * @param board       the live view, or null
      * @param abstraction the abstraction's name, for messages about logs it maps nothing of
+     * @param found       whether a log was found under a directory or glob rather than named
      */
     WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
-                 CommandHooks hooks, Board board, String abstraction) {
+                 CommandHooks hooks, Board board, String abstraction, Predicate<Path> found) {
         this.out = out;
         this.err = err;
         this.json = json;
@@ -76,6 +80,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         this.hooks = hooks;
         this.board = board;
         this.abstraction = abstraction;
+        this.found = found;
     }
 
     @Override
@@ -128,6 +133,9 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         }
         if (!noFollow && !o.settled) {
             Evidence evidence = evidence(log);
+            if (besideTheLogs(log)) {
+                return; // a file beside the logs of a directory: said at the stop, and only if no log was judged
+            }
             Optional<String> notice = evidence.earlyNotice();
             notice.ifPresent(n -> {
                 err.println("predmon: " + Terminal.line(n));
@@ -162,6 +170,14 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         }
         o.held.clear();
         err.flush();
+    }
+
+    /**
+     * Whether {@code log} is a file found beside the logs of a directory or glob that holds no monitor record (notes,
+     * a core dump): not a log that failed, so it is skipped silently when another log was judged.
+     */
+    boolean besideTheLogs(WatchedLog log) {
+        return found.test(log.path()) && log.monitor().records() == 0;
     }
 
     /** How run {@code run} of {@code log} began, when it began where the log was truncated or replaced. */

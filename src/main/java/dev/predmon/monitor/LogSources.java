@@ -62,6 +62,15 @@ public final class LogSources {
         return names.size() > 1 || growing();
     }
 
+    /**
+     * Whether {@code file} was named as a file, rather than found under a directory or glob. A found file that holds
+     * no record is another file beside the logs (notes, a core dump), not a log that failed.
+     */
+    public boolean named(Path file) {
+        Path key = file.toAbsolutePath().normalize();
+        return names.stream().anyMatch(n -> n.kind() == Kind.FILE && n.path().toAbsolutePath().normalize().equals(key));
+    }
+
     /** Whether new files can appear under these names (a directory or a glob), so that they are looked for again. */
     public boolean growing() {
         return names.stream().anyMatch(n -> n.kind() != Kind.FILE);
