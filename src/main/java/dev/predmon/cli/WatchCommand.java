@@ -10,6 +10,7 @@ import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.WatchedLog;
+import dev.predmon.pipeline.Evidence;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -90,7 +91,7 @@ final class WatchCommand implements Callable<Integer> {
         Board board = liveView.board(set, abstraction);
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
-                     noFollow, hookOptions.open(err), board, abstraction.name(), p -> !sources.named(p));
+                     noFollow, hookOptions.open(err), board, abstraction, p -> !sources.named(p));
              Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), outputs)) {
             sources.find().forEach(fleet::add);
             String stop = "end-of-file";
@@ -106,27 +107,39 @@ final class WatchCommand implements Callable<Integer> {
                 Thread.interrupted(); // stopped: the summaries are written in full
             }
             List<Integer> codes = new ArrayList<>();
-            boolean anyJudged = fleet.logs().stream().anyMatch(l -> outputs.evidence(l).missing().isEmpty());
+            boolean anyJudged = fleet.logs().stream().anyMatch(l -> whyNoVerdict(outputs.evidence(l)).isEmpty());
             for (WatchedLog l : fleet.logs()) {
-                Optional<String> missing = outputs.evidence(l).missing();
+                Evidence evidence = outputs.evidence(l);
+                Optional<String> refused = refusal(evidence);
+                Optional<String> misfit = refused.isPresent() ? Optional.empty() : evidence.misfit();
                 boolean beside = outputs.besideTheLogs(l);
                 if (beside && anyJudged) {
                     continue; // not a log, beside one that was judged: skipped silently
                 }
-                if ((noFollow || beside) && missing.isPresent()) { // said once, and no summary of nothing
+                if ((noFollow || beside) && refused.isPresent()) { // said once, and no summary of nothing
                     if (!several) {
-                        throw new BadInputException(missing.get());
+                        throw new BadInputException(refused.get());
                     }
-                    err.println("predmon: " + Terminal.line(missing.get()));
+                    err.println("predmon: " + Terminal.line(refused.get()));
+                    codes.add(ExitCodes.BAD_INPUT);
+                    continue;
+                }
+                if (noFollow && misfit.isPresent()) { // which messages, by command, then why there is no verdict
+                    Problems.unmapped(err, l.path(), l.monitor().unmapped());
+                    if (!several) {
+                        throw new BadInputException(misfit.get());
+                    }
+                    err.println("predmon: " + Terminal.line(misfit.get()));
                     codes.add(ExitCodes.BAD_INPUT);
                     continue;
                 }
                 if (noFollow) {
                     outputs.flushProblems(l);
                 }
-                int code = summary(l, outputs, stop, several);
-                if (missing.isPresent()) {
-                    err.println("predmon: " + Terminal.line(Files.exists(l.path()) ? missing.get()
+                Optional<String> why = refused.or(() -> misfit);
+                int code = summary(l, outputs, stop, several, why.isEmpty());
+                if (why.isPresent()) {
+                    err.println("predmon: " + Terminal.line(Files.exists(l.path()) ? why.get()
                             : l.name() + ": stopped before the file appeared; no verdict"));
                     code = ExitCodes.BAD_INPUT;
                 }
@@ -135,6 +148,20 @@ final class WatchCommand implements Callable<Integer> {
             err.flush();
             return codes.size() == 1 ? codes.get(0) : fleetCode(codes);
         }
+    }
+
+    /**
+     * Why a log can be given no verdict at all: nothing to judge, or (with {@code --no-follow}, where the whole file
+     * is known) a file that is mostly not records.
+     */
+    private Optional<String> refusal(Evidence evidence) {
+        Optional<String> missing = evidence.missing();
+        return noFollow ? missing.or(evidence::fragment) : missing;
+    }
+
+    /** Why a log gets no verdict: {@link #refusal}, or models that do not fit it; empty when it gets one. */
+    private Optional<String> whyNoVerdict(Evidence evidence) {
+        return refusal(evidence).or(evidence::misfit);
     }
 
     /**
@@ -150,12 +177,15 @@ final class WatchCommand implements Callable<Integer> {
         return ExitCodes.BAD_INPUT;
     }
 
-    /** Prints a log's end summary (unmapped messages to stderr) and returns the exit code of its verdict. */
-    private int summary(WatchedLog log, WatchOutputs outputs, String stop, boolean several) {
+    /**
+     * Prints a log's end summary (unmapped messages to stderr) and returns the exit code of its verdict.
+     *
+     * @param judged whether the log gets a verdict at all
+     */
+    private int summary(WatchedLog log, WatchOutputs outputs, String stop, boolean several, boolean judged) {
         PredictiveMonitor m = log.monitor();
         Map<String, Long> unmapped = m.unmapped();
         Problems.unmapped(err, log.path(), unmapped);
-        boolean judged = outputs.evidence(log).missing().isEmpty();
         List<RunOutcome> runs = m.runs();
         RunOutcome first = runs.stream().filter(r -> r.warning() != null).findFirst().orElse(runs.get(0));
         long pairs = runs.stream().mapToLong(RunOutcome::pairs).sum();

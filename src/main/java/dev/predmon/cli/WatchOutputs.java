@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.hooks.CommandHooks;
 import dev.predmon.live.Board;
 import dev.predmon.live.Tile;
@@ -12,14 +13,17 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.function.Predicate;
 
 /**
@@ -37,7 +41,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private final boolean eliminations;
     private final boolean several;
     private final boolean noFollow;
-    private final String abstraction;
+    private final Abstraction abstraction;
     private final Predicate<Path> found;
     private final Map<WatchedLog, Outlet> outlets = new HashMap<>();
     private final CommandHooks hooks;
@@ -55,6 +59,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         boolean settled;
         /** The runs that began where the log was truncated or replaced, with which of the two. */
         final Map<Integer, String> restarts = new HashMap<>();
+        /** The commands of unmapped messages said at their first sighting. */
+        final Set<String> commandsSeen = new HashSet<>();
 
         Outlet(EventPrinter printer, Tile tile) {
             this.printer = printer;
@@ -66,11 +72,11 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
      * @param several     whether events must name their log (several logs, or a directory or glob)
      * @param hooks       the hook commands, or null; closed with this
      * @param board       the live view, or null
-     * @param abstraction the abstraction's name, for messages about logs it maps nothing of
+     * @param abstraction the abstraction logs are read with, for messages about logs it does not fit
      * @param found       whether a log was found under a directory or glob rather than named
      */
     WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
-                 CommandHooks hooks, Board board, String abstraction, Predicate<Path> found) {
+                 CommandHooks hooks, Board board, Abstraction abstraction, Predicate<Path> found) {
         this.out = out;
         this.err = err;
         this.json = json;
@@ -92,11 +98,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     @Override
     public void event(WatchedLog log, MonitorEvent e) {
         if (e instanceof MonitorEvent.Unmapped u) {
-            if (!noFollow) { // first sighting of each kind while following; with --no-follow the totals say it
-                err.println(Terminal.line(log.name() + ":" + u.line() + ": warning: interface message no abstraction "
-                        + "rule maps: " + u.message() + " (first of its kind; the totals come at the stop)"));
-                err.flush();
-            }
+            firstSighting(log, u);
             return;
         }
         Outlet o = outlets.get(log);
@@ -114,6 +116,24 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
                 hooks.event(log.name(), e, tagged);
             }
         }
+    }
+
+    /**
+     * While following, the first message of each command no rule maps, with its line, for at most
+     * {@value UnmappedMessages#MAX_LINES} commands (one line per pose value would bury everything else); with
+     * {@code --no-follow} the totals by command at the end say it all.
+     */
+    private void firstSighting(WatchedLog log, MonitorEvent.Unmapped u) {
+        Outlet o = outlets.get(log);
+        if (noFollow || o.commandsSeen.size() > UnmappedMessages.MAX_LINES
+                || !o.commandsSeen.add(UnmappedMessages.command(u.message()))) {
+            return;
+        }
+        err.println(Terminal.line(log.name() + ":" + u.line() + ": warning: " + (o.commandsSeen.size()
+                > UnmappedMessages.MAX_LINES ? "more commands no abstraction rule maps; the totals come at the stop"
+                : "interface message no abstraction rule maps: " + u.message() + " (first of its command; the "
+                + "totals come at the stop)")));
+        err.flush();
     }
 
     @Override
