@@ -9,8 +9,6 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;

@@ -43,6 +43,7 @@ class FleetDirectoryTest {
     }
 
     @Test
+    @Timeout(30)
     void besideAGoodLogTheOtherFilesAreSkippedSilently() throws Exception {
         Path good = Files.writeString(robots.resolve("robot-1.log"), HandRuns.recharge().text());
         Cli once = Cli.run("watch", "--no-follow", "--log", robots.toString(), "--models", models.toString());
@@ -61,6 +62,7 @@ class FleetDirectoryTest {
     }
 
     @Test
+    @Timeout(30)
     void withNoLogThereEachFileIsSaidOnce() throws Exception {
         Cli once = Cli.run("watch", "--no-follow", "--log", robots.toString(), "--models", models.toString());
         assertEquals(ExitCodes.BAD_INPUT, once.code());
