@@ -229,7 +229,9 @@ final class WatchCommand implements Callable<Integer> {
                     : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
             RunOutcome last = runs.get(runs.size() - 1);
             if (runs.size() == 1 && last.forecast() != null) {
-                out.println("last forecast: " + ForecastWords.line(last.forecast()));
+                // in a fleet every line names its log
+                out.println((several ? Terminal.line(log.name()) + ": " : "") + "last forecast: "
+                        + ForecastWords.line(last.forecast()));
             }
             out.println("end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
                     + stop + ")") + ": " + m.records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")

@@ -58,14 +58,19 @@ class RotationTest {
     }
 
     private static void read(Cli.Running w, String probe) throws InterruptedException {
-        FleetWatchTest.await(() -> w.err().toString().contains("Probe/" + probe), "watch reads up to " + probe);
+        try {
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/" + probe), "watch reads up to " + probe);
+        } catch (AssertionError e) {
+            throw new AssertionError(e.getMessage() + "; stderr: " + w.err() + "; stdout: " + w.out(), e);
+        }
     }
 
     @Test
     @Timeout(60)
     void aRenamedLogStillWrittenIsReadToItsEndAndTheSummaryCoversEveryRun() throws Exception {
         String depleted = HandRuns.depleted().text();
-        Files.writeString(log, records(depleted, 10, false) + probe("first", 20.0));
+        // (right after the tenth record: a pause before it would hold it back to see whether the tree restarted)
+        Files.writeString(log, records(depleted, 10, false) + probe("first", 0.02));
         Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", models.toString(), "--poll-ms", "5");
         read(w, "first");
 
@@ -79,10 +84,9 @@ class RotationTest {
         assertTrue(w.out().toString().contains("WARNING: the run can only be faulty scenario depleted"), w.out().toString());
 
         // The logger reopens its log at last: a nominal run in the new file.
-        Files.writeString(log, HandRuns.recharge().text() + probe("second", 80.0), StandardOpenOption.APPEND);
-        FleetWatchTest.await(() -> w.err().toString().split("Probe/second", -1).length > 1
-                && w.out().toString().contains("log replaced: monitoring starts over"), "the new log is read");
+        Files.writeString(log, HandRuns.recharge().text() + probe("second", 70.01), StandardOpenOption.APPEND);
         read(w, "second");
+        assertTrue(w.out().toString().contains("log replaced: monitoring starts over"), w.out().toString());
         w.stop();
         String out = w.out().toString();
         assertEquals(ExitCodes.WARNING, w.code().get(), "the warning before the rotation counts: " + out + w.err());
@@ -90,7 +94,7 @@ class RotationTest {
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("run 0 (from line 1): ")
                 && l.contains("; warning raised, property violated, lead 30.000 s")), out);
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("run 1 (from line 1, after the log was replaced): ")
-                && l.endsWith("; no warning, property held")), out);
+                && l.contains("; no warning, property held")), out);
         String end = lines.get(lines.size() - 1);
         assertTrue(end.startsWith("end of " + log + " (stopped: interrupted): ") && end.contains(" 2 runs, ")
                 && end.endsWith("; warning raised, property violated"), end);
@@ -110,8 +114,8 @@ class RotationTest {
             truncate.truncate(0);
         }
         FleetWatchTest.await(() -> w.out().toString().contains("\"event\":\"restarted\""), "the truncation is seen");
-        Files.writeString(log, HandRuns.recharge().text() + probe("second", 80.0), StandardOpenOption.APPEND);
-        FleetWatchTest.await(() -> w.err().toString().split("Probe/second", -1).length > 1, "the nominal run is read");
+        Files.writeString(log, HandRuns.recharge().text() + probe("second", 70.01), StandardOpenOption.APPEND);
+        read(w, "second");
         w.stop();
         assertEquals(ExitCodes.WARNING, w.code().get(), w.out() + "\n" + w.err());
         List<String> lines = w.out().toString().strip().lines().toList();
