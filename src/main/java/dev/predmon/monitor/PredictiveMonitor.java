@@ -14,8 +14,8 @@ import dev.predmon.pipeline.TracePipeline;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.TreeSet;
 import java.util.function.Consumer;
@@ -207,7 +207,7 @@ public final class PredictiveMonitor implements PipelineListener {
         if (forecast != null && (before == null || before != v)) {
             Forecast f = told(forecast.reading(record.time(), v), record);
             if (warning == null && violation == null && rule == WarningRule.FORECAST
-                    && f.probability() >= forecast.threshold()) {
+                    && forecast.warns(f)) {
                 warn(record, List.of(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
                         v)), f);
             }
@@ -225,9 +225,11 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     private String forecastReason(Forecast f, String where) {
-        return String.format(Locale.ROOT, "%s reaches the warning threshold %.2f; %s; %s; %s",
-                ForecastWords.probability(f), forecast.threshold(), ForecastWords.time(f), ForecastWords.evidence(f),
-                where);
+        String why = f.probability() >= forecast.threshold()
+                ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", forecast.threshold())
+                : "in behaviour no model has seen, with the value lower than any training run that held read";
+        return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
+                ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
 
     private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f) {
@@ -273,10 +275,11 @@ public final class PredictiveMonitor implements PipelineListener {
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
-            if (rule == WarningRule.MATCH && !nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+            if (!nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+                // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it)
                 reason = "the run can only be faulty scenario " + String.join(", ", faultyAlive)
-                        + " (every nominal model eliminated)";
-            } else if (rule == WarningRule.FORECAST && f != null && f.probability() >= forecast.threshold()) {
+                        + " (every nominal model eliminated)" + (f == null ? "" : "; " + ForecastWords.line(f));
+            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {
                 reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
             }
             if (reason != null) {
