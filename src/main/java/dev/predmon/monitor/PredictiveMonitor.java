@@ -208,10 +208,17 @@ public final class PredictiveMonitor implements PipelineListener {
             Forecast f = told(forecast.reading(record.time(), v), record);
             if (warning == null && violation == null && rule == WarningRule.FORECAST
                     && forecast.warns(f)) {
-                warn(record, List.of(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
+                warn(record, faultyAlive(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
                         v)), f);
             }
         }
+    }
+
+    /** The faulty scenarios some machine of which still matches the run, sorted. */
+    private List<String> faultyAlive() {
+        TreeSet<String> alive = new TreeSet<>();
+        trackers.stream().filter(t -> t.alive() && t.model().faulty()).forEach(t -> alive.add(t.model().scenario()));
+        return List.copyOf(alive);
     }
 
     /** Reports {@code news} if it is news, and returns the latest forecast. */
