@@ -41,7 +41,9 @@ final class LiveViewOptions {
                     + "the tree had stopped every action it started (default: ${DEFAULT-VALUE}).")
     void staleAfter(double seconds) {
         if (!(seconds > 0) || Double.isInfinite(seconds)) {
-            throw new IllegalArgumentException("must be a positive number of seconds, got " + seconds);
+            // a usage error of its own: picocli would name the setter method, not the option
+            throw new ParameterException(mixee.commandLine(), "--stale-after must be a positive number of seconds, got "
+                    + seconds);
         }
         staleSeconds = seconds;
     }

@@ -49,9 +49,32 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         if (Double.isNaN(value)) {
             return baseRate();
         }
-        int k = lows.violating(value);
-        int n = lows.runs(value);
-        return (k + PRIOR_RUNS * baseRate()) / (n + PRIOR_RUNS);
+        // A lower value is never safer: a run that went from 23 straight to its violation was below 22 too, though
+        // no reading shows it. The rate at v is the highest rate at v or at a violating run's low above it.
+        return lows.monotoneRate(value, PRIOR_RUNS, baseRate());
+    }
+
+    /**
+     * P(violation | the property reads {@code value}, nothing else known): the value table's counts with the value
+     * table's rate as prior, the estimate of a state that is "anywhere".
+     */
+    public double valueOnly(double value) {
+        return (lows.violating(value) + PRIOR_RUNS * valueRate(value)) / (lows.runs(value) + PRIOR_RUNS);
+    }
+
+    /**
+     * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run has done something
+     * no learned machine does and its property is lower than every training run that held ever read. The threshold
+     * was chosen on runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so
+     * without the second clause the rule would be blind exactly where the matching is.
+     */
+    public boolean warns(Forecast f) {
+        return f.probability() >= threshold || (f.novel() && f.value() != null && belowEverySafeRun(f.value()));
+    }
+
+    /** Whether {@code value} is lower than every training run that held ever read (false without such a run). */
+    public boolean belowEverySafeRun(double value) {
+        return lows.runs(value) == lows.violating(value) && lows.safe().length > 0;
     }
 
     /** This model with another warning threshold. */

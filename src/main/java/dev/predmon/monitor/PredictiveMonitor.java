@@ -15,6 +15,7 @@ import dev.predmon.pipeline.TracePipeline;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.TreeSet;
 import java.util.function.Consumer;
@@ -65,6 +66,9 @@ public final class PredictiveMonitor implements PipelineListener {
     private final int confirm;
     /** Pairs matched since every nominal model was eliminated with a faulty one alive; -1 before. */
     private long sinceNominalGone = -1;
+    /** Runs before the last restart: the runs after it are numbered on from there. */
+    private int runsBefore;
+    private final LogTotals before = new LogTotals();
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
@@ -123,13 +127,19 @@ public final class PredictiveMonitor implements PipelineListener {
         pipeline.endOfInput();
     }
 
-    /** The log was truncated or replaced: start over as for a new log. */
+    /**
+     * The log was truncated or replaced: every model starts over as for a new log, in a new run. The runs before
+     * stay, with their warnings and violations: what {@code watch} reports at its end, and its exit code, cover
+     * every run watched since it started, whatever rotation came between them.
+     */
     public void restart(String reason) {
+        if (pipeline.records() > 0) {
+            finished.add(current());
+        }
+        before.add(pipeline);
         pipeline.reset();
-        startRun(0, 1);
-        finished.clear();
-        firstWarning = null;
-        firstViolation = null;
+        runsBefore = finished.size();
+        startRun(runsBefore, 1);
         events.accept(new MonitorEvent.Restarted(reason));
     }
 
@@ -137,8 +147,8 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         finished.add(current());
-        startRun(number, first.line());
-        events.accept(new MonitorEvent.RunStarted(number, first.time(), first.line(), first.clock()));
+        startRun(runsBefore + number, first.line());
+        events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
     }
 
     /**
@@ -197,11 +207,18 @@ public final class PredictiveMonitor implements PipelineListener {
         if (forecast != null && (before == null || before != v)) {
             Forecast f = told(forecast.reading(record.time(), v), record);
             if (warning == null && violation == null && rule == WarningRule.FORECAST
-                    && f.probability() >= forecast.threshold()) {
-                warn(record, List.of(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
+                    && forecast.warns(f)) {
+                warn(record, faultyAlive(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
                         v)), f);
             }
         }
+    }
+
+    /** The faulty scenarios some machine of which still matches the run, sorted. */
+    private List<String> faultyAlive() {
+        TreeSet<String> alive = new TreeSet<>();
+        trackers.stream().filter(t -> t.alive() && t.model().faulty()).forEach(t -> alive.add(t.model().scenario()));
+        return List.copyOf(alive);
     }
 
     /** Reports {@code news} if it is news, and returns the latest forecast. */
@@ -215,9 +232,11 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     private String forecastReason(Forecast f, String where) {
-        return String.format(Locale.ROOT, "%s reaches the warning threshold %.2f; %s; %s; %s",
-                ForecastWords.probability(f), forecast.threshold(), ForecastWords.time(f), ForecastWords.evidence(f),
-                where);
+        String why = f.probability() >= forecast.threshold()
+                ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", forecast.threshold())
+                : "in behaviour no model has seen, with the value lower than any training run that held read";
+        return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
+                ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
 
     private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f) {
@@ -263,10 +282,11 @@ public final class PredictiveMonitor implements PipelineListener {
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
-            if (rule == WarningRule.MATCH && !nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+            if (!nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+                // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it)
                 reason = "the run can only be faulty scenario " + String.join(", ", faultyAlive)
-                        + " (every nominal model eliminated)";
-            } else if (rule == WarningRule.FORECAST && f != null && f.probability() >= forecast.threshold()) {
+                        + " (every nominal model eliminated)" + (f == null ? "" : "; " + ForecastWords.line(f));
+            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {
                 reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
             }
             if (reason != null) {
@@ -277,6 +297,21 @@ public final class PredictiveMonitor implements PipelineListener {
             noMatch = true;
             events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock(), run));
         }
+    }
+
+    /** Records of the log since the start, across truncations and replacements. */
+    public long records() {
+        return before.records(pipeline);
+    }
+
+    /** Records of the skill-component interface since the start, mapped or not. */
+    public long interfaceRecords() {
+        return before.interfaceRecords(pipeline);
+    }
+
+    /** Interface messages no rule maps since the start, by key, sorted. */
+    public Map<String, Long> unmapped() {
+        return before.unmapped(pipeline);
     }
 
     /**
@@ -318,7 +353,7 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
-     * Whether, in some run since the last restart, a point came where no model, nominal or faulty, matched it any
+     * Whether, in some run since the start, a point came where no model, nominal or faulty, matched it any
      * more.
      */
     public boolean noMatch() {
