@@ -67,7 +67,8 @@ final class AbstractionMismatch {
 
     /** Appends the paths ({@code locations.charging_station}, {@code rules[2].replies[0]}) where a and b differ. */
     static void diff(JsonNode a, JsonNode b, String path, List<String> out) {
-        if (out.size() >= PLACES || (a != null && a.equals(b))) {
+        // The recommended action is advice, outside the fingerprint: it is never why models do not fit.
+        if (out.size() >= PLACES || (a != null && a.equals(b)) || path.equals("safety.action")) {
             return;
         }
         if (a != null && b != null && a.isObject() && b.isObject()) {

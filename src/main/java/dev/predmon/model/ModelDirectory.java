@@ -36,7 +36,10 @@ final class ModelDirectory {
 
     /** Name of the index file inside a model directory. */
     static final String INDEX = "index.json";
-    /** The abstraction the models were learned with, byte for byte its canonical JSON (SHA-256 = fingerprint). */
+    /**
+     * The abstraction the models were learned with, byte for byte its canonical JSON (its SHA-256 without the safety
+     * property's action = fingerprint).
+     */
     static final String ABSTRACTION = "abstraction.json";
 
     /** Kinds of sibling directories learn makes. */

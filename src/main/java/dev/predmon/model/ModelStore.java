@@ -51,7 +51,10 @@ public final class ModelStore {
 
     /** Name of the index file inside a model directory. */
     public static final String INDEX = ModelDirectory.INDEX;
-    /** Name of the file holding the abstraction the models were learned with (its SHA-256 is the fingerprint). */
+    /**
+     * Name of the file holding the abstraction the models were learned with (its SHA-256, without the safety
+     * property's action, is the fingerprint).
+     */
     public static final String ABSTRACTION = ModelDirectory.ABSTRACTION;
 
     /**

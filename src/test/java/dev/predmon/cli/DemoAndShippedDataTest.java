@@ -34,10 +34,14 @@ class DemoAndShippedDataTest {
                 "abstraction.json is stale: run scripts/regenerate-samples.sh");
     }
 
-    /** The models carry the abstraction they were learned with: its SHA-256 is the index's fingerprint. */
+    /**
+     * The models carry the abstraction they were learned with: its SHA-256 (without the safety property's action,
+     * which is advice) is the index's fingerprint.
+     */
     @Test
     void shippedModelsCarryTheirAbstraction() throws Exception {
-        String text = Files.readString(MODELS.resolve("abstraction.json"));
+        String text = Files.readString(MODELS.resolve("abstraction.json"))
+                .replace("\"action\":\"send the robot to the charging station\",", "");
         String sha = java.util.HexFormat.of().formatHex(java.security.MessageDigest.getInstance("SHA-256")
                 .digest(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
         assertTrue(Files.readString(MODELS.resolve("index.json")).contains("\"fingerprint\" : \"" + sha + "\""));

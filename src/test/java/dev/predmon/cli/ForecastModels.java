@@ -10,8 +10,8 @@ import java.util.stream.Stream;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 /**
- * Models learned with a forecast from the shipped sample logs, once per test JVM (learning takes seconds), for the
- * tests of what the forecast shows; deleted when the JVM exits.
+ * Models with a forecast, for the tests of what the forecast shows: the shipped ones when they carry it, else learned
+ * from the shipped sample logs once per test JVM (learning takes seconds) and deleted when the JVM exits.
  */
 final class ForecastModels {
 
@@ -21,6 +21,9 @@ final class ForecastModels {
     }
 
     static synchronized Path get() {
+        if (dir == null && Files.isRegularFile(Path.of("models", "forecast.json"))) {
+            dir = Path.of("models");
+        }
         if (dir == null) {
             try {
                 Path tmp = Files.createTempDirectory("predmon-forecast-models-");
