@@ -5,6 +5,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.report.HtmlReport;
+import dev.predmon.support.SimulatedSets;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

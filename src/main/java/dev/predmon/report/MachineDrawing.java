@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,9 +1,13 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.evaluate.Evaluation;
+import dev.predmon.evaluate.Evaluator;
+import dev.predmon.evaluate.Progress;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
+import dev.predmon.support.SimulatedSets;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

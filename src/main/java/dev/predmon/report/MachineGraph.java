@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.model.LearnedModel;

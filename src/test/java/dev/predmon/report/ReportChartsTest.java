@@ -1,5 +1,7 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
+import dev.predmon.evaluate.RunResult;
+import dev.predmon.evaluate.Verdict;
 import dev.predmon.parse.Clock;
 
 import dev.predmon.abstraction.Abstraction;

@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.StandardChartTheme;

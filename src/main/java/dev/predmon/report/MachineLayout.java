@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import org.eclipse.elk.alg.layered.LayeredLayoutProvider;
 import org.eclipse.elk.alg.layered.options.CycleBreakingStrategy;

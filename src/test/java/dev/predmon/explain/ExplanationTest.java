@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.explain;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
@@ -11,7 +11,9 @@ import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.samples.SampleFile;
 import dev.predmon.support.HandRuns;
+import dev.predmon.support.SimulatedSets;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

@@ -1,5 +1,6 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
+import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
 
 import dev.predmon.abstraction.SafetyRule;

@@ -1,5 +1,10 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
+import dev.predmon.evaluate.Confusion;
+import dev.predmon.evaluate.Evaluation;
+import dev.predmon.evaluate.RunResult;
+import dev.predmon.evaluate.ScenarioSummary;
+import dev.predmon.evaluate.Stats;
 import dev.predmon.parse.Clock;
 
 import dev.predmon.abstraction.Abstraction;

@@ -1,7 +1,8 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
+import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
