@@ -1,16 +1,15 @@
 package dev.predmon.report;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.evaluate.Confusion;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.evaluate.ScenarioSummary;
 import dev.predmon.evaluate.Stats;
-import dev.predmon.parse.Clock;
-
-import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelStore;
+import dev.predmon.parse.Clock;
 import org.jfree.chart.JFreeChart;
 import org.jfree.svg.SVGGraphics2D;
 

@@ -1,9 +1,8 @@
 package dev.predmon.report;
 
+import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
-
-import dev.predmon.abstraction.SafetyRule;
 import org.jfree.chart.ChartFactory;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.axis.NumberAxis;

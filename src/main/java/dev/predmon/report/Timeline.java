@@ -1,15 +1,14 @@
 package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
-import dev.predmon.pipeline.PipelineListener;
-import dev.predmon.pipeline.TracePipeline;
-
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.PipelineListener;
+import dev.predmon.pipeline.TracePipeline;
 
 import java.io.IOException;
 import java.nio.file.Path;
