@@ -1,18 +1,24 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
+import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 
 /**
  * Judges one log exactly as {@code watch --no-follow} would: the {@link LogWatcher} reads the file through the
@@ -22,12 +28,6 @@ import java.util.List;
 public final class Replay {
 
     private Replay() {
-    }
-
-    /** Whether the reading before the violation was more than {@link RunResult#SUDDEN_MARGIN} above the threshold. */
-    private static boolean sudden(MonitorEvent.Violation v, Abstraction abstraction) {
-        return v.before() != null && abstraction.safety()
-                .map(rule -> v.before() > rule.below() + RunResult.SUDDEN_MARGIN).orElse(false);
     }
 
     /**
@@ -42,7 +42,8 @@ public final class Replay {
         List<MonitorEvent> events = new ArrayList<>();
         int[] problems = {0};
         PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, events::add);
-        try (LogWatcher watcher = new LogWatcher(log, monitor, p -> problems[0]++)) {
+        Approach approach = new Approach(abstraction.safety().orElse(null), monitor);
+        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> problems[0]++, approach::record)) {
             watcher.drain();
         }
         List<RunOutcome> runs = monitor.runs();
@@ -73,8 +74,53 @@ public final class Replay {
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
                     runs.size() == 1 ? monitor.pipeline().records() : -1, o.pairs(), problems[0],
                     List.copyOf(eliminations), o.safetyObserved(), monitor.clock().unit(),
-                    violation != null && sudden(violation, abstraction)));
+                    violation != null && approach.near(o.run()) < RunResult.SUDDEN_READINGS, approach.start(o.run()),
+                    approach.near(o.run())));
         }
         return results;
+    }
+
+    /**
+     * Per run, the time of its first record and the readings near the bound before its violation, seen after the
+     * monitor took each record (so that {@link PredictiveMonitor#run()} already counts a record that starts a run).
+     * Read with the safety monitor's own {@link SafetyRule#valueOf}, so the violation counted up to is the one it
+     * reported.
+     */
+    private static final class Approach {
+        private final SafetyRule rule;
+        private final PredictiveMonitor monitor;
+        private final Map<Integer, Double> start = new HashMap<>();
+        private final Map<Integer, Integer> near = new HashMap<>();
+        private final Set<Integer> violated = new HashSet<>();
+
+        Approach(SafetyRule rule, PredictiveMonitor monitor) {
+            this.rule = rule;
+            this.monitor = monitor;
+        }
+
+        void record(LogRecord r) {
+            int run = monitor.run();
+            start.putIfAbsent(run, r.time());
+            if (rule == null || violated.contains(run)) {
+                return;
+            }
+            double v = rule.valueOf(r);
+            if (Double.isNaN(v)) {
+                return;
+            }
+            if (rule.violatedBy(v)) {
+                violated.add(run);
+            } else if (v < rule.below() + RunResult.APPROACH_BAND) {
+                near.merge(run, 1, Integer::sum);
+            }
+        }
+
+        double start(int run) {
+            return start.getOrDefault(run, 0.0);
+        }
+
+        int near(int run) {
+            return near.getOrDefault(run, 0);
+        }
     }
 }

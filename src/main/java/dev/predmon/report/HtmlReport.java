@@ -99,9 +99,8 @@ public final class HtmlReport {
         }
         h.append("</table>\n<p>Missed: a faulty run without a warning strictly before its violation (late warnings "
                 + "included). No violation: a faulty run whose log ends before the property is violated. No match: "
-                + "runs during which, at some point, no learned model matched (unknown behaviour). Sudden: violations "
-                + "that came in one reading from more than " + fmt(RunResult.SUDDEN_MARGIN) + " points above the bound: "
-                + "the jump itself, which no monitor reading the value can see coming.</p>\n");
+                + "runs during which, at some point, no learned model matched (unknown behaviour). Sudden: "
+                + esc(TextReport.sudden(e.runs())) + ".</p>\n");
     }
 
     private static void confusion(StringBuilder h, Confusion c) {

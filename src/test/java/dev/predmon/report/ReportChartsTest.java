@@ -72,7 +72,7 @@ class ReportChartsTest {
         Double lead = warning != null && violation != null && warning < violation ? violation - warning : null;
         return new RunResult("depleted", true, "depleted-1.log", -1, Verdict.of(true, warning, violation), warning,
                 warning == null ? null : 100L, List.of("depleted"), 28.0, violation, lead, false, null, 1, 1, 0,
-                List.of(), true, "s", false);
+                List.of(), true, "s", false, 0.0, 20);
     }
 
     private static Drawn only(List<Drawn> texts, String s) {
