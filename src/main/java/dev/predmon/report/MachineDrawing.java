@@ -7,72 +7,62 @@ import java.util.Optional;
 
 /**
  * Draws a learned Mealy machine as inline SVG, laid out by {@link MachineLayout} (ELK's layered algorithm):
- * states as circles, the initial one marked by an arrow from nowhere, edges as splines with an arrow head,
- * every transition's {@code input / output} written once beside its edge. No Graphviz needed, and the same
- * machine always gives the same picture.
+ * states as circles, the initial one marked by an arrow from nowhere, edges as splines with an arrowhead,
+ * every transition's {@code input / output} written once beside its edge, and a state's self-loops of more
+ * than one transition counted on one line (the report lists them). No Graphviz needed, and the same machine
+ * always gives the same picture.
  *
- * <p>The SVG is drawn at its natural size, one unit a CSS pixel, so its text stays readable however large the
- * machine: the page scrolls it instead of shrinking it. Every text element carries its measured width as
- * {@code textLength}, so a browser whose sans-serif font is wider than the one measured squeezes the text into
- * the box the layout kept free for it rather than across a neighbour. Labels have a white halo, so that where
- * an edge passes under one (the fan of a state's many edges can) the text still reads.
+ * <p>The drawing names classes of the page's style sheet instead of repeating colours, and its arrowhead is the
+ * page's one {@code <marker id="arrow">} ({@link #DEFS}), so a machine costs its geometry and its text only.
+ * It is drawn at its natural size, one unit a CSS pixel, scaled down to the width of its box when it is wider
+ * (the report offers it at full size too, see {@link ModelSection}). Every
+ * text element carries its measured width as {@code textLength}, so a browser whose sans-serif font is wider
+ * than the one measured squeezes the text into the box the layout kept free for it rather than across a
+ * neighbour. Labels have a white halo, so that where an edge passes under one the text still reads.
  */
 public final class MachineDrawing {
 
-    private static final String EDGE = "#555";
-    private static final String LABEL = "#1a3f7a";
+    /** The definitions every drawing refers to, written once per page: the arrowhead of every edge. */
+    static final String DEFS = "<marker id=\"arrow\" viewBox=\"0 0 10 8\" refX=\"10\" refY=\"4\" "
+            + "markerUnits=\"userSpaceOnUse\" markerWidth=\"11\" markerHeight=\"9\" orient=\"auto\">"
+            + "<path d=\"M0,0L10,4L0,8z\"/></marker>";
 
     private MachineDrawing() {
     }
 
-    /** {@code g} drawn as an {@code <svg>} element; {@code key} keeps element ids unique within a page. */
-    public static String svg(MachineGraph g, String key) {
-        return svg(MachineLayout.of(g), key);
+    /** {@code g} drawn as an {@code <svg>} element. */
+    public static String svg(MachineGraph g) {
+        return svg(MachineLayout.of(g));
     }
 
-    /** {@code layout} drawn as an {@code <svg>} element; {@code key} keeps element ids unique within a page. */
-    public static String svg(MachineLayout layout, String key) {
+    /** {@code layout} drawn as an {@code <svg>} element. */
+    public static String svg(MachineLayout layout) {
         StringBuilder s = new StringBuilder(8192);
-        String arrow = key + "arrow";
-        s.append(String.format(Locale.ROOT, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"mealy\" "
-                        + "width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" "
-                        + "font-size=\"%d\">\n", Math.ceil(layout.width()), Math.ceil(layout.height()),
-                Math.ceil(layout.width()), Math.ceil(layout.height()), MachineLayout.FONT.getSize()));
-        s.append("<defs><marker id=\"").append(arrow).append("\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" "
-                + "markerWidth=\"7\" markerHeight=\"7\" orient=\"auto\"><path d=\"M0,0L10,5L0,10z\" fill=\"")
-                .append(EDGE).append("\"/></marker></defs>\n");
-        s.append("<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<g fill=\"none\" stroke=\"").append(EDGE)
-                .append("\" stroke-width=\"1.2\">\n");
+        double w = Math.ceil(layout.width());
+        double h = Math.ceil(layout.height());
+        s.append("<svg class=\"mealy\" width=\"").append(Svg.num(w)).append("\" height=\"").append(Svg.num(h))
+                .append("\" viewBox=\"0 0 ").append(Svg.num(w)).append(' ').append(Svg.num(h)).append("\">\n");
         for (MachineLayout.Line e : layout.edges()) {
             List<double[]> p = clipped(layout, e);
-            s.append("<path d=\"");
+            s.append("<path class=\"e\" d=\"");
             for (int i = 0; i < p.size(); i++) {
                 s.append(i == 0 ? "M" : !e.curve() ? "L" : i % 3 == 1 ? "C" : " ")
                         .append(num(p.get(i)[0])).append(',').append(num(p.get(i)[1]));
             }
-            s.append("\" marker-end=\"url(#").append(arrow).append(")\"/>\n");
+            s.append("\"/>\n");
         }
-        s.append("</g>\n");
         // Circles after the edges, texts after the circles: a text is never hidden.
         for (MachineLayout.State st : layout.states()) {
             MachineLayout.Box b = st.box();
-            s.append("<circle cx=\"").append(num(b.x() + b.w() / 2)).append("\" cy=\"").append(num(b.y() + b.h() / 2))
-                    .append("\" r=\"").append(num(b.w() / 2)).append(st.initial()
-                            ? "\" fill=\"#dce8fb\" stroke=\"#000\" stroke-width=\"2\"/>\n"
-                            : "\" fill=\"#f4f4f4\" stroke=\"#000\" stroke-width=\"1\"/>\n");
+            s.append("<circle class=\"").append(st.initial() ? "s0" : "s").append("\" cx=\"")
+                    .append(num(b.x() + b.w() / 2)).append("\" cy=\"").append(num(b.y() + b.h() / 2))
+                    .append("\" r=\"").append(num(b.w() / 2)).append("\"/>\n");
         }
-        // State names plain (inside their circle), labels with a white halo.
-        for (boolean label : new boolean[] {false, true}) {
-            s.append(label ? "<g fill=\"" + LABEL + "\" stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\" "
-                    + "paint-order=\"stroke\">\n" : "<g>\n");
-            for (MachineLayout.Text t : layout.texts()) {
-                if (t.label() == label) {
-                    s.append("<text x=\"").append(num(t.box().x())).append("\" y=\"").append(num(t.baseline()))
-                            .append("\" textLength=\"").append(num(t.box().w()))
-                            .append("\" lengthAdjust=\"spacingAndGlyphs\">").append(esc(t.text())).append("</text>\n");
-                }
-            }
-            s.append("</g>\n");
+        // State names plain (inside their circle), labels with a white halo (class l).
+        for (MachineLayout.Text t : layout.texts()) {
+            s.append("<text").append(t.label() ? " class=\"l\"" : "").append(" x=\"").append(num(t.box().x()))
+                    .append("\" y=\"").append(num(t.baseline())).append("\" textLength=\"").append(num(t.box().w()))
+                    .append("\" lengthAdjust=\"spacingAndGlyphs\">").append(Svg.esc(t.text())).append("</text>\n");
         }
         return s.append("</svg>").toString();
     }
@@ -126,9 +116,5 @@ public final class MachineDrawing {
 
     private static String num(double d) {
         return String.format(Locale.ROOT, "%.1f", d);
-    }
-
-    private static String esc(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
     }
 }
