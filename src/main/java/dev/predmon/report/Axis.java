@@ -69,4 +69,25 @@ record Axis(double lo, double hi, double step, double from, double to) {
         int decimals = step >= 1 ? 0 : (int) Math.ceil(-Math.log10(step) - 1e-9);
         return String.format(Locale.ROOT, "%." + decimals + "f", Math.abs(v) < step / 1e6 ? 0.0 : v);
     }
+
+    /**
+     * The axes' lines, tick labels and titles of a chart whose x axis is {@code x} and y axis {@code y}. The tick
+     * labels are placed so that the y axis's lowest and the x axis's first never touch where the axes meet: a
+     * y label is centred on its tick and the x labels hang a full line below the axis.
+     */
+    static void frame(StringBuilder s, Axis x, Axis y, String xTitle, String yTitle) {
+        double bottom = y.from();
+        double left = x.from();
+        s.append("<path class=\"axis\" d=\"M").append(Svg.num(left)).append(' ').append(Svg.num(y.to())).append('V')
+                .append(Svg.num(bottom)).append('H').append(Svg.num(x.to())).append("\"/>");
+        for (double tick : x.ticks()) {
+            s.append(Svg.text("tx", x.px(tick), bottom + 18, x.label(tick)));
+        }
+        for (double tick : y.ticks()) {
+            s.append(Svg.text("ty", left - 6, y.px(tick) + 3.5, y.label(tick)));
+        }
+        s.append(Svg.text("xl", (left + x.to()) / 2, bottom + 35, xTitle));
+        s.append("<text class=\"yl\" transform=\"translate(13 ").append(Svg.num((y.from() + y.to()) / 2))
+                .append(") rotate(-90)\">").append(Svg.esc(yTitle)).append("</text>");
+    }
 }

@@ -16,7 +16,7 @@ final class LeadHistogram {
     private static final int LEFT = 50;
     private static final int RIGHT = 16;
     private static final int TOP = 12;
-    private static final int BOTTOM = 38;
+    private static final int BOTTOM = 42;
     private static final int MAX_BINS = 20;
     private static final int MIN_BINS = 8;
 
@@ -58,17 +58,8 @@ final class LeadHistogram {
                         .append(Svg.num(y.px(0))).append('Z');
             }
         }
-        s.append("\"/><path class=\"axis\" d=\"M").append(LEFT).append(' ').append(TOP).append('V')
-                .append(HEIGHT - BOTTOM).append('H').append(WIDTH - RIGHT).append("\"/>");
-        for (double tick : x.ticks()) {
-            s.append(Svg.text("tx", x.px(tick), HEIGHT - BOTTOM + 14, x.label(tick)));
-        }
-        for (double tick : y.ticks()) {
-            s.append(Svg.text("ty", LEFT - 5, y.px(tick) + 4, y.label(tick)));
-        }
-        s.append(Svg.text("xl", (LEFT + WIDTH - RIGHT) / 2.0, HEIGHT - 6, "lead (" + clock.unit() + ")"));
-        s.append("<text class=\"yl\" transform=\"translate(13 ").append(Svg.num((TOP + HEIGHT - BOTTOM) / 2.0))
-                .append(") rotate(-90)\">runs</text>");
+        s.append("\"/>");
+        Axis.frame(s, x, y, "lead (" + clock.unit() + ")", "runs");
         return s.append("</svg>").toString();
     }
 

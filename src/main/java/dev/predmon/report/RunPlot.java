@@ -22,11 +22,11 @@ import java.util.TreeSet;
 final class RunPlot {
 
     static final int WIDTH = 560;
-    static final int HEIGHT = 250;
+    static final int HEIGHT = 254;
     private static final int LEFT = 50;
     private static final int RIGHT = 14;
     private static final int TOP = 46;
-    private static final int BOTTOM = 38;
+    private static final int BOTTOM = 42;
     private static final double ROW = 13;
     private static final double TOLERANCE = 0.5;
 
@@ -74,18 +74,7 @@ final class RunPlot {
         marker(s, x, warning, "warn", 0, "warning " + v.duration(warning));
         marker(s, x, violation, "viol", 1, "violation " + v.duration(violation));
         marker(s, x, noMatch, "nomatch", 2, "no model matches from " + v.duration(noMatch));
-        s.append("<path class=\"axis\" d=\"M").append(LEFT).append(' ').append(TOP).append('V')
-                .append(HEIGHT - BOTTOM).append('H').append(WIDTH - RIGHT).append("\"/>");
-        for (double tick : x.ticks()) {
-            s.append(Svg.text("tx", x.px(tick), HEIGHT - BOTTOM + 14, x.label(tick)));
-        }
-        for (double tick : y.ticks()) {
-            s.append(Svg.text("ty", LEFT - 5, y.px(tick) + 4, y.label(tick)));
-        }
-        s.append(Svg.text("xl", (LEFT + WIDTH - RIGHT) / 2.0, HEIGHT - 6, "time (" + t.clock().unit() + " from start)"));
-        double mid = (TOP + HEIGHT - BOTTOM) / 2.0;
-        s.append("<text class=\"yl\" transform=\"translate(13 ").append(Svg.num(mid)).append(") rotate(-90)\">")
-                .append(Svg.esc(rule.command())).append("</text>");
+        Axis.frame(s, x, y, "time (" + t.clock().unit() + " from start)", rule.command());
         return s.append("</svg>").toString();
     }
 

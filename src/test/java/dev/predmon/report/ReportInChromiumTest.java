@@ -11,6 +11,7 @@ import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.support.HeadlessChromium;
+import dev.predmon.support.RealLogs;
 import dev.predmon.support.SimulatedSets;
 import dev.predmon.support.SvgTexts;
 import org.junit.jupiter.api.AfterAll;
@@ -97,6 +98,18 @@ class ReportInChromiumTest {
         int charts = e.runs().size() + (e.runs().stream().anyMatch(r -> r.lead() != null) ? 1 : 0);
         assertEquals(drawings + charts, m.svgs(), "every chart and machine drawing rendered");
         assertTrue(m.texts() > machineTexts, m.texts() + " texts measured, the machines alone have " + machineTexts);
+    }
+
+    /** The real recordings: runs counted in ticks, violations far from their warning, machines learned from them. */
+    @Test
+    void noTextOverlapsAnotherInTheReportOfTheRealRecordings() throws Exception {
+        assumeChromium();
+        assumeTrue(Files.isDirectory(RealLogs.DIR), "no " + RealLogs.DIR + ", so its report is not rendered");
+        Abstraction a = Abstraction.builtin("scope-fetch").orElseThrow();
+        Evaluation e = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(RealLogs.DIR, a), 5);
+        SvgTexts.Measured m = SvgTexts.measure(open("real.html", HtmlReport.html(e, a)));
+        assertEquals(List.of(), m.overlaps(), "overlapping texts (svg, text, text)");
+        assertTrue(m.svgs() > e.runs().size(), m.svgs() + " drawings for " + e.runs().size() + " runs");
     }
 
     @Test

@@ -48,7 +48,8 @@ class RunPlotTest {
             double w = Svg.width(m.group(4), bold);
             double x = Double.parseDouble(m.group(2));
             double left = cls.contains("end") || cls.equals("ty") ? x - w : cls.equals("tx") || cls.equals("xl") ? x - w / 2 : x;
-            out.add(new Drawn(cls, m.group(4), left, Double.parseDouble(m.group(3)) - 11, w, 13));
+            // A browser's box of an 11 px sans-serif text: its ascent above the baseline, its descent below.
+            out.add(new Drawn(cls, m.group(4), left, Double.parseDouble(m.group(3)) - 10.2, w, 12.8));
         }
         return out;
     }
@@ -144,6 +145,13 @@ class RunPlotTest {
     void theLeadHistogramCountsWholeRunsInRoundBins() {
         String svg = LeadHistogram.svg(new double[] {3.4, 3.9, 3.8, 5.1, 8.7, 8.5, 12.2, 11.9, 17.0, 19.0}, Clock.SECONDS);
         List<Drawn> texts = texts(svg);
+        // Two leads far from 0, as on the real recordings: the x axis starts at 45, beside the y axis's 0.
+        List<Drawn> far = texts(LeadHistogram.svg(new double[] {48, 83}, Clock.TICKS));
+        for (int i = 0; i < far.size(); i++) {
+            for (int j = i + 1; j < far.size(); j++) {
+                assertFalse(far.get(i).overlaps(far.get(j)), far.get(i) + " overlaps " + far.get(j));
+            }
+        }
         for (Drawn d : texts.stream().filter(d -> d.cls().equals("ty")).toList()) {
             assertTrue(d.text().matches("\\d+"), "a whole number of runs: " + d.text());
         }
