@@ -16,6 +16,11 @@ import java.util.Locale;
  */
 record Axis(double lo, double hi, double step, double from, double to) {
 
+    /** Room left of a chart's y axis for its tick labels and title, in pixels. */
+    static final int LEFT = 50;
+    /** Room below a chart's x axis for its tick labels and title, in pixels ({@link #frame} fills it). */
+    static final int BOTTOM = 42;
+
     /**
      * The axis that covers {@code min..max} with at most {@code maxTicks} steps; whole steps only when
      * {@code whole} (ticks or run counts).

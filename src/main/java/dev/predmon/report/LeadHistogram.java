@@ -13,10 +13,8 @@ final class LeadHistogram {
 
     static final int WIDTH = 700;
     static final int HEIGHT = 280;
-    private static final int LEFT = 50;
     private static final int RIGHT = 16;
     private static final int TOP = 12;
-    private static final int BOTTOM = 42;
     private static final int MAX_BINS = 20;
     private static final int MIN_BINS = 8;
 
@@ -40,13 +38,13 @@ final class LeadHistogram {
         int pad = Math.max(0, MIN_BINS - bins);
         double lower = Math.max(Math.min(0, from), from - (pad / 2) * width);
         double upper = Math.max(lower + MIN_BINS * width, from + bins * width);
-        Axis x = Axis.covering(lower, upper, 10, clock == Clock.TICKS, LEFT, WIDTH - RIGHT);
-        Axis y = Axis.covering(0, Arrays.stream(counts).max().orElse(1), 5, true, HEIGHT - BOTTOM, TOP);
+        Axis x = Axis.covering(lower, upper, 10, clock == Clock.TICKS, Axis.LEFT, WIDTH - RIGHT);
+        Axis y = Axis.covering(0, Arrays.stream(counts).max().orElse(1), 5, true, HEIGHT - Axis.BOTTOM, TOP);
         StringBuilder s = new StringBuilder(2048);
         s.append("<svg class=\"plot hist\" width=\"").append(WIDTH).append("\" height=\"").append(HEIGHT)
                 .append("\" viewBox=\"0 0 ").append(WIDTH).append(' ').append(HEIGHT).append("\"><path class=\"grid\" d=\"");
         for (double tick : y.ticks()) {
-            s.append('M').append(LEFT).append(' ').append(Svg.num(y.px(tick))).append('H').append(WIDTH - RIGHT);
+            s.append('M').append(Axis.LEFT).append(' ').append(Svg.num(y.px(tick))).append('H').append(WIDTH - RIGHT);
         }
         s.append("\"/><path class=\"bar\" d=\"");
         for (int i = 0; i < bins; i++) {

@@ -23,10 +23,8 @@ final class RunPlot {
 
     static final int WIDTH = 560;
     static final int HEIGHT = 254;
-    private static final int LEFT = 50;
     private static final int RIGHT = 14;
     private static final int TOP = 46;
-    private static final int BOTTOM = 42;
     private static final double ROW = 13;
     private static final double TOLERANCE = 0.5;
 
@@ -52,8 +50,8 @@ final class RunPlot {
             end = m == null ? end : Math.max(end, m);
         }
         boolean ticks = t.clock() == Clock.TICKS;
-        Axis x = Axis.covering(0, end, 10, ticks, LEFT, WIDTH - RIGHT);
-        Axis y = Axis.covering(min, max, 5, false, HEIGHT - BOTTOM, TOP);
+        Axis x = Axis.covering(0, end, 10, ticks, Axis.LEFT, WIDTH - RIGHT);
+        Axis y = Axis.covering(min, max, 5, false, HEIGHT - Axis.BOTTOM, TOP);
         StringBuilder s = new StringBuilder(4096);
         s.append("<svg class=\"plot\" width=\"").append(WIDTH).append("\" height=\"").append(HEIGHT)
                 .append("\" viewBox=\"0 0 ").append(WIDTH).append(' ').append(HEIGHT).append("\">");
@@ -61,14 +59,14 @@ final class RunPlot {
         if (warning != null && violation != null && warning < violation) {
             s.append("<rect class=\"lead\" x=\"").append(Svg.num(x.px(warning))).append("\" y=\"").append(TOP)
                     .append("\" width=\"").append(Svg.num(x.px(violation) - x.px(warning))).append("\" height=\"")
-                    .append(HEIGHT - TOP - BOTTOM).append("\"/>");
+                    .append(HEIGHT - TOP - Axis.BOTTOM).append("\"/>");
         }
-        s.append("<path class=\"bound\" d=\"M").append(LEFT).append(' ').append(Svg.num(y.px(rule.below())))
+        s.append("<path class=\"bound\" d=\"M").append(Axis.LEFT).append(' ').append(Svg.num(y.px(rule.below())))
                 .append('H').append(WIDTH - RIGHT).append("\"/>");
         if (t.times().length > 0) {
             s.append("<path class=\"val\" d=\"").append(path(t, start, x, y)).append("\"/>");
         } else {
-            s.append(Svg.text("empty", (LEFT + WIDTH - RIGHT) / 2.0, (TOP + HEIGHT - BOTTOM) / 2.0,
+            s.append(Svg.text("empty", (Axis.LEFT + WIDTH - RIGHT) / 2.0, (TOP + HEIGHT - Axis.BOTTOM) / 2.0,
                     "no reading of " + rule.command() + " in this run"));
         }
         marker(s, x, warning, "warn", 0, "warning " + v.duration(warning));
@@ -81,10 +79,10 @@ final class RunPlot {
     private static void grid(StringBuilder s, Axis x, Axis y) {
         s.append("<path class=\"grid\" d=\"");
         for (double tick : x.ticks()) {
-            s.append('M').append(Svg.num(x.px(tick))).append(' ').append(TOP).append('V').append(HEIGHT - BOTTOM);
+            s.append('M').append(Svg.num(x.px(tick))).append(' ').append(TOP).append('V').append(HEIGHT - Axis.BOTTOM);
         }
         for (double tick : y.ticks()) {
-            s.append('M').append(LEFT).append(' ').append(Svg.num(y.px(tick))).append('H').append(WIDTH - RIGHT);
+            s.append('M').append(Axis.LEFT).append(' ').append(Svg.num(y.px(tick))).append('H').append(WIDTH - RIGHT);
         }
         s.append("\"/>");
     }
@@ -99,7 +97,7 @@ final class RunPlot {
         }
         double px = x.px(at);
         s.append("<path class=\"").append(cls).append("\" d=\"M").append(Svg.num(px)).append(' ')
-                .append(Svg.num(TOP - 4 - ROW * (2 - row))).append('V').append(HEIGHT - BOTTOM).append("\"/>");
+                .append(Svg.num(TOP - 4 - ROW * (2 - row))).append('V').append(HEIGHT - Axis.BOTTOM).append("\"/>");
         double w = Svg.width(label, true);
         boolean right = px + 4 + w <= WIDTH - 2;
         double baseline = 11 + ROW * row;
