@@ -21,6 +21,10 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+/**
+ * Cross-validation and test-set evaluation of small simulated sets: every log judged once and never by models
+ * learned on it, the counts and leads add up, verdicts follow their rules, and the JSON has its documented fields.
+ */
 class EvaluatorTest {
 
     @TempDir
