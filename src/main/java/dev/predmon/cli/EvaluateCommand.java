@@ -56,6 +56,9 @@ final class EvaluateCommand implements Callable<Integer> {
     @Mixin
     ConfirmOption confirm;
 
+    @Mixin
+    RuleOption rule;
+
     @Option(names = "--report", paramLabel = "FILE",
             description = "Write a self-contained HTML report: table, confusion matrix, leads, battery plots, models.")
     Path report;
@@ -75,7 +78,8 @@ final class EvaluateCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
         List<ScenarioSpec> train = ScenarioLayout.scan(logs, abstraction);
-        Evaluator evaluator = new Evaluator(abstraction, threshold.value, confirm.value(abstraction), ProgressBar.on(err, quiet));
+        Evaluator evaluator = new Evaluator(abstraction, threshold.value, confirm.value(abstraction),
+                ProgressBar.on(err, quiet)).rule(rule.asked());
         Evaluation e;
         if (split != null && split.test != null) {
             e = evaluator.trainTest(train, ScenarioLayout.scan(split.test, abstraction));

@@ -5,6 +5,8 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
 import dev.predmon.model.ModelSet;
+import dev.predmon.forecast.ForecastWords;
+import dev.predmon.monitor.WarningRule;
 import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.PredictiveMonitor;
@@ -45,6 +47,9 @@ final class WatchCommand implements Callable<Integer> {
 
     @Mixin
     ConfirmOption confirm;
+
+    @Mixin
+    RuleOption rule;
 
     @Option(names = "--no-follow", description = "Process to the end of the file and exit.")
     boolean noFollow;
@@ -87,11 +92,17 @@ final class WatchCommand implements Callable<Integer> {
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
         }
+        WarningRule warnBy = rule.value(set);
+        if (set.forecast() == null) {
+            err.println("predmon: note: " + set.dir() + " was learned without a forecast; warnings follow the match "
+                    + "rule. Run 'predmon learn' again to add it");
+        }
         Board board = liveView.board(set, abstraction);
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
                      noFollow, hookOptions.open(err), board, abstraction.name());
-             Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), outputs)) {
+             Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), warnBy,
+                     outputs)) {
             sources.find().forEach(fleet::add);
             String stop = "end-of-file";
             if (noFollow) {
@@ -156,10 +167,11 @@ final class WatchCommand implements Callable<Integer> {
         long pairs = runs.stream().mapToLong(RunOutcome::pairs).sum();
         if (input.json) {
             List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
-                    r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch())).toList();
+                    r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
+                    ForecastJson.of(r.forecast()))).toList();
             End end = new End("end", stop, m.pipeline().records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), m.noMatch(), perRun,
-                    unmapped);
+                    unmapped, m.rule().id(), ForecastJson.of(runs.get(runs.size() - 1).forecast()));
             out.println(Json.line(several ? Json.tagged(end, log.name()) : end));
         } else {
             if (runs.size() > 1) {
@@ -169,7 +181,8 @@ final class WatchCommand implements Callable<Integer> {
                             + (r.noMatch() ? ", no model matches the run" : "")
                             + (r.violation() != null ? ", property violated"
                             : r.safetyObserved() ? ", property held" : ", property not observed")
-                            + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse(""));
+                            + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse("")
+                            + (r.forecast() == null ? "" : "; last forecast " + ForecastWords.line(r.forecast())));
                 }
             }
             String verdict = !judged ? "no verdict"
@@ -177,6 +190,10 @@ final class WatchCommand implements Callable<Integer> {
                     + (m.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
                     : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
+            RunOutcome last = runs.get(runs.size() - 1);
+            if (runs.size() == 1 && last.forecast() != null) {
+                out.println("last forecast: " + ForecastWords.line(last.forecast()));
+            }
             out.println("end of " + log.name() + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
                     + m.pipeline().records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
@@ -187,11 +204,13 @@ final class WatchCommand implements Callable<Integer> {
     }
 
     /** One run's verdict in the {@code end} event. */
-    record RunEnd(int run, long line, long pairs, boolean warning, boolean violation, Double lead, boolean noMatch) {
+    record RunEnd(int run, long line, long pairs, boolean warning, boolean violation, Double lead, boolean noMatch,
+                  ForecastJson forecast) {
     }
 
     /** The {@code end} event. */
     record End(String event, String stop, long records, long pairs, boolean warning, boolean violation, Double lead,
-               String unit, boolean noMatch, List<RunEnd> runs, Map<String, Long> unmapped) {
+               String unit, boolean noMatch, List<RunEnd> runs, Map<String, Long> unmapped, String rule,
+               ForecastJson forecast) {
     }
 }

@@ -1,5 +1,7 @@
 package dev.predmon.evaluate;
 
+import dev.predmon.forecast.Forecast;
+
 import java.util.List;
 
 /**
@@ -33,12 +35,42 @@ import java.util.List;
  * @param start            time of the run's first record, in {@code unit}: the report counts times from it
  * @param nearBound        readings of the safety property's value within {@link #APPROACH_BAND} points above its
  *                         bound (20 to 30 for a bound of 20), before the violation or, without one, in the whole run
+ * @param forecast         the run's forecasts, or null when the models carry none
  */
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                         List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
-                        double start, int nearBound) {
+                        double start, int nearBound, ForecastTrace forecast) {
+
+    /** A result without forecasts. */
+    public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
+                     Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
+                     Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
+                     List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
+                     double start, int nearBound) {
+        this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, batteryAtWarning,
+                violationTime, lead, noMatch, noMatchTime, records, pairs, problems, eliminations, safetyObserved, unit,
+                sudden, start, nearBound, null);
+    }
+
+    /**
+     * What the forecast said during a run.
+     *
+     * @param probabilities the probability after each pair before the violation (or the end)
+     * @param last          the last forecast of the run (for its last state), or null without a pair
+     * @param atWarning     the forecast at the warning, or null
+     * @param baseRate      the share of violating runs among the training runs of the models that judged it
+     * @param threshold     the probability at which the forecast rule warns
+     */
+    public record ForecastTrace(List<Double> probabilities, Forecast last, Forecast atWarning, double baseRate,
+                                double threshold) {
+
+        /** The highest probability before the violation, 0 without a pair. */
+        public double peak() {
+            return probabilities.stream().mapToDouble(Double::doubleValue).max().orElse(0.0);
+        }
+    }
 
     /**
      * How far above the bound a reading is near it, in the property's unit (percentage points): a violation

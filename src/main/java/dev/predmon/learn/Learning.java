@@ -2,6 +2,7 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastModel;
 import dev.predmon.model.ModelStore;
 
 import java.io.IOException;
@@ -24,7 +25,7 @@ public final class Learning {
      * @param scenarios every scenario learned, sorted by name
      * @param notes     what the user should know about the model directory (usually nothing)
      */
-    public record Result(List<LearnedScenario> scenarios, List<String> notes) {
+    public record Result(List<LearnedScenario> scenarios, List<String> notes, ForecastModel forecast) {
     }
 
     /**
@@ -50,9 +51,11 @@ public final class Learning {
             each.accept(l);
             learned.add(l);
         }
+        ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
+                ModelStore.alphabetOf(abstraction), ForecastTraining.limit(tuned));
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
-                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson());
-        return new Result(List.copyOf(learned), notes);
+                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson(), forecast);
+        return new Result(List.copyOf(learned), notes, forecast);
     }
 
     /**

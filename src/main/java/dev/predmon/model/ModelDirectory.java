@@ -2,6 +2,7 @@ package dev.predmon.model;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.BadInputException;
+import dev.predmon.forecast.ForecastFile;
 import dev.predmon.abstraction.LocatedJson;
 
 import java.io.IOException;
@@ -182,6 +183,9 @@ final class ModelDirectory {
             return null;
         }
         Set<String> own = new HashSet<>(Set.of(INDEX, ABSTRACTION));
+        if (ForecastFile.NAME.equals(root.path("forecast").asText(""))) {
+            own.add(ForecastFile.NAME);
+        }
         for (JsonNode scenario : root.get("scenarios")) {
             for (JsonNode model : scenario.path("models")) {
                 String file = model.path("file").asText("");

@@ -33,8 +33,16 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
      * @param violated  whether the safety monitor saw its property violated in this run
      * @param readings  the values of each continuous rule's replies in order, by the rule's input
      *                  ({@code level_i}): what the learner estimates a sensor's noise from
+     * @param timing    when each pair came, the property's value then, and when the run violated and ended: what the
+     *                  forecast's statistics are learned from
      */
-    public record Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings) {
+    public record Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings,
+                      RunTiming timing) {
+
+        /** A run without timing (tests of what does not need it). */
+        public Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings) {
+            this(index, firstLine, pairs, violated, readings, RunTiming.none(pairs.size()));
+        }
     }
 
     /** The trace as one Mealy sample (a log of one run). */

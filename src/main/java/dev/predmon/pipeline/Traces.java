@@ -13,6 +13,8 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
 import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -154,6 +156,14 @@ public final class Traces {
         private List<IoPair> pairs = new ArrayList<>();
         private long firstLine = 1;
         private boolean violated;
+        private double value = Double.NaN;
+        private double lowestSafe = Double.NaN;
+        private double violationTime = Double.NaN;
+        private double endTime = Double.NaN;
+        private String unit = "s";
+        private List<RunTiming.Reading> changes = new ArrayList<>();
+        private double[] times = new double[64];
+        private double[] values = new double[64];
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
             this.abstraction = abstraction;
@@ -163,7 +173,29 @@ public final class Traces {
 
         @Override
         public void record(LogRecord record) {
-            violated |= safety.isPresent() && safety.get().violatedBy(safety.get().valueOf(record));
+            if (!Double.isNaN(record.time())) {
+                endTime = record.time();
+            }
+            unit = record.clock().unit();
+            if (safety.isEmpty()) {
+                return;
+            }
+            double v = safety.get().valueOf(record);
+            if (Double.isNaN(v)) {
+                return;
+            }
+            if (v != value) {
+                changes.add(new RunTiming.Reading(record.time(), v, pairs.size()));
+            }
+            value = v;
+            if (safety.get().violatedBy(v)) {
+                if (!violated) {
+                    violationTime = record.time();
+                }
+                violated = true;
+            } else if (!violated && !(v >= lowestSafe)) {
+                lowestSafe = v;
+            }
         }
 
         @Override
@@ -182,6 +214,13 @@ public final class Traces {
 
         @Override
         public void pair(IoPair pair, LogRecord trigger) {
+            int i = pairs.size();
+            if (i == times.length) {
+                times = Arrays.copyOf(times, i * 2);
+                values = Arrays.copyOf(values, i * 2);
+            }
+            times[i] = trigger.time();
+            values[i] = value;
             pairs.add(pair);
             all.add(pair);
         }
@@ -195,11 +234,18 @@ public final class Traces {
         private void finish() {
             Map<String, List<Double>> frozen = new TreeMap<>();
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
+            RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
+                    violationTime, endTime, lowestSafe, unit, changes);
+            changes = new ArrayList<>();
             done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated,
-                    java.util.Collections.unmodifiableMap(frozen)));
+                    Collections.unmodifiableMap(frozen), timing));
             pairs = new ArrayList<>();
             readings = new TreeMap<>();
             violated = false;
+            value = Double.NaN;
+            lowestSafe = Double.NaN;
+            violationTime = Double.NaN;
+            endTime = Double.NaN;
         }
 
         List<LogTrace.Run> runs() {

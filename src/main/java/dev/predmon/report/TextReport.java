@@ -14,9 +14,10 @@ import java.util.Locale;
 import java.util.stream.Collectors;
 
 /**
- * The evaluation as plain-text tables for the terminal: one row per scenario, the confusion matrix, then one row
- * per run with its verdict in words, times from the start of the run and its log named with its folder. Columns
- * are as wide as their widest cell, so they stay aligned whatever the file names.
+ * The evaluation as plain-text tables for the terminal: one row per scenario, the confusion matrix, how good the
+ * forecast was ({@link ForecastTables}), then one row per run with its verdict in words, times from the start of
+ * the run, its forecast and its log named with its folder. Columns are as wide as their widest cell, so they stay
+ * aligned whatever the file names.
  */
 public final class TextReport {
 
@@ -44,7 +45,9 @@ public final class TextReport {
         out.printf(Locale.ROOT, "confusion (actual x predicted): faulty&warned-in-time %d, faulty&missed %d, "
                         + "nominal&warned %d, nominal&quiet %d; faulty without violation (unscored) %d%n",
                 c.truePositives(), c.falseNegatives(), c.falsePositives(), c.trueNegatives(), c.unscored());
-        out.printf(Locale.ROOT, "recall %s, false-alarm rate %s%n", percent(c.recall()), percent(c.falseAlarmRate()));
+        out.printf(Locale.ROOT, "recall %s, false-alarm rate %s (warning rule: %s)%n", percent(c.recall()),
+                percent(c.falseAlarmRate()), e.rule());
+        ForecastTables.print(out, e);
         out.println();
         out.println("times from the start of each run");
         Table runs = new Table("log", ">run", ">fold", "scenario", "verdict", ">warning", ">violation", ">lead",

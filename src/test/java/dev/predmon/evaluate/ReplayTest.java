@@ -65,7 +65,7 @@ class ReplayTest {
         for (int i = 0; i < RunResult.SUDDEN_READINGS; i++) {
             r.at(1 + i).level(29.5 - i);
         }
-        RunResult approached = replay("slow.log", r.at(20).level(19).at(21).level(25));
+        RunResult approached = replay("slow.log", r.at(11).level(19).at(12).level(25));
         assertEquals(RunResult.SUDDEN_READINGS, approached.nearBound(), "a reading after the violation is not counted");
         assertFalse(approached.sudden());
     }
