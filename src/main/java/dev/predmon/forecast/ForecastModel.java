@@ -49,9 +49,30 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         if (Double.isNaN(value)) {
             return baseRate();
         }
-        int k = lows.violating(value);
-        int n = lows.runs(value);
-        return (k + PRIOR_RUNS * baseRate()) / (n + PRIOR_RUNS);
+        // A lower value is never safer: a run that went from 23 straight to its violation was below 22 too, though
+        // no reading shows it. The rate at v is the highest rate at v or at a violating run's low above it.
+        return lows.monotoneRate(value, PRIOR_RUNS, baseRate());
+    }
+
+    /**
+     * P(violation | the property reads {@code value}, nothing else known): the value table's counts with the value
+     * table's rate as prior, the estimate of a state that is "anywhere".
+     */
+    public double valueOnly(double value) {
+        return (lows.violating(value) + PRIOR_RUNS * valueRate(value)) / (lows.runs(value) + PRIOR_RUNS);
+    }
+
+    /**
+     * The forecast of a run whose property is lower than every training run that held ever read, by the value alone:
+     * the highest threshold at which a run that does something no machine knows can still be warned. 1 when no run
+     * held with a reading.
+     */
+    public double noveltyCeiling() {
+        double[] safe = lows.safe();
+        if (safe.length == 0) {
+            return 1.0;
+        }
+        return valueOnly(Math.nextDown(safe[0]));
     }
 
     /** This model with another warning threshold. */

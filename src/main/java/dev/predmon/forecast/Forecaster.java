@@ -226,15 +226,24 @@ public final class Forecaster {
         }
         Forecast.Basis basis;
         double p;
-        if (weights > 0) {
-            basis = novelSince == null ? Forecast.Basis.MATCHED : Forecast.Basis.RESYNCHRONISED;
+        if (weights > 0 && novelSince == null) {
+            basis = Forecast.Basis.MATCHED;
             p = sum / weights;
         } else {
-            basis = Forecast.Basis.VALUE_ONLY;
-            p = prior;
-            runs = stats.lows().runs(value);
-            bad = stats.lows().violating(value);
-            timed = null;
+            // the same estimate as in a state, the state being "anywhere": so that a run that left every learned
+            // state is judged on the same scale as one that did not
+            double anywhere = stats.valueOnly(value);
+            if (weights > 0 && sum / weights >= anywhere) {
+                basis = Forecast.Basis.RESYNCHRONISED;
+                p = sum / weights;
+            } else {
+                // through novelty, the forecast is never less than what the property's value alone says
+                basis = weights > 0 ? Forecast.Basis.RESYNCHRONISED : Forecast.Basis.VALUE_ONLY;
+                p = anywhere;
+                runs = stats.lows().runs(value);
+                bad = stats.lows().violating(value);
+                timed = weights > 0 ? timed : null;
+            }
         }
         return timed(Math.max(0.0, Math.min(1.0, p)), basis, runs, bad, v, drift, timed);
     }

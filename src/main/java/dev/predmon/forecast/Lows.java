@@ -11,6 +11,10 @@ public final class Lows {
 
     private final double[] safe;
     private final double[] violating;
+    /** For each violating low, the highest smoothed rate at it or above: computed on first use, for one prior. */
+    private double[] envelope;
+    private double envelopePrior = Double.NaN;
+    private double envelopeBase = Double.NaN;
 
     /** @param safe the lowest values of the runs that held; {@code violating}, of the runs that violated */
     public Lows(double[] safe, double[] violating) {
@@ -38,6 +42,28 @@ public final class Lows {
     /** Violating runs that went as low as {@code value} while safe; all of them when the value is unknown (NaN). */
     public int violating(double value) {
         return atMost(violating, value);
+    }
+
+    /**
+     * The violation rate at {@code value}, {@code (k + prior * base) / (n + prior)} over the runs that went as low, made
+     * non-increasing in the value: the rate at a violating run's low above {@code value} counts too, since that run
+     * went below its last safe reading on its way to the violation.
+     */
+    public synchronized double monotoneRate(double value, double prior, double base) {
+        if (envelope == null || prior != envelopePrior || base != envelopeBase) {
+            envelope = new double[violating.length + 1];
+            for (int i = violating.length - 1; i >= 0; i--) {
+                envelope[i] = Math.max(envelope[i + 1], rate(violating[i], prior, base));
+            }
+            envelopePrior = prior;
+            envelopeBase = base;
+        }
+        int above = atMost(violating, value); // the first violating low above value
+        return Math.max(rate(value, prior, base), envelope[above]);
+    }
+
+    private double rate(double value, double prior, double base) {
+        return (violating(value) + prior * base) / (runs(value) + prior);
     }
 
     private static int atMost(double[] sorted, double value) {

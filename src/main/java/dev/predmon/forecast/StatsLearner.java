@@ -107,8 +107,7 @@ public final class StatsLearner {
         for (Map.Entry<Integer, Double> v : firstVisit.entrySet()) {
             Acc a = acc.computeIfAbsent(v.getKey(), s -> new Acc());
             a.runs++;
-            // a violating run's lowest safe reading comes just before its violation, after every visit
-            double low = run.violated() ? t.lowestSafeValue() : suffixLow[firstIndex.get(v.getKey())];
+            double low = suffixLow[firstIndex.get(v.getKey())];
             if (!Double.isNaN(low)) {
                 (run.violated() ? a.violatingLows : a.safeLows).add(low);
             }
@@ -128,19 +127,28 @@ public final class StatsLearner {
         }
     }
 
-    /** For each pair, the lowest value the run read at that pair or a later one (before its violation). */
+    /**
+     * For each pair, the lowest value the run read at that pair or later, before its violation: the readings between
+     * pairs count, since the battery falls inside a band without a pair to show it.
+     */
     private static double[] suffixMinima(RunTiming t, LogTrace.Run run) {
         double[] low = new double[t.size()];
+        List<RunTiming.Reading> readings = t.readings();
+        int r = readings.size() - 1;
         double min = Double.NaN;
         for (int i = t.size() - 1; i >= 0; i--) {
-            double v = t.value(i);
-            boolean safe = !run.violated() || t.time(i) < t.violationTime();
-            if (safe && !Double.isNaN(v) && !(v >= min)) {
-                min = v;
+            for (; r >= 0 && readings.get(r).pairsBefore() > i; r--) {
+                min = lower(min, readings.get(r).value(), readings.get(r).time(), t, run);
             }
+            min = lower(min, t.value(i), t.time(i), t, run);
             low[i] = min;
         }
         return low;
+    }
+
+    private static double lower(double min, double v, double time, RunTiming t, LogTrace.Run run) {
+        boolean safe = !run.violated() || time < t.violationTime();
+        return safe && !Double.isNaN(v) && !(v >= min) ? v : min;
     }
 
     /** The {@code q}-quantile of {@code values} (nearest rank on the sorted values), NaN when empty. */

@@ -22,8 +22,19 @@ public final class ThresholdChoice {
     private ThresholdChoice() {
     }
 
-    /** One held-out run: its highest forecast before the violation or the end, and whether it violated. */
-    public record Peak(double probability, boolean violated) {
+    /**
+     * One held-out run: its highest forecast before the violation or the end, whether it violated, and whether the
+     * thesis's matching warned it anyway (before its violation), whatever the threshold.
+     */
+    public record Peak(double probability, boolean violated, boolean caught) {
+
+        public Peak(double probability, boolean violated) {
+            this(probability, violated, false);
+        }
+
+        boolean warnedAt(double t) {
+            return caught || probability >= t;
+        }
     }
 
     /** The chosen threshold, why in one line, and whether held-out runs of both outcomes chose it. */
@@ -61,7 +72,7 @@ public final class ThresholdChoice {
         int alarms = 0;
         int hits = 0;
         for (Peak p : peaks) {
-            if (p.probability() >= best) {
+            if (p.warnedAt(best)) {
                 if (p.violated()) {
                     hits++;
                 } else {
@@ -77,7 +88,7 @@ public final class ThresholdChoice {
     private static int errors(List<Peak> peaks, double t) {
         int errors = 0;
         for (Peak p : peaks) {
-            if ((p.probability() >= t) != p.violated()) {
+            if (p.warnedAt(t) != p.violated()) {
                 errors++;
             }
         }

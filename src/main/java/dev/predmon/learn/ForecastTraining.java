@@ -7,6 +7,7 @@ import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
+import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunTiming;
@@ -17,6 +18,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -24,6 +26,10 @@ import java.util.Map;
  * ({@link StatsLearner}), and the warning threshold chosen by cross-validation over the same runs: each fold's
  * machines and statistics are learned without it, its runs are forecast pair by pair, and each run's highest
  * forecast before its violation decides ({@link ThresholdChoice}).
+ *
+ * <p>The forecast rule also warns where the thesis's rule would (every nominal machine eliminated while a faulty one
+ * matches, {@code confirm} pairs on): that is evidence the run can only be faulty. A held-out run so warned before its
+ * violation counts as reaching any threshold, so the threshold is chosen for the runs the matching does not catch.
  */
 public final class ForecastTraining {
 
@@ -36,11 +42,12 @@ public final class ForecastTraining {
     /**
      * The forecast of {@code machines} (by id), learned from the runs of {@code specs} in {@code traces}.
      *
-     * @param limit the safety property's threshold, NaN without a property
+     * @param limit   the safety property's threshold, NaN without a property
+     * @param confirm the pairs a faulty machine must match after the last nominal one is eliminated
      */
     public static ForecastModel train(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
                                       Map<String, CompactMealy<String, String>> machines, Alphabet<String> alphabet,
-                                      double limit) {
+                                      double limit, int confirm) {
         List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
         String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
         ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
@@ -59,12 +66,15 @@ public final class ForecastTraining {
                 held.add(logs.get(i));
             }
             Map<String, CompactMealy<String, String>> foldMachines = new LinkedHashMap<>();
+            Map<String, Boolean> faulty = new LinkedHashMap<>();
             for (ScenarioSpec s : specs) {
                 List<MealyTrace> samples = s.logs().stream().filter(traces::containsKey).filter(l -> !held.contains(l))
                         .flatMap(l -> traces.get(l).samples(s.runs()).stream()).toList();
                 if (!samples.isEmpty()) {
-                    ScenarioLearner.learnSamples(s, samples, alphabet).machines()
-                            .forEach(m -> foldMachines.put(m.id(), m.machine()));
+                    ScenarioLearner.learnSamples(s, samples, alphabet).machines().forEach(m -> {
+                        foldMachines.put(m.id(), m.machine());
+                        faulty.put(m.id(), s.faulty());
+                    });
                 }
             }
             List<LogTrace.Run> training = runsOf(specs, traces, l -> !held.contains(l));
@@ -74,16 +84,61 @@ public final class ForecastTraining {
             ForecastModel foldStats = StatsLearner.learn(foldMachines, training, unit, limit);
             Forecaster forecaster = new Forecaster(foldStats, foldMachines);
             for (LogTrace.Run r : runsOf(specs, traces, held::contains)) {
-                peaks.add(new ThresholdChoice.Peak(peak(forecaster, r), r.violated()));
+                peaks.add(new ThresholdChoice.Peak(peak(forecaster, r), r.violated(),
+                        matchWarns(foldMachines, faulty, confirm, r)));
             }
         }
         ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
+        double ceiling = stats.noveltyCeiling();
+        if (c.threshold() > ceiling) {
+            // never blind: a run that does something new must still be warned once it is lower than every run that held
+            return stats.withThreshold(ceiling, c.note() + String.format(Locale.ROOT, "; lowered to %.3f, what the value"
+                    + " alone says below every run that held", ceiling), c.validated());
+        }
         return stats.withThreshold(c.threshold(), c.note(), c.validated());
     }
 
     /** The safety property's threshold, NaN when the abstraction has no property. */
     public static double limit(Abstraction abstraction) {
         return abstraction.safety().map(SafetyRule::below).orElse(Double.NaN);
+    }
+
+    /**
+     * Whether the thesis's rule warns {@code run} before its violation: every nominal machine eliminated while a
+     * faulty one still matches, for {@code confirm} more pairs.
+     */
+    static boolean matchWarns(Map<String, CompactMealy<String, String>> machines, Map<String, Boolean> faulty,
+                              int confirm, LogTrace.Run run) {
+        List<String> ids = List.copyOf(machines.keySet());
+        int[] state = new int[ids.size()];
+        for (int m = 0; m < ids.size(); m++) {
+            state[m] = machines.get(ids.get(m)).getInitialState();
+        }
+        long since = -1;
+        for (int i = 0; i < run.pairs().size(); i++) {
+            if (run.violated() && !(run.timing().time(i) < run.timing().violationTime())) {
+                return false;
+            }
+            boolean nominal = false;
+            boolean bad = false;
+            for (int m = 0; m < ids.size(); m++) {
+                if (state[m] >= 0) {
+                    state[m] = MealyMapping.pairStep(machines.get(ids.get(m)), state[m], run.pairs().get(i).input(),
+                            run.pairs().get(i).output());
+                }
+                if (state[m] >= 0) {
+                    if (faulty.get(ids.get(m))) {
+                        bad = true;
+                    } else {
+                        nominal = true;
+                    }
+                }
+            }
+            if (!nominal && bad && ++since >= confirm) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The run's highest forecast before its violation (or its end). */

@@ -52,7 +52,7 @@ public final class Learning {
             learned.add(l);
         }
         ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
-                ModelStore.alphabetOf(abstraction), ForecastTraining.limit(tuned));
+                ModelStore.alphabetOf(abstraction), ForecastTraining.limit(tuned), tuned.confirm());
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
                 LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson(), forecast);
         return new Result(List.copyOf(learned), notes, forecast);

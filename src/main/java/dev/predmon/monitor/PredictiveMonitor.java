@@ -263,9 +263,10 @@ public final class PredictiveMonitor implements PipelineListener {
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
-            if (rule == WarningRule.MATCH && !nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+            if (!nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+                // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it)
                 reason = "the run can only be faulty scenario " + String.join(", ", faultyAlive)
-                        + " (every nominal model eliminated)";
+                        + " (every nominal model eliminated)" + (f == null ? "" : "; " + ForecastWords.line(f));
             } else if (rule == WarningRule.FORECAST && f != null && f.probability() >= forecast.threshold()) {
                 reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
             }
