@@ -20,7 +20,8 @@ import java.util.Locale;
 
 /**
  * The evaluation as one self-contained HTML file: no script and no external reference, so it opens anywhere
- * without network. Sections: the summary per scenario, the confusion matrix, the table of runs
+ * without network. Sections: the summary per scenario, the confusion matrix, how good the forecast was
+ * ({@link ForecastSection}), the table of runs
  * ({@link RunTable}, each row linked to its run's plot), the distribution of leads ({@link LeadHistogram}), one
  * plot per run ({@link RunPlot}) and the learned models drawn ({@link ModelSection}).
  *
@@ -65,14 +66,16 @@ public final class HtmlReport {
                         ? e.folds() + "-fold cross-validation over the training logs (every run is judged by models "
                         + "learned without it)"
                         : "models learned on the training logs, every run of the test logs judged")
-                .append("; threshold ").append(e.threshold()).append("; abstraction <code>")
+                .append("; threshold ").append(e.threshold()).append("; warning rule <code>").append(Svg.esc(e.rule()))
+                .append("</code>; abstraction <code>")
                 .append(Svg.esc(e.abstraction())).append("</code>. Each run was replayed through the code path of "
                         + "<code>watch --no-follow</code>, built-in safety monitor included.</p>\n")
                 .append("<nav><a href=#summary>Summary</a><a href=#confusion>Confusion matrix</a>"
-                        + "<a href=#runs>Runs</a><a href=#leads>Leads</a><a href=#plots>Plots</a>"
+                        + "<a href=#forecast>Forecast</a><a href=#runs>Runs</a><a href=#leads>Leads</a><a href=#plots>Plots</a>"
                         + "<a href=#models>Learned models</a></nav>\n");
         summary(h, e);
         confusion(h, e.confusion());
+        ForecastSection.html(h, e);
         for (String n : e.notes()) {
             h.append("<p>Note: ").append(Svg.esc(n)).append("</p>\n");
         }

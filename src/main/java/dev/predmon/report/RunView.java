@@ -26,12 +26,13 @@ public record RunView(int number, RunResult result, String log, Integer run, Str
     public static final String NONE = "—";
 
     /**
-     * A forecast of the run: how likely a violation is and how soon.
+     * What the forecast said of the run: at its warning where it has one, else its highest probability.
      *
      * @param probability     P(the run violates the property), 0 to 1
      * @param timeToViolation the estimated time to the violation, in the run's unit, or null
+     * @param atWarning       whether this is the forecast at the warning (else the run's highest probability)
      */
-    public record Forecast(double probability, Double timeToViolation) {
+    public record Forecast(double probability, Double timeToViolation, boolean atWarning) {
     }
 
     /** The view of {@code r}, the {@code number}-th run of the evaluation. */
@@ -54,11 +55,17 @@ public record RunView(int number, RunResult result, String log, Integer run, Str
     }
 
     /**
-     * The run's forecast for the table's forecast column. A run result carries no forecast yet; once it does, this
-     * is the one place that reads it (its probability and time to violation), and every view shows it.
+     * The run's forecast for the forecast column: the one at the warning, which is what an operator acts on, or for
+     * a run without a warning the highest probability it reached before any violation (what the threshold sweep
+     * compares); null where the models carry no forecast.
      */
     static Forecast forecastOf(RunResult r) {
-        return null;
+        RunResult.ForecastTrace f = r.forecast();
+        if (f == null || (f.atWarning() == null && f.probabilities().isEmpty())) {
+            return null;
+        }
+        return f.atWarning() != null ? new Forecast(f.atWarning().probability(), f.atWarning().timeToViolation(), true)
+                : new Forecast(f.peak(), null, false);
     }
 
     /**
@@ -121,13 +128,17 @@ public record RunView(int number, RunResult result, String log, Integer run, Str
                 : String.format(Locale.ROOT, "%.1f s", d);
     }
 
-    /** The forecast in words, or {@link #NONE}: {@code 82%, 34.0 s}. */
+    /**
+     * The forecast, short enough for a table cell, or {@link #NONE}: {@code 97%, in 3.5 s} at the warning (its
+     * probability and time to the violation), {@code max 40%} for a run without a warning.
+     */
     public String forecastText() {
         if (forecast == null) {
             return NONE;
         }
-        return String.format(Locale.ROOT, "%.0f%%", forecast.probability() * 100)
-                + (forecast.timeToViolation() == null ? "" : ", in " + duration(forecast.timeToViolation()));
+        String p = String.format(Locale.ROOT, "%.0f%%", forecast.probability() * 100);
+        return forecast.atWarning() ? p + (forecast.timeToViolation() == null ? "" : ", in "
+                + duration(forecast.timeToViolation())) : "max " + p;
     }
 
     /** The run's number within its log, or {@link #NONE}. */

@@ -5,6 +5,7 @@ import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.Evaluator;
 import dev.predmon.evaluate.Progress;
 import dev.predmon.evaluate.RunResult;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.support.SimulatedSets;
 import org.junit.jupiter.api.BeforeAll;
@@ -107,12 +108,20 @@ class HtmlReportTest {
     @Test
     void theForecastColumnShowsAForecastWhereTheRunHasOne() {
         RunResult r = JudgedRuns.oneOfEach().get(0);
-        RunView without = RunView.of(1, r);
-        RunView with = new RunView(1, r, without.log(), null, without.verdict(), without.tone(),
-                new RunView.Forecast(0.82, 12.5));
+        RunResult warned = withForecast(r, new RunResult.ForecastTrace(List.of(0.3, 0.82), null,
+                new Forecast(0.82, 12.5, 8.0, 20.0, Forecast.Basis.MATCHED, null, 12, 10, 28.7, -0.8, "s"), 0.3, 0.6));
+        RunResult quiet = withForecast(JudgedRuns.oneOfEach().get(5),
+                new RunResult.ForecastTrace(List.of(0.1, 0.4, 0.2), null, null, 0.3, 0.6));
         StringBuilder h = new StringBuilder();
-        RunTable.html(h, List.of(without, with), 0);
+        RunTable.html(h, List.of(RunView.of(1, r), RunView.of(2, warned), RunView.of(3, quiet)), 0);
         List<String> cells = all("<td class=forecast>([^<]*)</td>", h.toString());
-        assertEquals(List.of(RunView.NONE, "82%, in 12.5 s"), cells);
+        assertEquals(List.of(RunView.NONE, "82%, in 12.5 s", "max 40%"), cells);
+    }
+
+    private static RunResult withForecast(RunResult r, RunResult.ForecastTrace f) {
+        return new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(), r.warningTime(), r.warningLine(),
+                r.warningScenarios(), r.batteryAtWarning(), r.violationTime(), r.lead(), r.noMatch(), r.noMatchTime(),
+                r.records(), r.pairs(), r.problems(), r.eliminations(), r.safetyObserved(), r.unit(), r.sudden(),
+                r.start(), r.nearBound(), f);
     }
 }
