@@ -24,7 +24,7 @@ final class RunTable {
                 .append(counts(runs)).append(". Times count from the start of each run.</p>\n");
         h.append("<table class=runs><thead><tr><th>#</th><th class=l>log</th><th>run</th><th>fold</th>"
                 + "<th class=l>scenario</th><th class=l>verdict</th><th>warning</th><th>violation</th><th>lead</th>"
-                + "<th class=forecast>forecast<br><small>at the warning: P, time to violation; else the highest P</small></th>"
+                + "<th class=forecast>forecast<br><small>at the warning: P, time to violation; without one: highest P</small></th>"
                 + "<th class=l>models eliminated: line, time, reason</th></tr></thead>\n<tbody>\n");
         for (RunView v : runs) {
             RunResult r = v.result();
