@@ -190,13 +190,13 @@ final class WatchCommand implements Callable<Integer> {
                     + (m.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
                     : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
+            out.println("end of " + log.name() + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
+                    + m.pipeline().records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
+                    + pairs + " compacted pairs; " + verdict);
             RunOutcome last = runs.get(runs.size() - 1);
             if (runs.size() == 1 && last.forecast() != null) {
                 out.println("last forecast: " + ForecastWords.line(last.forecast()));
             }
-            out.println("end of " + log.name() + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
-                    + m.pipeline().records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
-                    + pairs + " compacted pairs; " + verdict);
         }
         out.flush();
         return runs.size() == 1 ? ExitCodes.of(m.noMatch(), m.warning().isPresent())

@@ -63,16 +63,18 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     }
 
     /**
-     * The forecast of a run whose property is lower than every training run that held ever read, by the value alone:
-     * the highest threshold at which a run that does something no machine knows can still be warned. 1 when no run
-     * held with a reading.
+     * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run has done something
+     * no learned machine does and its property is lower than every training run that held ever read. The threshold
+     * was chosen on runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so
+     * without the second clause the rule would be blind exactly where the matching is.
      */
-    public double noveltyCeiling() {
-        double[] safe = lows.safe();
-        if (safe.length == 0) {
-            return 1.0;
-        }
-        return valueOnly(Math.nextDown(safe[0]));
+    public boolean warns(Forecast f) {
+        return f.probability() >= threshold || (f.novel() && f.value() != null && belowEverySafeRun(f.value()));
+    }
+
+    /** Whether {@code value} is lower than every training run that held ever read (false without such a run). */
+    public boolean belowEverySafeRun(double value) {
+        return lows.runs(value) == lows.violating(value) && lows.safe().length > 0;
     }
 
     /** This model with another warning threshold. */

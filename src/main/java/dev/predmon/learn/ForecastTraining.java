@@ -18,7 +18,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -89,12 +88,6 @@ public final class ForecastTraining {
             }
         }
         ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
-        double ceiling = stats.noveltyCeiling();
-        if (c.threshold() > ceiling) {
-            // never blind: a run that does something new must still be warned once it is lower than every run that held
-            return stats.withThreshold(ceiling, c.note() + String.format(Locale.ROOT, "; lowered to %.3f, what the value"
-                    + " alone says below every run that held", ceiling), c.validated());
-        }
         return stats.withThreshold(c.threshold(), c.note(), c.validated());
     }
 

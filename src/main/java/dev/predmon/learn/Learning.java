@@ -37,6 +37,16 @@ public final class Learning {
      */
     public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each)
             throws BadInputException, IOException {
+        return learnAndWrite(logs, models, abstraction, each, step -> { });
+    }
+
+    /**
+     * As above; {@code step} is told each step of replacing the model directory before it is taken
+     * ({@link ModelStore#write(Path, dev.predmon.model.ModelIndex, Map, String, ForecastModel, Consumer)}), so that a
+     * test can kill a learn at each.
+     */
+    public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each,
+                                       Consumer<String> step) throws BadInputException, IOException {
         ModelStore.checkWritable(models, logs);
         List<LearnedScenario> learned = new ArrayList<>();
         List<ScenarioSpec> specs = ScenarioLayout.scan(logs, abstraction);
@@ -54,7 +64,7 @@ public final class Learning {
         ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
                 ModelStore.alphabetOf(abstraction), ForecastTraining.limit(tuned), tuned.confirm());
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
-                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson(), forecast);
+                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson(), forecast, step);
         return new Result(List.copyOf(learned), notes, forecast);
     }
 

@@ -275,7 +275,8 @@ final class ModelDirectory {
             return s.allMatch(f -> {
                 String name = f.getFileName().toString();
                 return Files.isRegularFile(f, LinkOption.NOFOLLOW_LINKS)
-                        && (name.equals(INDEX) || name.equals(ABSTRACTION) || name.endsWith(".dot"));
+                        && (name.equals(INDEX) || name.equals(ABSTRACTION) || name.equals(ForecastFile.NAME)
+                        || name.endsWith(".dot"));
             });
         }
     }

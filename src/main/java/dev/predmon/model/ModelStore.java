@@ -139,11 +139,18 @@ public final class ModelStore {
     /** As above, with the forecast's statistics, written as {@value ForecastFile#NAME} and listed in the index. */
     public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson,
                                      ForecastModel forecast) throws IOException, BadInputException {
+        return write(dir, index, dots, abstractionJson, forecast, step -> { });
+    }
+
+    /** As above; {@code step} is told each step before it is taken (see the stepped write without a forecast). */
+    public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson,
+                                     ForecastModel forecast, Consumer<String> step)
+            throws IOException, BadInputException {
         Map<String, String> files = new LinkedHashMap<>(dots);
         files.put(ForecastFile.NAME, ForecastFile.write(forecast));
         ModelIndex listed = new ModelIndex(index.format(), index.abstraction(), index.alphabet(), index.scenarios(),
                 ForecastFile.NAME);
-        return write(dir, listed, files, abstractionJson, step -> { });
+        return write(dir, listed, files, abstractionJson, step);
     }
 
     /**

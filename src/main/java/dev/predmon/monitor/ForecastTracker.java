@@ -30,9 +30,14 @@ final class ForecastTracker {
                 models.machines()));
     }
 
-    /** The probability at which the forecast rule warns. */
+    /** The probability at which the forecast rule warns, for runs that match learned machines. */
     double threshold() {
         return forecaster.stats().threshold();
+    }
+
+    /** Whether the forecast rule warns on {@code f} ({@link dev.predmon.forecast.ForecastModel#warns}). */
+    boolean warns(Forecast f) {
+        return forecaster.stats().warns(f);
     }
 
     void reset() {

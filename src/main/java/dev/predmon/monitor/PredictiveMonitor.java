@@ -197,11 +197,18 @@ public final class PredictiveMonitor implements PipelineListener {
         if (forecast != null && (before == null || before != v)) {
             Forecast f = told(forecast.reading(record.time(), v), record);
             if (warning == null && violation == null && rule == WarningRule.FORECAST
-                    && f.probability() >= forecast.threshold()) {
-                warn(record, List.of(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
+                    && forecast.warns(f)) {
+                warn(record, faultyAlive(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
                         v)), f);
             }
         }
+    }
+
+    /** The faulty scenarios some machine of which still matches the run, sorted. */
+    private List<String> faultyAlive() {
+        TreeSet<String> alive = new TreeSet<>();
+        trackers.stream().filter(t -> t.alive() && t.model().faulty()).forEach(t -> alive.add(t.model().scenario()));
+        return List.copyOf(alive);
     }
 
     /** Reports {@code news} if it is news, and returns the latest forecast. */
@@ -215,9 +222,11 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     private String forecastReason(Forecast f, String where) {
-        return String.format(Locale.ROOT, "%s reaches the warning threshold %.2f; %s; %s; %s",
-                ForecastWords.probability(f), forecast.threshold(), ForecastWords.time(f), ForecastWords.evidence(f),
-                where);
+        String why = f.probability() >= forecast.threshold()
+                ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", forecast.threshold())
+                : "in behaviour no model has seen, with the value lower than any training run that held read";
+        return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
+                ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
 
     private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f) {
@@ -267,7 +276,7 @@ public final class PredictiveMonitor implements PipelineListener {
                 // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it)
                 reason = "the run can only be faulty scenario " + String.join(", ", faultyAlive)
                         + " (every nominal model eliminated)" + (f == null ? "" : "; " + ForecastWords.line(f));
-            } else if (rule == WarningRule.FORECAST && f != null && f.probability() >= forecast.threshold()) {
+            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {
                 reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
             }
             if (reason != null) {
