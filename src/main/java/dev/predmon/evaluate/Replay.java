@@ -94,7 +94,7 @@ public final class Replay {
                     runs.size() == 1 ? monitor.pipeline().records() : -1, o.pairs(), problems[0],
                     List.copyOf(eliminations), o.safetyObserved(), monitor.clock().unit(),
                     violation != null && approach.near(o.run()) < RunResult.SUDDEN_READINGS, approach.start(o.run()),
-                    approach.near(o.run()),
+                    approach.near(o.run()), violation == null ? null : violation.before(),
                     models.forecast() == null ? null : new RunResult.ForecastTrace(
                             List.copyOf(probabilities.getOrDefault(o.run(), List.of())), o.forecast(),
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
@@ -104,7 +104,8 @@ public final class Replay {
     }
 
     /**
-     * Per run, the time of its first record and the readings near the bound before its violation, seen after the
+     * Per run, the time of its first record and the readings near the bound on the way to its violation (since the
+     * value was last above the band), seen after the
      * monitor took each record (so that {@link PredictiveMonitor#run()} already counts a record that starts a run).
      * Read with the safety monitor's own {@link SafetyRule#valueOf}, so the violation counted up to is the one it
      * reported.
@@ -135,6 +136,9 @@ public final class Replay {
                 violated.add(run);
             } else if (v < rule.below() + RunResult.APPROACH_BAND) {
                 near.merge(run, 1, Integer::sum);
+            } else {
+                // Back above the band: an earlier dip that recovered (a recharge) is no approach to a later violation.
+                near.remove(run);
             }
         }
 

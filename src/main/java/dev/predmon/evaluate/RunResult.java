@@ -34,24 +34,27 @@ import java.util.List;
  *                         ahead of one counts as warned ahead. False without a violation.
  * @param start            time of the run's first record, in {@code unit}: the report counts times from it
  * @param nearBound        readings of the safety property's value within {@link #APPROACH_BAND} points above its
- *                         bound (20 to 30 for a bound of 20), before the violation or, without one, in the whole run
+ *                         bound (20 to 30 for a bound of 20) since it was last above that band, up to the violation
+ *                         or, without one, to the end of the run
+ * @param beforeViolation  the value read just before the violation on the same channel, or null (no violation, or
+ *                         the violation was the first reading): how far the value fell in the violating reading
  * @param forecast         the run's forecasts, or null when the models carry none
  */
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                         List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
-                        double start, int nearBound, ForecastTrace forecast) {
+                        double start, int nearBound, Double beforeViolation, ForecastTrace forecast) {
 
     /** A result without forecasts. */
     public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                      Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                      Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                      List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
-                     double start, int nearBound) {
+                     double start, int nearBound, Double beforeViolation) {
         this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, batteryAtWarning,
                 violationTime, lead, noMatch, noMatchTime, records, pairs, problems, eliminations, safetyObserved, unit,
-                sudden, start, nearBound, null);
+                sudden, start, nearBound, beforeViolation, null);
     }
 
     /**

@@ -160,6 +160,9 @@ public record RunView(int number, RunResult result, String log, Integer run, Str
         if (result.sudden()) {
             n.append(n.isEmpty() ? "" : "; ").append("sudden: ").append(result.nearBound())
                     .append(result.nearBound() == 1 ? " reading" : " readings").append(" near the bound");
+            if (result.beforeViolation() != null) {
+                n.append(String.format(Locale.ROOT, ", fell from %.1f", result.beforeViolation()));
+            }
         }
         if (result.verdict() == Verdict.WARNED_LATE) {
             double late = result.warningTime() - result.violationTime();

@@ -79,10 +79,22 @@ class ReplayTest {
     }
 
     @Test
-    void aRunWithoutViolationIsNeverSuddenAndCountsItsWholeRun() throws Exception {
-        RunResult r = replay("low.log", new Records().at(1e9).level(25).at(1e9 + 1).level(22).at(1e9 + 2).level(40));
+    void aRunWithoutViolationIsNeverSuddenAndCountsItsLastApproach() throws Exception {
+        RunResult r = replay("low.log", new Records().at(1e9).level(40).at(1e9 + 1).level(25).at(1e9 + 2).level(22));
         assertEquals(2, r.nearBound());
         assertFalse(r.sudden());
         assertEquals(1e9, r.start(), 0.01, "an epoch log's run starts at its first record");
+    }
+
+    @Test
+    void aDipThatRecoveredIsNoApproachToALaterViolation() throws Exception {
+        Records r = new Records().at(0).level(60);
+        for (int i = 0; i < 2 * RunResult.SUDDEN_READINGS; i++) {
+            r.at(1 + i).level(25);
+        }
+        // Recharged to 80, then set by hand to 10: the twenty readings at 25 before the recharge do not count.
+        RunResult jump = replay("dip.log", r.at(21).level(80).at(22).level(10));
+        assertEquals(0, jump.nearBound());
+        assertTrue(jump.sudden());
     }
 }

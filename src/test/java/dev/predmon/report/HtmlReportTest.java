@@ -122,6 +122,6 @@ class HtmlReportTest {
         return new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(), r.warningTime(), r.warningLine(),
                 r.warningScenarios(), r.batteryAtWarning(), r.violationTime(), r.lead(), r.noMatch(), r.noMatchTime(),
                 r.records(), r.pairs(), r.problems(), r.eliminations(), r.safetyObserved(), r.unit(), r.sudden(),
-                r.start(), r.nearBound(), f);
+                r.start(), r.nearBound(), r.beforeViolation(), f);
     }
 }

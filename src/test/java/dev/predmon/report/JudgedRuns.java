@@ -31,7 +31,7 @@ final class JudgedRuns {
         return new RunResult(faulty ? "depleted" : "recharge", faulty, log, 0, verdict, w, w == null ? null : 4019L,
                 w == null ? List.of() : List.of("depleted"), w == null ? null : 28.7, v, lead, noMatch != null,
                 noMatch == null ? null : START + noMatch, 873, 18, 0, List.of(eliminations), true, "s",
-                v != null && nearBound < RunResult.SUDDEN_READINGS, START, nearBound);
+                v != null && nearBound < RunResult.SUDDEN_READINGS, START, nearBound, v == null ? null : 25.0);
     }
 
     /** A model eliminated at {@code time} from the start, on {@code line}. */

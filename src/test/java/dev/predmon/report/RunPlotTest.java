@@ -66,7 +66,7 @@ class RunPlotTest {
         double shift = start - JudgedRuns.START;
         RunResult moved = new RunResult(r.scenario(), true, r.log(), 0, r.verdict(), shift(r.warningTime(), shift),
                 r.warningLine(), r.warningScenarios(), r.batteryAtWarning(), shift(r.violationTime(), shift), r.lead(),
-                r.noMatch(), shift(r.noMatchTime(), shift), 1, 1, 0, List.of(), true, clock.unit(), false, start, 0);
+                r.noMatch(), shift(r.noMatchTime(), shift), 1, 1, 0, List.of(), true, clock.unit(), false, start, 0, null);
         return RunView.of(1, moved);
     }
 
