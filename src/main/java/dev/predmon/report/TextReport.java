@@ -71,7 +71,7 @@ public final class TextReport {
         long sudden = runs.stream().filter(RunResult::sudden).count();
         long warned = runs.stream().filter(r -> r.sudden() && r.verdict() == Verdict.WARNED_BEFORE_VIOLATION).count();
         return String.format(Locale.ROOT, "a violation with fewer than %d readings within %.0f points above the bound "
-                        + "before it (the value fell past that band in a few readings, so a monitor of the value alone "
+                        + "on the way to it (the value fell past that band in a few readings, so a monitor of the value alone "
                         + "has little time); %d of the %d sudden violations here were still warned ahead, from the "
                         + "behaviour", RunResult.SUDDEN_READINGS, RunResult.APPROACH_BAND, warned, sudden);
     }
