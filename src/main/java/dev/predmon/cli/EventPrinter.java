@@ -49,7 +49,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         } else {
             String text = toText(e);
             if (text != null) {
-                out.println(log == null ? text : log + ": " + text);
+                out.println(Terminal.line(log == null ? text : log + ": " + text));
             }
         }
         out.flush();

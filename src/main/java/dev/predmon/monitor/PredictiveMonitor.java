@@ -15,6 +15,7 @@ import dev.predmon.pipeline.TracePipeline;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.TreeSet;
 import java.util.function.Consumer;
@@ -65,6 +66,9 @@ public final class PredictiveMonitor implements PipelineListener {
     private final int confirm;
     /** Pairs matched since every nominal model was eliminated with a faulty one alive; -1 before. */
     private long sinceNominalGone = -1;
+    /** Runs before the last restart: the runs after it are numbered on from there. */
+    private int runsBefore;
+    private final LogTotals before = new LogTotals();
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
@@ -123,13 +127,19 @@ public final class PredictiveMonitor implements PipelineListener {
         pipeline.endOfInput();
     }
 
-    /** The log was truncated or replaced: start over as for a new log. */
+    /**
+     * The log was truncated or replaced: every model starts over as for a new log, in a new run. The runs before
+     * stay, with their warnings and violations: what {@code watch} reports at its end, and its exit code, cover
+     * every run watched since it started, whatever rotation came between them.
+     */
     public void restart(String reason) {
+        if (pipeline.records() > 0) {
+            finished.add(current());
+        }
+        before.add(pipeline);
         pipeline.reset();
-        startRun(0, 1);
-        finished.clear();
-        firstWarning = null;
-        firstViolation = null;
+        runsBefore = finished.size();
+        startRun(runsBefore, 1);
         events.accept(new MonitorEvent.Restarted(reason));
     }
 
@@ -137,8 +147,8 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         finished.add(current());
-        startRun(number, first.line());
-        events.accept(new MonitorEvent.RunStarted(number, first.time(), first.line(), first.clock()));
+        startRun(runsBefore + number, first.line());
+        events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
     }
 
     /**
@@ -289,6 +299,21 @@ public final class PredictiveMonitor implements PipelineListener {
         }
     }
 
+    /** Records of the log since the start, across truncations and replacements. */
+    public long records() {
+        return before.records(pipeline);
+    }
+
+    /** Records of the skill-component interface since the start, mapped or not. */
+    public long interfaceRecords() {
+        return before.interfaceRecords(pipeline);
+    }
+
+    /** Interface messages no rule maps since the start, by key, sorted. */
+    public Map<String, Long> unmapped() {
+        return before.unmapped(pipeline);
+    }
+
     /**
      * Also tells {@code each} every forecast with its run, one per pair, before the events of that pair (for scoring;
      * {@link MonitorEvent.ForecastChanged} tells only the changes that matter).
@@ -328,7 +353,7 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
-     * Whether, in some run since the last restart, a point came where no model, nominal or faulty, matched it any
+     * Whether, in some run since the start, a point came where no model, nominal or faulty, matched it any
      * more.
      */
     public boolean noMatch() {

@@ -16,12 +16,13 @@ import java.util.Map;
  * @param log              the file
  * @param pairs            the compacted trace, every run's pairs in log order
  * @param problems         what the parser reported (first {@link Traces#MAX_PROBLEMS} only)
+ * @param lines            lines read
  * @param records          records parsed
  * @param interfaceRecords records of the skill-component interface
  * @param unmapped         interface messages no rule maps, by key
  * @param runs             the runs the log holds (one, unless the robot ran several missions in it)
  */
-public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems, long records,
+public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems, long lines, long records,
                        long interfaceRecords, Map<String, Long> unmapped, List<Run> runs) {
 
     /**

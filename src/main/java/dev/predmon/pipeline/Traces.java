@@ -9,8 +9,6 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -44,13 +42,14 @@ public final class Traces {
         List<ParseProblem> problems = new ArrayList<>();
         RunCollector runs = new RunCollector(abstraction, pairs);
         TracePipeline pipeline = new TracePipeline(abstraction, runs);
+        long[] lines = {0};
         LogReader.read(log, pipeline::accept, p -> {
             if (problems.size() < MAX_PROBLEMS) {
                 problems.add(p);
             }
-        });
+        }, n -> lines[0] = n);
         pipeline.endOfInput();
-        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), pipeline.records(),
+        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), lines[0], pipeline.records(),
                 pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs());
     }
 
@@ -252,31 +251,6 @@ public final class Traces {
             finish();
             return List.copyOf(done);
         }
-    }
-
-    /**
-     * The lines of {@code log}, counted as the parser counts them (a last line without a newline is a line). Only
-     * asked for when a log gave no record, to say how much was read.
-     */
-    public static long countLines(Path log) {
-        long lines = 0;
-        int last = '\n';
-        try (InputStream in = Files.newInputStream(log)) {
-            byte[] buffer = new byte[64 * 1024];
-            for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
-                for (int i = 0; i < n; i++) {
-                    if (buffer[i] == '\n') {
-                        lines++;
-                    }
-                }
-                if (n > 0) {
-                    last = buffer[n - 1];
-                }
-            }
-        } catch (IOException e) {
-            return lines; // it was read a moment ago; what could be counted is the best answer
-        }
-        return last == '\n' ? lines : lines + 1;
     }
 
     /** Convenience for tests and tools: runs records already in memory through the pipeline. */
