@@ -1,15 +1,12 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.evaluate.Confusion;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.Evaluator;
-import dev.predmon.evaluate.HtmlReport;
-import dev.predmon.evaluate.RunResult;
-import dev.predmon.evaluate.ScenarioSummary;
-import dev.predmon.evaluate.Stats;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.report.HtmlReport;
+import dev.predmon.report.TextReport;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -21,9 +18,7 @@ import picocli.CommandLine.Spec;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.stream.Collectors;
 
 /** {@code predmon evaluate}: how often the monitor warns, how early, and how often wrongly. */
 @Command(name = "evaluate", mixinStandardHelpOptions = true,
@@ -100,7 +95,7 @@ final class EvaluateCommand implements Callable<Integer> {
         if (json) {
             out.println(toJson(e));
         } else {
-            printTables(out, e);
+            TextReport.print(out, e);
         }
         if (report != null) {
             HtmlReport.write(e, abstraction, report);
@@ -113,57 +108,5 @@ final class EvaluateCommand implements Callable<Integer> {
 
     static String toJson(Evaluation e) {
         return Json.document(e);
-    }
-
-    private static void printTables(PrintWriter out, Evaluation e) {
-        out.println(e.mode().equals("cross-validation")
-                ? e.folds() + "-fold cross-validation, threshold " + e.threshold() + ", abstraction '" + e.abstraction() + "'"
-                : "learned on --logs, judged --test, threshold " + e.threshold() + ", abstraction '" + e.abstraction() + "'");
-        out.println();
-        String head = "%-14s %-8s %5s %6s %5s %6s %6s %5s %6s %8s %6s  %-34s %-28s%n";
-        out.printf(Locale.ROOT, head, "scenario", "kind", "runs", "warned", "hits", "false", "missed", "late",
-                "no-vio", "no-match", "sudden", "lead: median [min..max]", "battery@warning: median [min..max]");
-        for (ScenarioSummary s : e.scenarios()) {
-            out.printf(Locale.ROOT, head, s.scenario(), s.faulty() ? "faulty" : "nominal", s.runs(), s.warned(),
-                    s.hits(), s.falseAlarms(), s.missed(), s.late(), s.noViolation(), s.noMatch(), s.sudden(),
-                    s.lead().n() == 0 ? "-" : stats(s.lead()) + " " + s.leadUnit(), stats(s.batteryAtWarning()));
-        }
-        out.println();
-        out.println("sudden: runs whose violation came in one reading from more than " + RunResult.SUDDEN_MARGIN
-                + " points above the threshold (the violation is the jump itself: no monitor can see it coming)");
-        Confusion c = e.confusion();
-        out.println();
-        out.printf(Locale.ROOT, "confusion (actual x predicted): faulty&warned-in-time %d, faulty&missed %d, "
-                        + "nominal&warned %d, nominal&quiet %d; faulty without violation (unscored) %d%n",
-                c.truePositives(), c.falseNegatives(), c.falsePositives(), c.trueNegatives(), c.unscored());
-        out.printf(Locale.ROOT, "recall %s, false-alarm rate %s (warning rule: %s)%n", percent(c.recall()),
-                percent(c.falseAlarmRate()), e.rule());
-        ForecastTables.print(out, e);
-        out.println();
-        out.println();
-        out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s %6s %6s  %s%n", "scenario", "log", "fold",
-                "verdict", "warning", "violation", "lead", "unit", "P@warn", "P-peak", "eliminated (model@line)");
-        for (RunResult r : e.runs()) {
-            String elim = r.eliminations().stream().map(x -> x.model() + "@" + x.line()).collect(Collectors.joining(" "));
-            out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s %6s %6s  %s%s%s%n", r.scenario(),
-                    Path.of(r.log()).getFileName(), r.fold() < 0 ? "-" : Integer.toString(r.fold()), r.verdict().id(),
-                    num(r.warningTime()), num(r.violationTime()), num(r.lead()), r.unit(),
-                    r.forecast() == null || r.forecast().atWarning() == null ? "-"
-                            : num(r.forecast().atWarning().probability()),
-                    r.forecast() == null ? "-" : num(r.forecast().peak()), elim,
-                    r.noMatch() ? " [no-match]" : "", r.sudden() ? " [sudden violation]" : "");
-        }
-    }
-
-    private static String stats(Stats s) {
-        return s.n() == 0 ? "-" : String.format(Locale.ROOT, "%.1f [%.1f..%.1f]", s.median(), s.min(), s.max());
-    }
-
-    private static String num(Double d) {
-        return d == null ? "-" : String.format(Locale.ROOT, "%.2f", d);
-    }
-
-    private static String percent(Double d) {
-        return d == null ? "-" : String.format(Locale.ROOT, "%.1f%%", d * 100);
     }
 }

@@ -1,7 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.evaluate.Explanation;
+import dev.predmon.explain.Explanation;
 import dev.predmon.model.ModelSet;
 import dev.predmon.pipeline.LogTrace;
 import picocli.CommandLine.Command;

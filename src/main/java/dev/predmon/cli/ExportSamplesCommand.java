@@ -1,11 +1,11 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.evaluate.SampleFile;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.samples.SampleFile;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;

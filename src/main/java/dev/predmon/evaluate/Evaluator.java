@@ -22,9 +22,11 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 
 /**
  * Measures how the predictive monitor would do on a user's own runs: models are learned in memory exactly as
@@ -41,7 +43,7 @@ public final class Evaluator {
     private final int threshold;
     private final int confirm;
     /** Training traces read again with a learned hysteresis, by that hysteresis. */
-    private final Map<Map<String, Double>, Map<Path, LogTrace>> retuned = new java.util.HashMap<>();
+    private final Map<Map<String, Double>, Map<Path, LogTrace>> retuned = new HashMap<>();
     private final Progress progress;
     private final Alphabet<String> alphabet;
     private WarningRule rule;
@@ -158,7 +160,7 @@ public final class Evaluator {
      * hysteresis that absorbs it (cached by hysteresis, since folds mostly agree).
      */
     private ModelSet learn(List<ScenarioSpec> specs, Map<Path, LogTrace> samples,
-                           java.util.function.Predicate<Path> training, List<String> notes, String prefix)
+                           Predicate<Path> training, List<String> notes, String prefix)
             throws BadInputException {
         List<ScenarioSpec> train = specs.stream().map(s -> new ScenarioSpec(s.name(), s.faulty(), s.description(),
                 s.logs().stream().filter(training).filter(samples::containsKey).toList(), s.runs())).toList();

@@ -1,13 +1,15 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.WarningRule;
-import dev.predmon.forecast.Forecast;
+import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 
@@ -16,9 +18,9 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.List;
 
 /**
  * Judges one log exactly as {@code watch --no-follow} would: the {@link LogWatcher} reads the file through the
@@ -28,12 +30,6 @@ import java.util.List;
 public final class Replay {
 
     private Replay() {
-    }
-
-    /** Whether the reading before the violation was more than {@link RunResult#SUDDEN_MARGIN} above the threshold. */
-    private static boolean sudden(MonitorEvent.Violation v, Abstraction abstraction) {
-        return v.before() != null && abstraction.safety()
-                .map(rule -> v.before() > rule.below() + RunResult.SUDDEN_MARGIN).orElse(false);
     }
 
     /**
@@ -65,7 +61,8 @@ public final class Replay {
                 violated.add(run);
             }
         });
-        try (LogWatcher watcher = new LogWatcher(log, monitor, p -> problems[0]++)) {
+        Approach approach = new Approach(abstraction.safety().orElse(null), monitor);
+        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> problems[0]++, approach::record)) {
             watcher.drain();
         }
         List<RunOutcome> runs = monitor.runs();
@@ -96,12 +93,61 @@ public final class Replay {
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
                     runs.size() == 1 ? monitor.pipeline().records() : -1, o.pairs(), problems[0],
                     List.copyOf(eliminations), o.safetyObserved(), monitor.clock().unit(),
-                    violation != null && sudden(violation, abstraction),
+                    violation != null && approach.near(o.run()) < RunResult.SUDDEN_READINGS, approach.start(o.run()),
+                    approach.near(o.run()), violation == null ? null : violation.before(),
                     models.forecast() == null ? null : new RunResult.ForecastTrace(
                             List.copyOf(probabilities.getOrDefault(o.run(), List.of())), o.forecast(),
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold())));
         }
         return results;
+    }
+
+    /**
+     * Per run, the time of its first record and the readings near the bound on the way to its violation (since the
+     * value was last above the band), seen after the
+     * monitor took each record (so that {@link PredictiveMonitor#run()} already counts a record that starts a run).
+     * Read with the safety monitor's own {@link SafetyRule#valueOf}, so the violation counted up to is the one it
+     * reported.
+     */
+    private static final class Approach {
+        private final SafetyRule rule;
+        private final PredictiveMonitor monitor;
+        private final Map<Integer, Double> start = new HashMap<>();
+        private final Map<Integer, Integer> near = new HashMap<>();
+        private final Set<Integer> violated = new HashSet<>();
+
+        Approach(SafetyRule rule, PredictiveMonitor monitor) {
+            this.rule = rule;
+            this.monitor = monitor;
+        }
+
+        void record(LogRecord r) {
+            int run = monitor.run();
+            start.putIfAbsent(run, r.time());
+            if (rule == null || violated.contains(run)) {
+                return;
+            }
+            double v = rule.valueOf(r);
+            if (Double.isNaN(v)) {
+                return;
+            }
+            if (rule.violatedBy(v)) {
+                violated.add(run);
+            } else if (v < rule.below() + RunResult.APPROACH_BAND) {
+                near.merge(run, 1, Integer::sum);
+            } else {
+                // Back above the band: an earlier dip that recovered (a recharge) is no approach to a later violation.
+                near.remove(run);
+            }
+        }
+
+        double start(int run) {
+            return start.getOrDefault(run, 0.0);
+        }
+
+        int near(int run) {
+            return near.getOrDefault(run, 0);
+        }
     }
 }

@@ -27,25 +27,34 @@ import java.util.List;
  * @param safetyObserved   whether the log had a value for the safety property at all (without one, "held" would
  *                         be a verdict on no evidence)
  * @param unit             what the times and the lead count: {@code s}, or {@code ticks} in a log without time stamps
- * @param sudden           whether the violation came in one reading from more than {@link #SUDDEN_MARGIN} points above
- *                         the threshold (the battery set by hand from 65% to 10%, say): the violation is the jump itself,
- *                         and no monitor that reads the battery can see it coming. False without a violation.
+ * @param sudden           whether the violation was sudden: fewer than {@link #SUDDEN_READINGS} readings lay within
+ *                         {@link #APPROACH_BAND} points above the bound before it ({@code nearBound}), so the value
+ *                         went from comfortable to violated in a few readings (the battery set by hand from 65% to
+ *                         10%, say). A sudden violation can still be foreseen from the behaviour, and a run warned
+ *                         ahead of one counts as warned ahead. False without a violation.
+ * @param start            time of the run's first record, in {@code unit}: the report counts times from it
+ * @param nearBound        readings of the safety property's value within {@link #APPROACH_BAND} points above its
+ *                         bound (20 to 30 for a bound of 20) since it was last above that band, up to the violation
+ *                         or, without one, to the end of the run
+ * @param beforeViolation  the value read just before the violation on the same channel, or null (no violation, or
+ *                         the violation was the first reading): how far the value fell in the violating reading
  * @param forecast         the run's forecasts, or null when the models carry none
  */
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                         List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
-                        ForecastTrace forecast) {
+                        double start, int nearBound, Double beforeViolation, ForecastTrace forecast) {
 
     /** A result without forecasts. */
     public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                      Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                      Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
-                     List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden) {
+                     List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
+                     double start, int nearBound, Double beforeViolation) {
         this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, batteryAtWarning,
                 violationTime, lead, noMatch, noMatchTime, records, pairs, problems, eliminations, safetyObserved, unit,
-                sudden, null);
+                sudden, start, nearBound, beforeViolation, null);
     }
 
     /**
@@ -67,10 +76,21 @@ public record RunResult(String scenario, boolean faulty, String log, int fold, V
     }
 
     /**
-     * How far above the safety threshold the reading before a violation may be for the violation to count as
-     * approached rather than sudden, in the property's unit (percentage points): one battery band of Section 5.2.
+     * How far above the bound a reading is near it, in the property's unit (percentage points): a violation
+     * approached through this band gives the readings a monitor of the value needs to see it coming.
      */
-    public static final double SUDDEN_MARGIN = 5.0;
+    public static final double APPROACH_BAND = 10.0;
+
+    /**
+     * Readings near the bound ({@link #APPROACH_BAND}) below which a violation counts as sudden: ten readings are
+     * ten ticks of the robot's tree, or a few seconds of a battery polled at 2-3 Hz.
+     */
+    public static final int SUDDEN_READINGS = 10;
+
+    /** {@code time} (a log time, such as the warning's) counted from the start of the run, or null. */
+    public Double sinceStart(Double time) {
+        return time == null ? null : time - start;
+    }
 
     /**
      * A model stopped matching.

@@ -19,7 +19,7 @@ import java.util.TreeSet;
  * @param noMatch            runs where at some point no model matched (unknown behaviour)
  * @param lead               lead of the hits, in {@code leadUnit}
  * @param batteryAtWarning   battery level at the warning, over the hits
- * @param sudden             runs whose violation was sudden ({@link RunResult#sudden()}): the jump itself
+ * @param sudden             runs whose violation was sudden ({@link RunResult#sudden()}): few readings near the bound
  * @param suddenHits         of {@code hits}, those with a sudden violation
  * @param leadUnit           what the lead counts ({@code s} or {@code ticks}; {@code s, ticks} when runs differ)
  */

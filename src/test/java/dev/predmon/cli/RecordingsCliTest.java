@@ -101,7 +101,8 @@ class RecordingsCliTest {
         for (JsonNode run : e.get("runs")) {
             assertEquals("ticks", run.get("unit").asText());
             assertTrue(run.get("forecast").get("probabilities").size() > 0, "every run has a forecast: " + run);
-            if (run.get("faulty").asBoolean() && !run.get("sudden").asBoolean()) {
+            JsonNode before = run.get("beforeViolation");
+            if (run.get("faulty").asBoolean() && before.isNumber() && before.asDouble() <= 25) {
                 // A violation the battery approached (no jump straight past 25%) is one a predictive monitor is for.
                 approached++;
                 hits += run.get("verdict").asText().equals("warned-before-violation") ? 1 : 0;

@@ -1,7 +1,9 @@
-package dev.predmon.evaluate;
+package dev.predmon.explain;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
+import dev.predmon.evaluate.Replay;
+import dev.predmon.evaluate.RunResult;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.ModelTracker;

@@ -1,10 +1,8 @@
-package dev.predmon.evaluate;
+package dev.predmon.explain;
 
-import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
-import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
 import dev.predmon.mealy.MealyTrace;
@@ -24,6 +22,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+/** What {@code explain} says of a run: which model stopped matching where, and the symbols it expected and saw. */
 class ExplanationTest {
 
     @TempDir
@@ -62,32 +61,5 @@ class ExplanationTest {
         ScenarioSpec spec = new ScenarioSpec(name, faulty, "", List.of(log));
         MealyTrace t = Traces.read(log, a).mealy();
         return ScenarioLearner.learnSamples(spec, List.of(t), ModelStore.alphabetOf(a));
-    }
-
-    @Test
-    void exportedSamplesParseBackToTheWordsLearnUses() throws Exception {
-        Path logs = SimulatedSets.write(dir.resolve("logs"), 2, 1);
-        Abstraction a = Abstraction.defaults();
-        for (ScenarioSpec s : ScenarioLayout.scan(logs, a)) {
-            LearnedScenario l = ScenarioLearner.learn(s, a);
-            Path file = dir.resolve(s.name() + ".txt");
-            Files.writeString(file, SampleFile.text(l));
-            List<MealyTrace> back = SampleFile.read(file);
-            List<MealyTrace> learned = LearnedModels.samples(l);
-            assertEquals(learned.size(), back.size());
-            for (int i = 0; i < back.size(); i++) {
-                assertEquals(learned.get(i).inputs(), back.get(i).inputs());
-                assertEquals(learned.get(i).outputs(), back.get(i).outputs());
-            }
-        }
-    }
-
-    @Test
-    void aBrokenSampleLineIsReportedWithItsLine() throws Exception {
-        Path f = dir.resolve("bad.txt");
-        Files.writeString(f, "# c\na/OK b\n");
-        BadInputException e = org.junit.jupiter.api.Assertions.assertThrows(BadInputException.class,
-                () -> SampleFile.read(f));
-        assertTrue(e.getMessage().contains(":2:"), e.getMessage());
     }
 }

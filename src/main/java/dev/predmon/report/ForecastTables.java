@@ -1,4 +1,4 @@
-package dev.predmon.cli;
+package dev.predmon.report;
 
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.ForecastScore;

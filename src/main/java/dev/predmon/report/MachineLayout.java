@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import org.eclipse.elk.alg.layered.LayeredLayoutProvider;
 import org.eclipse.elk.alg.layered.options.CycleBreakingStrategy;
@@ -48,6 +48,8 @@ public record MachineLayout(double width, double height, List<State> states, Lis
     public static final double STATE = 34;
     private static final FontRenderContext FRC = new FontRenderContext(null, true, true);
     private static final double PAD = 3;
+    /** The width of the report's column for a drawing at its widest, in CSS pixels (the page's 1400 less margins). */
+    static final double PAGE_WIDTH = 1330;
 
     static {
         // ELK's one-time set-up: the service's constructor registers how ELK copies option values (ElkReflect),
@@ -108,10 +110,23 @@ public record MachineLayout(double width, double height, List<State> states, Lis
     public record Text(String text, Box box, double baseline, boolean label) {
     }
 
-    /** The layout of {@code g}. */
+    /**
+     * The layout of {@code g}: layers from left to right, as the thesis draws its machines, unless that is wider
+     * than {@link #PAGE_WIDTH} and layers from top to bottom fit it. A machine whose long labels sit between many
+     * layers then grows down the page, which a reader scrolls anyway, instead of past its right edge.
+     */
     public static MachineLayout of(MachineGraph g) {
+        MachineLayout across = of(g, Direction.RIGHT);
+        if (across.width() <= PAGE_WIDTH) {
+            return across;
+        }
+        MachineLayout down = of(g, Direction.DOWN);
+        return down.width() <= PAGE_WIDTH ? down : across;
+    }
+
+    private static MachineLayout of(MachineGraph g, Direction direction) {
         ElkNode root = ElkGraphUtil.createGraph();
-        root.setProperty(LayeredOptions.DIRECTION, Direction.RIGHT);
+        root.setProperty(LayeredOptions.DIRECTION, direction);
         root.setProperty(LayeredOptions.EDGE_ROUTING, EdgeRouting.SPLINES);
         // Conservative splines go around label blocks; ELK's default (sloppy) cut through a self-loop's labels.
         root.setProperty(LayeredOptions.EDGE_ROUTING_SPLINES_MODE, SplineRoutingMode.CONSERVATIVE);
@@ -146,9 +161,9 @@ public record MachineLayout(double width, double height, List<State> states, Lis
         List<ElkEdge> edges = new ArrayList<>();
         for (MachineGraph.Edge e : g.edges()) {
             ElkEdge edge = ElkGraphUtil.createSimpleEdge(nodes.get(e.source()), nodes.get(e.target()));
-            ElkLabel label = ElkGraphUtil.createLabel(String.join("\n", e.labels()), edge);
-            label.setDimensions(e.labels().stream().mapToDouble(MachineLayout::width).max().orElse(0) + 2 * PAD,
-                    e.labels().size() * lineHeight());
+            ElkLabel label = ElkGraphUtil.createLabel(String.join("\n", e.drawn()), edge);
+            label.setDimensions(e.drawn().stream().mapToDouble(MachineLayout::width).max().orElse(0) + 2 * PAD,
+                    e.drawn().size() * lineHeight());
             label.setProperty(LayeredOptions.EDGE_LABELS_PLACEMENT, EdgeLabelPlacement.CENTER);
             edges.add(edge);
         }
@@ -169,7 +184,7 @@ public record MachineLayout(double width, double height, List<State> states, Lis
             lines.add(new Line(e.source(), e.target(), points(edge)));
             ElkLabel label = edge.getLabels().get(0);
             double y = label.getY();
-            for (String text : e.labels()) {
+            for (String text : e.drawn()) {
                 texts.add(centred(text, label.getX() + label.getWidth() / 2, y + lineHeight() / 2, true));
                 y += lineHeight();
             }
@@ -177,7 +192,21 @@ public record MachineLayout(double width, double height, List<State> states, Lis
         if (start != null) {
             lines.add(new Line(-1, g.initial(), points(start)));
         }
-        return new MachineLayout(root.getWidth(), root.getHeight(), states, lines, texts);
+        // ELK sizes the graph by its nodes and edges; a self-loop's label can stick out past that, and would be cut off
+        // at the edge of the drawing. The drawing is as large as everything drawn in it.
+        double width = root.getWidth();
+        double height = root.getHeight();
+        for (Text t : texts) {
+            width = Math.max(width, t.box().x() + t.box().w() + PAD);
+            height = Math.max(height, t.box().y() + t.box().h() + PAD);
+        }
+        for (Line l : lines) {
+            for (double[] p : l.points()) {
+                width = Math.max(width, p[0] + PAD);
+                height = Math.max(height, p[1] + PAD);
+            }
+        }
+        return new MachineLayout(width, height, states, lines, texts);
     }
 
     /**

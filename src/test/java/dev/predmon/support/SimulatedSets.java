@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.support;
 
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
@@ -10,13 +10,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 /** Writes small simulated log directories in the {@code learn} layout. */
-final class SimulatedSets {
+public final class SimulatedSets {
 
     private SimulatedSets() {
     }
 
     /** {@code runs} runs of each scenario, seeds {@code firstSeed..}, under {@code dir}. */
-    static Path write(Path dir, int runs, long firstSeed) throws IOException {
+    public static Path write(Path dir, int runs, long firstSeed) throws IOException {
         for (Scenario s : Scenario.values()) {
             Path d = Files.createDirectories(dir.resolve(s.id()));
             Files.writeString(d.resolve("scenario.json"),

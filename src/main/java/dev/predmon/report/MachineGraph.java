@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.model.LearnedModel;
@@ -41,6 +41,20 @@ public record MachineGraph(int initial, int states, List<Integer> nodes, List<Ed
      * @param labels one {@code input / output} per transition ({@code input} alone when the output is OK)
      */
     public record Edge(int source, int target, List<String> labels) {
+
+        /** Whether the edge is a self-loop of more than one transition, drawn with one line that counts them. */
+        public boolean counted() {
+            return source == target && labels.size() > 1;
+        }
+
+        /**
+         * The lines written beside the edge: its transitions, or for a counted self-loop one line. A state that a
+         * dozen inputs leave unchanged would otherwise carry a dozen stacked lines, taller than the rest of the
+         * machine; the report lists them under the drawing instead.
+         */
+        public List<String> drawn() {
+            return counted() ? List.of(labels.size() + " self-loops, listed below") : labels;
+        }
     }
 
     /** The machine with waiting states folded into their query's edge. */

@@ -1,29 +1,28 @@
-package dev.predmon.evaluate;
+package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.compact.IoPair;
-import dev.predmon.parse.Clock;
-import dev.predmon.pipeline.PipelineListener;
-import dev.predmon.pipeline.TracePipeline;
-
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.compact.IoPair;
+import dev.predmon.evaluate.RunResult;
+import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.PipelineListener;
+import dev.predmon.pipeline.TracePipeline;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 
 /**
  * The values a run's safety property watches (the battery level) over time, for plotting. Read with the same
  * parser and the same {@link SafetyRule#valueOf} as the built-in safety monitor, so the plotted violation is
  * the one the monitor reported.
  *
- * <p>Times are the log's own, and {@link #start} is the time of its first record, whatever it is: plots count
- * from there ({@link #sinceStart}), since a log with epoch times would otherwise put {@code 1,646,377,250} on
- * the axis. {@link #clock} says what a time unit is, so that a log whose clock is the tree's tick number is
+ * <p>Times are the log's own, and {@link #start} is the time of the run's first record, whatever it is: plots
+ * count from there ({@link #sinceStart}), since a log with epoch times would otherwise put {@code 1,646,377,250}
+ * on the axis. {@link #clock} says what a time unit is, so that a log whose clock is the tree's tick number is
  * labelled in ticks.
  *
  * @param start  time of the log's first record, in {@code clock} units
@@ -32,17 +31,6 @@ import java.util.Locale;
  * @param clock  what the times count
  */
 public record Timeline(double start, double[] times, double[] values, Clock clock) {
-
-    /** The time axis's label: {@code time (s from start)}, {@code time (ticks from start)}. */
-    public static String axisLabel(Clock clock) {
-        return "time (" + clock.unit() + " from start)";
-    }
-
-    /** A duration in this clock, for text: {@code 3.9 s}, {@code 12 ticks}. */
-    public static String amount(Clock clock, double d) {
-        return clock == Clock.TICKS ? String.format(Locale.ROOT, "%.0f ticks", d)
-                : String.format(Locale.ROOT, "%.1f s", d);
-    }
 
     /**
      * The timeline of one run as {@link RunResult#log()} names it ({@code file}, or {@code file#k} for run k of a log
@@ -85,28 +73,6 @@ public record Timeline(double start, double[] times, double[] values, Clock cloc
         LogReader.read(log, pipeline[0]::accept, p -> {
         });
         return thinned(points, first[0], maxPoints, clock[0]);
-    }
-
-    /** The timeline of {@code log} in seconds; see {@link #read(Path, SafetyRule, int, Clock)}. */
-    public static Timeline read(Path log, SafetyRule rule, int maxPoints) throws IOException {
-        return read(log, rule, maxPoints, Clock.SECONDS);
-    }
-
-    /** The timeline of {@code log}, thinned to at most {@code maxPoints} points (every n-th value kept). */
-    public static Timeline read(Path log, SafetyRule rule, int maxPoints, Clock clock) throws IOException {
-        List<double[]> points = new ArrayList<>();
-        double[] first = {Double.NaN};
-        LogReader.read(log, r -> {
-            if (Double.isNaN(first[0])) {
-                first[0] = r.time();
-            }
-            double v = rule.valueOf(r);
-            if (!Double.isNaN(v)) {
-                points.add(new double[] {r.time(), v});
-            }
-        }, p -> {
-        });
-        return thinned(points, first[0], maxPoints, clock);
     }
 
     /** The points thinned to at most {@code maxPoints} (every n-th kept). */

@@ -1,4 +1,4 @@
-package dev.predmon.evaluate;
+package dev.predmon.samples;
 
 import dev.predmon.BadInputException;
 import dev.predmon.learn.LearnedScenario;

@@ -1,0 +1,127 @@
+package dev.predmon.report;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.evaluate.Evaluation;
+import dev.predmon.evaluate.Evaluator;
+import dev.predmon.evaluate.Progress;
+import dev.predmon.evaluate.RunResult;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.learn.ScenarioLayout;
+import dev.predmon.support.SimulatedSets;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The report page as text: self-contained, one plot and one table row per run linked both ways, its style sheet
+ * and drawing definitions once, and under a megabyte for a hundred runs.
+ */
+class HtmlReportTest {
+
+    @TempDir
+    static Path dir;
+    /** 102 runs: 34 of each simulated scenario. */
+    static Evaluation hundred;
+    static String html;
+
+    @BeforeAll
+    static void evaluate() throws Exception {
+        Path logs = SimulatedSets.write(dir.resolve("logs"), 34, 1);
+        hundred = new Evaluator(Abstraction.defaults(), 0, Progress.NONE)
+                .crossValidate(ScenarioLayout.scan(logs, Abstraction.defaults()), 5);
+        html = HtmlReport.html(hundred, Abstraction.defaults());
+    }
+
+    private static List<String> all(String regex, String text) {
+        List<String> found = new ArrayList<>();
+        Matcher m = Pattern.compile(regex).matcher(text);
+        while (m.find()) {
+            found.add(m.groupCount() > 0 ? m.group(1) : m.group());
+        }
+        return found;
+    }
+
+    @Test
+    void aHundredRunsTakeLessThanAMegabyte() {
+        assertTrue(hundred.runs().size() >= 100, hundred.runs().size() + " runs");
+        int bytes = html.getBytes(StandardCharsets.UTF_8).length;
+        assertTrue(bytes < 1_000_000, bytes + " bytes for " + hundred.runs().size() + " runs");
+    }
+
+    @Test
+    void theReportIsSelfContained() {
+        assertFalse(Pattern.compile("(src|href)\\s*=\\s*[\"']?https?:", Pattern.CASE_INSENSITIVE).matcher(html).find());
+        assertFalse(html.contains("<script"));
+        assertFalse(html.contains("<link"));
+        assertTrue(html.contains("Confusion matrix"));
+        assertTrue(html.contains("Learned models"));
+    }
+
+    @Test
+    void stylesAndDefinitionsAreOnThePageOnceNotInEveryDrawing() {
+        assertEquals(1, all("<style>", html).size());
+        assertEquals(1, all("<marker ", html).size(), "one arrowhead for every machine");
+        assertEquals(1, all("<defs>", html).size());
+        assertEquals(List.of(), all("<svg[^>]* style=\"[^\"]*\"", html), "no drawing styles itself");
+        assertFalse(html.contains("stroke=\"") || html.contains("fill=\"#") || html.contains("font-size=\""),
+                "colours and fonts are the style sheet's");
+    }
+
+    @Test
+    void everyRunHasARowAndAPlotThatLinkToEachOther() {
+        List<String> rows = all("<tr id=(row-\\d+)", html);
+        List<String> plots = all("<section class=run id=(run-\\d+)", html);
+        assertEquals(hundred.runs().size(), rows.size());
+        assertEquals(hundred.runs().size(), plots.size());
+        Set<String> ids = new HashSet<>(rows);
+        ids.addAll(plots);
+        assertEquals(rows.size() + plots.size(), ids.size(), "ids are unique");
+        for (String link : all("href=#?\"?#((?:row|run)-\\d+)", html)) {
+            assertTrue(ids.contains(link), "a link to nowhere: #" + link);
+        }
+        assertEquals(hundred.runs().size(), all("<svg class=\"plot\"", html).size(), "one plot per run");
+    }
+
+    @Test
+    void theSuddenNoteSaysWhatTheDataShow() {
+        long sudden = hundred.runs().stream().filter(RunResult::sudden).count();
+        String note = TextReport.sudden(hundred.runs());
+        assertTrue(note.startsWith("a violation with fewer than 10 readings within 10 points above the bound"), note);
+        assertTrue(note.contains(" of the " + sudden + " sudden violations here were still warned ahead"), note);
+        assertTrue(html.contains(Svg.esc(note)));
+        assertFalse(html.contains("no monitor can see"), "a sudden violation the models warned of was foreseen");
+    }
+
+    @Test
+    void theForecastColumnShowsAForecastWhereTheRunHasOne() {
+        RunResult r = JudgedRuns.oneOfEach().get(0);
+        RunResult warned = withForecast(r, new RunResult.ForecastTrace(List.of(0.3, 0.82), null,
+                new Forecast(0.82, 12.5, 8.0, 20.0, Forecast.Basis.MATCHED, null, 12, 10, 28.7, -0.8, "s"), 0.3, 0.6));
+        RunResult quiet = withForecast(JudgedRuns.oneOfEach().get(5),
+                new RunResult.ForecastTrace(List.of(0.1, 0.4, 0.2), null, null, 0.3, 0.6));
+        StringBuilder h = new StringBuilder();
+        RunTable.html(h, List.of(RunView.of(1, r), RunView.of(2, warned), RunView.of(3, quiet)), 0);
+        List<String> cells = all("<td class=forecast>([^<]*)</td>", h.toString());
+        assertEquals(List.of(RunView.NONE, "82%, in 12.5 s", "max 40%"), cells);
+    }
+
+    private static RunResult withForecast(RunResult r, RunResult.ForecastTrace f) {
+        return new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(), r.warningTime(), r.warningLine(),
+                r.warningScenarios(), r.batteryAtWarning(), r.violationTime(), r.lead(), r.noMatch(), r.noMatchTime(),
+                r.records(), r.pairs(), r.problems(), r.eliminations(), r.safetyObserved(), r.unit(), r.sudden(),
+                r.start(), r.nearBound(), r.beforeViolation(), f);
+    }
+}
