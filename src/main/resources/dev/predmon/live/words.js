@@ -95,8 +95,9 @@ export function verdict(t) {
       return 'VIOLATED since ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
         + (t.warning ? ', predicted ' + span(t.lead, t.unit) + ' ahead' : ', not predicted');
     case 'warning':
-      return 'WARNING: a violation is predicted' + (t.warning.scenarios.length
-        ? ' (the run can only be faulty scenario ' + t.warning.scenarios.join(', ') + ')' : '');
+      // a forecast-rule warning names the faulty scenarios still matching, not a run that can only be faulty
+      return 'WARNING: a violation is predicted' + (t.warning.rule === 'match' && t.warning.scenarios.length
+        ? ' (the run can only be faulty scenario ' + t.warning.scenarios.join(', ') + ')' : ' by the forecast');
     case 'unknown':
       return 'UNKNOWN: ' + unknownWhy(t);
     case 'ok':
