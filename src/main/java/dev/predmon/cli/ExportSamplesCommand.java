@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.files.AtomicFiles;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioLearner;
@@ -14,7 +15,6 @@ import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -64,7 +64,7 @@ final class ExportSamplesCommand implements Callable<Integer> {
             Files.createDirectories(out);
             for (LearnedScenario l : learned) {
                 Path file = out.resolve(l.spec().name() + ".txt");
-                Files.writeString(file, SampleFile.text(l), StandardCharsets.UTF_8);
+                AtomicFiles.replace(file, SampleFile.text(l));
                 written.add(file);
                 int n = l.machines().stream().mapToInt(m -> m.samples().size()).sum();
                 o.println("wrote " + file + ": " + n + " trace(s)");

@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
+import dev.predmon.files.AtomicFiles;
 import dev.predmon.simulate.Day;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.RealtimeWriter;
@@ -21,6 +22,7 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -209,9 +211,7 @@ public final class SimulateCommand implements Callable<Integer> {
                 continue;
             }
             SimRun run = Simulator.run(s, k, options);
-            try (Writer w = Files.newBufferedWriter(log, StandardCharsets.UTF_8)) {
-                LogWriter.write(run, options, w);
-            }
+            AtomicFiles.replace(log, w -> LogWriter.write(run, options, w));
             if (truths) {
                 TruthWriter.writeTruth(run.truth(), TruthWriter.sidecarOf(log));
             }
@@ -234,13 +234,15 @@ public final class SimulateCommand implements Callable<Integer> {
 
     private static void writeDayLog(List<SimRun> day, SimOptions options, Path log) throws IOException {
         StringBuilder truths = new StringBuilder("[");
-        try (Writer w = Files.newBufferedWriter(log, StandardCharsets.UTF_8)) {
+        AtomicFiles.replace(log, w -> {
             for (SimRun run : day) {
                 LogWriter.write(run, options, w);
-                truths.append(truths.length() > 1 ? ",\n" : "\n").append(TruthWriter.toJson(run.truth()));
             }
+        });
+        for (SimRun run : day) {
+            truths.append(truths.length() > 1 ? ",\n" : "\n").append(TruthWriter.toJson(run.truth()));
         }
-        Files.writeString(TruthWriter.sidecarOf(log), truths.append("\n]\n"));
+        AtomicFiles.replace(TruthWriter.sidecarOf(log), truths.append("\n]\n").toString());
     }
 
     private void writeOne(Scenario s, SimOptions options) throws IOException {
@@ -256,8 +258,19 @@ public final class SimulateCommand implements Callable<Integer> {
             Files.createDirectories(parent);
         }
         TruthWriter.writeTruth(run.truth(), TruthWriter.sidecarOf(out));
+        if (!realtime) {
+            AtomicFiles.replace(out, w -> LogWriter.write(run, options, w));
+            return;
+        }
+        // A live monitor tails this file, so it is written in place as the run goes, not renamed in at the end.
         try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
             emit(run, options, w);
+        } catch (IOException | UncheckedIOException e) {
+            IOException cause = e instanceof UncheckedIOException u ? u.getCause() : (IOException) e;
+            FileSystemException named = new FileSystemException(out.toString(), null, "writing stopped ("
+                    + BadInputException.reason(cause) + "); with --realtime the log holds the records written before");
+            named.initCause(cause);
+            throw named;
         }
     }
 

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.files.AtomicFiles;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.ForecastModel;
 import net.automatalib.alphabet.Alphabet;
@@ -19,13 +20,11 @@ import java.io.IOException;
 import java.io.ByteArrayInputStream;
 import java.io.InputStream;
 import java.io.StringWriter;
-import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
@@ -184,11 +183,17 @@ public final class ModelStore {
                 ModelDirectory.copyPermissions(target, staging);
             }
             step.accept("write");
-            for (Map.Entry<String, String> e : dots.entrySet()) {
-                writeDurably(staging.resolve(e.getKey()), e.getValue());
+            Map<String, String> files = new LinkedHashMap<>(dots);
+            files.put(ABSTRACTION, abstractionJson);
+            files.put(INDEX, IndexWriter.JSON.writeValueAsString(index) + "\n");
+            for (Map.Entry<String, String> e : files.entrySet()) {
+                try {
+                    AtomicFiles.create(staging.resolve(e.getKey()), e.getValue());
+                } catch (IOException ex) {
+                    // named as the user will look for it, not by the staging directory that is about to go
+                    throw AtomicFiles.notWritten(dir.resolve(e.getKey()), ex, "the previous models are unchanged");
+                }
             }
-            writeDurably(staging.resolve(ABSTRACTION), abstractionJson);
-            writeDurably(staging.resolve(INDEX), IndexWriter.JSON.writeValueAsString(index) + "\n");
             Path aside = null;
             if (Files.exists(target)) {
                 step.accept("set-aside");
@@ -362,12 +367,5 @@ public final class ModelStore {
         }
         int nl = s.indexOf('\n');
         return nl < 0 ? s : s.substring(0, nl);
-    }
-
-    private static void writeDurably(Path file, String text) throws IOException {
-        try (FileChannel ch = FileChannel.open(file, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE)) {
-            ch.write(java.nio.ByteBuffer.wrap(text.getBytes(StandardCharsets.UTF_8)));
-            ch.force(true);
-        }
     }
 }

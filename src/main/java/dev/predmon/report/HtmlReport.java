@@ -6,6 +6,7 @@ import dev.predmon.evaluate.Confusion;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.evaluate.ScenarioSummary;
+import dev.predmon.files.AtomicFiles;
 import dev.predmon.parse.Clock;
 
 import java.io.IOException;
@@ -36,17 +37,23 @@ public final class HtmlReport {
     /** Points read per run at most, before the plot thins them to what it can show. */
     private static final int MAX_POINTS = 20_000;
     private static final String CSS = css();
+    /**
+     * How every report begins: {@code evaluate --report} replaces an existing file only when it begins so (one it
+     * wrote), never a log, an index or a page of the user's.
+     */
+    public static final String SIGNATURE = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+            + "<title>predmon evaluation</title>";
 
     private HtmlReport() {
     }
 
-    /** Writes the report of {@code e} to {@code file}. */
+    /** Writes the report of {@code e} to {@code file}, completely or not at all ({@link AtomicFiles}). */
     public static void write(Evaluation e, Abstraction abstraction, Path file) throws IOException {
         Path parent = file.toAbsolutePath().getParent();
         if (parent != null) {
             Files.createDirectories(parent);
         }
-        Files.writeString(file, html(e, abstraction), StandardCharsets.UTF_8);
+        AtomicFiles.replace(file, html(e, abstraction));
     }
 
     /** The report's text. */
@@ -58,7 +65,7 @@ public final class HtmlReport {
         SafetyRule rule = abstraction.safety().orElse(null);
         int plotted = rule == null ? 0 : Math.min(MAX_PLOTS, runs.size());
         StringBuilder h = new StringBuilder(1 << 18);
-        h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>predmon evaluation</title>\n")
+        h.append(SIGNATURE).append('\n')
                 .append("<style>\n").append(CSS).append("</style></head><body>\n")
                 .append("<svg class=defs aria-hidden=true><defs>").append(MachineDrawing.DEFS).append("</defs></svg>\n");
         h.append("<h1>predmon evaluation</h1>\n<p>")

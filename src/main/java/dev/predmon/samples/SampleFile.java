@@ -24,13 +24,16 @@ import java.util.List;
  */
 public final class SampleFile {
 
+    /** How every sample file begins: {@code export-samples} replaces an existing file only when it begins so. */
+    public static final String SIGNATURE = "# predmon Mealy samples";
+
     private SampleFile() {
     }
 
     /** The file's text for a learned scenario: every sample of every machine, in the order learned. */
     public static String text(LearnedScenario s) {
         StringBuilder sb = new StringBuilder();
-        sb.append("# predmon Mealy samples: one trace per line, steps input/output separated by spaces\n")
+        sb.append(SIGNATURE).append(": one trace per line, steps input/output separated by spaces\n")
                 .append("# scenario: ").append(s.spec().name()).append('\n')
                 .append("# faulty: ").append(s.spec().faulty()).append('\n');
         for (LearnedScenario.Machine m : s.machines()) {

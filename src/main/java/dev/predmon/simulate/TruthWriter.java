@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.files.AtomicFiles;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -41,13 +42,14 @@ public final class TruthWriter {
         }
     }
 
+    /** Writes the truth sidecar {@code file}, completely or not at all. */
     public static void writeTruth(Truth truth, Path file) throws IOException {
-        Files.writeString(file, toJson(truth) + "\n");
+        AtomicFiles.replace(file, toJson(truth) + "\n");
     }
 
     /** Writes {@code dir/scenario.json} describing the runs of {@code scenario} in that directory. */
     public static void writeScenario(Scenario scenario, Path dir) throws IOException {
-        Files.writeString(dir.resolve("scenario.json"), JSON.writeValueAsString(scenarioNode(scenario)) + "\n");
+        AtomicFiles.replace(dir.resolve("scenario.json"), JSON.writeValueAsString(scenarioNode(scenario)) + "\n");
     }
 
     /**

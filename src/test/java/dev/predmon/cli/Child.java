@@ -40,6 +40,15 @@ record Child(int code, String out, String err) {
                 "--bounding-set=-dac_override,-dac_read_search"), args);
     }
 
+    /**
+     * As {@link #run}, with a limit on the size of every file it writes ({@code ulimit -f}, in KiB): a write past it
+     * fails as on a full disk (the JVM ignores SIGXFSZ). Skipped where there is no bash.
+     */
+    static Child runWithFileSizeLimit(Path cwd, int kib, String... args) throws Exception {
+        Assumptions.assumeTrue(Files.isExecutable(Path.of("/bin/bash")), "ulimit needs bash");
+        return run(cwd, List.of("/bin/bash", "-c", "ulimit -f " + kib + " && exec \"$@\"", "predmon"), args);
+    }
+
     private static Child run(Path cwd, List<String> prefix, String... args) throws Exception {
         List<String> command = new ArrayList<>(prefix);
         command.addAll(command(args));
