@@ -2,10 +2,12 @@ package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
+import dev.predmon.files.OutputFiles;
 import picocli.CommandLine.Option;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Optional;
 
 /** {@code --abstraction NAME|FILE}, shared by the commands that read logs: the one place the option is resolved. */
@@ -17,6 +19,12 @@ final class AbstractionOption {
                     + "abstraction JSON file ('predmon abstraction show NAME' prints one to start from). Commands "
                     + "that read models default to the one the models were learned with.")
     String value;
+
+    /** The option as an input of the command, when it names a file: outputs must not replace it. */
+    List<OutputFiles.Input> inputs() {
+        return value != null && Files.exists(Path.of(value))
+                ? List.of(new OutputFiles.Input(Path.of(value), "--abstraction")) : List.of();
+    }
 
     /** The abstraction the option names, or the default when it is not given. */
     Abstraction load() throws AbstractionException {

@@ -3,6 +3,7 @@ package dev.predmon.cli;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.Evaluator;
+import dev.predmon.files.OutputFiles;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioSpec;
 import dev.predmon.report.HtmlReport;
@@ -17,6 +18,7 @@ import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 
@@ -76,6 +78,15 @@ final class EvaluateCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
+        if (report != null) {
+            // before the minutes of learning and replay: a report that could not be written would waste them
+            List<OutputFiles.Input> inputs = new ArrayList<>(abstractionOption.inputs());
+            inputs.add(new OutputFiles.Input(logs, "--logs"));
+            if (split != null && split.test != null) {
+                inputs.add(new OutputFiles.Input(split.test, "--test"));
+            }
+            OutputFiles.requireReplaceable(report, "--report", HtmlReport.SIGNATURE, "an evaluate report", inputs);
+        }
         Abstraction abstraction = abstractionOption.load();
         List<ScenarioSpec> train = ScenarioLayout.scan(logs, abstraction);
         Evaluator evaluator = new Evaluator(abstraction, threshold.value, confirm.value(abstraction),

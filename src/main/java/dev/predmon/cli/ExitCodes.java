@@ -8,7 +8,10 @@ public final class ExitCodes {
     public static final int WARNING = 1;
     /** Bad usage: unknown option, missing argument, impossible value (picocli's own code). */
     public static final int USAGE = 2;
-    /** Bad input: a log, model directory, abstraction or scenario file that cannot be used, or a log with nothing to judge. */
+    /**
+     * Bad input: a log, model directory, abstraction or scenario file that cannot be used, or a log with nothing to
+     * judge; or an output that may not be replaced or could not be written completely (docs/reliability.md).
+     */
     public static final int BAD_INPUT = 3;
     /** A bug in predmon; rerun with --verbose for the stack trace. */
     public static final int INTERNAL = 4;

@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.files.AtomicFiles;
+import dev.predmon.files.OutputFiles;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioLearner;
@@ -46,10 +47,18 @@ final class ExportSamplesCommand implements Callable<Integer> {
         PrintWriter o = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
+        List<OutputFiles.Input> inputs = new ArrayList<>(abstractionOption.inputs());
+        inputs.add(new OutputFiles.Input(logs, "--logs"));
+        OutputFiles.requireOutputDirectory(out, "--out", inputs);
+        List<ScenarioSpec> specs = ScenarioLayout.scan(logs, abstraction);
+        for (ScenarioSpec s : specs) {
+            // Checked before learning: a file that is not a sample file is refused at once, and nothing is written.
+            OutputFiles.requireReplaceable(fileOf(s), "--out", SampleFile.SIGNATURE, "a sample file", inputs);
+        }
         // Everything is learned before anything is written: a failure (a bad log, a bad scenario.json) leaves no
         // empty or half-written --out behind.
         List<LearnedScenario> learned = new ArrayList<>();
-        for (ScenarioSpec s : ScenarioLayout.scan(logs, abstraction)) {
+        for (ScenarioSpec s : specs) {
             // learn() itself, so the samples are exactly those learn feeds LearnLib, grouped as it groups them.
             LearnedScenario l = ScenarioLearner.learn(s, abstraction);
             l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));
@@ -63,7 +72,7 @@ final class ExportSamplesCommand implements Callable<Integer> {
         try {
             Files.createDirectories(out);
             for (LearnedScenario l : learned) {
-                Path file = out.resolve(l.spec().name() + ".txt");
+                Path file = fileOf(l.spec());
                 AtomicFiles.replace(file, SampleFile.text(l));
                 written.add(file);
                 int n = l.machines().stream().mapToInt(m -> m.samples().size()).sum();
@@ -83,5 +92,9 @@ final class ExportSamplesCommand implements Callable<Integer> {
         o.flush();
         err.flush();
         return ExitCodes.OK;
+    }
+
+    private Path fileOf(ScenarioSpec s) {
+        return out.resolve(s.name() + ".txt");
     }
 }

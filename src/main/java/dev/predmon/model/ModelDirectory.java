@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.BadInputException;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.abstraction.LocatedJson;
+import dev.predmon.files.OutputFiles;
 
 import java.io.IOException;
 import java.nio.file.FileAlreadyExistsException;
@@ -130,14 +131,7 @@ final class ModelDirectory {
                         + "nothing was changed");
             }
         }
-        Path existing = parent();
-        while (existing != null && !Files.exists(existing)) {
-            existing = existing.getParent();
-        }
-        if (existing == null || !Files.isDirectory(existing) || !Files.isWritable(existing)) {
-            throw new BadInputException((existing == null ? parent() : existing) + ": not a writable directory, "
-                    + "so " + dir.getFileName() + " cannot be written in it; nothing was changed");
-        }
+        OutputFiles.requireWritableDirectory(parent(), dir);
     }
 
     /**

@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.SerializationFeature;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.files.AtomicFiles;
+import dev.predmon.files.OutputFiles;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.ForecastModel;
 import net.automatalib.alphabet.Alphabet;
@@ -93,7 +94,7 @@ public final class ModelStore {
      */
     public static void checkWritable(Path models, Path logs) throws BadInputException {
         ModelDirectory target = ModelDirectory.of(models);
-        Path logsPath = realish(logs);
+        Path logsPath = OutputFiles.resolved(logs);
         Path modelsPath = target.path();
         if (modelsPath.equals(logsPath)) {
             throw new BadInputException(models + ": is the log directory --logs; choose another --models");
@@ -106,23 +107,6 @@ public final class ModelStore {
                     + "replace; choose another --models");
         }
         target.requireReplaceable();
-    }
-
-    /** The absolute path, with the part that exists resolved to its real path (links followed). */
-    private static Path realish(Path p) {
-        Path abs = p.toAbsolutePath().normalize();
-        Path existing = abs;
-        while (existing != null && !Files.exists(existing)) {
-            existing = existing.getParent();
-        }
-        if (existing == null) {
-            return abs;
-        }
-        try {
-            return existing.toRealPath().resolve(existing.relativize(abs));
-        } catch (IOException e) {
-            return abs;
-        }
     }
 
     /**
