@@ -32,7 +32,7 @@ public final class LearnedModels {
             int samples = 0;
             for (LearnedScenario.Machine m : s.machines()) {
                 List<String> logs = m.samples().stream().map(t -> Path.of(t.source()).getFileName().toString()).toList();
-                models.add(new ModelIndex.Model(m.id() + ".dot", m.machine().size(), m.samples().size(), logs, m.millis()));
+                models.add(new ModelIndex.Model(m.id() + ".dot", m.machine().size(), m.samples().size(), logs));
                 samples += m.samples().size();
             }
             entries.add(new ModelIndex.Scenario(s.spec().name(), s.spec().faulty(), s.spec().description(), samples,

@@ -30,6 +30,9 @@ import java.util.TreeSet;
  */
 final class IndexReader {
 
+    /** The learning time that earlier indexes stored per model: accepted and ignored. */
+    private static final String LEARNING_MILLIS = "learningMillis";
+
     private final Path file;
     private final LocatedJson tree;
 
@@ -112,14 +115,14 @@ final class IndexReader {
     }
 
     private ModelIndex.Model model(JsonNode n, String at) throws BadInputException {
-        keys(n, at, "file", "states", "samples", "logs", "learningMillis");
-        JsonNode millis = required(n, at, "learningMillis");
-        if (!millis.isIntegralNumber() || !millis.canConvertToLong()) {
-            throw problem(at + "/learningMillis", "expected a whole number");
+        keys(n, at, "file", "states", "samples", "logs", LEARNING_MILLIS);
+        // Indexes written before learn stopped storing its timing still read; the value is checked, not kept.
+        JsonNode millis = n.get(LEARNING_MILLIS);
+        if (millis != null && (!millis.isIntegralNumber() || !millis.canConvertToLong())) {
+            throw problem(at + "/" + LEARNING_MILLIS, "expected a whole number");
         }
-        long learningMillis = millis.longValue();
         return new ModelIndex.Model(string(n, at, "file"), integer(n, at, "states"), integer(n, at, "samples"),
-                strings(n, at, "logs"), learningMillis);
+                strings(n, at, "logs"));
     }
 
     /** Checks that {@code n} is an object with no other keys than {@code allowed}. */

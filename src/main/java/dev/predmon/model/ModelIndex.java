@@ -47,14 +47,15 @@ public record ModelIndex(int format, AbstractionInfo abstraction, List<String> a
     }
 
     /**
-     * One machine.
+     * One machine. Nothing that varies from run to run (such as the time learning took) is stored, so that the same
+     * logs give the same index byte for byte and a model directory under version control changes only when the
+     * models do.
      *
-     * @param file           DOT file name inside the model directory
-     * @param states         number of states
-     * @param samples        number of logs it was learned from
-     * @param logs           those logs' file names
-     * @param learningMillis time LearnLib took (varies between runs; the DOT files do not)
+     * @param file    DOT file name inside the model directory
+     * @param states  number of states
+     * @param samples number of logs it was learned from
+     * @param logs    those logs' file names
      */
-    public record Model(String file, int states, int samples, List<String> logs, long learningMillis) {
+    public record Model(String file, int states, int samples, List<String> logs) {
     }
 }
