@@ -186,7 +186,9 @@ final class ModelDirectory {
         for (JsonNode scenario : root.get("scenarios")) {
             for (JsonNode model : scenario.path("models")) {
                 String file = model.path("file").asText("");
-                if (!file.isEmpty() && !file.contains("/") && !file.contains("\\") && !file.startsWith(".")) {
+                // Only a DOT file can be a model learn wrote: an index may name anything (notes.txt, a thesis),
+                // and whatever counted as its own here would be deleted with the previous models.
+                if (ModelReader.DOT_NAME.matcher(file).matches()) {
                     own.add(file);
                 }
             }

@@ -8,22 +8,17 @@ import dev.predmon.files.AtomicFiles;
 import dev.predmon.files.OutputFiles;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.mealy.MealyMapping;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.alphabet.Alphabets;
 import net.automatalib.automaton.transducer.CompactMealy;
-import net.automatalib.serialization.InputModelData;
-import net.automatalib.serialization.dot.DOTParsers;
 import net.automatalib.serialization.dot.GraphDOT;
-import net.automatalib.util.automaton.copy.AutomatonCopyMethod;
-import net.automatalib.util.automaton.copy.AutomatonLowLevelCopy;
 
 import java.io.IOException;
 import java.io.ByteArrayInputStream;
-import java.io.InputStream;
 import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
@@ -71,7 +66,7 @@ public final class ModelStore {
     /** The Mealy input alphabet for an abstraction: its Mealy inputs plus {@code Delta}, sorted. */
     public static Alphabet<String> alphabetOf(Abstraction abstraction) {
         List<String> symbols = new ArrayList<>(abstraction.mealyInputAlphabet());
-        symbols.add(dev.predmon.mealy.MealyMapping.DELTA);
+        symbols.add(MealyMapping.DELTA);
         symbols.sort(Comparator.naturalOrder());
         return Alphabets.fromList(symbols);
     }
@@ -235,63 +230,12 @@ public final class ModelStore {
         }
     }
 
-    /** Reads a model directory and checks it against the abstraction in use. */
+    /**
+     * Reads a model directory and checks it against the abstraction in use, and its index against its DOT files
+     * ({@link ModelReader}).
+     */
     public static ModelSet read(Path dir, Abstraction abstraction) throws BadInputException {
-        Path base = modelsAt(dir);
-        Path indexFile = base.resolve(INDEX);
-        if (!Files.isDirectory(base)) {
-            throw new BadInputException(dir + ": no model directory; run 'predmon learn' first");
-        }
-        ModelIndex index = IndexReader.read(indexFile);
-        if (index.format() != ModelIndex.FORMAT || index.abstraction() == null || index.scenarios() == null
-                || index.alphabet() == null || !complete(index.scenarios())) {
-            throw new BadInputException(indexFile + ": not a predmon model index of format " + ModelIndex.FORMAT);
-        }
-        if (!abstraction.fingerprint().equals(index.abstraction().fingerprint())) {
-            Path stored = Files.isRegularFile(base.resolve(ABSTRACTION)) ? base.resolve(ABSTRACTION) : null;
-            throw new BadInputException(indexFile + ": " + AbstractionMismatch.describe(index.abstraction(),
-                    abstraction, stored));
-        }
-        Alphabet<String> alphabet = alphabetOf(abstraction);
-        if (!index.alphabet().equals(new ArrayList<>(alphabet))) {
-            throw new BadInputException(indexFile + ": its alphabet does not match the abstraction's inputs");
-        }
-        List<LearnedModel> models = new ArrayList<>();
-        for (ModelIndex.Scenario s : index.scenarios()) {
-            for (ModelIndex.Model m : s.models()) {
-                String id = m.file().endsWith(".dot") ? m.file().substring(0, m.file().length() - 4) : m.file();
-                models.add(new LearnedModel(id, s.name(), s.faulty(), readDot(base.resolve(m.file()), alphabet),
-                        alphabet));
-            }
-        }
-        return new ModelSet(base, index, List.copyOf(models), forecast(base, index));
-    }
-
-    /** The forecast the index lists, or null when it lists none (a directory learned before forecasts were). */
-    private static ForecastModel forecast(Path base, ModelIndex index) throws BadInputException {
-        if (index.forecast() == null) {
-            return null;
-        }
-        Path file = base.resolve(index.forecast());
-        try {
-            return ForecastFile.read(Files.readString(file, StandardCharsets.UTF_8));
-        } catch (NoSuchFileException e) {
-            throw new BadInputException(file + ": missing (listed in " + INDEX + "); run 'predmon learn' again");
-        } catch (IOException e) {
-            throw BadInputException.cannotRead(file, e);
-        } catch (IllegalArgumentException e) {
-            throw new BadInputException(file + ": not a predmon forecast: " + e.getMessage());
-        }
-    }
-
-    /** Whether every scenario lists its models and every model its file (null ones were a crash, not a message). */
-    private static boolean complete(List<ModelIndex.Scenario> scenarios) {
-        for (ModelIndex.Scenario s : scenarios) {
-            if (s == null || s.models() == null || s.models().stream().anyMatch(m -> m == null || m.file() == null)) {
-                return false;
-            }
-        }
-        return true;
+        return ModelReader.read(dir, modelsAt(dir), abstraction);
     }
 
     /**
@@ -301,55 +245,10 @@ public final class ModelStore {
      */
     public static CompactMealy<String, String> canonical(CompactMealy<String, String> machine, Alphabet<String> alphabet) {
         try {
-            return fromDot(Path.of("(learned machine)"), new ByteArrayInputStream(
+            return ModelReader.fromDot(Path.of("(learned machine)"), new ByteArrayInputStream(
                     toDot(machine, alphabet).getBytes(StandardCharsets.UTF_8)), alphabet);
         } catch (BadInputException | IOException e) {
             throw new IllegalStateException("a learned machine does not read back from its own DOT text", e);
         }
-    }
-
-    /** Parses one DOT file into a machine over the full {@code alphabet}. */
-    static CompactMealy<String, String> readDot(Path file, Alphabet<String> alphabet) throws BadInputException {
-        try (InputStream in = Files.newInputStream(file)) {
-            return fromDot(file, in, alphabet);
-        } catch (NoSuchFileException e) {
-            throw new BadInputException(file + ": missing (listed in " + INDEX + ")");
-        } catch (IOException e) {
-            throw BadInputException.cannotRead(file, e);
-        }
-    }
-
-    private static CompactMealy<String, String> fromDot(Path file, InputStream in, Alphabet<String> alphabet)
-            throws BadInputException, IOException {
-        InputModelData<String, CompactMealy<String, String>> data;
-        try {
-            data = DOTParsers.mealy().readModel(in);
-        } catch (RuntimeException e) {
-            throw new BadInputException(file + ": not a Mealy machine in DOT (edges labelled 'input / output'): "
-                    + firstLine(e.getMessage()));
-        }
-        for (String symbol : data.alphabet) {
-            if (symbol == null) { // AutomataLib reads an edge label without " / " as a null input
-                throw new BadInputException(file + ": not a Mealy machine in DOT: an edge label is not 'input / output'");
-            }
-            if (!alphabet.containsSymbol(symbol)) {
-                throw new BadInputException(file + ": input '" + symbol
-                        + "' is not in the abstraction's alphabet; relearn with the abstraction in use");
-            }
-        }
-        if (data.model.getInitialState() == null) {
-            throw new BadInputException(file + ": has no initial state");
-        }
-        CompactMealy<String, String> full = new CompactMealy<>(alphabet);
-        AutomatonLowLevelCopy.copy(AutomatonCopyMethod.BFS, data.model, data.alphabet, full);
-        return full;
-    }
-
-    private static String firstLine(String s) {
-        if (s == null) {
-            return "unreadable";
-        }
-        int nl = s.indexOf('\n');
-        return nl < 0 ? s : s.substring(0, nl);
     }
 }

@@ -118,6 +118,21 @@ class LearnModelsDirTest {
         refused(learn(models), snapshot(tmp), models, "depleted.svg");
     }
 
+    /**
+     * An index edited to name a user's file as a model ({@code "file": "notes.txt"}): only a DOT file can be a
+     * model learn wrote, so the directory is not learn's to replace and the file stays.
+     */
+    @Test
+    void aFileTheIndexNamesAsAModelThatIsNoDotFileIsKept() throws Exception {
+        Path models = workspace.resolve("models");
+        assertEquals(ExitCodes.OK, learn(models).code());
+        Path index = models.resolve("index.json");
+        Files.writeString(index, Files.readString(index).replace("\"depleted.dot\"", "\"notes.txt\""));
+        Files.delete(models.resolve("depleted.dot"));
+        Files.writeString(models.resolve("notes.txt"), "my notes\n");
+        refused(learn(models), snapshot(tmp), models, "notes.txt");
+    }
+
     @Test
     void aModelDirectoryLearnWroteIsReplacedAndAnEmptyOneIsFilled() throws Exception {
         Path models = workspace.resolve("models");
