@@ -70,6 +70,11 @@ final class AbstractionFiles {
     static Abstraction load(Path file) throws AbstractionException {
         String text;
         try {
+            // Read whole before parsing: a file of gigabytes would exhaust the heap before the parser's limit
+            if (Files.isRegularFile(file) && Files.size(file) > LocatedJson.MAX_BYTES) {
+                throw new AbstractionException(file + ": " + Files.size(file) + " bytes, more than the "
+                        + LocatedJson.MAX_BYTES + " an abstraction file may have");
+            }
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
             throw new AbstractionException(file + ": cannot read: " + dev.predmon.BadInputException.reason(e), e);

@@ -5,6 +5,8 @@ import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonToken;
+import com.fasterxml.jackson.core.StreamReadConstraints;
+import com.fasterxml.jackson.core.exc.StreamConstraintsException;
 import com.fasterxml.jackson.core.JsonParseException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
@@ -27,8 +29,21 @@ import java.util.Map;
  */
 public final class LocatedJson {
 
-    /** The one factory of parsers and generators: stateless once built, so shared. */
-    static final JsonFactory FACTORY = new JsonFactory();
+    /** Nesting a predmon file never needs (its deepest value is a few levels down); the parser stops at once past it. */
+    public static final int MAX_DEPTH = 64;
+    /** The longest string a predmon file holds is a description: a million characters is far beyond any. */
+    public static final int MAX_STRING = 1_000_000;
+    /** The largest file read as JSON, in bytes; an index of thousands of runs is a few megabytes. */
+    public static final long MAX_BYTES = 64L << 20;
+
+    /**
+     * The one factory of parsers and generators: stateless once built, so shared. Its limits make a deep or huge
+     * file one line of error instead of a stack overflow or an exhausted heap.
+     */
+    static final JsonFactory FACTORY = JsonFactory.builder()
+            .streamReadConstraints(StreamReadConstraints.builder().maxNestingDepth(MAX_DEPTH)
+                    .maxStringLength(MAX_STRING).maxDocumentLength(MAX_BYTES).build())
+            .build();
 
     private final JsonNode root;
     private final Map<String, JsonLocation> locations;
@@ -62,10 +77,14 @@ public final class LocatedJson {
     public static LocatedJson readValue(File file) throws IOException {
         Map<String, JsonLocation> locations = new HashMap<>();
         try (JsonParser p = FACTORY.createParser(file)) {
-            if (p.nextToken() == null) {
-                throw new JsonParseException(p, "No content to map due to end-of-input");
+            try {
+                if (p.nextToken() == null) {
+                    throw new JsonParseException(p, "No content to map due to end-of-input");
+                }
+                return new LocatedJson(read(p, "", locations), locations);
+            } catch (StreamConstraintsException e) {
+                throw located(p, e);
             }
-            return new LocatedJson(read(p, "", locations), locations);
         }
     }
 
@@ -74,15 +93,38 @@ public final class LocatedJson {
         Map<String, JsonLocation> locations = new HashMap<>();
         try (JsonParser p = factory.createParser(text)) {
             p.enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
-            if (p.nextToken() == null) {
-                throw new JsonParseException(p, "empty file, expected a JSON object");
+            try {
+                if (p.nextToken() == null) {
+                    throw new JsonParseException(p, "empty file, expected a JSON object");
+                }
+                JsonNode root = read(p, "", locations);
+                if (p.nextToken() != null) {
+                    throw new JsonParseException(p, "unexpected content after the top-level value");
+                }
+                return new LocatedJson(root, locations);
+            } catch (StreamConstraintsException e) {
+                throw located(p, e);
             }
-            JsonNode root = read(p, "", locations);
-            if (p.nextToken() != null) {
-                throw new JsonParseException(p, "unexpected content after the top-level value");
-            }
-            return new LocatedJson(root, locations);
         }
+    }
+
+    /**
+     * A limit of {@link #FACTORY} that was passed, as a parse error at the parser's position and in words: Jackson's
+     * own exception has no position and names its Java classes.
+     */
+    private static JsonParseException located(JsonParser p, StreamConstraintsException e) {
+        String m = e.getOriginalMessage() == null ? "" : e.getOriginalMessage();
+        String reason;
+        if (m.startsWith("Document nesting depth")) {
+            reason = "nested more than " + MAX_DEPTH + " levels deep";
+        } else if (m.startsWith("String value length")) {
+            reason = "a string longer than " + MAX_STRING + " characters";
+        } else if (m.startsWith("Document length")) {
+            reason = "longer than " + MAX_BYTES + " bytes";
+        } else {
+            reason = m.replaceAll(",? ?\\(?from `[^`]*`\\)?", "");
+        }
+        return new JsonParseException(p, reason, e);
     }
 
     private static JsonNode read(JsonParser p, String pointer, Map<String, JsonLocation> locations)

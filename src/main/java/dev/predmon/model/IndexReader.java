@@ -54,7 +54,9 @@ final class IndexReader {
         } catch (NoSuchFileException | FileNotFoundException e) {
             throw new BadInputException(file + ": missing; run 'predmon learn' first");
         } catch (JsonProcessingException e) {
-            throw new BadInputException(file + ":" + e.getLocation().getLineNr() + ": not a predmon model index: "
+            // a parse error has a position; a JSON error without one (none known today) still names the file
+            JsonLocation l = e.getLocation();
+            throw new BadInputException(file + (l == null ? "" : ":" + l.getLineNr()) + ": not a predmon model index: "
                     + e.getOriginalMessage());
         } catch (IOException e) {
             throw BadInputException.cannotRead(file, e);

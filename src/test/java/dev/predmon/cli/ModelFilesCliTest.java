@@ -14,12 +14,14 @@ import java.util.List;
 import java.util.stream.Stream;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * Model directories that cannot be trusted, read by a command that judges a log: an index and DOT files that
- * contradict each other, and an index with no model. Each is exit 3 with one line naming the file and what is
- * wrong, never a verdict about the robot.
+ * contradict each other, an index with no model, and JSON far deeper or larger than any predmon file. Each is
+ * exit 3 with one line naming the file and what is wrong, never a verdict about the robot and never an internal
+ * error.
  */
 class ModelFilesCliTest {
 
@@ -95,5 +97,31 @@ class ModelFilesCliTest {
         index.putArray("scenarios");
         write(index);
         refused(models.resolve("index.json"), "no models");
+    }
+
+    @Test
+    void anIndexNestedAHundredThousandLevelsDeep() throws IOException {
+        Files.writeString(models.resolve("index.json"),
+                "{\"format\": 1, \"x\": " + "[".repeat(100_000) + "]".repeat(100_000) + "}");
+        refused(models.resolve("index.json"), "not a predmon model index: nested more than 64 levels deep");
+    }
+
+    @Test
+    void anIndexHoldingA30MegabyteString() throws IOException {
+        Files.writeString(models.resolve("index.json"), "{\"format\": 1, \"x\": \"" + "a".repeat(30_000_000) + "\"}");
+        refused(models.resolve("index.json"), "not a predmon model index: a string longer than 1000000 characters");
+    }
+
+    /** An abstraction file as deep: the same line, in words, without the JSON library's class names. */
+    @Test
+    void anAbstractionFileNestedTooDeep() throws IOException {
+        Path file = Files.writeString(tmp.resolve("deep.json"),
+                "{\"name\": \"x\", \"rules\": " + "[".repeat(100_000) + "]".repeat(100_000) + "}");
+        Cli r = Cli.run("classify", "--abstraction", file.toString(), "--models", models.toString(),
+                "--log", LOG.toString());
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.err());
+        assertTrue(r.err().startsWith("predmon: " + file + ":1:") && r.err().contains("nested more than 64 levels deep"),
+                r.err());
+        assertFalse(r.err().contains("StreamReadConstraints"), r.err());
     }
 }

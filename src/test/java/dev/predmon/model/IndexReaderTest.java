@@ -69,6 +69,22 @@ class IndexReaderTest {
         assertEquals(IndexReader.read(now), IndexReader.read(before));
     }
 
+    /**
+     * A file far deeper or larger than any index (100,000 nested arrays, a 30 MB string) is one line naming the
+     * file and what is wrong, not a crash of the reader.
+     */
+    @Test
+    void aDeepOrHugeFileIsOneLineNamingIt() throws Exception {
+        Path file = tmp.resolve("index.json");
+        Files.writeString(file, "{\"format\": 1, \"x\": " + "[".repeat(100_000) + "]".repeat(100_000) + "}");
+        BadInputException deep = assertThrows(BadInputException.class, () -> IndexReader.read(file));
+        assertEquals(file + ":1: not a predmon model index: nested more than 64 levels deep", deep.getMessage());
+        Files.writeString(file, "{\"format\": 1,\n \"x\": \"" + "a".repeat(30_000_000) + "\"}");
+        BadInputException huge = assertThrows(BadInputException.class, () -> IndexReader.read(file));
+        assertEquals(file + ":2: not a predmon model index: a string longer than 1000000 characters",
+                huge.getMessage());
+    }
+
     /** Broken JSON gets the parser's message, as before; what follows the index is not read, as before. */
     @Test
     void textThatIsNotJsonGetsTheMessageItGotBefore() throws Exception {
