@@ -90,6 +90,16 @@ class ModelFilesCliTest {
         refused(models.resolve("index.json"), "scenario 'direct' is listed twice");
     }
 
+    /** The forecast is read from the one file learn writes, never from a file the index points elsewhere. */
+    @Test
+    void aForecastThatIsNotTheFileLearnWrites() throws IOException {
+        Files.writeString(tmp.resolve("elsewhere.json"), "{}");
+        ObjectNode index = index();
+        index.put("forecast", "../elsewhere.json");
+        write(index);
+        refused(models.resolve("index.json"), "forecast '../elsewhere.json' is not forecast.json");
+    }
+
     /** Without a model every run would be "no model matches" (exit 5): a verdict that means nothing. */
     @Test
     void anIndexWithoutScenariosHasNoModels() throws IOException {
