@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.files.AtomicFiles;
 import dev.predmon.learn.Learning;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
@@ -174,11 +175,20 @@ final class DemoCommand implements Callable<Integer> {
         return verdict(out, scenario, monitor);
     }
 
+    /** Writes the run's log in place as it goes (the watcher tails it); a failure names the log. */
     private static void write(SimRun run, Path log, double speed) {
-        try (Writer w = Files.newBufferedWriter(log, StandardCharsets.UTF_8)) {
+        Writer opened;
+        try {
+            opened = Files.newBufferedWriter(log, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // it names the file, and nothing was written
+        }
+        try (Writer w = opened) {
             new RealtimeWriter(run, SimOptions.defaults(), w, speed).run();
         } catch (IOException e) {
-            throw new UncheckedIOException(e);
+            throw new UncheckedIOException(AtomicFiles.stoppedInPlace(log, e));
+        } catch (UncheckedIOException e) {
+            throw new UncheckedIOException(AtomicFiles.stoppedInPlace(log, e.getCause()));
         }
     }
 

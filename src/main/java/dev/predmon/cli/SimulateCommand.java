@@ -22,7 +22,6 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -263,14 +262,13 @@ public final class SimulateCommand implements Callable<Integer> {
             return;
         }
         // A live monitor tails this file, so it is written in place as the run goes, not renamed in at the end.
-        try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+        Writer opened = Files.newBufferedWriter(out, StandardCharsets.UTF_8); // a failure here names the file
+        try (Writer w = opened) {
             emit(run, options, w);
-        } catch (IOException | UncheckedIOException e) {
-            IOException cause = e instanceof UncheckedIOException u ? u.getCause() : (IOException) e;
-            FileSystemException named = new FileSystemException(out.toString(), null, "writing stopped ("
-                    + BadInputException.reason(cause) + "); with --realtime the log holds the records written before");
-            named.initCause(cause);
-            throw named;
+        } catch (IOException e) {
+            throw AtomicFiles.stoppedInPlace(out, e);
+        } catch (UncheckedIOException e) {
+            throw AtomicFiles.stoppedInPlace(out, e.getCause());
         }
     }
 

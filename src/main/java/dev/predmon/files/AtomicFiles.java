@@ -115,6 +115,17 @@ public final class AtomicFiles {
         return e;
     }
 
+    /**
+     * The one-line failure of a file that is written in place as it grows, because a monitor tails it (a live
+     * simulated log): {@code FILE: writing stopped (REASON); it holds the records written before}.
+     */
+    public static FileSystemException stoppedInPlace(Path shown, IOException cause) {
+        FileSystemException e = new FileSystemException(shown.toString(), null,
+                "writing stopped (" + BadInputException.reason(cause) + "); it holds the records written before");
+        e.initCause(cause);
+        return e;
+    }
+
     /** Creates {@code file}, which must not exist, writes {@code body} into it, checks its size and forces it. */
     private static void writeNew(Path file, Body body) throws IOException {
         try (FileChannel ch = FileChannel.open(file, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE)) {

@@ -112,6 +112,17 @@ class FileSizeLimitTest {
         assertEquals(Map.of("direct-1.log", "yesterday's run\n"), snapshot(dir));
     }
 
+    /** A live log is written in place (a monitor tails it): when it stops, the line names it and says so. */
+    @Test
+    void aLiveSimulatedLogThatDoesNotFitIsNamed() throws Exception {
+        Child r = Child.runWithFileSizeLimit(tmp, 16, "simulate", "--scenario", "direct", "--realtime", "--speed",
+                "1000", "--out", "live.log");
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.out() + r.err());
+        assertEquals("predmon: live.log: writing stopped (file too large); it holds the records written before",
+                r.err().strip());
+        assertEquals(16 * 1024, Files.size(tmp.resolve("live.log")));
+    }
+
     private static void copyDir(Path from, Path to) throws IOException {
         Files.createDirectories(to);
         try (Stream<Path> s = Files.list(from)) {
