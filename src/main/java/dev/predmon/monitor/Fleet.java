@@ -136,6 +136,14 @@ public final class Fleet implements AutoCloseable {
      * @param polling    poll every log after each pause, without the operating system's notification
      */
     public void follow(LogSources sources, long pauseNanos, boolean polling) throws IOException {
+        follow(sources, pauseNanos, polling, SAFETY_NANOS);
+    }
+
+    /**
+     * As above, with the backstop's period: tests set it beyond their length, so that only the notification or the
+     * polling under test can wake the fleet.
+     */
+    void follow(LogSources sources, long pauseNanos, boolean polling, long safetyNanos) throws IOException {
         boolean growing = sources.growing();
         try (Wakeups w = new Wakeups(polling ? null : DirectoryWatch.open(), pauseNanos)) {
             wakeups = w;
@@ -146,25 +154,25 @@ public final class Fleet implements AutoCloseable {
             long now = System.nanoTime();
             long lastScan = now;
             long nextCheck = now + RESCAN_NANOS;
-            long nextSafety = now + SAFETY_NANOS;
+            long nextSafety = now + safetyNanos;
             while (!Thread.currentThread().isInterrupted()) {
                 now = System.nanoTime();
-                long scanPeriod = w.allWatched() ? SAFETY_NANOS : RESCAN_NANOS;
+                long scanPeriod = w.allWatched() ? safetyNanos : RESCAN_NANOS;
                 if (growing && (now - lastScan >= scanPeriod
                         || w.rescanWanted() && now - lastScan >= RESCAN_SOON_NANOS)) {
-                    w.takeRescan();
+                    w.rescanning();
                     rescan(sources);
                     lastScan = now;
                 }
                 if (now - nextCheck >= 0) {
                     w.recheck();
-                    nextCheck = now + (w.allWatched() ? SAFETY_NANOS : RESCAN_NANOS);
+                    nextCheck = now + (w.allWatched() ? safetyNanos : RESCAN_NANOS);
                 }
                 if (now - nextSafety >= 0) {
                     if (w.notifying()) {
                         poll();
                     }
-                    nextSafety = now + SAFETY_NANOS;
+                    nextSafety = now + safetyNanos;
                 }
                 long until = Math.min(nextCheck, nextSafety);
                 if (growing) {

@@ -103,16 +103,14 @@ final class Wakeups implements AutoCloseable {
         sourcesWatched = all;
     }
 
-    /** Whether a file was created in a source directory since the last call: new logs should be looked for. */
-    boolean takeRescan() {
-        boolean wanted = rescan;
-        rescan = false;
-        return wanted;
-    }
-
-    /** Whether {@link #takeRescan} would say yes. */
+    /** Whether a file was created in a source directory since the last rescan: new logs should be looked for. */
     boolean rescanWanted() {
         return rescan;
+    }
+
+    /** A rescan begins: it finds every file created before now. */
+    void rescanning() {
+        rescan = false;
     }
 
     /**

@@ -104,7 +104,7 @@ class WatchSoakTest {
      * between the watcher's last read and a copytruncate (it exists only in the copy). Everything else races:
      * appends cut anywhere, the truncation and the rewrite after it, the new file after a rename or delete.
      */
-    private static void write(Path log, AtomicLong written, AtomicLong seenCount) throws Exception {
+    static void write(Path log, AtomicLong written, AtomicLong seenCount) throws Exception {
         Random random = new Random(2024);
         Thread.sleep(20); // the watcher starts first and must wait for the file to appear
         long seq = 0;
@@ -152,7 +152,7 @@ class WatchSoakTest {
         }
     }
 
-    private static String record(long seq, String eol) {
+    static String record(long seq, String eol) {
         String time = String.format(Locale.ROOT, "%.6f", seq * 0.01);
         return time + "\tDEBUG\tCommand intercepted:" + eol
                 + "  From      : /Soak/client" + eol
