@@ -20,8 +20,8 @@ import java.util.Map;
  * <p>While following, the thread sleeps until the operating system says that a file in a log's directory changed
  * ({@link Wakeups}, {@link DirectoryWatch}), then polls just the logs concerned: a thousand idle logs cost almost
  * nothing, and an append is read within a millisecond or so. Logs whose changes cannot be notified (a network file
- * system, a directory that cannot be watched, or {@code --polling}) are polled after a pause instead, as every log
- * was before notification: a record appended just after its log was polled waits at most one pause plus one pass.
+ * system, a directory that cannot be watched, or {@code --polling}) are polled after every pause instead: a record
+ * appended just after its log was polled waits at most one pause plus one pass.
  * Every {@link #SAFETY_NANOS} every log is polled anyway, as a backstop for what no notification covers: a file
  * written through a memory map, or through a hard link in another directory, a directory replaced under its
  * watch before {@link Wakeups#recheck} sees it. It costs a few microseconds per log (see {@code bench --only fleet}).
