@@ -149,7 +149,7 @@ public final class Fleet implements AutoCloseable {
             wakeups = w;
             logs.values().forEach(w::add);
             if (growing) {
-                w.watchSources(sources.directories());
+                rescan(sources); // also watches the directories in which new logs may appear
             }
             long now = System.nanoTime();
             long lastScan = now;
