@@ -2,7 +2,7 @@
 # Regenerates the shipped sample-logs/ and the models/ learned from them.
 #
 # sample-logs/<scenario>/<scenario>-<seed>.log: 10 simulated runs per scenario, seeds 1..10, each seed with a
-# different mix of the log variants a real YARP monitor log shows (README, Logs accepted), so that learning on
+# different mix of the log variants a real YARP monitor log shows (docs/logs.md), so that learning on
 # the samples also exercises the parser:
 #   seed % 5 == 1: relative times, tab columns          seed % 5 == 2: epoch times, INFO raw-bottle lines
 #   seed % 5 == 3: replies printed late (30%)            seed % 5 == 4: isAtLocation as YARP vocabs, spaces

@@ -292,6 +292,11 @@ public final class Abstraction {
         return rules.classify(r);
     }
 
+    /** Whether some rule maps messages of {@code protocol}: the abstraction knows that component. */
+    public boolean mapsProtocol(String protocol) {
+        return spec.rules().stream().anyMatch(r -> r.protocol().equals(protocol));
+    }
+
     /** Every input symbol the rules can produce, sorted. */
     public List<String> inputAlphabet() {
         return inputAlphabet;

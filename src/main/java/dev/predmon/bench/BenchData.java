@@ -1,6 +1,9 @@
 package dev.predmon.bench;
 
+import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.learn.ForecastTraining;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
@@ -11,6 +14,7 @@ import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.parse.LogParser;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
@@ -24,6 +28,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 /** Inputs of the benchmarks, all from the simulator: log texts, Mealy samples, models learned in memory. */
 final class BenchData {
@@ -51,9 +56,37 @@ final class BenchData {
         return MealyMapping.toTrace(Traces.compact(records(text), abstraction), source);
     }
 
-    /** Models of the three scenarios learned in memory from {@code runs} runs each (seeds 1..runs). */
-    static ModelSet models(Abstraction abstraction, int runs) {
-        return LearnedModels.modelSet(learned(abstraction, runs), abstraction);
+    /**
+     * Models of the three scenarios learned in memory from {@code runs} runs each (seeds 1..runs), with their forecast
+     * as {@code learn} makes it (the runs written to a temporary directory and read back, as learn reads logs).
+     */
+    static ModelSet models(Abstraction abstraction, int runs) throws IOException {
+        Path dir = Files.createTempDirectory("predmon-bench-models");
+        try {
+            List<ScenarioSpec> specs = new ArrayList<>();
+            for (Scenario s : Scenario.values()) {
+                List<Path> logs = new ArrayList<>();
+                for (long seed = 1; seed <= runs; seed++) {
+                    logs.add(Files.writeString(dir.resolve(s.id() + "-" + seed + ".log"), text(s, seed)));
+                }
+                specs.add(new ScenarioSpec(s.id(), s.faulty(), s.description(), List.copyOf(logs)));
+            }
+            Map<Path, LogTrace> traces = ScenarioLearner.read(specs.stream().flatMap(s -> s.logs().stream()).toList(),
+                    abstraction);
+            List<LearnedScenario> learned = learned(abstraction, runs);
+            ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
+                    ModelStore.alphabetOf(abstraction), ForecastTraining.limit(abstraction), abstraction.confirm());
+            return LearnedModels.modelSet(learned, abstraction, forecast);
+        } catch (BadInputException e) {
+            throw new IOException(e.getMessage(), e);
+        } finally {
+            try (var files = Files.list(dir)) {
+                for (Path p : files.toList()) {
+                    Files.deleteIfExists(p);
+                }
+            }
+            Files.deleteIfExists(dir);
+        }
     }
 
     /** The three scenarios learned in memory from {@code runs} runs each (seeds 1..runs). */

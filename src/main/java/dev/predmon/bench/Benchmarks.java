@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.PredictiveMonitor;
 
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
@@ -51,8 +52,9 @@ public final class Benchmarks {
         if (kinds.contains(Kind.BATCH) || kinds.contains(Kind.LATENCY) || kinds.contains(Kind.MEMORY)
                 || kinds.contains(Kind.FLEET)) {
             learned = BenchData.learned(abstraction, o.modelRuns());
-            models = LearnedModels.modelSet(learned, abstraction);
-            out.accept(f("models: %d machines learned from %d runs per scenario", models.models().size(), o.modelRuns()));
+            models = BenchData.models(abstraction, o.modelRuns());
+            out.accept(f("models: %d machines learned from %d runs per scenario, with their forecast (rule %s)",
+                    models.models().size(), o.modelRuns(), PredictiveMonitor.defaultRule(models).id()));
         }
         out.accept(f("machine: %d cores, Java %s, max heap %.0f MB", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.version"), Runtime.getRuntime().maxMemory() / 1e6));

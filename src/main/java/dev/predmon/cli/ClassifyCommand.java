@@ -61,7 +61,7 @@ final class ClassifyCommand implements Callable<Integer> {
     }
 
     private void print(PrintWriter out, Classifier.Result r, MealyTrace run) {
-        out.println(run.source() + ": " + run.length() / 2 + " compacted pairs");
+        out.println(Terminal.line(run.source()) + ": " + run.length() / 2 + " compacted pairs");
         for (Classifier.Score s : r.scores()) {
             out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
                     s.deleted() ? "deleted: " + s.failure().describe()

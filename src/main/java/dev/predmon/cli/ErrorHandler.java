@@ -23,13 +23,13 @@ final class ErrorHandler implements IExecutionExceptionHandler {
         Throwable e = ex instanceof UncheckedIOException u ? u.getCause() : ex;
         int code;
         if (e instanceof BadInputException) {
-            cl.getErr().println("predmon: " + e.getMessage());
+            cl.getErr().println("predmon: " + Terminal.line(e.getMessage()));
             code = ExitCodes.BAD_INPUT;
         } else if (e instanceof IOException io) {
-            cl.getErr().println("predmon: " + describe(io));
+            cl.getErr().println("predmon: " + Terminal.line(describe(io)));
             code = ExitCodes.BAD_INPUT;
         } else {
-            cl.getErr().println("predmon: internal error: " + e + (verbose ? "" : " (rerun with --verbose for details)"));
+            cl.getErr().println("predmon: internal error: " + Terminal.line(String.valueOf(e)) + (verbose ? "" : " (rerun with --verbose for details)"));
             code = ExitCodes.INTERNAL;
         }
         if (verbose) {

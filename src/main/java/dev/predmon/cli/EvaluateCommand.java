@@ -61,6 +61,9 @@ final class EvaluateCommand implements Callable<Integer> {
     @Mixin
     ConfirmOption confirm;
 
+    @Mixin
+    RuleOption rule;
+
     @Option(names = "--report", paramLabel = "FILE",
             description = "Write a self-contained HTML report: table, confusion matrix, leads, battery plots, models.")
     Path report;
@@ -80,7 +83,8 @@ final class EvaluateCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
         List<ScenarioSpec> train = ScenarioLayout.scan(logs, abstraction);
-        Evaluator evaluator = new Evaluator(abstraction, threshold.value, confirm.value(abstraction), ProgressBar.on(err, quiet));
+        Evaluator evaluator = new Evaluator(abstraction, threshold.value, confirm.value(abstraction),
+                ProgressBar.on(err, quiet)).rule(rule.asked());
         Evaluation e;
         if (split != null && split.test != null) {
             e = evaluator.trainTest(train, ScenarioLayout.scan(split.test, abstraction));
@@ -132,15 +136,21 @@ final class EvaluateCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "confusion (actual x predicted): faulty&warned-in-time %d, faulty&missed %d, "
                         + "nominal&warned %d, nominal&quiet %d; faulty without violation (unscored) %d%n",
                 c.truePositives(), c.falseNegatives(), c.falsePositives(), c.trueNegatives(), c.unscored());
-        out.printf(Locale.ROOT, "recall %s, false-alarm rate %s%n", percent(c.recall()), percent(c.falseAlarmRate()));
+        out.printf(Locale.ROOT, "recall %s, false-alarm rate %s (warning rule: %s)%n", percent(c.recall()),
+                percent(c.falseAlarmRate()), e.rule());
+        ForecastTables.print(out, e);
         out.println();
-        out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s  %s%n", "scenario", "log", "fold", "verdict",
-                "warning", "violation", "lead", "unit", "eliminated (model@line)");
+        out.println();
+        out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s %6s %6s  %s%n", "scenario", "log", "fold",
+                "verdict", "warning", "violation", "lead", "unit", "P@warn", "P-peak", "eliminated (model@line)");
         for (RunResult r : e.runs()) {
             String elim = r.eliminations().stream().map(x -> x.model() + "@" + x.line()).collect(Collectors.joining(" "));
-            out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s  %s%s%s%n", r.scenario(),
+            out.printf(Locale.ROOT, "%-14s %-28s %4s %-23s %9s %9s %8s %-5s %6s %6s  %s%s%s%n", r.scenario(),
                     Path.of(r.log()).getFileName(), r.fold() < 0 ? "-" : Integer.toString(r.fold()), r.verdict().id(),
-                    num(r.warningTime()), num(r.violationTime()), num(r.lead()), r.unit(), elim,
+                    num(r.warningTime()), num(r.violationTime()), num(r.lead()), r.unit(),
+                    r.forecast() == null || r.forecast().atWarning() == null ? "-"
+                            : num(r.forecast().atWarning().probability()),
+                    r.forecast() == null ? "-" : num(r.forecast().peak()), elim,
                     r.noMatch() ? " [no-match]" : "", r.sudden() ? " [sudden violation]" : "");
         }
     }

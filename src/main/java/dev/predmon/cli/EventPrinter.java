@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.Clock;
 
@@ -48,7 +49,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         } else {
             String text = toText(e);
             if (text != null) {
-                out.println(log == null ? text : log + ": " + text);
+                out.println(Terminal.line(log == null ? text : log + ": " + text));
             }
         }
         out.flush();
@@ -63,8 +64,12 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     static String toJson(MonitorEvent e, String log) {
         Object o;
         if (e instanceof MonitorEvent.Warning w) {
-            o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.scenarios().get(0),
-                    w.scenarios(), w.battery(), w.pairs());
+            o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(),
+                    w.scenarios().isEmpty() ? null : w.scenarios().get(0), w.scenarios(), w.battery(), w.pairs(),
+                    w.rule().id(), w.reason(), ForecastJson.of(w.forecast()));
+        } else if (e instanceof MonitorEvent.ForecastChanged f) {
+            o = new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
+                    ForecastJson.of(f.forecast()));
         } else if (e instanceof MonitorEvent.Violation v) {
             o = new ViolationJson("violation", v.time(), v.clock().unit(), v.line(), v.run(), v.property(), v.value(),
                     v.before());
@@ -84,7 +89,11 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     }
 
     record WarningJson(String event, double time, String unit, long line, int run, String scenario,
-                       List<String> scenarios, Double battery, long pairs) {
+                       List<String> scenarios, Double battery, long pairs, String rule, String reason,
+                       ForecastJson forecast) {
+    }
+
+    record ForecastEventJson(String event, double time, String unit, long line, int run, ForecastJson forecast) {
     }
 
     record ViolationJson(String event, double time, String unit, long line, int run, String property, double battery,
@@ -107,9 +116,12 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     String toText(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w) {
             warning = w;
-            return String.format(Locale.ROOT, "%s line %d: WARNING: the run can only be faulty scenario %s "
-                    + "(every nominal model eliminated); battery %s", at(w.time(), w.clock()), w.line(),
-                    String.join(", ", w.scenarios()), battery(w.battery()));
+            return String.format(Locale.ROOT, "%s line %d: WARNING: %s; battery %s", at(w.time(), w.clock()), w.line(),
+                    w.reason(), battery(w.battery()));
+        }
+        if (e instanceof MonitorEvent.ForecastChanged f) {
+            return verbose ? String.format(Locale.ROOT, "%s line %d: forecast: %s", at(f.time(), f.clock()), f.line(),
+                    ForecastWords.line(f.forecast())) : null;
         }
         if (e instanceof MonitorEvent.Violation v) {
             String lead = warning == null ? "no warning came before it"

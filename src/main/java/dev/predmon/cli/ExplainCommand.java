@@ -55,7 +55,7 @@ final class ExplainCommand implements Callable<Integer> {
     }
 
     private static void print(PrintWriter out, Explanation x) {
-        out.println("trace of " + x.log() + " (" + x.steps().size() + " compacted pairs):");
+        out.println("trace of " + Terminal.line(x.log()) + " (" + x.steps().size() + " compacted pairs):");
         for (Explanation.Step s : x.steps()) {
             StringBuilder ends = new StringBuilder();
             for (Explanation.ModelFate f : x.models()) {

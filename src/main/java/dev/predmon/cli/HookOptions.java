@@ -1,13 +1,19 @@
 package dev.predmon.cli;
 
 import dev.predmon.hooks.CommandHooks;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
 import java.time.Duration;
 
 /** {@code --on-warning CMD}, {@code --on-violation CMD} and their timeout: the warning delivered to the robot. */
 final class HookOptions {
+
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec mixee;
 
     @Option(names = "--on-warning", paramLabel = "CMD",
             description = "Run CMD with /bin/sh -c for each warning: the event's JSON on its standard input, its main "
@@ -25,8 +31,9 @@ final class HookOptions {
             description = "Kill a hook command still running after S seconds (default: ${DEFAULT-VALUE}).")
     void timeout(double seconds) {
         if (!(seconds > 0) || Double.isInfinite(seconds)) {
-            // picocli makes this a usage error naming the option
-            throw new IllegalArgumentException("must be a positive number of seconds, got " + seconds);
+            // a usage error of its own: picocli would name the setter method, not the option
+            throw new ParameterException(mixee.commandLine(), "--hook-timeout must be a positive number of seconds, got "
+                    + seconds);
         }
         timeoutSeconds = seconds;
     }

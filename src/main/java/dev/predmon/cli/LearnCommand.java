@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.Conflict;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.Learning;
+import dev.predmon.pipeline.UnmappedMessages;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -56,8 +57,11 @@ final class LearnCommand implements Callable<Integer> {
         List<LearnedScenario> learned = result.scenarios();
         result.notes().forEach(n -> err.println("predmon: note: " + n));
         if (!unmapped.isEmpty()) {
-            err.println("predmon: interface messages that no abstraction rule maps (not learned):");
-            unmapped.forEach((k, n) -> err.println("  " + n + " x " + k));
+            err.println("predmon: interface messages that no abstraction rule maps (not learned), by command:");
+            UnmappedMessages.lines(unmapped).forEach(line -> err.println("  " + Terminal.line(line)));
+            UnmappedMessages.likelyFix(unmapped, abstraction).ifPresent(fix -> err.println("predmon: warning: the "
+                    + "built-in abstraction '" + fix + "' maps most of what '" + abstraction.name() + "' leaves out of "
+                    + "these logs: is it the one they need? try --abstraction " + fix));
         }
         if (learned.stream().noneMatch(l -> l.spec().faulty())) {
             err.println("predmon: note: no scenario is faulty, so 'watch' can never warn with these models");

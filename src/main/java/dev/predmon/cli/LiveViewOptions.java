@@ -7,7 +7,10 @@ import dev.predmon.live.HttpAddress;
 import dev.predmon.live.LiveServer;
 import dev.predmon.model.ModelSet;
 import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.TypeConversionException;
 
 import java.io.IOException;
@@ -16,6 +19,9 @@ import java.time.Duration;
 
 /** {@code --http [HOST:]PORT} and {@code --stale-after S}: the live view, for {@code watch} and {@code demo}. */
 final class LiveViewOptions {
+
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec mixee;
 
     @Option(names = "--http", paramLabel = "[HOST:]PORT", converter = AddressConverter.class,
             description = "Also serve a live view at http://HOST:PORT/: a page with one tile per log, /events "
@@ -30,7 +36,9 @@ final class LiveViewOptions {
                     + "${DEFAULT-VALUE}).")
     void staleAfter(double seconds) {
         if (!(seconds > 0) || Double.isInfinite(seconds)) {
-            throw new IllegalArgumentException("must be a positive number of seconds, got " + seconds);
+            // a usage error of its own: picocli would name the setter method, not the option
+            throw new ParameterException(mixee.commandLine(), "--stale-after must be a positive number of seconds, got "
+                    + seconds);
         }
         staleSeconds = seconds;
     }

@@ -73,17 +73,23 @@ final class LogAgainstModels {
 
     /**
      * Checks {@code --log}, reads it with {@code abstraction} through the shared pipeline, refuses a log that gives
-     * no evidence (no monitor record, nothing the abstraction maps) and prints its parse problems to {@code err}.
+     * no evidence (no monitor record, nothing the abstraction maps, a fragment amid other bytes) and prints its parse
+     * problems to {@code err}; refuses, after its unmapped messages, a log the abstraction does not fit.
      */
     LogTrace readLog(Abstraction abstraction, PrintWriter err) throws BadInputException, IOException {
         checkLog();
         Path log = log();
         LogTrace trace = Traces.read(log, abstraction);
-        String missing = Evidence.of(trace, abstraction.name()).missing().orElse(null);
+        Evidence evidence = Evidence.of(trace, abstraction);
+        String missing = evidence.missing().or(evidence::fragment).orElse(null);
         if (missing != null) {
             throw new BadInputException(missing);
         }
         Problems.print(err, log, trace);
+        String misfit = evidence.misfit().orElse(null);
+        if (misfit != null) { // after the unmapped messages by command, which show why
+            throw new BadInputException(misfit);
+        }
         return trace;
     }
 

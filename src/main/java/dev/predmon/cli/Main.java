@@ -39,6 +39,7 @@ public final class Main {
         }
         // after the subcommands: both settings are passed down to the subcommands present when they are set
         cl.setExecutionExceptionHandler(new ErrorHandler());
+        cl.setParameterExceptionHandler(new UsageErrors());
         cl.setUsageHelpAutoWidth(true);
         return cl;
     }

@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -14,13 +15,17 @@ final class Problems {
 
     /** The parse problems of a log that gave evidence, then the interface messages no rule maps. */
     static void print(PrintWriter err, Path log, LogTrace trace) {
-        trace.problems().forEach(p -> err.println(p.format(log.toString())));
+        trace.problems().forEach(p -> err.println(Terminal.line(p.format(log.toString()))));
         unmapped(err, log, trace.unmapped());
     }
 
-    /** One line per kind of interface message no abstraction rule maps, with its count: never silently dropped. */
+    /**
+     * The interface messages no abstraction rule maps, never silently dropped: one line per command with its count
+     * and why, at most {@value UnmappedMessages#MAX_LINES} lines (a pose a message would be a line per value).
+     */
     static void unmapped(PrintWriter err, Path log, Map<String, Long> unmapped) {
-        unmapped.forEach((k, n) -> err.println(log + ": warning: " + n + " interface message(s) no rule maps: " + k));
+        UnmappedMessages.lines(unmapped).forEach(line -> err.println(Terminal.line(log + ": warning: interface "
+                + "messages no rule maps: " + line)));
         err.flush();
     }
 }

@@ -10,6 +10,7 @@ import dev.predmon.simulate.SimRun;
 import dev.predmon.simulate.Simulator;
 import dev.predmon.simulate.TruthWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -29,21 +30,26 @@ import java.util.concurrent.Callable;
 /**
  * {@code predmon simulate}: writes YARP monitor logs of the case study, one run per seed, for learning
  * ({@code --runs N --out-dir DIR}), for evaluation ({@code --out FILE} plus its {@code .truth.json}) or for a
- * live monitor to tail ({@code --realtime}).
+ * live monitor to tail ({@code --realtime}). {@link NoveltyOptions} add what a real robot does and default runs never
+ * show; {@code --runs-per-log K} puts several runs in each log.
  */
 @Command(name = "simulate", mixinStandardHelpOptions = true,
         description = {"Simulate the robot case study (behaviour tree, skills, battery and navigation components) "
                 + "and write the YARP monitor log of a run of the chosen scenario.",
                 "Scenarios: direct (nominal), recharge (nominal, recharges on the way), depleted (faulty: "
-                        + "the battery falls below 20%% before the charging station)."})
+                        + "the battery falls below 20%% before the charging station).",
+                "Novelties a real robot shows and default runs do not (blocked paths that abort, a slower robot, a "
+                        + "new place, several runs per log without Tick records) keep each run's scenario and are "
+                        + "told in the truth sidecar; docs/simulate.md describes them."})
 public final class SimulateCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
     @Option(names = "--scenario", required = true, paramLabel = "direct|recharge|depleted[,...]",
-            description = "The story to simulate. With --out and --runs, a comma-separated list: the log holds the "
-                    + "runs one after another, the list taken in turn (a robot's day: 'direct,depleted').")
+            description = "The story to simulate. With --out and --runs (or --runs-per-log), a comma-separated list: "
+                    + "the log holds the runs one after another, the list taken in turn (a robot's day: "
+                    + "'direct,depleted').")
     String scenario;
 
     @Option(names = "--seed", defaultValue = "1", description = "Seed of the run (first seed with --runs); "
@@ -94,6 +100,14 @@ public final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--crlf", description = "End lines with CR LF.")
     boolean crlf;
 
+    @Option(names = "--runs-per-log", paramLabel = "K", description = "Each log holds K runs one after another "
+            + "(seeds in turn): with --out the log FILE, with --out-dir N logs (--runs N) named after their first "
+            + "seed, each with its FILE.truth.json. See --gap and --no-ticks.")
+    Integer runsPerLog;
+
+    @Mixin
+    NoveltyOptions novelty = new NoveltyOptions();
+
     @Option(names = "--noise", defaultValue = "0", paramLabel = "SIGMA",
             description = "Gaussian noise of this standard deviation (percentage points) on every battery reading; "
                     + "the tree reacts to the noisy reading, as a real one would. Default: ${DEFAULT-VALUE}.")
@@ -109,17 +123,24 @@ public final class SimulateCommand implements Callable<Integer> {
                 day.add(Scenario.fromId(id.strip()));
             }
             s = day.get(0);
-            options = new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise);
+            options = new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise,
+                    novelty.novelties());
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage(), e);
         }
         checkCombination();
-        if (day.size() > 1 && (runs == null || out == null)) {
-            throw new ParameterException(spec.commandLine(), "several scenarios need --out FILE and --runs N");
+        boolean dayLog = out != null && (runs != null || runsPerLog != null);
+        if (day.size() > 1 && !dayLog) {
+            throw new ParameterException(spec.commandLine(),
+                    "several scenarios need --out FILE and --runs N (or --runs-per-log K)");
+        }
+        if (novelty.gap != null && !dayLog && !(outDir != null && runsPerLog != null)) {
+            throw new ParameterException(spec.commandLine(),
+                    "--gap needs several runs in a log: --runs-per-log K, or --runs N with --out");
         }
         try {
-            if (out != null && runs != null) {
-                writeDay(day, options);
+            if (dayLog) {
+                writeDay(day, options, runs != null ? runs : runsPerLog);
             } else if (outDir != null) {
                 writeBatch(s, options);
             } else {
@@ -128,8 +149,12 @@ public final class SimulateCommand implements Callable<Integer> {
         } catch (UncheckedIOException e) {
             throw e.getCause(); // the CLI's error handler reports it: one line, exit 3
         } catch (IllegalStateException e) {
-            // No run of this scenario can tell its story with these options (an impossible --early-warning).
-            throw new ParameterException(spec.commandLine(), e.getMessage(), e);
+            // No run of this scenario can tell its story with these options (an impossible --early-warning, or
+            // novelties that leave a nominal run no way to stay nominal).
+            String hint = options.novelties().changesRuns() ? ": with these novelties no run keeps the scenario's "
+                    + "outcome; fewer --aborts, a shorter --stuck or a smaller --slowdown or --drain-factor leave room"
+                    : "";
+            throw new ParameterException(spec.commandLine(), e.getMessage() + hint, e);
         }
         return ExitCodes.OK;
     }
@@ -150,6 +175,21 @@ public final class SimulateCommand implements Callable<Integer> {
         if (!(speed > 0) || Double.isInfinite(speed)) {
             throw new ParameterException(spec.commandLine(), "--speed must be a positive number, got " + speed);
         }
+        if (runsPerLog != null) {
+            if (runsPerLog < 1) {
+                throw new ParameterException(spec.commandLine(), "--runs-per-log must be at least 1, got " + runsPerLog);
+            }
+            if (out == null && outDir == null) {
+                throw new ParameterException(spec.commandLine(), "--runs-per-log needs --out or --out-dir");
+            }
+            if (out != null && runs != null) {
+                throw new ParameterException(spec.commandLine(), "with --out, --runs already is the number of runs "
+                        + "in the log: give --runs or --runs-per-log, not both");
+            }
+            if (realtime) {
+                throw new ParameterException(spec.commandLine(), "--runs-per-log cannot be combined with --realtime");
+            }
+        }
     }
 
     private void writeBatch(Scenario s, SimOptions options) throws IOException, BadInputException {
@@ -159,32 +199,48 @@ public final class SimulateCommand implements Callable<Integer> {
         }
         Files.createDirectories(outDir);
         int n = runs == null ? 1 : runs;
-        for (long k = seed; k < seed + n; k++) {
+        int perLog = runsPerLog == null ? 1 : runsPerLog;
+        // Evaluation scores novel runs by their truth; a plain batch keeps the files it always had.
+        boolean truths = runsPerLog != null || options.novelties().any();
+        for (long k = seed; k < seed + (long) n * perLog; k += perLog) {
+            Path log = outDir.resolve(s.id() + "-" + k + ".log");
+            if (runsPerLog != null) {
+                writeDayLog(Day.simulate(List.of(s), k, perLog, options), options, log);
+                continue;
+            }
             SimRun run = Simulator.run(s, k, options);
-            try (Writer w = Files.newBufferedWriter(outDir.resolve(s.id() + "-" + k + ".log"), StandardCharsets.UTF_8)) {
+            try (Writer w = Files.newBufferedWriter(log, StandardCharsets.UTF_8)) {
                 LogWriter.write(run, options, w);
+            }
+            if (truths) {
+                TruthWriter.writeTruth(run.truth(), TruthWriter.sidecarOf(log));
             }
         }
         TruthWriter.writeScenario(s, outDir);
-        spec.commandLine().getErr().println("simulate: wrote " + n + " " + s.id() + " runs to " + outDir);
+        spec.commandLine().getErr().println("simulate: wrote " + n + " " + s.id()
+                + (runsPerLog == null ? " runs" : " logs of " + perLog + " runs each") + " to " + outDir);
     }
 
-    /** One log holding {@code runs} runs one after another, and a sidecar listing each run's truth. */
-    private void writeDay(List<Scenario> scenarios, SimOptions options) throws IOException {
-        List<SimRun> day = Day.simulate(scenarios, seed, runs, options);
+    /** One log holding {@code count} runs one after another, and a sidecar listing each run's truth. */
+    private void writeDay(List<Scenario> scenarios, SimOptions options, int count) throws IOException {
+        List<SimRun> day = Day.simulate(scenarios, seed, count, options);
         Path parent = out.toAbsolutePath().getParent();
         if (parent != null) {
             Files.createDirectories(parent);
         }
+        writeDayLog(day, options, out);
+        spec.commandLine().getErr().println("simulate: wrote " + count + " runs one after another to " + out);
+    }
+
+    private static void writeDayLog(List<SimRun> day, SimOptions options, Path log) throws IOException {
         StringBuilder truths = new StringBuilder("[");
-        try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+        try (Writer w = Files.newBufferedWriter(log, StandardCharsets.UTF_8)) {
             for (SimRun run : day) {
                 LogWriter.write(run, options, w);
                 truths.append(truths.length() > 1 ? ",\n" : "\n").append(TruthWriter.toJson(run.truth()));
             }
         }
-        Files.writeString(TruthWriter.sidecarOf(out), truths.append("\n]\n"));
-        spec.commandLine().getErr().println("simulate: wrote " + runs + " runs one after another to " + out);
+        Files.writeString(TruthWriter.sidecarOf(log), truths.append("\n]\n"));
     }
 
     private void writeOne(Scenario s, SimOptions options) throws IOException {

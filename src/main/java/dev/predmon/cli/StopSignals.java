@@ -8,9 +8,10 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * While {@code watch} follows a log, SIGINT (Ctrl-C) and SIGTERM interrupt the following thread instead of ending
- * the JVM (exit 130 or 143, no summary): watch then stops as after any interrupt, prints its summary and exits per
- * the exit-code table. The previous handlers are restored on {@link #close()}. A signal that was ignored when the
+ * While {@code watch} follows a log, SIGINT (Ctrl-C), SIGTERM and SIGHUP interrupt the following thread instead of
+ * ending the JVM (exit 130, 143 or 129, no summary): watch then stops as after any interrupt, prints its summary and
+ * exits per the exit-code table. SIGHUP is a stop like SIGTERM: it is what a closed terminal or SSH session sends,
+ * and a watch that dies of it without its summary loses the verdict of every run it followed. The previous handlers are restored on {@link #close()}. A signal that was ignored when the
  * JVM started (a background job of a script ignores SIGINT) stays ignored, and where the JVM keeps the signals to
  * itself ({@code -Xrs}) nothing changes.
  *
@@ -19,7 +20,7 @@ import java.util.Map;
  */
 final class StopSignals implements AutoCloseable {
 
-    private static final List<String> STOP = List.of("INT", "TERM");
+    private static final List<String> STOP = List.of("INT", "TERM", "HUP");
 
     private final Map<Signal, SignalHandler> previous = new LinkedHashMap<>();
     private volatile String received;
@@ -27,7 +28,7 @@ final class StopSignals implements AutoCloseable {
     private StopSignals() {
     }
 
-    /** From now until {@link #close()}, SIGINT and SIGTERM interrupt {@code thread}. */
+    /** From now until {@link #close()}, SIGINT, SIGTERM and SIGHUP interrupt {@code thread}. */
     static StopSignals interrupting(Thread thread) {
         StopSignals s = new StopSignals();
         for (String name : STOP) {
@@ -44,7 +45,7 @@ final class StopSignals implements AutoCloseable {
         return s;
     }
 
-    /** The signal that stopped watching ({@code SIGINT}, {@code SIGTERM}), or null. */
+    /** The signal that stopped watching ({@code SIGINT}, {@code SIGTERM}, {@code SIGHUP}), or null. */
     String received() {
         return received;
     }

@@ -5,11 +5,14 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
 import dev.predmon.model.ModelSet;
+import dev.predmon.forecast.ForecastWords;
+import dev.predmon.monitor.WarningRule;
 import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.WatchedLog;
+import dev.predmon.pipeline.Evidence;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -33,7 +36,7 @@ import java.util.concurrent.TimeUnit;
                 + "matches. The built-in safety monitor reports the property's violation alongside.",
                 "Several logs (--log repeated, a directory or a glob) are watched in one process, each with its "
                         + "own monitor; each event then names its log.",
-                "Ctrl-C (SIGINT) or SIGTERM stops it: it prints the end summary and exits as below.",
+                "Ctrl-C (SIGINT), SIGTERM or SIGHUP stops it: it prints the end summary and exits as below.",
                 "Exit 1 when a warning was raised, 5 when no model matches the run any more, 0 otherwise; 3 when "
                         + "the log held nothing to judge (with --no-follow, at the end of the file)."})
 final class WatchCommand implements Callable<Integer> {
@@ -46,6 +49,9 @@ final class WatchCommand implements Callable<Integer> {
 
     @Mixin
     ConfirmOption confirm;
+
+    @Mixin
+    RuleOption rule;
 
     @Option(names = "--no-follow", description = "Process to the end of the file and exit.")
     boolean noFollow;
@@ -94,19 +100,25 @@ final class WatchCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
         }
         if (!set.hasFaulty()) {
-            err.println("predmon: note: " + set.dir() + " has no faulty scenario, so no warning can ever be raised");
+            err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " has no faulty scenario, so no warning can ever be raised");
+        }
+        WarningRule warnBy = rule.value(set);
+        if (set.forecast() == null) {
+            err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " was learned without a forecast; warnings follow the match "
+                    + "rule. Run 'predmon learn' again to add it");
         }
         Board board = liveView.board(set, abstraction);
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
-                     noFollow, hookOptions.open(err), board, abstraction.name());
-             Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), outputs)) {
+                     noFollow, hookOptions.open(err), board, abstraction, p -> !sources.named(p));
+             Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), warnBy,
+                     outputs)) {
             sources.find().forEach(fleet::add);
             String stop = "end-of-file";
             if (noFollow) {
                 fleet.drain();
             } else {
-                sources.missing().forEach(m -> err.println("predmon: waiting for " + m + " to appear"));
+                sources.missing().forEach(m -> err.println("predmon: waiting for " + Terminal.line(m) + " to appear"));
                 err.flush();
                 try (StopSignals signals = StopSignals.interrupting(Thread.currentThread())) {
                     fleet.follow(sources, TimeUnit.MILLISECONDS.toNanos(pollMillis), polling);
@@ -115,22 +127,39 @@ final class WatchCommand implements Callable<Integer> {
                 Thread.interrupted(); // stopped: the summaries are written in full
             }
             List<Integer> codes = new ArrayList<>();
+            boolean anyJudged = fleet.logs().stream().anyMatch(l -> whyNoVerdict(outputs.evidence(l)).isEmpty());
             for (WatchedLog l : fleet.logs()) {
-                Optional<String> missing = outputs.evidence(l).missing();
-                if (noFollow && missing.isPresent()) {
+                Evidence evidence = outputs.evidence(l);
+                Optional<String> refused = refusal(evidence);
+                Optional<String> misfit = refused.isPresent() ? Optional.empty() : evidence.misfit();
+                boolean beside = outputs.besideTheLogs(l);
+                if (beside && anyJudged) {
+                    continue; // not a log, beside one that was judged: skipped silently
+                }
+                if ((noFollow || beside) && refused.isPresent()) { // said once, and no summary of nothing
                     if (!several) {
-                        throw new BadInputException(missing.get());
+                        throw new BadInputException(refused.get());
                     }
-                    err.println("predmon: " + missing.get());
+                    err.println("predmon: " + Terminal.line(refused.get()));
+                    codes.add(ExitCodes.BAD_INPUT);
+                    continue;
+                }
+                if (noFollow && misfit.isPresent()) { // which messages, by command, then why there is no verdict
+                    Problems.unmapped(err, l.path(), l.monitor().unmapped());
+                    if (!several) {
+                        throw new BadInputException(misfit.get());
+                    }
+                    err.println("predmon: " + Terminal.line(misfit.get()));
                     codes.add(ExitCodes.BAD_INPUT);
                     continue;
                 }
                 if (noFollow) {
                     outputs.flushProblems(l);
                 }
-                int code = summary(l, outputs, stop, several);
-                if (missing.isPresent()) {
-                    err.println("predmon: " + (Files.exists(l.path()) ? missing.get()
+                Optional<String> why = refused.or(() -> misfit);
+                int code = summary(l, outputs, stop, several, why.isEmpty());
+                if (why.isPresent()) {
+                    err.println("predmon: " + Terminal.line(Files.exists(l.path()) ? why.get()
                             : l.name() + ": stopped before the file appeared; no verdict"));
                     code = ExitCodes.BAD_INPUT;
                 }
@@ -139,6 +168,20 @@ final class WatchCommand implements Callable<Integer> {
             err.flush();
             return codes.size() == 1 ? codes.get(0) : fleetCode(codes);
         }
+    }
+
+    /**
+     * Why a log can be given no verdict at all: nothing to judge, or (with {@code --no-follow}, where the whole file
+     * is known) a file that is mostly not records.
+     */
+    private Optional<String> refusal(Evidence evidence) {
+        Optional<String> missing = evidence.missing();
+        return noFollow ? missing.or(evidence::fragment) : missing;
+    }
+
+    /** Why a log gets no verdict: {@link #refusal}, or models that do not fit it; empty when it gets one. */
+    private Optional<String> whyNoVerdict(Evidence evidence) {
+        return refusal(evidence).or(evidence::misfit);
     }
 
     /**
@@ -154,31 +197,38 @@ final class WatchCommand implements Callable<Integer> {
         return ExitCodes.BAD_INPUT;
     }
 
-    /** Prints a log's end summary (unmapped messages to stderr) and returns the exit code of its verdict. */
-    private int summary(WatchedLog log, WatchOutputs outputs, String stop, boolean several) {
+    /**
+     * Prints a log's end summary (unmapped messages to stderr) and returns the exit code of its verdict.
+     *
+     * @param judged whether the log gets a verdict at all
+     */
+    private int summary(WatchedLog log, WatchOutputs outputs, String stop, boolean several, boolean judged) {
         PredictiveMonitor m = log.monitor();
-        Map<String, Long> unmapped = m.pipeline().unmapped();
+        Map<String, Long> unmapped = m.unmapped();
         Problems.unmapped(err, log.path(), unmapped);
-        boolean judged = outputs.evidence(log).missing().isEmpty();
         List<RunOutcome> runs = m.runs();
         RunOutcome first = runs.stream().filter(r -> r.warning() != null).findFirst().orElse(runs.get(0));
         long pairs = runs.stream().mapToLong(RunOutcome::pairs).sum();
         if (input.json) {
             List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
-                    r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch())).toList();
-            End end = new End("end", stop, m.pipeline().records(), pairs, m.warning().isPresent(),
+                    r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
+                    ForecastJson.of(r.forecast()))).toList();
+            End end = new End("end", stop, m.records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), m.noMatch(), perRun,
-                    unmapped);
+                    unmapped, m.rule().id(), ForecastJson.of(runs.get(runs.size() - 1).forecast()));
             out.println(Json.line(several ? Json.tagged(end, log.name()) : end));
         } else {
             if (runs.size() > 1) {
                 for (RunOutcome r : runs) {
-                    out.println("run " + r.run() + " (from line " + r.firstLine() + "): " + r.pairs() + " compacted pairs; "
+                    out.println("run " + r.run() + " (from line " + r.firstLine()
+                            + outputs.restartBefore(log, r.run()).map(how -> ", after the log was " + how).orElse("")
+                            + "): " + r.pairs() + " compacted pairs; "
                             + (r.warning() != null ? "warning raised" : "no warning")
                             + (r.noMatch() ? ", no model matches the run" : "")
                             + (r.violation() != null ? ", property violated"
                             : r.safetyObserved() ? ", property held" : ", property not observed")
-                            + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse(""));
+                            + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse("")
+                            + (r.forecast() == null ? "" : "; last forecast " + ForecastWords.line(r.forecast())));
                 }
             }
             String verdict = !judged ? "no verdict"
@@ -186,9 +236,15 @@ final class WatchCommand implements Callable<Integer> {
                     + (m.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
                     : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
-            out.println("end of " + log.name() + (stop.equals("end-of-file") ? "" : " (stopped: " + stop + ")") + ": "
-                    + m.pipeline().records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
+            out.println("end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
+                    + stop + ")") + ": " + m.records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
+            RunOutcome last = runs.get(runs.size() - 1);
+            if (runs.size() == 1 && last.forecast() != null) {
+                // in a fleet every line names its log
+                out.println((several ? Terminal.line(log.name()) + ": " : "") + "last forecast: "
+                        + ForecastWords.line(last.forecast()));
+            }
         }
         out.flush();
         return runs.size() == 1 ? ExitCodes.of(m.noMatch(), m.warning().isPresent())
@@ -196,11 +252,13 @@ final class WatchCommand implements Callable<Integer> {
     }
 
     /** One run's verdict in the {@code end} event. */
-    record RunEnd(int run, long line, long pairs, boolean warning, boolean violation, Double lead, boolean noMatch) {
+    record RunEnd(int run, long line, long pairs, boolean warning, boolean violation, Double lead, boolean noMatch,
+                  ForecastJson forecast) {
     }
 
     /** The {@code end} event. */
     record End(String event, String stop, long records, long pairs, boolean warning, boolean violation, Double lead,
-               String unit, boolean noMatch, List<RunEnd> runs, Map<String, Long> unmapped) {
+               String unit, boolean noMatch, List<RunEnd> runs, Map<String, Long> unmapped, String rule,
+               ForecastJson forecast) {
     }
 }

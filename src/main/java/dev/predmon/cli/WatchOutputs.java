@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.hooks.CommandHooks;
 import dev.predmon.live.Board;
 import dev.predmon.live.Tile;
@@ -12,13 +13,18 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.PrintWriter;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.function.Predicate;
 
 /**
  * Where {@code watch}'s events go: each log's events to stdout through its own {@link EventPrinter} (each log has
@@ -35,7 +41,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private final boolean eliminations;
     private final boolean several;
     private final boolean noFollow;
-    private final String abstraction;
+    private final Abstraction abstraction;
+    private final Predicate<Path> found;
     private final Map<WatchedLog, Outlet> outlets = new HashMap<>();
     private final CommandHooks hooks;
     private final Board board;
@@ -50,6 +57,10 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         ParseProblem firstProblem;
         /** Something recognisable arrived, or the notice that nothing did was given. */
         boolean settled;
+        /** The runs that began where the log was truncated or replaced, with which of the two. */
+        final Map<Integer, String> restarts = new HashMap<>();
+        /** The commands of unmapped messages said at their first sighting. */
+        final Set<String> commandsSeen = new HashSet<>();
 
         Outlet(EventPrinter printer, Tile tile) {
             this.printer = printer;
@@ -61,10 +72,11 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
      * @param several     whether events must name their log (several logs, or a directory or glob)
      * @param hooks       the hook commands, or null; closed with this
      * @param board       the live view, or null
-     * @param abstraction the abstraction's name, for messages about logs it maps nothing of
+     * @param abstraction the abstraction logs are read with, for messages about logs it does not fit
+     * @param found       whether a log was found under a directory or glob rather than named
      */
     WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
-                 CommandHooks hooks, Board board, String abstraction) {
+                 CommandHooks hooks, Board board, Abstraction abstraction, Predicate<Path> found) {
         this.out = out;
         this.err = err;
         this.json = json;
@@ -74,6 +86,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         this.hooks = hooks;
         this.board = board;
         this.abstraction = abstraction;
+        this.found = found;
     }
 
     @Override
@@ -85,14 +98,13 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     @Override
     public void event(WatchedLog log, MonitorEvent e) {
         if (e instanceof MonitorEvent.Unmapped u) {
-            if (!noFollow) { // first sighting of each kind while following; with --no-follow the totals say it
-                err.println(log.name() + ":" + u.line() + ": warning: interface message no abstraction rule maps: "
-                        + u.message() + " (first of its kind; the totals come at the stop)");
-                err.flush();
-            }
+            firstSighting(log, u);
             return;
         }
         Outlet o = outlets.get(log);
+        if (e instanceof MonitorEvent.Restarted r) {
+            o.restarts.put(log.monitor().run(), r.reason()); // the monitor has begun the run that follows it
+        }
         o.printer.accept(e);
         boolean hook = hooks != null && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
         if (hook || o.tile != null) {
@@ -104,6 +116,24 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
                 hooks.event(log.name(), e, tagged);
             }
         }
+    }
+
+    /**
+     * While following, the first message of each command no rule maps, with its line, for at most
+     * {@value UnmappedMessages#MAX_LINES} commands (one line per pose value would bury everything else); with
+     * {@code --no-follow} the totals by command at the end say it all.
+     */
+    private void firstSighting(WatchedLog log, MonitorEvent.Unmapped u) {
+        Outlet o = outlets.get(log);
+        if (noFollow || o.commandsSeen.size() > UnmappedMessages.MAX_LINES
+                || !o.commandsSeen.add(UnmappedMessages.command(u.message()))) {
+            return;
+        }
+        err.println(Terminal.line(log.name() + ":" + u.line() + ": warning: " + (o.commandsSeen.size()
+                > UnmappedMessages.MAX_LINES ? "more commands no abstraction rule maps; the totals come at the stop"
+                : "interface message no abstraction rule maps: " + u.message() + " (first of its command; the "
+                + "totals come at the stop)")));
+        err.flush();
     }
 
     @Override
@@ -123,9 +153,12 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         }
         if (!noFollow && !o.settled) {
             Evidence evidence = evidence(log);
+            if (besideTheLogs(log)) {
+                return; // a file beside the logs of a directory: said at the stop, and only if no log was judged
+            }
             Optional<String> notice = evidence.earlyNotice();
             notice.ifPresent(n -> {
-                err.println("predmon: " + n);
+                err.println("predmon: " + Terminal.line(n));
                 err.flush();
             });
             o.settled = notice.isPresent() || evidence.recognised();
@@ -139,7 +172,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             o.firstProblem = p;
         }
         if (!noFollow) {
-            err.println(p.format(log.name()));
+            err.println(Terminal.line(p.format(log.name())));
             err.flush();
         } else if (o.held.size() < Traces.MAX_PROBLEMS) {
             o.held.add(p);
@@ -151,25 +184,38 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     /** With {@code --no-follow}: prints the problems held for {@code log}. */
     void flushProblems(WatchedLog log) {
         Outlet o = outlets.get(log);
-        o.held.forEach(p -> err.println(p.format(log.name())));
+        o.held.forEach(p -> err.println(Terminal.line(p.format(log.name()))));
         if (o.moreProblems > 0) {
-            err.println(log.name() + ": " + o.moreProblems + " more problem(s) not shown");
+            err.println(Terminal.line(log.name()) + ": " + o.moreProblems + " more problem(s) not shown");
         }
         o.held.clear();
         err.flush();
+    }
+
+    /**
+     * Whether {@code log} is a file found beside the logs of a directory or glob that holds no monitor record (notes,
+     * a core dump): not a log that failed, so it is skipped silently when another log was judged.
+     */
+    boolean besideTheLogs(WatchedLog log) {
+        return found.test(log.path()) && log.monitor().records() == 0;
+    }
+
+    /** How run {@code run} of {@code log} began, when it began where the log was truncated or replaced. */
+    Optional<String> restartBefore(WatchedLog log, int run) {
+        return Optional.ofNullable(outlets.get(log).restarts.get(run));
     }
 
     /** What {@code log} has given so far to judge it by. */
     Evidence evidence(WatchedLog log) {
         PredictiveMonitor m = log.monitor();
         long pairs = m.runs().stream().mapToLong(RunOutcome::pairs).sum();
-        return new Evidence(log.path(), log.watcher()::lines, m.pipeline().records(), m.pipeline().interfaceRecords(),
-                pairs, m.pipeline().unmapped(), abstraction, outlets.get(log).firstProblem);
+        return new Evidence(log.path(), log.watcher()::lines, m.records(), m.interfaceRecords(), pairs, m.unmapped(),
+                abstraction, outlets.get(log).firstProblem);
     }
 
     @Override
     public void rescanFailed(java.io.IOException e) {
-        String message = "predmon: looking for new logs: " + e.getMessage();
+        String message = "predmon: looking for new logs: " + Terminal.line(e.getMessage());
         if (!message.equals(lastRescanFailure)) { // once, not every second
             err.println(message);
             err.flush();

@@ -18,9 +18,18 @@ import java.util.List;
  * @param runs        every judged run, in scenario then log order
  * @param notes       what a reader should know (scenarios missing from a fold's training data, skipped logs)
  * @param models      the models to show: learned on all of {@code --logs} (not serialised)
+ * @param rule        the warning rule the runs were judged by
+ * @param forecast    how good the forecast was, or null when the models carry none
  */
-@JsonPropertyOrder({"mode", "folds", "threshold", "abstraction", "scenarios", "confusion", "notes", "runs"})
+@JsonPropertyOrder({"mode", "folds", "threshold", "abstraction", "rule", "scenarios", "confusion", "forecast", "notes",
+        "runs"})
 public record Evaluation(String mode, int folds, int threshold, String abstraction, List<ScenarioSummary> scenarios,
                          Confusion confusion, List<RunResult> runs, List<String> notes,
-                         @JsonIgnore ModelSet models) {
+                         @JsonIgnore ModelSet models, String rule, ForecastScore forecast) {
+
+    /** An evaluation by the match rule, without a forecast. */
+    public Evaluation(String mode, int folds, int threshold, String abstraction, List<ScenarioSummary> scenarios,
+                      Confusion confusion, List<RunResult> runs, List<String> notes, ModelSet models) {
+        this(mode, folds, threshold, abstraction, scenarios, confusion, runs, notes, models, "match", null);
+    }
 }

@@ -2,6 +2,8 @@ package dev.predmon.evaluate;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.learn.ForecastTraining;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.Learning;
 import dev.predmon.learn.LearnedScenario;
@@ -9,6 +11,8 @@ import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.WarningRule;
 import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
@@ -40,6 +44,7 @@ public final class Evaluator {
     private final Map<Map<String, Double>, Map<Path, LogTrace>> retuned = new java.util.HashMap<>();
     private final Progress progress;
     private final Alphabet<String> alphabet;
+    private WarningRule rule;
 
     public Evaluator(Abstraction abstraction, int threshold, Progress progress) {
         this(abstraction, threshold, abstraction.confirm(), progress);
@@ -52,6 +57,12 @@ public final class Evaluator {
         this.threshold = threshold;
         this.progress = progress;
         this.alphabet = ModelStore.alphabetOf(abstraction);
+    }
+
+    /** Judges by {@code rule} instead of the models' default ({@link PredictiveMonitor#defaultRule}). */
+    public Evaluator rule(WarningRule rule) {
+        this.rule = rule;
+        return this;
     }
 
     /** Learns on {@code train} and judges every log of {@code test}. */
@@ -106,12 +117,13 @@ public final class Evaluator {
                     runs.stream().filter(r -> r.scenario().equals(s.name())).toList()));
         }
         return new Evaluation(mode, k, threshold, abstraction.name(), List.copyOf(summaries), Confusion.of(runs),
-                List.copyOf(runs), List.copyOf(notes), models);
+                List.copyOf(runs), List.copyOf(notes), models, ruleFor(models).id(), ForecastScore.of(runs));
     }
 
     private List<RunResult> judge(Path log, ScenarioSpec s, int fold, ModelSet models) throws BadInputException {
         try {
-            return Replay.run(log, s.name(), s.faulty(), s.runs(), fold, models, abstraction, threshold, confirm);
+            return Replay.run(log, s.name(), s.faulty(), s.runs(), fold, models, abstraction, threshold, confirm,
+                    ruleFor(models));
         } catch (IOException e) {
             throw BadInputException.cannotRead(log, e);
         }
@@ -160,6 +172,7 @@ public final class Evaluator {
             }
         }
         List<LearnedScenario> learned = new ArrayList<>();
+        List<ScenarioSpec> learnedSpecs = new ArrayList<>();
         for (ScenarioSpec s : train) {
             Map<Path, LogTrace> read = traces;
             List<MealyTrace> own = s.logs().stream().flatMap(log -> read.get(log).samples(s.runs()).stream()).toList();
@@ -168,8 +181,15 @@ public final class Evaluator {
                 continue;
             }
             learned.add(ScenarioLearner.learnSamples(s, own, alphabet));
+            learnedSpecs.add(s);
         }
-        return LearnedModels.modelSet(learned, tuned);
+        ForecastModel forecast = ForecastTraining.train(learnedSpecs, traces, LearnedModels.machines(learned), alphabet,
+                ForecastTraining.limit(tuned), confirm);
+        return LearnedModels.modelSet(learned, tuned, forecast);
+    }
+
+    private WarningRule ruleFor(ModelSet models) {
+        return rule != null ? rule : PredictiveMonitor.defaultRule(models);
     }
 
     private static int count(List<ScenarioSpec> specs) {

@@ -6,12 +6,18 @@ import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
+import dev.predmon.monitor.WarningRule;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
 import java.util.List;
 
 /**
@@ -39,9 +45,26 @@ public final class Replay {
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
                                       ModelSet models, Abstraction abstraction, int threshold, int confirm)
             throws IOException {
+        return run(log, scenario, faulty, label, fold, models, abstraction, threshold, confirm,
+                PredictiveMonitor.defaultRule(models));
+    }
+
+    /** As above, warning by {@code rule}. */
+    public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
+                                      ModelSet models, Abstraction abstraction, int threshold, int confirm,
+                                      WarningRule rule) throws IOException {
         List<MonitorEvent> events = new ArrayList<>();
         int[] problems = {0};
-        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, events::add);
+        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, rule, events::add);
+        Map<Integer, List<Double>> probabilities = new HashMap<>();
+        Set<Integer> violated = new HashSet<>();
+        monitor.onEveryForecast((f, run) -> {
+            if (!violated.contains(run) && f.basis() != Forecast.Basis.VIOLATED) {
+                probabilities.computeIfAbsent(run, r -> new ArrayList<>()).add(f.probability());
+            } else {
+                violated.add(run);
+            }
+        });
         try (LogWatcher watcher = new LogWatcher(log, monitor, p -> problems[0]++)) {
             watcher.drain();
         }
@@ -73,7 +96,11 @@ public final class Replay {
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
                     runs.size() == 1 ? monitor.pipeline().records() : -1, o.pairs(), problems[0],
                     List.copyOf(eliminations), o.safetyObserved(), monitor.clock().unit(),
-                    violation != null && sudden(violation, abstraction)));
+                    violation != null && sudden(violation, abstraction),
+                    models.forecast() == null ? null : new RunResult.ForecastTrace(
+                            List.copyOf(probabilities.getOrDefault(o.run(), List.of())), o.forecast(),
+                            warning == null ? null : warning.forecast(), models.forecast().baseRate(),
+                            models.forecast().threshold())));
         }
         return results;
     }

@@ -1,5 +1,7 @@
 package dev.predmon.evaluate;
 
+import dev.predmon.forecast.Forecast;
+
 import java.util.List;
 
 /**
@@ -28,11 +30,41 @@ import java.util.List;
  * @param sudden           whether the violation came in one reading from more than {@link #SUDDEN_MARGIN} points above
  *                         the threshold (the battery set by hand from 65% to 10%, say): the violation is the jump itself,
  *                         and no monitor that reads the battery can see it coming. False without a violation.
+ * @param forecast         the run's forecasts, or null when the models carry none
  */
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
-                        List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden) {
+                        List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
+                        ForecastTrace forecast) {
+
+    /** A result without forecasts. */
+    public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
+                     Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
+                     Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
+                     List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden) {
+        this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, batteryAtWarning,
+                violationTime, lead, noMatch, noMatchTime, records, pairs, problems, eliminations, safetyObserved, unit,
+                sudden, null);
+    }
+
+    /**
+     * What the forecast said during a run.
+     *
+     * @param probabilities the probability after each pair before the violation (or the end)
+     * @param last          the last forecast of the run (for its last state), or null without a pair
+     * @param atWarning     the forecast at the warning, or null
+     * @param baseRate      the share of violating runs among the training runs of the models that judged it
+     * @param threshold     the probability at which the forecast rule warns
+     */
+    public record ForecastTrace(List<Double> probabilities, Forecast last, Forecast atWarning, double baseRate,
+                                double threshold) {
+
+        /** The highest probability before the violation, 0 without a pair. */
+        public double peak() {
+            return probabilities.stream().mapToDouble(Double::doubleValue).max().orElse(0.0);
+        }
+    }
 
     /**
      * How far above the safety threshold the reading before a violation may be for the violation to count as

@@ -27,7 +27,7 @@ public final class HookEnvironment {
         Map<String, String> env = new LinkedHashMap<>();
         if (event instanceof MonitorEvent.Warning w) {
             put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.battery());
-            env.put("PREDMON_SCENARIO", w.scenarios().get(0));
+            env.put("PREDMON_SCENARIO", w.scenarios().isEmpty() ? "" : w.scenarios().get(0));
             env.put("PREDMON_SCENARIOS", String.join(",", w.scenarios()));
         } else if (event instanceof MonitorEvent.Violation v) {
             put(env, "violation", log, v.run(), v.time(), v.clock().unit(), v.line(), v.value());

@@ -8,7 +8,9 @@ import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
+import dev.predmon.forecast.ForecastModel;
 import net.automatalib.alphabet.Alphabet;
+import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -60,6 +62,18 @@ public final class LearnedModels {
 
     /** The learned machines as a model set in memory, as {@code watch} would load them. */
     public static ModelSet modelSet(List<LearnedScenario> scenarios, Abstraction abstraction) {
+        return modelSet(scenarios, abstraction, null);
+    }
+
+    /** The machines by id, in scenario order. */
+    public static Map<String, CompactMealy<String, String>> machines(List<LearnedScenario> scenarios) {
+        Map<String, CompactMealy<String, String>> machines = new LinkedHashMap<>();
+        scenarios.forEach(s -> s.machines().forEach(m -> machines.put(m.id(), m.machine())));
+        return machines;
+    }
+
+    /** The learned machines and their forecast as a model set in memory, as {@code watch} would load them. */
+    public static ModelSet modelSet(List<LearnedScenario> scenarios, Abstraction abstraction, ForecastModel forecast) {
         Alphabet<String> alphabet = ModelStore.alphabetOf(abstraction);
         List<LearnedModel> models = new ArrayList<>();
         for (LearnedScenario s : scenarios) {
@@ -67,7 +81,7 @@ public final class LearnedModels {
                 models.add(new LearnedModel(m.id(), s.spec().name(), s.spec().faulty(), m.machine(), alphabet));
             }
         }
-        return new ModelSet(null, index(scenarios, abstraction), List.copyOf(models));
+        return new ModelSet(null, index(scenarios, abstraction), List.copyOf(models), forecast);
     }
 
     /** All samples of a scenario, for export. */

@@ -2,6 +2,7 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastModel;
 import dev.predmon.model.ModelStore;
 
 import java.io.IOException;
@@ -24,7 +25,7 @@ public final class Learning {
      * @param scenarios every scenario learned, sorted by name
      * @param notes     what the user should know about the model directory (usually nothing)
      */
-    public record Result(List<LearnedScenario> scenarios, List<String> notes) {
+    public record Result(List<LearnedScenario> scenarios, List<String> notes, ForecastModel forecast) {
     }
 
     /**
@@ -36,6 +37,16 @@ public final class Learning {
      */
     public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each)
             throws BadInputException, IOException {
+        return learnAndWrite(logs, models, abstraction, each, step -> { });
+    }
+
+    /**
+     * As above; {@code step} is told each step of replacing the model directory before it is taken
+     * ({@link ModelStore#write(Path, dev.predmon.model.ModelIndex, Map, String, ForecastModel, Consumer)}), so that a
+     * test can kill a learn at each.
+     */
+    public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each,
+                                       Consumer<String> step) throws BadInputException, IOException {
         ModelStore.checkWritable(models, logs);
         List<LearnedScenario> learned = new ArrayList<>();
         List<ScenarioSpec> specs = ScenarioLayout.scan(logs, abstraction);
@@ -50,9 +61,11 @@ public final class Learning {
             each.accept(l);
             learned.add(l);
         }
+        ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
+                ModelStore.alphabetOf(abstraction), ForecastTraining.limit(tuned), tuned.confirm());
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
-                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson());
-        return new Result(List.copyOf(learned), notes);
+                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson(), forecast, step);
+        return new Result(List.copyOf(learned), notes, forecast);
     }
 
     /**

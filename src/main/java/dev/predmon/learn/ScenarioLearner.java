@@ -81,7 +81,8 @@ public final class ScenarioLearner {
         for (List<MealyTrace> group : grouping.groups()) {
             String id = grouping.groups().size() == 1 ? spec.name() : spec.name() + "-" + k;
             long start = System.nanoTime();
-            CompactMealy<String, String> m = MealyLearner.learn(alphabet, group);
+            // In the state numbering a model directory is read back with, so that per-state statistics fit both.
+            CompactMealy<String, String> m = ModelStore.canonical(MealyLearner.learn(alphabet, group), alphabet);
             long millis = (System.nanoTime() - start) / 1_000_000;
             machines.add(new LearnedScenario.Machine(id, m, group, millis));
             k++;

@@ -1,10 +1,6 @@
 package dev.predmon.live;
 
-import com.sun.net.httpserver.HttpExchange;
-
 import java.io.IOException;
-import java.io.OutputStream;
-import java.nio.charset.StandardCharsets;
 import java.util.Set;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
@@ -47,26 +43,24 @@ final class EventStream implements AutoCloseable {
     }
 
     /** Serves one client until it goes away or the stream is closed; returns then. */
-    void serve(HttpExchange x) throws IOException {
+    void serve(Exchange x) throws IOException {
         if (closed || clients.size() >= MAX_CLIENTS) {
-            Responses.text(x, 503, "too many event streams open (" + MAX_CLIENTS + ")\n");
+            x.send(503, "text/plain; charset=utf-8", "too many event streams open (" + MAX_CLIENTS + ")\n");
             return;
         }
         BlockingQueue<String> queue = new ArrayBlockingQueue<>(QUEUE);
         clients.add(queue);
         try {
-            x.getResponseHeaders().set("Content-Type", "text/event-stream; charset=utf-8");
-            x.getResponseHeaders().set("Cache-Control", "no-store");
-            x.sendResponseHeaders(200, 0);
-            OutputStream out = x.getResponseBody();
-            write(out, "retry: 1000\n\n");
+            x.answerHeader("Cache-Control", "no-store");
+            x.stream(200, "text/event-stream; charset=utf-8");
+            x.write("retry: 1000\n\n");
             while (!closed) {
                 String next = queue.poll(KEEPALIVE_MILLIS, TimeUnit.MILLISECONDS);
                 if (next == CLOSE) {
                     break;
                 }
                 // Events are single-line JSON; a line break would end the data line, so it is split as SSE says.
-                write(out, next == null ? ": keep-alive\n\n" : "data: " + next.replace("\n", "\ndata: ") + "\n\n");
+                x.write(next == null ? ": keep-alive\n\n" : "data: " + next.replace("\n", "\ndata: ") + "\n\n");
             }
         } catch (IOException gone) {
             // the client went away: nothing to tell anyone
@@ -74,13 +68,7 @@ final class EventStream implements AutoCloseable {
             Thread.currentThread().interrupt();
         } finally {
             clients.remove(queue);
-            x.close();
         }
-    }
-
-    private static void write(OutputStream out, String text) throws IOException {
-        out.write(text.getBytes(StandardCharsets.UTF_8));
-        out.flush();
     }
 
     /** Ends every client's stream. */

@@ -83,17 +83,25 @@ public final class Tile {
         } else if (e instanceof MonitorEvent.NoMatch) {
             noMatch = true;
         } else if (e instanceof MonitorEvent.RunStarted r) {
-            earlier.addLast(verdict());
-            if (earlier.size() > EARLIER_RUNS) {
-                earlier.removeFirst();
-                earlierOmitted++;
-            }
+            keepVerdict();
             startRun(r.run(), r.line());
         } else if (e instanceof MonitorEvent.Restarted) {
-            earlier.clear();
-            earlierOmitted = 0;
+            // A rotated log goes on in a new run, as the monitor numbers it; the runs before it stay on the tile.
+            boolean begun = records > 0;
+            if (begun) {
+                keepVerdict();
+            }
             records = 0;
-            startRun(0, 1);
+            startRun(begun ? run + 1 : run, 1);
+        }
+    }
+
+    /** The run shown so far becomes an earlier run (the last {@value #EARLIER_RUNS} are kept). */
+    private void keepVerdict() {
+        earlier.addLast(verdict());
+        if (earlier.size() > EARLIER_RUNS) {
+            earlier.removeFirst();
+            earlierOmitted++;
         }
     }
 

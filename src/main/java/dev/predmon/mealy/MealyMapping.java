@@ -1,6 +1,7 @@
 package dev.predmon.mealy;
 
 import dev.predmon.compact.IoPair;
+import net.automatalib.automaton.transducer.CompactMealy;
 import net.automatalib.word.Word;
 import net.automatalib.word.WordBuilder;
 
@@ -19,6 +20,25 @@ public final class MealyMapping {
     public static final String OK = "OK";
 
     private MealyMapping() {
+    }
+
+    /**
+     * The state {@code machine} reaches from {@code state} on the pair {@code (input, output)}, as its two steps
+     * {@code input/OK} and {@code Delta/output}; -1 when it cannot take the input or answers otherwise.
+     */
+    public static int pairStep(CompactMealy<String, String> machine, int state, String input, String output) {
+        if (!machine.getInputAlphabet().containsSymbol(input)) {
+            return -1;
+        }
+        Integer mid = machine.getSuccessor(state, input);
+        if (mid == null || !OK.equals(machine.getOutput(state, input))) {
+            return -1;
+        }
+        Integer next = machine.getSuccessor(mid, DELTA);
+        if (next == null || !output.equals(machine.getOutput(mid, DELTA))) {
+            return -1;
+        }
+        return next;
     }
 
     /** Maps a compacted trace to its Mealy sample. */

@@ -60,7 +60,7 @@ final class IndexReader {
     }
 
     private ModelIndex index(JsonNode n, String at) throws BadInputException {
-        keys(n, at, "format", "abstraction", "alphabet", "scenarios");
+        keys(n, at, "format", "abstraction", "alphabet", "scenarios", "forecast");
         JsonNode scenarios = array(n, at, "scenarios");
         List<ModelIndex.Scenario> list = null;
         if (scenarios != null) {
@@ -71,7 +71,8 @@ final class IndexReader {
         }
         JsonNode abstraction = n.get("abstraction");
         return new ModelIndex(integer(n, at, "format"), abstraction == null || abstraction.isNull() ? null
-                : abstraction(abstraction, at + "/abstraction"), strings(n, at, "alphabet"), list);
+                : abstraction(abstraction, at + "/abstraction"), strings(n, at, "alphabet"), list,
+                n.hasNonNull("forecast") ? string(n, at, "forecast") : null);
     }
 
     private ModelIndex.AbstractionInfo abstraction(JsonNode n, String at) throws BadInputException {

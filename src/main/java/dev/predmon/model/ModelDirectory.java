@@ -2,6 +2,7 @@ package dev.predmon.model;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.BadInputException;
+import dev.predmon.forecast.ForecastFile;
 import dev.predmon.abstraction.LocatedJson;
 
 import java.io.IOException;
@@ -182,6 +183,9 @@ final class ModelDirectory {
             return null;
         }
         Set<String> own = new HashSet<>(Set.of(INDEX, ABSTRACTION));
+        if (ForecastFile.NAME.equals(root.path("forecast").asText(""))) {
+            own.add(ForecastFile.NAME);
+        }
         for (JsonNode scenario : root.get("scenarios")) {
             for (JsonNode model : scenario.path("models")) {
                 String file = model.path("file").asText("");
@@ -271,7 +275,8 @@ final class ModelDirectory {
             return s.allMatch(f -> {
                 String name = f.getFileName().toString();
                 return Files.isRegularFile(f, LinkOption.NOFOLLOW_LINKS)
-                        && (name.equals(INDEX) || name.equals(ABSTRACTION) || name.endsWith(".dot"));
+                        && (name.equals(INDEX) || name.equals(ABSTRACTION) || name.equals(ForecastFile.NAME)
+                        || name.endsWith(".dot"));
             });
         }
     }

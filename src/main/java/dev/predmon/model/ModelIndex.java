@@ -13,8 +13,16 @@ import java.util.Map;
  * @param abstraction the abstraction the models were learned with
  * @param alphabet    the Mealy input alphabet (abstraction inputs plus {@code Delta}), sorted
  * @param scenarios   the scenarios, sorted by name
+ * @param forecast    the file of the forecast's statistics ({@code forecast.json}), or null in a directory learned
+ *                    before forecasts were (it loads; the forecast is then off until the next learn)
  */
-public record ModelIndex(int format, AbstractionInfo abstraction, List<String> alphabet, List<Scenario> scenarios) {
+public record ModelIndex(int format, AbstractionInfo abstraction, List<String> alphabet, List<Scenario> scenarios,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) String forecast) {
+
+    /** An index without a forecast. */
+    public ModelIndex(int format, AbstractionInfo abstraction, List<String> alphabet, List<Scenario> scenarios) {
+        this(format, abstraction, alphabet, scenarios, null);
+    }
 
     /** Current index format. */
     public static final int FORMAT = 1;

@@ -1,16 +1,34 @@
 package dev.predmon.model;
 
+import dev.predmon.forecast.ForecastModel;
+import net.automatalib.automaton.transducer.CompactMealy;
+
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.List;
 
 /**
- * A model directory as loaded: its index and every machine.
+ * A model directory as loaded: its index, every machine and the forecast's statistics.
  *
- * @param dir    where it was read from
- * @param index  the index
- * @param models every machine, scenario by scenario in index order
+ * @param dir      where it was read from
+ * @param index    the index
+ * @param models   every machine, scenario by scenario in index order
+ * @param forecast the forecast's statistics, or null when the directory was learned without them
  */
-public record ModelSet(Path dir, ModelIndex index, List<LearnedModel> models) {
+public record ModelSet(Path dir, ModelIndex index, List<LearnedModel> models, ForecastModel forecast) {
+
+    /** Models without a forecast. */
+    public ModelSet(Path dir, ModelIndex index, List<LearnedModel> models) {
+        this(dir, index, models, null);
+    }
+
+    /** The machines by id, in model order: what the forecast follows. */
+    public Map<String, CompactMealy<String, String>> machines() {
+        Map<String, CompactMealy<String, String>> machines = new LinkedHashMap<>();
+        models.forEach(m -> machines.put(m.id(), m.machine()));
+        return machines;
+    }
 
     /** Whether some scenario is faulty: without one, no warning can ever be raised. */
     public boolean hasFaulty() {

@@ -4,6 +4,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastFile;
+import dev.predmon.forecast.ForecastModel;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.alphabet.Alphabets;
 import net.automatalib.automaton.transducer.CompactMealy;
@@ -14,6 +16,7 @@ import net.automatalib.util.automaton.copy.AutomatonCopyMethod;
 import net.automatalib.util.automaton.copy.AutomatonLowLevelCopy;
 
 import java.io.IOException;
+import java.io.ByteArrayInputStream;
 import java.io.InputStream;
 import java.io.StringWriter;
 import java.nio.channels.FileChannel;
@@ -25,6 +28,7 @@ import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -130,6 +134,23 @@ public final class ModelStore {
     public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson)
             throws IOException, BadInputException {
         return write(dir, index, dots, abstractionJson, step -> { });
+    }
+
+    /** As above, with the forecast's statistics, written as {@value ForecastFile#NAME} and listed in the index. */
+    public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson,
+                                     ForecastModel forecast) throws IOException, BadInputException {
+        return write(dir, index, dots, abstractionJson, forecast, step -> { });
+    }
+
+    /** As above; {@code step} is told each step before it is taken (see the stepped write without a forecast). */
+    public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson,
+                                     ForecastModel forecast, Consumer<String> step)
+            throws IOException, BadInputException {
+        Map<String, String> files = new LinkedHashMap<>(dots);
+        files.put(ForecastFile.NAME, ForecastFile.write(forecast));
+        ModelIndex listed = new ModelIndex(index.format(), index.abstraction(), index.alphabet(), index.scenarios(),
+                ForecastFile.NAME);
+        return write(dir, listed, files, abstractionJson, step);
     }
 
     /**
@@ -251,7 +272,24 @@ public final class ModelStore {
                         alphabet));
             }
         }
-        return new ModelSet(base, index, List.copyOf(models));
+        return new ModelSet(base, index, List.copyOf(models), forecast(base, index));
+    }
+
+    /** The forecast the index lists, or null when it lists none (a directory learned before forecasts were). */
+    private static ForecastModel forecast(Path base, ModelIndex index) throws BadInputException {
+        if (index.forecast() == null) {
+            return null;
+        }
+        Path file = base.resolve(index.forecast());
+        try {
+            return ForecastFile.read(Files.readString(file, StandardCharsets.UTF_8));
+        } catch (NoSuchFileException e) {
+            throw new BadInputException(file + ": missing (listed in " + INDEX + "); run 'predmon learn' again");
+        } catch (IOException e) {
+            throw BadInputException.cannotRead(file, e);
+        } catch (IllegalArgumentException e) {
+            throw new BadInputException(file + ": not a predmon forecast: " + e.getMessage());
+        }
     }
 
     /** Whether every scenario lists its models and every model its file (null ones were a crash, not a message). */
@@ -264,15 +302,36 @@ public final class ModelStore {
         return true;
     }
 
+    /**
+     * {@code machine} as it reads back from its DOT file: the same machine, its states numbered as every command that
+     * loads a model directory numbers them. Learning renumbers through this, so that statistics kept by state number
+     * fit the machine in memory and on disk alike.
+     */
+    public static CompactMealy<String, String> canonical(CompactMealy<String, String> machine, Alphabet<String> alphabet) {
+        try {
+            return fromDot(Path.of("(learned machine)"), new ByteArrayInputStream(
+                    toDot(machine, alphabet).getBytes(StandardCharsets.UTF_8)), alphabet);
+        } catch (BadInputException | IOException e) {
+            throw new IllegalStateException("a learned machine does not read back from its own DOT text", e);
+        }
+    }
+
     /** Parses one DOT file into a machine over the full {@code alphabet}. */
     static CompactMealy<String, String> readDot(Path file, Alphabet<String> alphabet) throws BadInputException {
-        InputModelData<String, CompactMealy<String, String>> data;
         try (InputStream in = Files.newInputStream(file)) {
-            data = DOTParsers.mealy().readModel(in);
+            return fromDot(file, in, alphabet);
         } catch (NoSuchFileException e) {
             throw new BadInputException(file + ": missing (listed in " + INDEX + ")");
         } catch (IOException e) {
             throw BadInputException.cannotRead(file, e);
+        }
+    }
+
+    private static CompactMealy<String, String> fromDot(Path file, InputStream in, Alphabet<String> alphabet)
+            throws BadInputException, IOException {
+        InputModelData<String, CompactMealy<String, String>> data;
+        try {
+            data = DOTParsers.mealy().readModel(in);
         } catch (RuntimeException e) {
             throw new BadInputException(file + ": not a Mealy machine in DOT (edges labelled 'input / output'): "
                     + firstLine(e.getMessage()));

@@ -63,7 +63,7 @@ public final class Fleet implements AutoCloseable {
     }
 
     /** How each log's monitor matches: the same for every log. */
-    record Settings(ModelSet models, Abstraction abstraction, int threshold, int confirm) {
+    record Settings(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule) {
     }
 
     private final Settings settings;
@@ -77,7 +77,13 @@ public final class Fleet implements AutoCloseable {
      * @param confirm   pairs a faulty model must match after the last nominal one is eliminated before a warning
      */
     public Fleet(ModelSet models, Abstraction abstraction, int threshold, int confirm, Listener listener) {
-        this.settings = new Settings(models, abstraction, threshold, confirm);
+        this(models, abstraction, threshold, confirm, PredictiveMonitor.defaultRule(models), listener);
+    }
+
+    /** A fleet whose monitors warn by {@code rule}. */
+    public Fleet(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule,
+                 Listener listener) {
+        this.settings = new Settings(models, abstraction, threshold, confirm, rule);
         this.listener = listener;
     }
 

@@ -4,6 +4,7 @@ import dev.predmon.BadInputException;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.FileSystemException;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -14,6 +15,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.PatternSyntaxException;
 import java.util.stream.Stream;
 
 /**
@@ -45,7 +47,9 @@ public final class LogSources {
             throw new IllegalArgumentException("no log named");
         }
         for (Path n : names) {
-            this.names.add(new Name(n, isGlob(n) ? Kind.GLOB : Files.isDirectory(n) ? Kind.DIRECTORY : Kind.FILE));
+            // A name that exists is that file or directory, even with glob characters in it (robot[1].log).
+            this.names.add(new Name(n, Files.isDirectory(n) ? Kind.DIRECTORY
+                    : !Files.exists(n) && isGlob(n) ? Kind.GLOB : Kind.FILE));
         }
     }
 
@@ -56,6 +60,15 @@ public final class LogSources {
      */
     public boolean several() {
         return names.size() > 1 || growing();
+    }
+
+    /**
+     * Whether {@code file} was named as a file, rather than found under a directory or glob. A found file that holds
+     * no record is another file beside the logs (notes, a core dump), not a log that failed.
+     */
+    public boolean named(Path file) {
+        Path key = file.toAbsolutePath().normalize();
+        return names.stream().anyMatch(n -> n.kind() == Kind.FILE && n.path().toAbsolutePath().normalize().equals(key));
     }
 
     /** Whether new files can appear under these names (a directory or a glob), so that they are looked for again. */
@@ -161,7 +174,13 @@ public final class LogSources {
         if (!Files.isDirectory(g.from())) {
             return List.of();
         }
-        PathMatcher matcher = FileSystems.getDefault().getPathMatcher("glob:" + g.rest());
+        PathMatcher matcher;
+        try {
+            matcher = FileSystems.getDefault().getPathMatcher("glob:" + g.rest());
+        } catch (PatternSyntaxException e) {
+            // the JDK's description of the syntax error is garbled ("Missing '])"): the pattern itself says more
+            throw new FileSystemException(name.toString(), null, "no such file, and not a valid glob");
+        }
         List<Path> out = new ArrayList<>();
         try (Stream<Path> walk = Files.walk(g.from(), g.depth())) {
             walk.filter(Files::isRegularFile).forEach(p -> {

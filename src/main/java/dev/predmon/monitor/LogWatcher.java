@@ -8,6 +8,7 @@ import dev.predmon.parse.ParseProblem;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.function.Consumer;
 
 /**
@@ -18,18 +19,24 @@ import java.util.function.Consumer;
  */
 public final class LogWatcher implements AutoCloseable {
 
+    private static final Duration DEFAULT_QUIET = Duration.ofMillis(LogFollower.QUIET_MILLIS);
+
     private final PredictiveMonitor monitor;
     private final LogParser parser;
     private final LogFollower follower;
     private long lines;
 
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
-        this(log, monitor, problems, record -> { }, record -> { });
+        this(log, monitor, problems, record -> { }, record -> { }, DEFAULT_QUIET);
     }
 
-    /** As above; {@code seen} also gets every record, before the monitor (tests count them across rotations). */
-    LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen) {
-        this(log, monitor, problems, seen, record -> { });
+    /**
+     * As above; {@code seen} also gets every record, before the monitor (tests count them across rotations), and a
+     * replaced file is finished once it has been {@code quiet} ({@link LogFollower#QUIET_MILLIS} otherwise).
+     */
+    LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
+               Duration quiet) {
+        this(log, monitor, problems, seen, record -> { }, quiet);
     }
 
     /**
@@ -38,11 +45,11 @@ public final class LogWatcher implements AutoCloseable {
      */
     public static LogWatcher withRecords(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
                                          Consumer<LogRecord> taken) {
-        return new LogWatcher(log, monitor, problems, record -> { }, taken);
+        return new LogWatcher(log, monitor, problems, record -> { }, taken, DEFAULT_QUIET);
     }
 
     private LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
-                       Consumer<LogRecord> taken) {
+                       Consumer<LogRecord> taken, Duration quiet) {
         this.monitor = monitor;
         this.parser = new LogParser(record -> {
             seen.accept(record);
@@ -50,7 +57,7 @@ public final class LogWatcher implements AutoCloseable {
             taken.accept(record);
         }, problems);
         LineSink lines = parser.lineSink();
-        this.follower = new LogFollower(log, new LineSink() {
+        this.follower = LogFollower.withQuiet(log, new LineSink() {
             @Override
             public void line(String line) {
                 LogWatcher.this.lines++;
@@ -80,7 +87,7 @@ public final class LogWatcher implements AutoCloseable {
                 lines.restarted(reason); // reports a record the rotation cut, then starts the parser over
                 monitor.restart(reason);
             }
-        });
+        }, quiet);
     }
 
     /** Processes whatever was appended since the last call; whether anything was. */

@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.forecast.Forecast;
 import dev.predmon.parse.Clock;
 
 import java.util.List;
@@ -9,10 +10,12 @@ import java.util.List;
  * the tree's tick number; each event's {@code clock} says which.
  */
 public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.Violation, MonitorEvent.Eliminated,
-        MonitorEvent.NoMatch, MonitorEvent.Restarted, MonitorEvent.RunStarted, MonitorEvent.Unmapped {
+        MonitorEvent.NoMatch, MonitorEvent.Restarted, MonitorEvent.RunStarted, MonitorEvent.Unmapped,
+        MonitorEvent.ForecastChanged {
 
     /**
-     * Every nominal scenario is eliminated while a faulty one still matches: the run is predicted to fail.
+     * The run is predicted to violate the property: by the forecast rule, its probability reached the learned
+     * threshold; by the match rule, every nominal scenario is eliminated while a faulty one still matches.
      *
      * @param time      time of the record that triggered it
      * @param line      its line in the log
@@ -21,9 +24,32 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param pairs     compacted query/reply pairs seen so far
      * @param clock     what {@code time} counts
      * @param run       the run of the log (0, 1, ... in a log that holds several)
+     * @param rule      the rule that warned
+     * @param forecast  the forecast at the warning, or null without one (models learned without forecasts)
+     * @param reason    why, in an operator's words
      */
-    record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run)
-            implements MonitorEvent {
+    record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run,
+                   WarningRule rule, Forecast forecast, String reason) implements MonitorEvent {
+
+        /** A warning of the match rule without a forecast. */
+        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+                       int run) {
+            this(time, line, scenarios, battery, pairs, clock, run, WarningRule.MATCH, null,
+                    "the run can only be faulty scenario " + String.join(", ", scenarios)
+                            + " (every nominal model eliminated)");
+        }
+    }
+
+    /**
+     * The forecast changed enough to be told (see {@code ForecastTracker}).
+     *
+     * @param time     time of the record that completed the pair
+     * @param line     its line
+     * @param forecast the new forecast
+     * @param clock    what {@code time} counts
+     * @param run      the run of the log
+     */
+    record ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run) implements MonitorEvent {
     }
 
     /**

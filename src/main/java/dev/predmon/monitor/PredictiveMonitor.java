@@ -3,6 +3,8 @@ package dev.predmon.monitor;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastWords;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.Clock;
@@ -12,9 +14,12 @@ import dev.predmon.pipeline.TracePipeline;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.TreeSet;
 import java.util.function.Consumer;
+import java.util.function.ObjIntConsumer;
 
 /**
  * The predictive monitor: the thesis's Algorithm 8 with MatchTracesRT, made incremental. Records are pushed
@@ -22,7 +27,12 @@ import java.util.function.Consumer;
  * by its two Mealy steps ({@code input/OK}, {@code Delta/output}); a model is dropped at an input it cannot take
  * or when its discrepancies exceed the threshold. A scenario matches while any of its machines matches.
  *
- * <p>The warning: every nominal scenario is eliminated while a faulty one still matches, and a faulty model has
+ * <p>The forecast ({@link ForecastTracker}) follows the same pairs when the models carry one: a probability of
+ * violation and a time to it after every pair, also through behaviour no model has seen. With the default
+ * {@link WarningRule#FORECAST} rule the monitor warns when that probability reaches the threshold learned with the
+ * models; the thesis's rule below stays available as {@link WarningRule#MATCH}.
+ *
+ * <p>The match rule's warning: every nominal scenario is eliminated while a faulty one still matches, and a faulty model has
  * matched {@code confirm} more pairs since ({@code confirm = 0} is Algorithm 8; the abstraction sets the default,
  * {@link Abstraction#confirm()}). The nominal models are learned from finitely many runs, so a nominal run that does
  * something no training run did (its battery crosses a band while the robot grasps, say) eliminates them all; a
@@ -56,6 +66,12 @@ public final class PredictiveMonitor implements PipelineListener {
     private final int confirm;
     /** Pairs matched since every nominal model was eliminated with a faulty one alive; -1 before. */
     private long sinceNominalGone = -1;
+    /** Runs before the last restart: the runs after it are numbered on from there. */
+    private int runsBefore;
+    private final LogTotals before = new LogTotals();
+    private final WarningRule rule;
+    private final ForecastTracker forecast;
+    private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
 
     /**
      * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
@@ -72,6 +88,23 @@ public final class PredictiveMonitor implements PipelineListener {
      */
     public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, int confirm,
                              Consumer<MonitorEvent> events) {
+        this(models, abstraction, threshold, confirm, defaultRule(models), events);
+    }
+
+    /**
+     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
+     * @param confirm   pairs a faulty model must match after the last nominal model is eliminated before the match
+     *                  rule's warning
+     * @param rule      when to warn; {@link WarningRule#FORECAST} needs models learned with a forecast
+     * @param events    receives every event, in log order
+     */
+    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule,
+                             Consumer<MonitorEvent> events) {
+        if (rule == WarningRule.FORECAST && models.forecast() == null) {
+            throw new IllegalArgumentException("the forecast rule needs models learned with a forecast");
+        }
+        this.rule = rule;
+        this.forecast = ForecastTracker.of(models);
         if (confirm < 0) {
             throw new IllegalArgumentException("confirm must be at least 0, got " + confirm);
         }
@@ -94,13 +127,19 @@ public final class PredictiveMonitor implements PipelineListener {
         pipeline.endOfInput();
     }
 
-    /** The log was truncated or replaced: start over as for a new log. */
+    /**
+     * The log was truncated or replaced: every model starts over as for a new log, in a new run. The runs before
+     * stay, with their warnings and violations: what {@code watch} reports at its end, and its exit code, cover
+     * every run watched since it started, whatever rotation came between them.
+     */
     public void restart(String reason) {
+        if (pipeline.records() > 0) {
+            finished.add(current());
+        }
+        before.add(pipeline);
         pipeline.reset();
-        startRun(0, 1);
-        finished.clear();
-        firstWarning = null;
-        firstViolation = null;
+        runsBefore = finished.size();
+        startRun(runsBefore, 1);
         events.accept(new MonitorEvent.Restarted(reason));
     }
 
@@ -108,8 +147,16 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         finished.add(current());
-        startRun(number, first.line());
-        events.accept(new MonitorEvent.RunStarted(number, first.time(), first.line(), first.clock()));
+        startRun(runsBefore + number, first.line());
+        events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
+    }
+
+    /**
+     * The rule used when none is asked for: the forecast's when the models carry one whose threshold held-out runs
+     * chose, else the thesis's (too few training runs to know where to warn).
+     */
+    public static WarningRule defaultRule(ModelSet models) {
+        return models.forecast() != null && models.forecast().validated() ? WarningRule.FORECAST : WarningRule.MATCH;
     }
 
     private void startRun(int number, long line) {
@@ -122,10 +169,14 @@ public final class PredictiveMonitor implements PipelineListener {
         battery = null;
         pairs = 0;
         sinceNominalGone = -1;
+        if (forecast != null) {
+            forecast.reset();
+        }
     }
 
     private RunOutcome current() {
-        return new RunOutcome(run, runLine, warning, violation, noMatch, pairs, battery != null);
+        return new RunOutcome(run, runLine, warning, violation, noMatch, pairs, battery != null,
+                forecast == null ? null : forecast.last());
     }
 
     /** The outcome of every run so far, the current one last. */
@@ -153,6 +204,46 @@ public final class PredictiveMonitor implements PipelineListener {
             firstViolation = firstViolation == null ? violation : firstViolation;
             events.accept(violation);
         }
+        if (forecast != null && (before == null || before != v)) {
+            Forecast f = told(forecast.reading(record.time(), v), record);
+            if (warning == null && violation == null && rule == WarningRule.FORECAST
+                    && forecast.warns(f)) {
+                warn(record, faultyAlive(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
+                        v)), f);
+            }
+        }
+    }
+
+    /** The faulty scenarios some machine of which still matches the run, sorted. */
+    private List<String> faultyAlive() {
+        TreeSet<String> alive = new TreeSet<>();
+        trackers.stream().filter(t -> t.alive() && t.model().faulty()).forEach(t -> alive.add(t.model().scenario()));
+        return List.copyOf(alive);
+    }
+
+    /** Reports {@code news} if it is news, and returns the latest forecast. */
+    private Forecast told(Forecast news, LogRecord trigger) {
+        Forecast f = forecast.last();
+        everyForecast.accept(f, run);
+        if (news != null) {
+            events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(), run));
+        }
+        return f;
+    }
+
+    private String forecastReason(Forecast f, String where) {
+        String why = f.probability() >= forecast.threshold()
+                ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", forecast.threshold())
+                : "in behaviour no model has seen, with the value lower than any training run that held read";
+        return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
+                ForecastWords.time(f), ForecastWords.evidence(f), where);
+    }
+
+    private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f) {
+        warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, battery, pairs, trigger.clock(),
+                run, rule, f, reason);
+        firstWarning = firstWarning == null ? warning : firstWarning;
+        events.accept(warning);
     }
 
     @Override
@@ -187,16 +278,63 @@ public final class PredictiveMonitor implements PipelineListener {
         if (!nominalAlive && !faultyAlive.isEmpty()) {
             sinceNominalGone++;
         }
-        if (warning == null && !nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
-            warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), List.copyOf(faultyAlive), battery, pairs,
-                    trigger.clock(), run);
-            firstWarning = firstWarning == null ? warning : firstWarning;
-            events.accept(warning);
+        Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
+                battery == null ? Double.NaN : battery, trigger.line()), trigger);
+        if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
+            String reason = null;
+            if (!nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+                // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it)
+                reason = "the run can only be faulty scenario " + String.join(", ", faultyAlive)
+                        + " (every nominal model eliminated)" + (f == null ? "" : "; " + ForecastWords.line(f));
+            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {
+                reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
+            }
+            if (reason != null) {
+                warn(trigger, List.copyOf(faultyAlive), reason, f);
+            }
         }
         if (!noMatch && !nominalAlive && faultyAlive.isEmpty()) {
             noMatch = true;
             events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock(), run));
         }
+    }
+
+    /** Records of the log since the start, across truncations and replacements. */
+    public long records() {
+        return before.records(pipeline);
+    }
+
+    /** Records of the skill-component interface since the start, mapped or not. */
+    public long interfaceRecords() {
+        return before.interfaceRecords(pipeline);
+    }
+
+    /** Interface messages no rule maps since the start, by key, sorted. */
+    public Map<String, Long> unmapped() {
+        return before.unmapped(pipeline);
+    }
+
+    /**
+     * Also tells {@code each} every forecast with its run, one per pair, before the events of that pair (for scoring;
+     * {@link MonitorEvent.ForecastChanged} tells only the changes that matter).
+     */
+    public void onEveryForecast(ObjIntConsumer<Forecast> each) {
+        this.everyForecast = each;
+    }
+
+    /** The rule this monitor warns by. */
+    public WarningRule rule() {
+        return rule;
+    }
+
+    /** The latest forecast of the current run, if the models carry one and a pair has come. */
+    public Optional<Forecast> forecast() {
+        return forecast == null ? Optional.empty() : Optional.ofNullable(forecast.last());
+    }
+
+    /** The probability at which the forecast rule warns, if the models carry a forecast. */
+    public Optional<Double> forecastThreshold() {
+        return forecast == null ? Optional.empty() : Optional.of(forecast.threshold());
     }
 
     /** The first warning of the log (of any run), once raised. */
@@ -215,7 +353,7 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
-     * Whether, in some run since the last restart, a point came where no model, nominal or faulty, matched it any
+     * Whether, in some run since the start, a point came where no model, nominal or faulty, matched it any
      * more.
      */
     public boolean noMatch() {

@@ -1,5 +1,7 @@
 package dev.predmon.monitor;
 
+import dev.predmon.forecast.Forecast;
+
 import java.util.Optional;
 
 /**
@@ -13,9 +15,16 @@ import java.util.Optional;
  * @param pairs     compacted pairs matched
  * @param safetyObserved whether the run had a value for the safety property at all (without one, "held" would be a
  *                       verdict on no evidence)
+ * @param forecast  the run's last forecast (for its last state), or null without one
  */
 public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
-                         boolean noMatch, long pairs, boolean safetyObserved) {
+                         boolean noMatch, long pairs, boolean safetyObserved, Forecast forecast) {
+
+    /** An outcome without a forecast. */
+    public RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
+                      boolean noMatch, long pairs, boolean safetyObserved) {
+        this(run, firstLine, warning, violation, noMatch, pairs, safetyObserved, null);
+    }
 
     /** Violation time minus warning time when both happened, in the log's unit. */
     public Optional<Double> lead() {

@@ -17,7 +17,7 @@ public final class WatchedLog {
         this.path = path;
         this.name = path.toString();
         this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.threshold(),
-                settings.confirm(), e -> listener.event(this, e));
+                settings.confirm(), settings.rule(), e -> listener.event(this, e));
         this.watcher = LogWatcher.withRecords(path, monitor, p -> listener.problem(this, p),
                 r -> listener.record(this, r));
     }

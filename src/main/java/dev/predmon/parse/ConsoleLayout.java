@@ -38,6 +38,11 @@ final class ConsoleLayout extends RecordLayout {
         super(records, problems);
     }
 
+    /** {@code text} without its colour codes, also those whose escape character was lost. */
+    static String withoutColours(String text) {
+        return ANSI_LENIENT.matcher(text).replaceAll("");
+    }
+
     /** Whether {@code text} is a record header of this layout: what makes the parser read a log as a console capture. */
     static boolean isHeader(String text) {
         return HEADER.matcher(ANSI_LENIENT.matcher(text).replaceAll("")).matches();

@@ -32,6 +32,10 @@ import java.util.function.Consumer;
  */
 public final class LogParser {
 
+    /** How a record header ends, in every layout: what a header cut before its end lacks part of. */
+    private static final String[] HEADER_PHRASES = {"Command intercepted:", "Reply intercepted:", "Tick intercepted:",
+        "Unknown intercepted:", "Message received:"};
+
     private final Consumer<LogRecord> records;
     private final Consumer<ParseProblem> problems;
 
@@ -86,7 +90,39 @@ public final class LogParser {
             lineNumber++;
             return;
         }
+        if (cutHeader(line)) {
+            // Cut inside the header, the record is as lost as one cut inside a field line, and says so the same way.
+            lineNumber++;
+            problems.accept(new ParseProblem(lineNumber, ParseProblem.Severity.WARNING, "log ends in the middle of a "
+                    + "record started at line " + lineNumber + ": missing the rest of its header and its fields"));
+            return;
+        }
         acceptLine(line);
+    }
+
+    /**
+     * Whether {@code text} is the beginning of a record header of either layout, cut before its end
+     * ({@code 95.0\tDEBUG\tReply inter}, {@code [DEBUG] Command}): completed with the rest of one of the header
+     * phrases, it is a header. A complete header is not a cut one.
+     */
+    static boolean cutHeader(String text) {
+        String plain = ConsoleLayout.withoutColours(text);
+        if (ConsoleLayout.HEADER.matcher(plain).matches() || ColumnsLayout.HEADER.matcher(plain).matches()) {
+            return false;
+        }
+        for (String phrase : HEADER_PHRASES) {
+            // from k = 1: the phrase itself must have begun, or any line ending in a blank would count
+            for (int k = 1; k < phrase.length(); k++) {
+                if (plain.endsWith(phrase.substring(0, k))) {
+                    String completed = plain + phrase.substring(k);
+                    if (ConsoleLayout.HEADER.matcher(completed).matches()
+                            || ColumnsLayout.HEADER.matcher(completed).matches()) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     /** Decides the layout if {@code text} shows it; whether it did. */

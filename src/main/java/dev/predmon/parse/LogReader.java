@@ -9,8 +9,10 @@ import java.util.Arrays;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
+import java.util.function.LongConsumer;
 
 /**
  * Reads a whole log file once, streaming, into records.
@@ -34,10 +36,16 @@ public final class LogReader {
      *                     reported to {@code problems}
      */
     public static long read(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems) throws IOException {
+        return read(file, records, problems, lines -> { });
+    }
+
+    /** As {@link #read(Path, Consumer, Consumer)}; at the end {@code lines} gets the number of lines read. */
+    public static long read(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems,
+                            LongConsumer lines) throws IOException {
         if (Files.size(file) < PARALLEL_FROM_BYTES) {
-            return readHere(file, records, problems);
+            return readHere(file, records, problems, lines);
         }
-        return readAlongside(file, records, problems);
+        return readAlongside(file, records, problems, lines);
     }
 
     /** Files from this size on are parsed on a second thread while the caller consumes the records. */
@@ -46,7 +54,8 @@ public final class LogReader {
     private static final Object[] END = new Object[0];
 
     /** Parses on the calling thread. */
-    static long readHere(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems) throws IOException {
+    static long readHere(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems, LongConsumer lines)
+            throws IOException {
         long[] count = {0};
         LogParser parser = new LogParser(record -> {
             count[0]++;
@@ -61,6 +70,7 @@ public final class LogReader {
         }
         splitter.finish();
         parser.endOfInput();
+        lines.accept(parser.lineNumber());
         return count[0];
     }
 
@@ -69,8 +79,10 @@ public final class LogReader {
      * thread, which runs the callbacks: on two cores parsing overlaps with what the caller does with each record
      * (abstraction, compaction, matching), and callers need no thread safety. A failure on either side stops both.
      */
-    static long readAlongside(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems) throws IOException {
+    static long readAlongside(Path file, Consumer<LogRecord> records, Consumer<ParseProblem> problems,
+                              LongConsumer lines) throws IOException {
         BlockingQueue<Object[]> queue = new ArrayBlockingQueue<>(8);
+        AtomicLong lineCount = new AtomicLong();
         AtomicReference<Throwable> failure = new AtomicReference<>();
         Thread parser = new Thread(() -> {
             Object[][] chunk = {new Object[CHUNK]};
@@ -84,7 +96,7 @@ public final class LogReader {
                 }
             };
             try {
-                readHere(file, emit::accept, emit::accept);
+                readHere(file, emit::accept, emit::accept, lineCount::set);
                 if (filled[0] > 0) {
                     handOver(queue, Arrays.copyOf(chunk[0], filled[0]));
                 }
@@ -132,6 +144,7 @@ public final class LogReader {
         if (e instanceof Error err) {
             throw err;
         }
+        lines.accept(lineCount.get()); // set by the parser thread before its END, which the loop above took
         return count;
     }
 

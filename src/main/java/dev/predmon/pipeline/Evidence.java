@@ -1,5 +1,6 @@
 package dev.predmon.pipeline;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.parse.ParseProblem;
 
 import java.nio.file.Path;
@@ -10,7 +11,10 @@ import java.util.function.LongSupplier;
 /**
  * No verdict on zero evidence. A log with no YARP monitor record ({@code /var/log/dpkg.log}, an empty file, random
  * bytes), or with records but no query/reply pair the abstraction maps, gives the models nothing to judge: every
- * model "matches" an empty trace, so a verdict on it would be silently wrong. This class says so in one line.
+ * model "matches" an empty trace, so a verdict on it would be silently wrong. Nor does a file that is mostly not
+ * records (a fragment of a log amid other bytes: {@link #fragment()}), nor a log the models' abstraction does not fit
+ * (most of its interface messages unmapped, or locations and commands the models never saw: {@link #misfit()}).
+ * This class says so in one line.
  *
  * @param log              the log
  * @param lines            its lines (only asked for when there is no record: it may cost a second read)
@@ -18,18 +22,20 @@ import java.util.function.LongSupplier;
  * @param interfaceRecords records of the skill-component interface, mapped or not
  * @param pairs            compacted query/reply pairs
  * @param unmapped         interface messages no rule maps, by key
- * @param abstraction      the abstraction's name
+ * @param abstraction      the abstraction the log is read with
  * @param firstProblem     the first parse problem, or null
  */
 public record Evidence(Path log, LongSupplier lines, long records, long interfaceRecords, long pairs,
-                       Map<String, Long> unmapped, String abstraction, ParseProblem firstProblem) {
+                       Map<String, Long> unmapped, Abstraction abstraction, ParseProblem firstProblem) {
 
     /** While following, nothing recognisable in this many lines (or records) is said once. */
     public static final long FIRST = 200;
+    /** The lines of a record (header and six fields), in every layout but the oldest, which has fewer. */
+    static final int RECORD_LINES = 7;
 
     /** The evidence of a whole log read offline. */
-    public static Evidence of(LogTrace trace, String abstraction) {
-        return new Evidence(trace.log(), () -> Traces.countLines(trace.log()), trace.records(),
+    public static Evidence of(LogTrace trace, Abstraction abstraction) {
+        return new Evidence(trace.log(), trace::lines, trace.records(),
                 trace.interfaceRecords(), trace.pairs().size(), trace.unmapped(), abstraction,
                 trace.problems().isEmpty() ? null : trace.problems().get(0));
     }
@@ -50,8 +56,29 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
     }
 
     /**
+     * Why a whole file that holds records is still no evidence: its records make up less than half of its lines
+     * (random bytes around a fragment of a log). A monitor's capture is records from end to end, but for the lines
+     * of other programs between them (real captures: 1%, the simulator's noisiest logs: 13%).
+     */
+    public Optional<String> fragment() {
+        long n = lines.getAsLong();
+        if (records == 0 || records * RECORD_LINES * 2 >= n) {
+            return Optional.empty();
+        }
+        return Optional.of(log + ": only " + records + (records == 1 ? " monitor record" : " monitor records")
+                + " in " + n + " lines (about " + Math.max(1, records * RECORD_LINES * 100 / n) + "% of the file); a "
+                + "file that is mostly not a monitor log is no evidence: no verdict");
+    }
+
+    /** Why the models cannot judge this log, when the abstraction does not fit it ({@link UnmappedMessages#misfit}). */
+    public Optional<String> misfit() {
+        return UnmappedMessages.misfit(log.toString(), interfaceRecords, unmapped, abstraction, "no verdict");
+    }
+
+    /**
      * While following: after the first {@value #FIRST} lines without a record, or the first {@value #FIRST}
-     * records without an interface message the abstraction maps, the line to say once; else empty.
+     * records without an interface message the abstraction maps or of a log it does not fit, the line to say once;
+     * else empty.
      */
     public Optional<String> earlyNotice() {
         if (records == 0) {
@@ -63,12 +90,16 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
             return Optional.of(log + ": " + nothingMapped("in the first " + records + " records")
                     + "; is this the right --abstraction? (still watching)");
         }
+        if (records >= FIRST) {
+            return UnmappedMessages.misfit(log.toString(), interfaceRecords, unmapped, abstraction,
+                    "still watching, after " + records + " records");
+        }
         return Optional.empty();
     }
 
-    /** Whether the log has shown something the abstraction maps: no notice can come any more. */
+    /** Whether no notice can come any more: the first {@value #FIRST} records showed what the abstraction maps. */
     public boolean recognised() {
-        return records > 0 && mapped() > 0;
+        return records >= FIRST && mapped() > 0;
     }
 
     private long mapped() {
@@ -77,10 +108,10 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
 
     private String nothingMapped(String where) {
         if (mapped() > 0) {
-            return mapped() + " interface message(s) the abstraction '" + abstraction
+            return mapped() + " interface message(s) the abstraction '" + abstraction.name()
                     + "' maps, but no complete query/reply pair " + where;
         }
-        return "no skill-component interface message the abstraction '" + abstraction + "' maps " + where
+        return "no skill-component interface message the abstraction '" + abstraction.name() + "' maps " + where
                 + (unmapped.isEmpty() ? "" : " (only " + String.join(", ", unmapped.keySet().stream().limit(3).toList())
                 + (unmapped.size() > 3 ? ", ..." : "") + ")");
     }

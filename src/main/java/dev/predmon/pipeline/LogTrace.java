@@ -16,12 +16,13 @@ import java.util.Map;
  * @param log              the file
  * @param pairs            the compacted trace, every run's pairs in log order
  * @param problems         what the parser reported (first {@link Traces#MAX_PROBLEMS} only)
+ * @param lines            lines read
  * @param records          records parsed
  * @param interfaceRecords records of the skill-component interface
  * @param unmapped         interface messages no rule maps, by key
  * @param runs             the runs the log holds (one, unless the robot ran several missions in it)
  */
-public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems, long records,
+public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems, long lines, long records,
                        long interfaceRecords, Map<String, Long> unmapped, List<Run> runs) {
 
     /**
@@ -33,8 +34,16 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
      * @param violated  whether the safety monitor saw its property violated in this run
      * @param readings  the values of each continuous rule's replies in order, by the rule's input
      *                  ({@code level_i}): what the learner estimates a sensor's noise from
+     * @param timing    when each pair came, the property's value then, and when the run violated and ended: what the
+     *                  forecast's statistics are learned from
      */
-    public record Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings) {
+    public record Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings,
+                      RunTiming timing) {
+
+        /** A run without timing (tests of what does not need it). */
+        public Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings) {
+            this(index, firstLine, pairs, violated, readings, RunTiming.none(pairs.size()));
+        }
     }
 
     /** The trace as one Mealy sample (a log of one run). */

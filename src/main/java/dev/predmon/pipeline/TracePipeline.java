@@ -6,6 +6,7 @@ import dev.predmon.compact.Compactor;
 import dev.predmon.parse.LogRecord;
 
 import java.util.Collections;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -23,6 +24,7 @@ public final class TracePipeline {
     private final CarryEncoder encoder;
     private final Hysteresis hysteresis;
     private final RunSplitter runs;
+    private final QuietRestart restart;
     private int run;
     private final Map<String, Long> unmapped = new TreeMap<>();
     private LogRecord current;
@@ -35,6 +37,7 @@ public final class TracePipeline {
         this.encoder = new CarryEncoder(abstraction);
         this.hysteresis = new Hysteresis(abstraction);
         this.runs = new RunSplitter(abstraction.runs());
+        this.restart = new QuietRestart(abstraction.runs().quiet());
         this.compactor = new Compactor(pair -> listener.pair(encoder.encode(pair), current), abstraction::bandPath);
     }
 
@@ -43,17 +46,46 @@ public final class TracePipeline {
      * first ends the run before it, as the end of a log would, and starts matching over.
      */
     public void accept(LogRecord record) {
-        if (runs.startsRun(record) && records > 0) {
+        boolean starts = runs.startsRun(record) && records > 0;
+        Classification c = abstraction.classify(record);
+        if (restart.holding()) {
+            QuietRestart.Decision d = restart.hold(record, c, starts);
+            if (d != QuietRestart.Decision.PENDING) {
+                release(d == QuietRestart.Decision.RESTART);
+            }
+            return;
+        }
+        if (!starts && records > 0 && restart.quietBefore(record)) {
+            QuietRestart.Decision d = restart.hold(record, c, false);
+            if (d != QuietRestart.Decision.PENDING) {
+                release(d == QuietRestart.Decision.RESTART);
+            }
+            return;
+        }
+        process(record, c, starts);
+    }
+
+    /** Processes the records held after a quiet pause, the first of them beginning a run if the tree restarted. */
+    private void release(boolean restarted) {
+        List<QuietRestart.Held> held = restart.release();
+        for (int i = 0; i < held.size(); i++) {
+            QuietRestart.Held h = held.get(i);
+            process(h.record(), h.classification(), h.starts() || (i == 0 && restarted));
+        }
+    }
+
+    private void process(LogRecord record, Classification c, boolean starts) {
+        if (starts) {
             compactor.endOfInput();
             compactor.reset();
             encoder.reset();
             hysteresis.reset();
             listener.runStarted(++run, record);
         }
+        restart.processed(record, c, starts);
         current = record;
         records++;
         listener.record(record);
-        Classification c = abstraction.classify(record);
         if (c instanceof Classification.Mapped m) {
             interfaceRecords++;
             listener.mapped(record, m);
@@ -68,6 +100,9 @@ public final class TracePipeline {
 
     /** The log is complete: commands still waiting for replies are dropped, pending pairs are flushed. */
     public void endOfInput() {
+        if (restart.holding()) {
+            release(false); // the log ended before the commands after its last pause said the tree restarted
+        }
         compactor.endOfInput();
     }
 
@@ -77,6 +112,7 @@ public final class TracePipeline {
         encoder.reset();
         hysteresis.reset();
         runs.reset();
+        restart.reset();
         run = 0;
         unmapped.clear();
         current = null;

@@ -9,10 +9,10 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
 import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -42,13 +42,14 @@ public final class Traces {
         List<ParseProblem> problems = new ArrayList<>();
         RunCollector runs = new RunCollector(abstraction, pairs);
         TracePipeline pipeline = new TracePipeline(abstraction, runs);
+        long[] lines = {0};
         LogReader.read(log, pipeline::accept, p -> {
             if (problems.size() < MAX_PROBLEMS) {
                 problems.add(p);
             }
-        });
+        }, n -> lines[0] = n);
         pipeline.endOfInput();
-        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), pipeline.records(),
+        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), lines[0], pipeline.records(),
                 pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs());
     }
 
@@ -154,6 +155,14 @@ public final class Traces {
         private List<IoPair> pairs = new ArrayList<>();
         private long firstLine = 1;
         private boolean violated;
+        private double value = Double.NaN;
+        private double lowestSafe = Double.NaN;
+        private double violationTime = Double.NaN;
+        private double endTime = Double.NaN;
+        private String unit = "s";
+        private List<RunTiming.Reading> changes = new ArrayList<>();
+        private double[] times = new double[64];
+        private double[] values = new double[64];
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
             this.abstraction = abstraction;
@@ -163,7 +172,29 @@ public final class Traces {
 
         @Override
         public void record(LogRecord record) {
-            violated |= safety.isPresent() && safety.get().violatedBy(safety.get().valueOf(record));
+            if (!Double.isNaN(record.time())) {
+                endTime = record.time();
+            }
+            unit = record.clock().unit();
+            if (safety.isEmpty()) {
+                return;
+            }
+            double v = safety.get().valueOf(record);
+            if (Double.isNaN(v)) {
+                return;
+            }
+            if (v != value) {
+                changes.add(new RunTiming.Reading(record.time(), v, pairs.size()));
+            }
+            value = v;
+            if (safety.get().violatedBy(v)) {
+                if (!violated) {
+                    violationTime = record.time();
+                }
+                violated = true;
+            } else if (!violated && !(v >= lowestSafe)) {
+                lowestSafe = v;
+            }
         }
 
         @Override
@@ -182,6 +213,13 @@ public final class Traces {
 
         @Override
         public void pair(IoPair pair, LogRecord trigger) {
+            int i = pairs.size();
+            if (i == times.length) {
+                times = Arrays.copyOf(times, i * 2);
+                values = Arrays.copyOf(values, i * 2);
+            }
+            times[i] = trigger.time();
+            values[i] = value;
             pairs.add(pair);
             all.add(pair);
         }
@@ -195,42 +233,24 @@ public final class Traces {
         private void finish() {
             Map<String, List<Double>> frozen = new TreeMap<>();
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
+            RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
+                    violationTime, endTime, lowestSafe, unit, changes);
+            changes = new ArrayList<>();
             done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated,
-                    java.util.Collections.unmodifiableMap(frozen)));
+                    Collections.unmodifiableMap(frozen), timing));
             pairs = new ArrayList<>();
             readings = new TreeMap<>();
             violated = false;
+            value = Double.NaN;
+            lowestSafe = Double.NaN;
+            violationTime = Double.NaN;
+            endTime = Double.NaN;
         }
 
         List<LogTrace.Run> runs() {
             finish();
             return List.copyOf(done);
         }
-    }
-
-    /**
-     * The lines of {@code log}, counted as the parser counts them (a last line without a newline is a line). Only
-     * asked for when a log gave no record, to say how much was read.
-     */
-    public static long countLines(Path log) {
-        long lines = 0;
-        int last = '\n';
-        try (InputStream in = Files.newInputStream(log)) {
-            byte[] buffer = new byte[64 * 1024];
-            for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
-                for (int i = 0; i < n; i++) {
-                    if (buffer[i] == '\n') {
-                        lines++;
-                    }
-                }
-                if (n > 0) {
-                    last = buffer[n - 1];
-                }
-            }
-        } catch (IOException e) {
-            return lines; // it was read a moment ago; what could be counted is the best answer
-        }
-        return last == '\n' ? lines : lines + 1;
     }
 
     /** Convenience for tests and tools: runs records already in memory through the pipeline. */

@@ -23,8 +23,9 @@ final class BehaviorTree {
      * Builds the tree of the reference document over {@code c}, recording its traffic in {@code r}.
      *
      * @param earlyWarning {@code BatteryLevel} succeeds while the level is strictly above it
+     * @param destination  the tour location of {@code IsAtDestination} and {@code GoToDestination}
      */
-    static Node build(Components c, Recorder r, double earlyWarning, boolean goToEchoes) {
+    static Node build(Components c, Recorder r, double earlyWarning, boolean goToEchoes, String destination) {
         Node batteryLevel = new Condition("BatteryLevel", r, () -> {
             double level = c.level();
             r.call("/BatteryReaderBatteryLevelClient", "/BatteryComponent", "BatteryReader", "level", "",
@@ -36,13 +37,13 @@ final class BehaviorTree {
                 "", Integer.toString(c.chargingStatus())).equals("0"));
         Node atStation = isAt("IsAtChargingStation", Components.CHARGING_STATION, c, r);
         Node goToStation = new GoTo("GoToChargingStation", Components.CHARGING_STATION, c, r, goToEchoes);
-        Node atKitchen = isAt("IsAtDestination", Components.KITCHEN, c, r);
-        Node goToKitchen = new GoTo("GoToDestination", Components.KITCHEN, c, r, goToEchoes);
+        Node atDestination = isAt("IsAtDestination", destination, c, r);
+        Node goToDestination = new GoTo("GoToDestination", destination, c, r, goToEchoes);
         return Reactive.sequence(
                 Reactive.fallback(
                         Reactive.sequence(batteryLevel, notCharging),
                         Reactive.sequence(Reactive.fallback(atStation, goToStation), new Wait())),
-                Reactive.fallback(atKitchen, goToKitchen));
+                Reactive.fallback(atDestination, goToDestination));
     }
 
     private static Node isAt(String skill, String location, Components c, Recorder r) {

@@ -11,6 +11,9 @@ import java.util.SplittableRandom;
  *
  * <p>The world only changes between ticks ({@link #advance}); within a tick every call sees the same state,
  * which is what a tick period much longer than an RPC round trip gives on the real robot.
+ *
+ * <p>The tour location is the {@code kitchen} unless a run is given a new one; a run with blocked paths
+ * ({@link BlockedPaths}) has navigations that stop short and abort.
  */
 final class Components {
 
@@ -29,6 +32,8 @@ final class Components {
     /** The battery sensor's noise: its own stream, so that a noise-free run draws exactly as before. */
     private final double sensorNoise;
     private final SplittableRandom sensor;
+    /** Null without blocked paths, so that a default run takes the very same steps. */
+    private final BlockedPaths blocked;
 
     private double time;
     private double level;
@@ -48,11 +53,22 @@ final class Components {
 
     /** @param sensorNoise standard deviation of the battery sensor's Gaussian noise, drawn from {@code sensor} */
     Components(SimParameters p, SplittableRandom noise, double sensorNoise, SplittableRandom sensor) {
+        this(p, noise, sensorNoise, sensor, KITCHEN, null);
+    }
+
+    /**
+     * @param destination the tour location's name, at {@link SimParameters#kitchen()}
+     * @param blocked     the run's blocked paths, or null for none
+     */
+    Components(SimParameters p, SplittableRandom noise, double sensorNoise, SplittableRandom sensor,
+               String destination, BlockedPaths blocked) {
         this.p = p;
         this.noise = noise;
         this.sensorNoise = sensorNoise;
         this.sensor = sensor;
-        this.locations = Map.of(KITCHEN, p.kitchen(), CHARGING_STATION, p.chargingStation(), "start", Point.ORIGIN);
+        this.blocked = blocked;
+        this.locations = Map.of(destination, p.kitchen(), CHARGING_STATION, p.chargingStation(), "start",
+                Point.ORIGIN);
         this.stopDelayTicks = noise.nextInt(1, 4);
         this.level = p.startLevel();
         this.reportedLevel = level;
@@ -62,7 +78,14 @@ final class Components {
     void advance(double dt) {
         time += dt;
         if (status == RUNNING) {
-            move(dt);
+            if (blocked != null && blocked.stuck()) {
+                // Stuck at a blocked point: no progress, the same drain, until the navigation gives up.
+                if (blocked.waitOut(dt, time)) {
+                    status = ABORT;
+                }
+            } else {
+                move(dt);
+            }
             level -= p.drainRate() * dt * (1 + p.drainNoise() * (2 * noise.nextDouble() - 1));
         } else if (charging) {
             level += p.chargeRate() * dt * (1 + p.drainNoise() * (2 * noise.nextDouble() - 1));
@@ -83,6 +106,9 @@ final class Components {
             } else if (++ticksSinceEmpty >= stopDelayTicks && status == RUNNING) {
                 status = ABORT;
                 stoppedEmpty = true;
+                if (blocked != null) {
+                    blocked.stop();
+                }
             }
         }
         if (time - lastSample >= p.sensorPeriod() - 1e-9) {
@@ -94,6 +120,9 @@ final class Components {
         Point goal = locations.get(target);
         double remaining = position.distance(goal);
         double step = p.speed() * dt;
+        if (blocked != null) {
+            step = blocked.step(step, time);
+        }
         if (step >= remaining) {
             position = goal;
             status = SUCCESS;
@@ -132,7 +161,9 @@ final class Components {
     void goTo(String destination) {
         target = destination;
         status = level > 0.0 ? RUNNING : ABORT;
-        if (CHARGING_STATION.equals(destination)) {
+        // The tree's retry after a blocked path is the same trip to the station, not a second one.
+        boolean retry = blocked != null && blocked.start(destination, position.distance(locations.get(destination)));
+        if (CHARGING_STATION.equals(destination) && !retry) {
             goToStationCount++;
         }
         charging = false;
@@ -147,6 +178,9 @@ final class Components {
     void halt(String destination) {
         if (destination.equals(target) && status == RUNNING) {
             status = ABORT;
+            if (blocked != null) {
+                blocked.stop();
+            }
         }
     }
 

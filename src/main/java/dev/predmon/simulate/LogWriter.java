@@ -57,10 +57,14 @@ public final class LogWriter {
      * The order in which the monitor prints the events. Without late replies it is the time order. With
      * probability {@link SimOptions#lateReplies()} a reply is moved past the next one to three records,
      * stopping before the next command of its own connection (client and server ports): messages of one
-     * connection share a socket and stay in order, different connections race.
+     * connection share a socket and stay in order, different connections race. Tick records are left out when
+     * {@link Novelties#noTicks()} asks for a log without them.
      */
     public static List<SimEvent> printOrder(SimRun run, SimOptions options) {
         List<SimEvent> order = new ArrayList<>(run.events());
+        if (options.novelties().noTicks()) {
+            order.removeIf(e -> e.kind() == RecordKind.TICK);
+        }
         if (options.lateReplies() <= 0) {
             return order;
         }

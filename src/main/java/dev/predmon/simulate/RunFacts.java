@@ -9,6 +9,9 @@ import java.util.List;
  * What a run's messages show, read off the events the way a reader of the log would see them: the
  * {@code level} replies, where the robot was sent and where it arrived. The simulator keeps a sample only
  * if these facts tell its scenario's story.
+ *
+ * <p>A {@code goTo} that follows an ABORT reply for the same location is the tree retrying that navigation, not a
+ * new trip: a {@code recharge} run whose way to the station was blocked still goes to the station once.
  */
 record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Double turnLevel, Double violationTime,
                 Double violationLevel, int goToStationCount, Double stationTime, Double stationLevel,
@@ -27,6 +30,11 @@ record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Doubl
     }
 
     static RunFacts of(List<SimEvent> events, double earlyWarning) {
+        return of(events, earlyWarning, Components.KITCHEN);
+    }
+
+    /** @param destination the tour location's name ({@code kitchen} unless the run was given a new one) */
+    static RunFacts of(List<SimEvent> events, double earlyWarning, String destination) {
         List<double[]> timeline = new ArrayList<>();
         double min = Double.POSITIVE_INFINITY;
         double last = Double.NaN;
@@ -40,10 +48,16 @@ record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Doubl
         boolean full = false;
         Double kitchenTime = null;
         boolean emptied = false;
+        boolean stationAborted = false;
         for (SimEvent e : events) {
             if (e.kind() == RecordKind.COMMAND && e.command().equals("goTo")
                     && e.argument().equals(Components.CHARGING_STATION)) {
-                goToStation++;
+                goToStation += stationAborted ? 0 : 1;
+                stationAborted = false;
+            }
+            if (e.kind() == RecordKind.REPLY && e.command().equals("getStatus")
+                    && e.argument().equals(Components.CHARGING_STATION)) {
+                stationAborted = e.reply().equals(Integer.toString(Components.ABORT));
             }
             if (e.kind() != RecordKind.REPLY) {
                 continue;
@@ -67,7 +81,7 @@ record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Doubl
                 if (e.argument().equals(Components.CHARGING_STATION) && stationTime == null) {
                     stationTime = e.time();
                     stationLevel = Double.isNaN(last) ? null : last;
-                } else if (e.argument().equals(Components.KITCHEN) && kitchenTime == null) {
+                } else if (e.argument().equals(destination) && kitchenTime == null) {
                     kitchenTime = e.time();
                 }
             }

@@ -24,6 +24,17 @@ public record SimParameters(int attempt, double tickPeriod, double speed, double
                             double tolerance, Point kitchen, Point chargingStation, boolean goToEchoesDestination,
                             double startTime, int tailTicks) {
 
+    /**
+     * The same run with a robot {@code slowdown} times slower and a battery that drains {@code drainFactor} times
+     * faster (moving and idle), in the same world: the geometry was placed for the sampled robot, so the novelty
+     * shows in where the battery stands when the robot arrives.
+     */
+    SimParameters slowed(double slowdown, double drainFactor) {
+        return new SimParameters(attempt, tickPeriod, speed / slowdown, drainRate * drainFactor,
+                idleDrainRate * drainFactor, drainNoise, chargeRate, sensorPeriod, startLevel, tolerance, kitchen,
+                chargingStation, goToEchoesDestination, startTime, tailTicks);
+    }
+
     /** A 2D position in metres. */
     public record Point(double x, double y) {
         public static final Point ORIGIN = new Point(0, 0);

@@ -1,5 +1,6 @@
 package dev.predmon.simulate;
 
+import dev.predmon.parse.RecordKind;
 import dev.predmon.simulate.BehaviorTree.Node;
 import dev.predmon.simulate.BehaviorTree.Status;
 import dev.predmon.simulate.SimParameters.Point;
@@ -23,6 +24,11 @@ import java.util.SplittableRandom;
  * {@code recharge}: planned station arrival level max(21, early warning - 20) + 2 .. early warning - 2 (the
  * thesis's margin, see {@link RunFacts#rechargeMinLevel}), kitchen up to half a full
  * battery's range past the turn. {@code depleted}: station (early warning + 5..60)% of range past the turn.
+ *
+ * <p>Novelties ({@link SimOptions#novelties()}) draw from a stream of their own, so that a run without them is
+ * the same as before they existed. A slowdown or drain factor is applied after the geometry was placed (the world
+ * stays, the robot changes), and a sample whose novelty breaks the story, or whose aborts the tree never saw, is
+ * rejected like any other: every run keeps its scenario's outcome, and the truth says what the novelties did.
  */
 public final class Simulator {
 
@@ -50,26 +56,52 @@ public final class Simulator {
             startMicros += (EPOCH_BASE + clock.nextLong(EPOCH_SPREAD)) * 1_000_000L;
         }
         SplittableRandom master = new SplittableRandom(seed);
+        Novelties novelties = options.novelties();
         for (int attempt = 0; attempt < MAX_ATTEMPTS; attempt++) {
             SimParameters p = sample(scenario, options.earlyWarning(), master, attempt, startMicros);
             SplittableRandom noise = master.split();
             if (p == null) {
                 continue;
             }
+            SplittableRandom novel = novelties.changesRuns()
+                    ? new SplittableRandom((seed * 0x2545F4914F6CDD1DL + attempt) ^ 0x6E6F76656C747921L) : null;
+            double slowdown = novel == null ? 1.0 : novelties.slowdown().draw(novel);
+            double drainFactor = novel == null ? 1.0 : novelties.drainFactor().draw(novel);
+            if (slowdown != 1.0 || drainFactor != 1.0) {
+                p = p.slowed(slowdown, drainFactor);
+            }
+            BlockedPaths blocked = novelties.aborts() > 0 ? new BlockedPaths(novelties, novel.split()) : null;
             List<SimEvent> events = simulate(scenario, p, options, startMicros, noise,
-                    new SplittableRandom(seed * 0x5DEECE66DL + attempt));
+                    new SplittableRandom(seed * 0x5DEECE66DL + attempt), blocked);
             if (events == null) {
                 continue;
             }
-            RunFacts f = RunFacts.of(events, options.earlyWarning());
-            if (f.tell(scenario, options.earlyWarning())) {
-                Truth truth = new Truth(scenario, scenario.faulty(), seed, p, f.violationTime(), f.violationLevel(),
-                        f.turnTime(), f.turnLevel(), f.stationLevel(), f.endTime(), f.timeline());
-                return new SimRun(scenario, seed, options, events, truth);
+            RunFacts f = RunFacts.of(events, options.earlyWarning(), novelties.destination());
+            if (!f.tell(scenario, options.earlyWarning())) {
+                continue;
             }
+            NoveltyTruth happened = null;
+            if (novelties.any()) {
+                List<NoveltyTruth.Abort> aborts = blocked == null ? List.of()
+                        : NoveltyTruth.aborts(events, blocked.happened(), startMicros / 1e6);
+                if (blocked != null && (aborts.size() != blocked.happened().size()
+                        || aborts.size() != novelties.abortsIn(scenario))) {
+                    continue;
+                }
+                happened = new NoveltyTruth(firstPrinted(events, novelties.noTicks()).time(), null,
+                        !novelties.noTicks(), novelties.destination(), slowdown, drainFactor, aborts);
+            }
+            Truth truth = new Truth(scenario, scenario.faulty(), seed, p, f.violationTime(), f.violationLevel(),
+                    f.turnTime(), f.turnLevel(), f.stationLevel(), f.endTime(), f.timeline(), happened);
+            return new SimRun(scenario, seed, options, events, truth);
         }
         throw new IllegalStateException("no sample of " + MAX_ATTEMPTS + " tells the " + scenario.id()
                 + " story with early warning " + options.earlyWarning() + " (seed " + seed + ")");
+    }
+
+    /** The first event a log prints: the first tick, or the first message when ticks are left out. */
+    static SimEvent firstPrinted(List<SimEvent> events, boolean noTicks) {
+        return events.stream().filter(e -> !noTicks || e.kind() != RecordKind.TICK).findFirst().orElseThrow();
     }
 
     /** Draws one set of parameters, or null when the draw cannot place the scenario's geometry. */
@@ -142,11 +174,12 @@ public final class Simulator {
      * as the run can no longer tell the story (which keeps rejected samples cheap).
      */
     private static List<SimEvent> simulate(Scenario scenario, SimParameters p, SimOptions options, long startMicros,
-                                           SplittableRandom noise, SplittableRandom sensor) {
+                                           SplittableRandom noise, SplittableRandom sensor, BlockedPaths blocked) {
         double ew = options.earlyWarning();
-        Components c = new Components(p, noise.split(), options.noise(), sensor);
+        String destination = options.novelties().destination();
+        Components c = new Components(p, noise.split(), options.noise(), sensor, destination, blocked);
         Recorder r = new Recorder(noise.split());
-        Node root = BehaviorTree.build(c, r, ew, p.goToEchoesDestination());
+        Node root = BehaviorTree.build(c, r, ew, p.goToEchoesDestination(), destination);
         int remaining = -1;
         for (int k = 0; k * p.tickPeriod() <= TIME_CAP; k++) {
             if (k > 0) {

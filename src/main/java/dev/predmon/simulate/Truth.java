@@ -17,16 +17,32 @@ import java.util.List;
  * @param stationLevel    the last {@code level} reply before the robot was first at the station, or null
  * @param endTime         log time of the last record
  * @param batteryTimeline one {@code [time, level]} point per {@code level} reply
+ * @param novelties       what the run's novelties made happen, or null when it was simulated without any (the
+ *                        JSON then has no {@code novelties} field, as before novelties existed)
  */
 public record Truth(Scenario scenario, boolean faulty, long seed, SimParameters parameters, Double violationTime,
                     Double violationLevel, Double turnTime, Double turnLevel, Double stationLevel, double endTime,
-                    List<double[]> batteryTimeline) {
+                    List<double[]> batteryTimeline, NoveltyTruth novelties) {
+
+    /** The truth of a run without novelties. */
+    public Truth(Scenario scenario, boolean faulty, long seed, SimParameters parameters, Double violationTime,
+                 Double violationLevel, Double turnTime, Double turnLevel, Double stationLevel, double endTime,
+                 List<double[]> batteryTimeline) {
+        this(scenario, faulty, seed, parameters, violationTime, violationLevel, turnTime, turnLevel, stationLevel,
+                endTime, batteryTimeline, null);
+    }
 
     /** The same truth for the run shifted {@code seconds} later in its log. */
     public Truth shifted(double seconds) {
+        return shifted(seconds, novelties == null ? null : novelties.gapBefore());
+    }
+
+    /** The same truth for the run shifted {@code seconds} later in its log, {@code gap} seconds after the previous. */
+    Truth shifted(double seconds, Double gap) {
         List<double[]> timeline = batteryTimeline.stream().map(p -> new double[] {p[0] + seconds, p[1]}).toList();
         return new Truth(scenario, faulty, seed, parameters, plus(violationTime, seconds), violationLevel,
-                plus(turnTime, seconds), turnLevel, stationLevel, endTime + seconds, timeline);
+                plus(turnTime, seconds), turnLevel, stationLevel, endTime + seconds, timeline,
+                novelties == null ? null : novelties.shifted(seconds, gap));
     }
 
     private static Double plus(Double t, double seconds) {

@@ -30,6 +30,10 @@ public final class TruthWriter {
     public static String toJson(Truth truth) {
         ObjectNode node = JSON.valueToTree(truth);
         node.put("scenario", truth.scenario().id());
+        if (truth.novelties() == null) {
+            // A run without novelties keeps the sidecar it always had.
+            node.remove("novelties");
+        }
         try {
             return JSON.writeValueAsString(node);
         } catch (IOException e) {

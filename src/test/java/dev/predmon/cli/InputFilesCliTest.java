@@ -81,7 +81,7 @@ class InputFilesCliTest {
         for (String seconds : List.of("0", "-1", "Infinity", "NaN")) {
             Cli r = Cli.run("demo", "--seconds", seconds);
             assertEquals(ExitCodes.USAGE, r.code(), seconds);
-            assertTrue(r.err().startsWith("--seconds must be a positive number, got "), r.err());
+            assertTrue(r.err().startsWith("predmon: --seconds must be a positive number, got "), r.err());
             assertFalse(r.err().contains("Exception") || r.out().contains("Infinityx"), r.out() + r.err());
         }
     }

@@ -90,8 +90,9 @@ class LiveViewTest {
         for (String line : w.out().toString().strip().split("\n")) {
             printed.add(JSON.readTree(line));
         }
-        assertEquals(printed.size(), streamed.size(), "one message per event");
-        for (int i = 0; i < printed.size(); i++) {
+        // the forecast that follows the violation (certain now) may be printed before the comparison: compare up to it
+        assertTrue(printed.size() >= streamed.size() && printed.size() <= streamed.size() + 1, "one message per event");
+        for (int i = 0; i < streamed.size(); i++) {
             ObjectNode s = (ObjectNode) streamed.get(i);
             assertEquals(log.toString(), s.remove("log").asText());
             assertEquals(printed.get(i), s, "the same object --json prints, plus the log");

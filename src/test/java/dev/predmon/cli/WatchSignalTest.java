@@ -23,8 +23,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * Stopping {@code watch} the way people and service managers do, on a real child process: Ctrl-C (SIGINT) and
- * SIGTERM, before and after a warning. Each ends with the end summary (JSON with {@code --json}) and the exit code
+ * Stopping {@code watch} the way people and service managers do, on a real child process: Ctrl-C (SIGINT),
+ * SIGTERM and SIGHUP, before and after a warning. Each ends with the end summary (JSON with {@code --json}) and the exit code
  * of the table (it used to be 130 or 143 and no summary).
  */
 class WatchSignalTest {
@@ -94,7 +94,9 @@ class WatchSignalTest {
         Watch w = Watch.start("watch", "--log", log.toString(), "--models", models.toString(), "--eliminations");
         w.awaitLine("model depleted (faulty) eliminated");
         assertEquals(ExitCodes.OK, w.signal(signal), "SIG" + signal + " before a warning: " + w.out());
-        String end = w.out().get(w.out().size() - 1);
+        // the end line, then the run's last forecast
+        String end = w.out().stream().filter(l -> l.startsWith("end of ")).reduce((a, b) -> b).orElse("");
+        assertTrue(w.out().get(w.out().size() - 1).startsWith("last forecast: "), w.out().toString());
         assertTrue(end.startsWith("end of " + log + " (stopped: SIG" + signal + "): ")
                 && end.endsWith("; no warning, property held"), end);
     }
@@ -122,6 +124,13 @@ class WatchSignalTest {
     @Timeout(60)
     void sigtermAfterAWarning() throws Exception {
         afterAWarning("TERM");
+    }
+
+    /** A closed terminal or SSH session sends SIGHUP: a stop like SIGTERM, not a death without the summary (129). */
+    @Test
+    @Timeout(60)
+    void sighupAfterAWarningIsAStopWithTheSummary() throws Exception {
+        afterAWarning("HUP");
     }
 
     @Test

@@ -105,8 +105,8 @@ class TileTest {
 
         b.event(t, new MonitorEvent.Restarted("truncated"), "{\"event\":\"restarted\"}");
         s = snap(b, "day.log");
-        assertEquals(0, s.get("run").asInt());
-        assertEquals(0, s.get("earlierRuns").size(), "a rotated log starts over, as the monitor does");
+        assertEquals(2, s.get("run").asInt(), "a rotated log goes on in a new run, as the monitor numbers it");
+        assertEquals(2, s.get("earlierRuns").size(), "the runs before the rotation stay, as in watch's summary");
     }
 
     @Test

@@ -1,15 +1,9 @@
 package dev.predmon.model;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.learn.LearnedModels;
-import dev.predmon.learn.LearnedScenario;
-import dev.predmon.learn.ScenarioLayout;
-import dev.predmon.learn.ScenarioLearner;
-import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.learn.Learning;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 
 /**
  * A learn, as a separate process, that stops just before one step of writing the models and waits there to be
@@ -26,25 +20,20 @@ final class PausedLearn {
         Path models = Path.of(args[1]);
         String pauseBefore = args[2];
         Abstraction abstraction = Abstraction.defaults();
-        List<LearnedScenario> learned = new ArrayList<>();
-        for (ScenarioSpec s : ScenarioLayout.scan(logs, abstraction)) {
-            learned.add(ScenarioLearner.learn(s, abstraction));
-        }
-        ModelStore.write(models, LearnedModels.index(learned, abstraction),
-                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson(), step -> {
-                    if (step.equals(pauseBefore)) {
-                        System.out.println("paused before " + step);
-                        System.out.flush();
-                        while (true) {
-                            try {
-                                Thread.sleep(60_000);
-                            } catch (InterruptedException e) {
-                                Thread.currentThread().interrupt();
-                                return;
-                            }
-                        }
+        Learning.learnAndWrite(logs, models, abstraction, l -> { }, step -> {
+            if (step.equals(pauseBefore)) {
+                System.out.println("paused before " + step);
+                System.out.flush();
+                while (true) {
+                    try {
+                        Thread.sleep(60_000);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        return;
                     }
-                });
+                }
+            }
+        });
         System.out.println("finished without pausing: no step '" + pauseBefore + "'");
     }
 }

@@ -3,6 +3,7 @@ package dev.predmon.monitor;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -10,6 +11,7 @@ import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** How the names given to {@code watch --log} become the logs of a fleet. */
@@ -47,6 +49,18 @@ class LogSourcesTest {
         assertEquals(List.of(r1, r2), new LogSources(List.of(dir.resolve("robots/*/monitor.log"))).find());
         assertEquals(List.of(r1, r2, deep), new LogSources(List.of(dir.resolve("robots/**/monitor.log"))).find());
         assertEquals(List.of(), new LogSources(List.of(dir.resolve("nowhere/*.log"))).find());
+    }
+
+    /** A file whose name has glob characters is that file; a name that is neither is one line naming it. */
+    @Test
+    void anExistingNameIsAFileEvenWithGlobCharactersInIt() throws Exception {
+        Path odd = file("robot[1.log");
+        LogSources s = new LogSources(List.of(odd));
+        assertEquals(List.of(odd), s.find());
+        assertFalse(s.several(), "one file, not a glob");
+        IOException e = assertThrows(IOException.class,
+                () -> new LogSources(List.of(dir.resolve("robot[2.log"))).find());
+        assertEquals(dir.resolve("robot[2.log") + ": no such file, and not a valid glob", e.getMessage());
     }
 
     @Test

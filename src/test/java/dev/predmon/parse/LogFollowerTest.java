@@ -92,11 +92,16 @@ class LogFollowerTest {
         assertEquals(List.of("a1", "a2", "a3", "<restarted truncated>", "b1", "b2"), sink.events);
     }
 
+    /** A follower that finishes a replaced file as soon as it is read to its end, and the new file has data. */
+    private static LogFollower finishingAtOnce(Path file, LineSink sink) {
+        return new LogFollower(file, sink, LineSplitter.DEFAULT_MAX_LINE_BYTES, 0, System::nanoTime);
+    }
+
     @Test
     void renameAwayAndRecreateDrainsTheOldFileFirst() throws IOException {
         Path file = Files.writeString(dir.resolve("a.log"), "a1\n");
         Events sink = new Events();
-        try (LogFollower follower = new LogFollower(file, sink)) {
+        try (LogFollower follower = finishingAtOnce(file, sink)) {
             follower.poll();
             Files.writeString(file, "a2\na3", StandardOpenOption.APPEND);
             Files.move(file, dir.resolve("a.log.1"));
@@ -108,11 +113,74 @@ class LogFollowerTest {
         assertEquals(List.of("a1", "a2", "a3", "<restarted replaced>", "b1", "b2", "b3"), sink.events);
     }
 
+    /**
+     * logrotate's default: the log is renamed and an empty one created, and the program writes on to the renamed file
+     * until it reopens its log. Everything it writes there is read, before the new file, however long it goes on;
+     * the new file is read once it holds something and the old one has been quiet for the quiet time.
+     */
+    @Test
+    void aRenamedFileStillWrittenIsReadToItsEndBeforeTheNewOne() throws IOException {
+        Path file = Files.writeString(dir.resolve("a.log"), "a1\n");
+        Path rotated = dir.resolve("a.log.1");
+        Events sink = new Events();
+        long[] now = {0};
+        long quiet = 1_000_000_000L;
+        try (LogFollower follower = new LogFollower(file, sink, LineSplitter.DEFAULT_MAX_LINE_BYTES, quiet,
+                () -> now[0])) {
+            follower.poll();
+            Files.move(file, rotated);
+            Files.writeString(file, "");
+            for (int i = 2; i <= 5; i++) { // the writer goes on with the renamed file, a record every 0.4 s
+                now[0] += 400_000_000L;
+                Files.writeString(rotated, "a" + i + "\n", StandardOpenOption.APPEND);
+                follower.poll();
+            }
+            now[0] += 5 * quiet;
+            assertFalse(follower.poll(), "quiet, but the new file is empty: nothing to read there yet");
+            Files.writeString(rotated, "a6 warning\n", StandardOpenOption.APPEND); // the writer is not done after all
+            Files.writeString(file, "b1\n"); // and another writer begins the new file
+            follower.poll();
+            assertEquals(List.of("a1", "a2", "a3", "a4", "a5", "a6 warning"), sink.events, "the old file first");
+            now[0] += quiet - 1;
+            follower.poll();
+            assertEquals(6, sink.events.size(), "not quiet for long enough yet");
+            now[0] += 1;
+            assertTrue(follower.poll());
+            Files.writeString(rotated, "a7 too late\n", StandardOpenOption.APPEND);
+            follower.poll();
+        }
+        assertEquals(List.of("a1", "a2", "a3", "a4", "a5", "a6 warning", "<restarted replaced>", "b1"), sink.events);
+    }
+
+    /** Rotated again before the old file was done: each new file is held open and read in its turn, none lost. */
+    @Test
+    void filesRotatedAgainWhileTheOldOneIsWrittenAreReadInTurn() throws IOException {
+        Path file = Files.writeString(dir.resolve("a.log"), "a1\n");
+        Events sink = new Events();
+        long[] now = {0};
+        try (LogFollower follower = new LogFollower(file, sink, LineSplitter.DEFAULT_MAX_LINE_BYTES, 10, () -> now[0])) {
+            follower.poll();
+            Files.move(file, dir.resolve("a.log.1"));
+            Files.writeString(file, "b1\n");
+            Files.writeString(dir.resolve("a.log.1"), "a2\n", StandardOpenOption.APPEND);
+            follower.poll();
+            Files.move(file, dir.resolve("a.log.2"));
+            Files.writeString(file, "c1\n");
+            follower.poll();
+            Files.delete(dir.resolve("a.log.2"));
+            now[0] += 10;
+            follower.poll();
+            now[0] += 10;
+            follower.poll();
+        }
+        assertEquals(List.of("a1", "a2", "<restarted replaced>", "b1", "<restarted replaced>", "c1"), sink.events);
+    }
+
     @Test
     void deletedFileIsDrainedThenANewOneIsWaitedFor() throws IOException {
         Path file = Files.writeString(dir.resolve("a.log"), "a1\n");
         Events sink = new Events();
-        try (LogFollower follower = new LogFollower(file, sink)) {
+        try (LogFollower follower = finishingAtOnce(file, sink)) {
             follower.poll();
             Files.writeString(file, "a2\n", StandardOpenOption.APPEND);
             Files.delete(file);
@@ -144,7 +212,7 @@ class LogFollowerTest {
         String[] lines = log.split("(?<=\n)");
         Path file = Files.writeString(dir.resolve("a.log"), lines[0] + lines[1] + lines[2]);
         Collected live = new Collected();
-        try (LogFollower follower = new LogFollower(file, live.parser.lineSink())) {
+        try (LogFollower follower = finishingAtOnce(file, live.parser.lineSink())) {
             follower.poll();
             Files.move(file, dir.resolve("a.log.1"));
             Files.writeString(file, log);

@@ -44,6 +44,37 @@ class LogReaderTest {
         assertEquals(List.of(), problems);
     }
 
+    /**
+     * A capture stopped inside a record header loses that record as one stopped inside a field line does, and says
+     * so the same way, in both layouts; a last line that is no header's beginning is another program's line.
+     */
+    @Test
+    void aLogCutInsideARecordHeaderWarnsAsOneCutInsideAFieldLine() throws IOException {
+        String record = "71.8\tDEBUG\tCommand intercepted:\n  From      : /a\n  To        : /b\n  Protocol  : P\n"
+                + "  Command   : c\n  Arguments : \n  Reply     : \n";
+        for (String cut : List.of("72.0\tDEBUG\tReply inter", "72.0\tDEBUG\tR", "72.0 DEBUG Message rece")) {
+            records.clear();
+            problems.clear();
+            assertEquals(1, read(write(record + cut)), cut);
+            assertEquals(List.of(new ParseProblem(8, Severity.WARNING, "log ends in the middle of a record started "
+                    + "at line 8: missing the rest of its header and its fields")), problems, cut);
+        }
+        String console = "[DEBUG] Command intercepted:\n  From      : /a\n  To        : /b\n  Protocol  : P\n"
+                + "  Command   : c\n  Arguments : \n  Reply     : \n";
+        for (String cut : List.of("\u001b[01;32mDEBUG\u001b[00m] Command interc", "[DEBUG] Tick")) {
+            problems.clear();
+            read(write(console + cut));
+            assertEquals(1, problems.size(), cut);
+            assertTrue(problems.get(0).message().startsWith("log ends in the middle of a record started at line 8"),
+                    problems.toString());
+        }
+        for (String other : List.of("72.0\tINFO\tsome other program's line", "GammaRay server listening on: tcp")) {
+            problems.clear();
+            read(write(record + other));
+            assertEquals(List.of(), problems, other);
+        }
+    }
+
     @Test
     void saveFileEntryEndingBeforeItsRecordIsReported() throws IOException {
         Path file = write(String.join("\n", "1", "1", "NULL-DATA", "/log/a", "/a", "a", "log", "1",

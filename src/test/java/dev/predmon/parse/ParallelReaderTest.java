@@ -47,10 +47,13 @@ class ParallelReaderTest {
     void parallelAndSequentialGiveTheSameRecordsAndProblemsInOrder() throws Exception {
         Path log = bigMixedLog();
         List<Object> here = new ArrayList<>();
-        long n1 = LogReader.readHere(log, here::add, here::add);
+        long[] lines = new long[2];
+        long n1 = LogReader.readHere(log, here::add, here::add, n -> lines[0] = n);
         List<Object> alongside = new ArrayList<>();
-        long n2 = LogReader.readAlongside(log, alongside::add, alongside::add);
+        long n2 = LogReader.readAlongside(log, alongside::add, alongside::add, n -> lines[1] = n);
         assertEquals(n1, n2);
+        assertEquals(Files.readString(log).lines().count(), lines[0], "every line counted");
+        assertEquals(lines[0], lines[1]);
         assertEquals(here, alongside);
         assertTrue(here.stream().anyMatch(o -> o instanceof ParseProblem), "the fixture has problems");
         List<Object> viaRead = new ArrayList<>();
@@ -67,7 +70,7 @@ class ParallelReaderTest {
             if (++seen[0] == 5000) {
                 throw boom;
             }
-        }, p -> { }));
+        }, p -> { }, n -> { }));
         assertSame(boom, thrown);
         long deadline = System.currentTimeMillis() + 5000;
         while (parserThreadAlive() && System.currentTimeMillis() < deadline) {

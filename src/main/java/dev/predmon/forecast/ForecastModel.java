@@ -1,0 +1,99 @@
+package dev.predmon.forecast;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Everything the forecast learned from the training runs, stored beside the machines ({@code forecast.json}).
+ *
+ * @param format      file format version, {@value #FORMAT}
+ * @param unit        what the times count: {@code s}, or {@code ticks} for logs without time stamps
+ * @param limit       the safety property's threshold (the property holds while the value is at least this), NaN
+ *                    without a property
+ * @param runs        training runs
+ * @param violating   how many of them violated the property
+ * @param lows        how low every training run went while safe, by outcome (runs without a reading left out)
+ * @param threshold   the probability at or above which the forecast rule warns, chosen by cross-validation over the
+ *                    training runs ({@link ThresholdChoice})
+ * @param thresholdNote how it was chosen, in one line
+ * @param validated   whether held-out runs of both outcomes chose the threshold (else it is a default, and the
+ *                    forecast rule is not the default rule)
+ * @param states      by machine id, by state number: what the runs did from there
+ * @param startInputs the inputs the training runs began with: where the tree starts over
+ */
+public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold, String thresholdNote, boolean validated,
+                            Map<String, Map<Integer, StateStats>> states, List<String> startInputs) {
+
+    /** Current format. */
+    public static final int FORMAT = 1;
+
+    /** The strength of the prior, in runs: a state seen by two runs moves the estimate only half way. */
+    public static final double PRIOR_RUNS = 2.0;
+
+    public ForecastModel {
+        states = Map.copyOf(states);
+        startInputs = List.copyOf(startInputs);
+    }
+
+    /** The share of training runs that violated, with the prior of a fair coin of {@link #PRIOR_RUNS} runs. */
+    public double baseRate() {
+        return (violating + PRIOR_RUNS / 2) / (runs + PRIOR_RUNS);
+    }
+
+    /**
+     * P(violation | the property now reads {@code value}): of the training runs that went as low as {@code value}
+     * while safe, the share that went on to violate, smoothed towards the base rate. The value table needs no
+     * machine, so it answers through behaviour no model has seen. The base rate when the value is unknown.
+     */
+    public double valueRate(double value) {
+        if (Double.isNaN(value)) {
+            return baseRate();
+        }
+        // A lower value is never safer: a run that went from 23 straight to its violation was below 22 too, though
+        // no reading shows it. The rate at v is the highest rate at v or at a violating run's low above it.
+        return lows.monotoneRate(value, PRIOR_RUNS, baseRate());
+    }
+
+    /**
+     * P(violation | the property reads {@code value}, nothing else known): the value table's counts with the value
+     * table's rate as prior, the estimate of a state that is "anywhere".
+     */
+    public double valueOnly(double value) {
+        return (lows.violating(value) + PRIOR_RUNS * valueRate(value)) / (lows.runs(value) + PRIOR_RUNS);
+    }
+
+    /**
+     * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run has done something
+     * no learned machine does and its property is lower than every training run that held ever read. The threshold
+     * was chosen on runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so
+     * without the second clause the rule would be blind exactly where the matching is.
+     */
+    public boolean warns(Forecast f) {
+        return f.probability() >= threshold || (f.novel() && f.value() != null && belowEverySafeRun(f.value()));
+    }
+
+    /** Whether {@code value} is lower than every training run that held ever read (false without such a run). */
+    public boolean belowEverySafeRun(double value) {
+        return lows.runs(value) == lows.violating(value) && lows.safe().length > 0;
+    }
+
+    /** This model with another warning threshold. */
+    public ForecastModel withThreshold(double p, String note, boolean validated) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
+                startInputs);
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof ForecastModel m && format == m.format && unit.equals(m.unit)
+                && Double.compare(limit, m.limit) == 0 && runs == m.runs && violating == m.violating
+                && lows.equals(m.lows)
+                && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
+                && states.equals(m.states) && startInputs.equals(m.startInputs);
+    }
+
+    @Override
+    public int hashCode() {
+        return 31 * runs + violating;
+    }
+}

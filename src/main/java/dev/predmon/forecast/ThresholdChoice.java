@@ -1,0 +1,97 @@
+package dev.predmon.forecast;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.TreeSet;
+
+/**
+ * Chooses the probability at which the forecast rule warns, from held-out runs: each run's highest forecast before its
+ * violation (or before its end, when it held). A threshold warns on every run whose peak reaches it; it is chosen to
+ * make the fewest wrong calls (a false alarm and a missed violation cost the same), and among the equally good ones,
+ * the middle of the widest gap between peaks, so that a run not seen in training is least likely to fall on the
+ * wrong side.
+ */
+public final class ThresholdChoice {
+
+    /** The threshold used when the held-out runs cannot choose one (none of one kind). */
+    public static final double DEFAULT = 0.5;
+    /** Never warn below this, whatever the data: a warning at near even odds is not a prediction. */
+    static final double FLOOR = 0.3;
+
+    private ThresholdChoice() {
+    }
+
+    /**
+     * One held-out run: its highest forecast before the violation or the end, whether it violated, and whether the
+     * thesis's matching warned it anyway (before its violation), whatever the threshold.
+     */
+    public record Peak(double probability, boolean violated, boolean caught) {
+
+        public Peak(double probability, boolean violated) {
+            this(probability, violated, false);
+        }
+
+        boolean warnedAt(double t) {
+            return caught || probability >= t;
+        }
+    }
+
+    /** The chosen threshold, why in one line, and whether held-out runs of both outcomes chose it. */
+    public record Choice(double threshold, String note, boolean validated) {
+    }
+
+    /** Chooses from {@code peaks}. */
+    public static Choice choose(List<Peak> peaks) {
+        long bad = peaks.stream().filter(Peak::violated).count();
+        long good = peaks.size() - bad;
+        if (bad == 0 || good == 0) {
+            return new Choice(DEFAULT, String.format(Locale.ROOT, "default %.2f: the %d held-out run(s) %s",
+                    DEFAULT, peaks.size(), bad == 0 ? "all held" : "all violated"), false);
+        }
+        TreeSet<Double> distinct = new TreeSet<>();
+        peaks.forEach(p -> distinct.add(p.probability()));
+        distinct.add(FLOOR);
+        distinct.add(1.0);
+        List<Double> cuts = new ArrayList<>(distinct.tailSet(FLOOR, true));
+        int bestErrors = Integer.MAX_VALUE;
+        double bestGap = -1;
+        double best = DEFAULT;
+        // A threshold between two neighbouring peaks: the calls are the same anywhere in the gap.
+        for (int i = 0; i < cuts.size(); i++) {
+            double lowSide = i == 0 ? FLOOR : cuts.get(i - 1);
+            double t = i == 0 ? FLOOR : (lowSide + cuts.get(i)) / 2;
+            double gap = i == 0 ? 0 : cuts.get(i) - lowSide;
+            int errors = errors(peaks, t);
+            if (errors < bestErrors || (errors == bestErrors && gap > bestGap)) {
+                bestErrors = errors;
+                bestGap = gap;
+                best = t;
+            }
+        }
+        int alarms = 0;
+        int hits = 0;
+        for (Peak p : peaks) {
+            if (p.warnedAt(best)) {
+                if (p.violated()) {
+                    hits++;
+                } else {
+                    alarms++;
+                }
+            }
+        }
+        return new Choice(best, String.format(Locale.ROOT,
+                "%.2f by cross-validation on %d held-out runs: warned %d of %d violations, %d false alarm(s) in %d",
+                best, peaks.size(), hits, bad, alarms, good), true);
+    }
+
+    private static int errors(List<Peak> peaks, double t) {
+        int errors = 0;
+        for (Peak p : peaks) {
+            if (p.warnedAt(t) != p.violated()) {
+                errors++;
+            }
+        }
+        return errors;
+    }
+}

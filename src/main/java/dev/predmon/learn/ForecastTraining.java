@@ -1,0 +1,191 @@
+package dev.predmon.learn;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.Forecaster;
+import dev.predmon.forecast.StatsLearner;
+import dev.predmon.forecast.ThresholdChoice;
+import dev.predmon.mealy.MealyMapping;
+import dev.predmon.mealy.MealyTrace;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunTiming;
+import net.automatalib.alphabet.Alphabet;
+import net.automatalib.automaton.transducer.CompactMealy;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Learns the forecast that goes with the machines: the per-state statistics over every training run
+ * ({@link StatsLearner}), and the warning threshold chosen by cross-validation over the same runs: each fold's
+ * machines and statistics are learned without it, its runs are forecast pair by pair, and each run's highest
+ * forecast before its violation decides ({@link ThresholdChoice}).
+ *
+ * <p>The forecast rule also warns where the thesis's rule would (every nominal machine eliminated while a faulty one
+ * matches, {@code confirm} pairs on): that is evidence the run can only be faulty. A held-out run so warned before its
+ * violation counts as reaching any threshold, so the threshold is chosen for the runs the matching does not catch.
+ */
+public final class ForecastTraining {
+
+    /** Folds of the threshold's cross-validation (fewer with fewer logs). */
+    static final int FOLDS = 5;
+
+    private ForecastTraining() {
+    }
+
+    /**
+     * The forecast of {@code machines} (by id), learned from the runs of {@code specs} in {@code traces}.
+     *
+     * @param limit   the safety property's threshold, NaN without a property
+     * @param confirm the pairs a faulty machine must match after the last nominal one is eliminated
+     */
+    public static ForecastModel train(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                      Map<String, CompactMealy<String, String>> machines, Alphabet<String> alphabet,
+                                      double limit, int confirm) {
+        List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
+        String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
+        ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
+        List<Path> logs = specs.stream().flatMap(s -> s.logs().stream()).filter(traces::containsKey).distinct()
+                .sorted().toList();
+        int k = Math.min(FOLDS, logs.size());
+        if (k < 2) {
+            return stats.withThreshold(ThresholdChoice.DEFAULT, "default " + ThresholdChoice.DEFAULT
+                    + ": too few logs to cross-validate", false);
+        }
+        List<ThresholdChoice.Peak> peaks = new ArrayList<>();
+        for (int f = 0; f < k; f++) {
+            int fold = f;
+            List<Path> held = new ArrayList<>();
+            for (int i = fold; i < logs.size(); i += k) {
+                held.add(logs.get(i));
+            }
+            Map<String, CompactMealy<String, String>> foldMachines = new LinkedHashMap<>();
+            Map<String, Boolean> faulty = new LinkedHashMap<>();
+            for (ScenarioSpec s : specs) {
+                List<MealyTrace> samples = s.logs().stream().filter(traces::containsKey).filter(l -> !held.contains(l))
+                        .flatMap(l -> traces.get(l).samples(s.runs()).stream()).toList();
+                if (!samples.isEmpty()) {
+                    ScenarioLearner.learnSamples(s, samples, alphabet).machines().forEach(m -> {
+                        foldMachines.put(m.id(), m.machine());
+                        faulty.put(m.id(), s.faulty());
+                    });
+                }
+            }
+            List<LogTrace.Run> training = runsOf(specs, traces, l -> !held.contains(l));
+            if (training.stream().allMatch(LogTrace.Run::violated) || training.stream().noneMatch(LogTrace.Run::violated)) {
+                continue; // a fold that trains on one outcome only says nothing about where to draw the line
+            }
+            ForecastModel foldStats = StatsLearner.learn(foldMachines, training, unit, limit);
+            Forecaster forecaster = new Forecaster(foldStats, foldMachines);
+            for (LogTrace.Run r : runsOf(specs, traces, held::contains)) {
+                peaks.add(new ThresholdChoice.Peak(peak(forecaster, r), r.violated(),
+                        matchWarns(foldMachines, faulty, confirm, r)));
+            }
+        }
+        ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
+        return stats.withThreshold(c.threshold(), c.note(), c.validated());
+    }
+
+    /** The safety property's threshold, NaN when the abstraction has no property. */
+    public static double limit(Abstraction abstraction) {
+        return abstraction.safety().map(SafetyRule::below).orElse(Double.NaN);
+    }
+
+    /**
+     * Whether the thesis's rule warns {@code run} before its violation: every nominal machine eliminated while a
+     * faulty one still matches, for {@code confirm} more pairs.
+     */
+    static boolean matchWarns(Map<String, CompactMealy<String, String>> machines, Map<String, Boolean> faulty,
+                              int confirm, LogTrace.Run run) {
+        List<String> ids = List.copyOf(machines.keySet());
+        int[] state = new int[ids.size()];
+        for (int m = 0; m < ids.size(); m++) {
+            state[m] = machines.get(ids.get(m)).getInitialState();
+        }
+        long since = -1;
+        for (int i = 0; i < run.pairs().size(); i++) {
+            if (run.violated() && !(run.timing().time(i) < run.timing().violationTime())) {
+                return false;
+            }
+            boolean nominal = false;
+            boolean bad = false;
+            for (int m = 0; m < ids.size(); m++) {
+                if (state[m] >= 0) {
+                    state[m] = MealyMapping.pairStep(machines.get(ids.get(m)), state[m], run.pairs().get(i).input(),
+                            run.pairs().get(i).output());
+                }
+                if (state[m] >= 0) {
+                    if (faulty.get(ids.get(m))) {
+                        bad = true;
+                    } else {
+                        nominal = true;
+                    }
+                }
+            }
+            if (!nominal && bad && ++since >= confirm) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The run's highest forecast before its violation (or its end). */
+    public static double peak(Forecaster forecaster, LogTrace.Run run) {
+        double peak = 0;
+        for (Forecast f : forecast(forecaster, run)) {
+            peak = Math.max(peak, f.probability());
+        }
+        return peak;
+    }
+
+    /**
+     * The forecasts of {@code run} before its violation, in the order {@code watch} makes them: after each new value
+     * of the property and after each pair.
+     */
+    public static List<Forecast> forecast(Forecaster forecaster, LogTrace.Run run) {
+        forecaster.reset();
+        List<Forecast> out = new ArrayList<>();
+        RunTiming t = run.timing();
+        List<RunTiming.Reading> readings = t.readings();
+        int r = 0;
+        for (int i = 0; i <= run.pairs().size(); i++) {
+            for (; r < readings.size() && readings.get(r).pairsBefore() <= i; r++) {
+                RunTiming.Reading x = readings.get(r);
+                if (run.violated() && !(x.time() < t.violationTime())) {
+                    return out;
+                }
+                out.add(forecaster.reading(x.time(), x.value()));
+            }
+            if (i == run.pairs().size()) {
+                break;
+            }
+            if (run.violated() && !(t.time(i) < t.violationTime())) {
+                break;
+            }
+            out.add(forecaster.pair(run.pairs().get(i).input(), run.pairs().get(i).output(), t.time(i), t.value(i),
+                    i));
+        }
+        return out;
+    }
+
+    /** The runs of the logs {@code include} selects, each of the runs its scenario learns from. */
+    private static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                             java.util.function.Predicate<Path> include) {
+        List<LogTrace.Run> runs = new ArrayList<>();
+        for (ScenarioSpec s : specs) {
+            for (Path log : s.logs()) {
+                LogTrace t = traces.get(log);
+                if (t != null && include.test(log)) {
+                    t.runs().stream().filter(r -> !r.pairs().isEmpty() && s.runs().selects(r.violated()))
+                            .forEach(runs::add);
+                }
+            }
+        }
+        return runs;
+    }
+}

@@ -1,0 +1,85 @@
+package dev.predmon.monitor;
+
+import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.Forecaster;
+import dev.predmon.model.ModelSet;
+
+/**
+ * The forecast of the run being watched: a {@link Forecaster} over the models' machines, and which of its forecasts
+ * changed enough to be told (a forecast after every pair would flood a terminal; a change of a twentieth in the
+ * probability, of the basis, or of a quarter in the time is news).
+ */
+final class ForecastTracker {
+
+    /** A change of the probability at least this large is reported. */
+    static final double STEP = 0.05;
+    /** A relative change of the time to violation at least this large is reported. */
+    static final double TIME_STEP = 0.25;
+
+    private final Forecaster forecaster;
+    private Forecast last;
+    private Forecast told;
+
+    private ForecastTracker(Forecaster forecaster) {
+        this.forecaster = forecaster;
+    }
+
+    /** The tracker of {@code models}, or null when they carry no forecast. */
+    static ForecastTracker of(ModelSet models) {
+        return models.forecast() == null ? null : new ForecastTracker(new Forecaster(models.forecast(),
+                models.machines()));
+    }
+
+    /** The probability at which the forecast rule warns, for runs that match learned machines. */
+    double threshold() {
+        return forecaster.stats().threshold();
+    }
+
+    /** Whether the forecast rule warns on {@code f} ({@link dev.predmon.forecast.ForecastModel#warns}). */
+    boolean warns(Forecast f) {
+        return forecaster.stats().warns(f);
+    }
+
+    void reset() {
+        forecaster.reset();
+        last = null;
+        told = null;
+    }
+
+    /** Forecasts after one pair; returns the forecast when it is news, else null. */
+    Forecast pair(String input, String output, double time, double value, long line) {
+        return news(forecaster.pair(input, output, time, value, line));
+    }
+
+    /** Forecasts at a new value of the property; returns the forecast when it is news, else null. */
+    Forecast reading(double time, double value) {
+        return news(forecaster.reading(time, value));
+    }
+
+    private Forecast news(Forecast f) {
+        last = f;
+        if (told == null || material(told, last)) {
+            told = last;
+            return last;
+        }
+        return null;
+    }
+
+    /** The latest forecast of the run, or null before its first pair. */
+    Forecast last() {
+        return last;
+    }
+
+    private static boolean material(Forecast before, Forecast now) {
+        if (Math.abs(before.probability() - now.probability()) >= STEP || before.basis() != now.basis()
+                || (before.timeToViolation() == null) != (now.timeToViolation() == null)) {
+            return true;
+        }
+        if (now.timeToViolation() == null) {
+            return false;
+        }
+        double a = before.timeToViolation();
+        double b = now.timeToViolation();
+        return Math.abs(a - b) > TIME_STEP * Math.max(Math.abs(a), 1e-9);
+    }
+}

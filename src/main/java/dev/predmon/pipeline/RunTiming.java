@@ -1,0 +1,90 @@
+package dev.predmon.pipeline;
+
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * When the pairs of one run came and what the safety property's channel read then: the forecast learns from it how
+ * long runs took from a state to their violation or end, and how the property drifted.
+ *
+ * @param times         the log time of each pair's completing record, in the log's unit (seconds or ticks)
+ * @param values        the property's last value at each pair (the battery level), NaN before the first reading
+ * @param violationTime when the safety monitor first saw the property violated in this run, NaN when it held
+ * @param endTime       the time of the run's last record, NaN when no record had a time
+ * @param lowestSafeValue the property's lowest value before the violation (in the whole run when it held), NaN
+ *                      without a reading: how low the run went while still safe
+ * @param unit          what the times count: {@code s}, or {@code ticks} in a log without time stamps
+ * @param readings      every change of the property's value in the run, in order, with the number of pairs completed
+ *                      before it: the forecast moves with the value between pairs too
+ */
+public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
+                        double lowestSafeValue, String unit, List<Reading> readings) {
+
+    /**
+     * A new value of the property.
+     *
+     * @param time        its record's time
+     * @param value       the value
+     * @param pairsBefore pairs of the run completed before it
+     */
+    public record Reading(double time, double value, int pairsBefore) {
+    }
+
+    public RunTiming {
+        if (times.length != values.length) {
+            throw new IllegalArgumentException("times and values differ in length: " + times.length + " vs "
+                    + values.length);
+        }
+        times = times.clone();
+        values = values.clone();
+        readings = List.copyOf(readings);
+    }
+
+    /** No timing known for {@code pairs} pairs (every time and value NaN). */
+    public static RunTiming none(int pairs) {
+        double[] nan = new double[pairs];
+        Arrays.fill(nan, Double.NaN);
+        return new RunTiming(nan, nan, Double.NaN, Double.NaN, Double.NaN, "s", List.of());
+    }
+
+    /** The time of pair {@code i}. */
+    public double time(int i) {
+        return times[i];
+    }
+
+    /** The property's value at pair {@code i}. */
+    public double value(int i) {
+        return values[i];
+    }
+
+    public int size() {
+        return times.length;
+    }
+
+    @Override
+    public double[] times() {
+        return times.clone();
+    }
+
+    @Override
+    public double[] values() {
+        return values.clone();
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof RunTiming t && Arrays.equals(times, t.times) && Arrays.equals(values, t.values)
+                && Double.compare(violationTime, t.violationTime) == 0 && Double.compare(endTime, t.endTime) == 0
+                && Double.compare(lowestSafeValue, t.lowestSafeValue) == 0 && unit.equals(t.unit) && readings.equals(t.readings);
+    }
+
+    @Override
+    public int hashCode() {
+        return 31 * Arrays.hashCode(times) + Arrays.hashCode(values);
+    }
+
+    @Override
+    public String toString() {
+        return "RunTiming[" + times.length + " pairs, violation " + violationTime + ", end " + endTime + "]";
+    }
+}

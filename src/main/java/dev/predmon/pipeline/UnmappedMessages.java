@@ -1,0 +1,197 @@
+package dev.predmon.pipeline;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.Classification;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordKind;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.TreeSet;
+
+/**
+ * The interface messages of a log that no abstraction rule maps, told by command. The abstraction names each kind
+ * apart ({@code GoTo/getCurrentPose reply '-6.19;0.55'}), so a real robot's log read with another robot's abstraction
+ * has thousands of kinds, one per pose; a person needs to know which commands, how many messages, and why. This
+ * class groups them ({@link #lines}: at most {@value #MAX_LINES} lines) and says when they show that the
+ * abstraction, and so the models, do not fit the log at all ({@link #misfit}), with the likely fix.
+ */
+public final class UnmappedMessages {
+
+    /** At most this many lines say which commands were not mapped; one more counts the rest. */
+    public static final int MAX_LINES = 10;
+    private static final String LOCATION = " about unknown location '";
+
+    /**
+     * One command's messages no rule maps.
+     *
+     * @param command   {@code Protocol/command}
+     * @param messages  how many
+     * @param noRule    whether the abstraction has no rule for the command at all
+     * @param locations the locations its messages name that the abstraction does not know
+     * @param replies   distinct reply values no reply of its rule takes
+     */
+    public record Group(String command, long messages, boolean noRule, TreeSet<String> locations, long replies) {
+
+        /** {@code GoTo/goTo (4 messages): about a location the abstraction does not know: 'user'}. */
+        public String describe() {
+            List<String> why = new ArrayList<>();
+            if (noRule) {
+                why.add("no rule for this command");
+            }
+            if (!locations.isEmpty()) {
+                why.add("about locations it does not know: '" + String.join("', '", locations) + "'");
+            }
+            if (replies > 0) {
+                why.add(replies + " distinct " + (replies == 1 ? "reply" : "replies") + " no rule takes");
+            }
+            return command + " (" + messages + (messages == 1 ? " message" : " messages") + "): "
+                    + String.join("; ", why);
+        }
+    }
+
+    private UnmappedMessages() {
+    }
+
+    /** The command of a kind of unmapped message: {@code GoTo/goTo} of {@code GoTo/goTo reply 'kitchen'}. */
+    public static String command(String kind) {
+        int command = kind.indexOf(" command");
+        int reply = kind.indexOf(" reply");
+        int end = command < 0 ? reply : reply < 0 ? command : Math.min(command, reply);
+        return end < 0 ? kind : kind.substring(0, end);
+    }
+
+    /** The messages by command, the commands with most messages first. */
+    public static List<Group> groups(Map<String, Long> unmapped) {
+        Map<String, long[]> counts = new LinkedHashMap<>(); // messages, no rule (0/1), distinct replies
+        Map<String, TreeSet<String>> locations = new LinkedHashMap<>();
+        unmapped.forEach((kind, n) -> {
+            String command = command(kind);
+            long[] c = counts.computeIfAbsent(command, k -> new long[3]);
+            locations.computeIfAbsent(command, k -> new TreeSet<>());
+            c[0] += n;
+            String rest = kind.substring(command.length());
+            int at = rest.indexOf(LOCATION);
+            if (at >= 0) {
+                locations.get(command).add(rest.substring(at + LOCATION.length(), rest.length() - 1));
+            } else if (rest.equals(" command")) {
+                c[1] = 1;
+            } else {
+                c[2]++;
+            }
+        });
+        List<Group> groups = new ArrayList<>();
+        counts.forEach((command, c) -> {
+            // a reply of a command without rule has no rule either: it says nothing more about the command
+            long replies = c[1] == 1 ? 0 : c[2];
+            groups.add(new Group(command, c[0], c[1] == 1, locations.get(command), replies));
+        });
+        groups.sort(Comparator.comparingLong(Group::messages).reversed().thenComparing(Group::command));
+        return groups;
+    }
+
+    /** At most {@value #MAX_LINES} lines, one per command, then one that counts the commands left out. */
+    public static List<String> lines(Map<String, Long> unmapped) {
+        List<Group> groups = groups(unmapped);
+        List<String> lines = new ArrayList<>();
+        int shown = groups.size() <= MAX_LINES ? groups.size() : MAX_LINES - 1;
+        for (int i = 0; i < shown; i++) {
+            lines.add(groups.get(i).describe());
+        }
+        if (shown < groups.size()) {
+            long rest = groups.subList(shown, groups.size()).stream().mapToLong(Group::messages).sum();
+            lines.add((groups.size() - shown) + " more commands (" + rest + " messages)");
+        }
+        return lines;
+    }
+
+    /**
+     * Why the models cannot judge this log, in one line naming it, when its unmapped messages show that the
+     * abstraction does not fit it: most interface records are unmapped, or the log names locations the abstraction
+     * does not know, or commands of a component it maps that it has no rule for (the robot does what the models
+     * never saw). Interface messages of components the abstraction knows nothing of (a camera) are only reported.
+     *
+     * @param interfaceRecords the log's interface records, mapped or not
+     * @param abstraction      the abstraction the log was read with
+     * @param consequence      what follows from it ({@code no verdict}), said after the reasons
+     */
+    public static Optional<String> misfit(String log, long interfaceRecords, Map<String, Long> unmapped,
+                                          Abstraction abstraction, String consequence) {
+        long notMapped = unmapped.values().stream().mapToLong(Long::longValue).sum();
+        List<String> unseen = new ArrayList<>();
+        TreeSet<String> places = new TreeSet<>();
+        for (Group g : groups(unmapped)) {
+            places.addAll(g.locations());
+            if (g.noRule() && abstraction.mapsProtocol(protocol(g.command()))) {
+                unseen.add(g.command());
+            }
+        }
+        places.forEach(p -> unseen.add("location '" + p + "'"));
+        boolean most = notMapped * 2 > interfaceRecords;
+        if (!most && unseen.isEmpty()) {
+            return Optional.empty();
+        }
+        List<String> why = new ArrayList<>();
+        if (most) {
+            long mapped = interfaceRecords - notMapped;
+            why.add(String.format(Locale.ROOT, "the abstraction '%s' maps only %d of its %d interface records (%d%%)",
+                    abstraction.name(), mapped, interfaceRecords, mapped * 100 / Math.max(1, interfaceRecords)));
+        }
+        if (!unseen.isEmpty()) {
+            why.add("it names what the abstraction '" + abstraction.name() + "' never saw: "
+                    + String.join(", ", unseen.subList(0, Math.min(4, unseen.size())))
+                    + (unseen.size() > 4 ? ", ..." : ""));
+        }
+        return Optional.of(log + ": " + String.join(", and ", why) + "; the models do not fit this log: " + consequence
+                + "; "
+                + likelyFix(unmapped, abstraction).map(name -> "try --abstraction " + name + ", with models learned "
+                + "with it (--models)").orElse("are these the models of this robot, and the right --abstraction?"));
+    }
+
+    /**
+     * The built-in abstraction that would map most of these messages, if one would map more than half of them: what
+     * to try instead. Each kind is tried as a message of its command (with the location it names).
+     */
+    public static Optional<String> likelyFix(Map<String, Long> unmapped, Abstraction current) {
+        long total = unmapped.values().stream().mapToLong(Long::longValue).sum();
+        String best = null;
+        long bestCovered = 0;
+        for (String name : Abstraction.BUILTIN_NAMES) {
+            if (name.equals(current.name())) {
+                continue;
+            }
+            Abstraction other = Abstraction.builtin(name).orElseThrow();
+            long covered = 0;
+            for (Map.Entry<String, Long> e : unmapped.entrySet()) {
+                if (!(other.classify(example(e.getKey())) instanceof Classification.Unmapped)) {
+                    covered += e.getValue();
+                }
+            }
+            if (covered * 2 > total && covered > bestCovered) {
+                best = name;
+                bestCovered = covered;
+            }
+        }
+        return Optional.ofNullable(best);
+    }
+
+    /** A command message of the kind's command, naming the location the kind names (if it does). */
+    private static LogRecord example(String kind) {
+        String command = command(kind);
+        int at = kind.indexOf(LOCATION);
+        String location = at < 0 ? "" : kind.substring(at + LOCATION.length(), kind.length() - 1);
+        int slash = command.indexOf('/');
+        return new LogRecord(0, 0, "DEBUG", RecordKind.COMMAND, "", "", slash < 0 ? "" : command.substring(0, slash),
+                command.substring(slash + 1), location, "");
+    }
+
+    private static String protocol(String command) {
+        int slash = command.indexOf('/');
+        return slash < 0 ? "" : command.substring(0, slash);
+    }
+}

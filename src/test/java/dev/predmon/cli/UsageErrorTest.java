@@ -1,0 +1,52 @@
+package dev.predmon.cli;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * A usage error is its line and where the help is, not the whole help after it: 30 to 65 lines of help scrolled the
+ * line that says what was wrong out of sight.
+ */
+class UsageErrorTest {
+
+    private static final List<String> COMMANDS = List.of("learn", "watch", "verify", "classify", "explain", "simulate",
+            "evaluate", "export-samples", "bench", "demo", "abstraction");
+
+    @Test
+    void anUnknownOptionIsOneLineAndWhereTheHelpIs() {
+        for (String command : COMMANDS) {
+            Cli r = Cli.run(command, "--no-such-option");
+            assertEquals(ExitCodes.USAGE, r.code(), command);
+            List<String> lines = r.err().strip().lines().toList();
+            assertTrue(lines.size() <= 3, command + " printed " + lines.size() + " lines:\n" + r.err());
+            assertTrue(lines.get(0).startsWith("predmon: "), r.err());
+            assertEquals("see 'predmon " + command + " --help'", lines.get(lines.size() - 1), r.err());
+            assertFalse(r.err().contains("Usage:"), r.err());
+            assertEquals("", r.out(), command);
+        }
+    }
+
+    @Test
+    void aMissingOrImpossibleValueAndAnUnknownCommandToo() {
+        Cli missing = Cli.run("watch");
+        assertEquals(ExitCodes.USAGE, missing.code());
+        assertEquals(List.of("predmon: Missing required option: '--log=FILE'", "see 'predmon watch --help'"),
+                missing.err().strip().lines().toList());
+
+        Cli negative = Cli.run("classify", "--log", "x.log", "--threshold", "-1");
+        assertEquals(ExitCodes.USAGE, negative.code());
+        assertEquals(2, negative.err().strip().lines().count(), negative.err());
+        assertTrue(negative.err().contains("--threshold must be at least 0"), negative.err());
+
+        Cli misspelt = Cli.run("clasify", "--log", "x.log");
+        assertEquals(ExitCodes.USAGE, misspelt.code());
+        assertTrue(misspelt.err().contains("classify"), "suggests the command: " + misspelt.err());
+        assertTrue(misspelt.err().strip().endsWith("see 'predmon --help'"), misspelt.err());
+        assertTrue(misspelt.err().strip().lines().count() <= 4, misspelt.err());
+    }
+}
