@@ -186,6 +186,7 @@ public final class Fleet implements AutoCloseable {
                 }
                 for (WatchedLog log : w.due(until - System.nanoTime())) {
                     poll(log);
+                    w.polled(log);
                 }
             }
         } catch (InterruptedException e) {

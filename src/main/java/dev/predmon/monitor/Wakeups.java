@@ -1,5 +1,7 @@
 package dev.predmon.monitor;
 
+import dev.predmon.parse.LogFollower;
+
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -7,6 +9,7 @@ import java.nio.file.WatchKey;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
+import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -23,7 +26,9 @@ import java.util.concurrent.TimeUnit;
  *
  * <p>A log whose name was deleted or renamed away is an <i>orphan</i> until its name is back: a writer may still
  * hold the old file, whose writes are then announced under its new name (or its last one, once deleted), so every
- * change in its directory polls it, and the follower drains the old file.
+ * change in its directory polls it, and the follower drains the old file. Once a new file is at the path, the
+ * follower finishes the old one only after it has been quiet for a while, a moment no event marks: such a log is
+ * also polled every {@link #REPLACING_NANOS} until the follower has moved to the new file.
  */
 final class Wakeups implements AutoCloseable {
 
@@ -43,6 +48,12 @@ final class Wakeups implements AutoCloseable {
         }
     }
 
+    /**
+     * How often a log in the middle of a rename rotation is looked at: a quarter of the quiet time after which its
+     * follower finishes the renamed file, so the new file is taken at most that much later.
+     */
+    static final long REPLACING_NANOS = TimeUnit.MILLISECONDS.toNanos(LogFollower.QUIET_MILLIS) / 4;
+
     private final DirectoryWatch watch;
     private final long pauseNanos;
     private final Map<WatchKey, Watched> byKey = new HashMap<>();
@@ -53,6 +64,8 @@ final class Wakeups implements AutoCloseable {
     private final Set<WatchedLog> polled = new LinkedHashSet<>();
     /** Polled at the next {@link #due}: just watched, so what they got before may not have been announced. */
     private final Set<WatchedLog> pending = new LinkedHashSet<>();
+    /** Logs in the middle of a rename rotation, each with when to poll it next. */
+    private final Map<WatchedLog, Long> replacing = new HashMap<>();
     private final List<WatchKey> invalid = new ArrayList<>();
     private long nextPass = System.nanoTime();
     private boolean rescan;
@@ -140,14 +153,28 @@ final class Wakeups implements AutoCloseable {
     }
 
     /**
-     * Waits up to {@code nanos} (less when a polled log's pause ends first) for changes, and gives the logs to poll
-     * now, each once.
+     * After {@code log} was polled: while a replacement of its file waits for the old file to be quiet, nothing may
+     * be written that would announce the moment to finish it, so the log is polled again every
+     * {@link #REPLACING_NANOS} until its follower has moved on.
+     */
+    void polled(WatchedLog log) {
+        if (log.watcher().replacing()) {
+            replacing.putIfAbsent(log, System.nanoTime() + REPLACING_NANOS);
+        }
+    }
+
+    /**
+     * Waits up to {@code nanos} (less when a polled log's pause or a rotation's next look comes first) for changes,
+     * and gives the logs to poll now, each once.
      */
     Set<WatchedLog> due(long nanos) throws InterruptedException {
         long now = System.nanoTime();
         long wait = pending.isEmpty() ? nanos : 0;
         if (!polled.isEmpty()) {
             wait = Math.min(wait, nextPass - now);
+        }
+        for (long at : replacing.values()) {
+            wait = Math.min(wait, at - now);
         }
         Set<WatchedLog> out = new LinkedHashSet<>();
         if (watch == null) {
@@ -169,6 +196,14 @@ final class Wakeups implements AutoCloseable {
         }
         out.addAll(pending);
         pending.clear();
+        long later = System.nanoTime();
+        for (Iterator<Map.Entry<WatchedLog, Long>> i = replacing.entrySet().iterator(); i.hasNext(); ) {
+            Map.Entry<WatchedLog, Long> next = i.next();
+            if (later - next.getValue() >= 0) {
+                out.add(next.getKey()); // polled() schedules it again if it still waits
+                i.remove();
+            }
+        }
         if (!polled.isEmpty() && System.nanoTime() - nextPass >= 0) {
             out.addAll(polled);
             nextPass = System.nanoTime() + pauseNanos;
