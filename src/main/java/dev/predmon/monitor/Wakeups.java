@@ -58,7 +58,7 @@ final class Wakeups implements AutoCloseable {
     private final long pauseNanos;
     private final Map<WatchKey, Watched> byKey = new HashMap<>();
     private final Map<Path, Watched> byDir = new HashMap<>();
-    /** Directories on file systems whose changes are not notified: not asked again. */
+    /** Per directory, whether its file system is one whose changes are not notified: asked once each. */
     private final Map<Path, Boolean> remote = new HashMap<>();
     /** Polled every pause. */
     private final Set<WatchedLog> polled = new LinkedHashSet<>();
