@@ -13,6 +13,7 @@ import dev.predmon.simulate.Scenario;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.UncheckedIOException;
+import java.lang.management.CompilationMXBean;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.nio.charset.StandardCharsets;
@@ -73,7 +74,10 @@ final class FleetBench {
 
     /** Time for a fresh follower to register its watches and look at every log once before it is measured. */
     private static final long SETTLE_MILLIS = 300;
-    /** As above, and for the compiler to finish with what the phases before compiled, so as not to count it idle. */
+    /**
+     * Before the idle phase: at least this long, and until the JIT compiler has been quiet this long (at most 20 s),
+     * so that compiling what the catch-up ran is not counted as the cost of idle logs.
+     */
     private static final long IDLE_SETTLE_MILLIS = 1000;
 
     private final Abstraction abstraction;
@@ -183,7 +187,13 @@ final class FleetBench {
 
     /** {share of a core of the process, of the following thread} while following logs that do not grow. */
     private double[] idle(Following following) throws Exception {
-        Thread.sleep(IDLE_SETTLE_MILLIS);
+        CompilationMXBean jit = ManagementFactory.getCompilationMXBean();
+        long settled = System.nanoTime() + 20_000_000_000L;
+        long compiled;
+        do {
+            compiled = jit.getTotalCompilationTime();
+            Thread.sleep(IDLE_SETTLE_MILLIS);
+        } while (jit.getTotalCompilationTime() != compiled && System.nanoTime() < settled);
         long cpu = os.getProcessCpuTime();
         long loop = threads.getThreadCpuTime(following.thread.getId());
         long start = System.nanoTime();
