@@ -6,6 +6,7 @@ import dev.predmon.learn.LearnedScenario;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.PredictiveMonitor;
 
+import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -31,11 +32,13 @@ public final class Benchmarks {
      * @param learnRuns       runs per scenario, one learning per value
      * @param modelRuns       runs per scenario the monitored models are learned from
      * @param tempDir         where generated logs go
-     * @param fleetLogs       logs watched at once in the fleet benchmark (measured against one log)
-     * @param fleetSeconds    how long the fleet benchmark runs at robot pace per fleet size (and half that idle)
+     * @param fleetLogs       fleet sizes: logs watched at once in the fleet benchmark, one measurement each
+     * @param fleetSeconds    how long the fleet benchmark runs at robot pace, and idle, per fleet size
+     * @param fleetPolling    the fleet polls every log ({@code watch --polling}) instead of waiting for notifications
      */
     public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
-                          List<Integer> learnRuns, int modelRuns, Path tempDir, int fleetLogs, double fleetSeconds) {
+                          List<Integer> learnRuns, int modelRuns, Path tempDir, List<Integer> fleetLogs,
+                          double fleetSeconds, boolean fleetPolling) {
     }
 
     private Benchmarks() {
@@ -104,16 +107,21 @@ public final class Benchmarks {
                             r.records()[r.records().length - 1], r.heapMb()[r.heapMb().length - 1]));
                 }
                 case FLEET -> {
-                    List<Integer> sizes = o.fleetLogs() == 1 ? List.of(1) : List.of(1, o.fleetLogs());
-                    for (FleetBench.Result r : FleetBench.run(abstraction, models, sizes, o.latencyRuns(),
-                            o.pollMicros(), o.fleetSeconds(), o.tempDir())) {
-                        out.accept(f("fleet: %d log%s in one loop, poll pause %d us: catch-up %.0f ns CPU/record; idle "
-                                        + "%.1f%% of a core; at robot pace (%.0f records/s per log) %.1f%% of a core, "
-                                        + "%.0f ns CPU/record; append->warning median %.3f ms, p99 %.3f ms, max %.3f ms "
-                                        + "(%d samples)", r.logs(), r.logs() == 1 ? "" : "s", r.pollMicros(),
-                                r.catchUpNanos(), 100 * r.idleCore(), r.paceRate(), 100 * r.paceCore(), r.paceNanos(),
+                    String how = o.fleetPolling() ? f("polling every %d us", o.pollMicros())
+                            : "woken by file-change notification";
+                    for (FleetBench.Result r : FleetBench.run(abstraction, models, o.fleetLogs(), o.latencyRuns(),
+                            o.pollMicros(), o.fleetPolling(), o.fleetSeconds(), o.tempDir())) {
+                        out.accept(f("fleet: %d log%s in one process, %s: catch-up %.0f ns CPU/record; idle %.1f%% of "
+                                        + "a core (following thread %.1f%%); at robot pace (%.0f records/s per log) "
+                                        + "%.1f%% of a core, %.0f ns CPU/record; append->warning median %.3f ms, p99 "
+                                        + "%.3f ms, max %.3f ms (%d samples); load average %.1f%s", r.logs(),
+                                r.logs() == 1 ? "" : "s", how, r.catchUpNanos(), 100 * r.idleCore(),
+                                100 * r.idleLoopCore(), r.paceRate(), 100 * r.paceCore(), r.paceNanos(),
                                 r.percentile(0.5), r.percentile(0.99), r.millis()[r.millis().length - 1],
-                                r.millis().length));
+                                r.millis().length, ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(),
+                                r.logs() < 1000 ? ""
+                                        : f("; target idle < 5%% of a core and p99 < 20 ms: %s",
+                                        r.idleCore() < 0.05 && r.percentile(0.99) < 20 ? "met" : "MISSED")));
                     }
                 }
                 case LEARN -> {

@@ -1,8 +1,10 @@
 package dev.predmon.bench;
 
+import com.sun.management.OperatingSystemMXBean;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Fleet;
+import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.WatchedLog;
 import dev.predmon.parse.LogRecord;
@@ -10,6 +12,8 @@ import dev.predmon.simulate.Scenario;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.io.UncheckedIOException;
+import java.lang.management.CompilationMXBean;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.nio.charset.StandardCharsets;
@@ -24,20 +28,28 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
-import java.util.stream.Stream;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicLongArray;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
+import java.util.stream.IntStream;
+import java.util.stream.Stream;
 
 /**
- * {@code watch} with many logs in one process, against one log: {@link Fleet#poll()} in the loop {@code watch} runs
- * (a pass over every log, then the pause), on the polling thread, whose CPU time is what is counted. Per fleet size:
+ * {@code watch} with many logs in one process, against one log: {@link Fleet#follow} on a thread of its own, as
+ * {@code watch} runs it (woken by the operating system's file-change notification, or polling every log with
+ * {@code --polling}). CPU is the whole process's CPU time (the following thread, the JDK's notification thread, the
+ * garbage collector and the compiler), less that of the bench's writer threads; it is CPU time, not a share of a
+ * busy machine's wall clock. Per fleet size:
  * <ul>
- *   <li><b>catch-up</b>: CPU per record while the loop reads logs written before it started (parse, abstract,
+ *   <li><b>catch-up</b>: CPU per record while {@link Fleet#poll()} reads logs written before (parse, abstract,
  *       compact, match, and the polling);</li>
- *   <li><b>idle</b>: the share of a core spent polling logs nothing is appended to;</li>
+ *   <li><b>idle</b>: the share of a core spent following logs nothing is appended to (and, apart, the following
+ *       thread's own share);</li>
  *   <li><b>robot pace</b>: a writer thread appends to every log at the simulated robot's own pace (records per second
- *       of its log's clock); the loop's share of a core and its CPU per record;</li>
+ *       of its log's clock); the share of a core and the CPU per record;</li>
  *   <li><b>append to warning</b>: every log holds a depleted run up to the record that triggers the warning; the
- *       writer appends that record to the logs one by one, in random order, 1 to 3 ms apart, and each log's time
+ *       bench appends that record to the logs one by one, in random order, 1 to 3 ms apart, and each log's time
  *       from the end of the write to its warning event is one sample (as {@link LatencyBench} measures one log).</li>
  * </ul>
  */
@@ -46,39 +58,50 @@ final class FleetBench {
     /**
      * @param logs          logs watched at once
      * @param catchUpNanos  CPU ns per record reading logs written before
-     * @param idleCore      share of one core (0..1) polling logs that do not grow
+     * @param idleCore      share of one core (0..1) the process spends following logs that do not grow
+     * @param idleLoopCore  the same, of the following thread alone
      * @param paceRate      records per second appended to each log at robot pace
      * @param paceCore      share of one core at robot pace
      * @param paceNanos     CPU ns per record at robot pace
      * @param millis        append-to-warning latencies, sorted
-     * @param pollMicros    the pause after each pass
      */
-    record Result(int logs, double catchUpNanos, double idleCore, double paceRate, double paceCore, double paceNanos,
-                  double[] millis, long pollMicros) {
+    record Result(int logs, double catchUpNanos, double idleCore, double idleLoopCore, double paceRate,
+                  double paceCore, double paceNanos, double[] millis) {
         double percentile(double q) {
             return millis[Math.min(millis.length - 1, (int) Math.ceil(q * millis.length) - 1)];
         }
     }
 
+    /** Time for a fresh follower to register its watches and look at every log once before it is measured. */
+    private static final long SETTLE_MILLIS = 300;
+    /**
+     * Before the idle phase: at least this long, and until the JIT compiler has been quiet this long (at most 20 s),
+     * so that compiling what the catch-up ran is not counted as the cost of idle logs.
+     */
+    private static final long IDLE_SETTLE_MILLIS = 1000;
+
     private final Abstraction abstraction;
     private final ModelSet models;
-    private final long pollMicros;
+    private final long pauseNanos;
+    private final boolean polling;
     private final Path dir;
     private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+    private final OperatingSystemMXBean os = ManagementFactory.getPlatformMXBean(OperatingSystemMXBean.class);
     private final byte[] before;
     private final byte[] trigger;
     private final long beforeRecords;
     private final List<byte[]> run;
     private final double robotRate;
-    /** How long the robot-pace phase runs; the idle phase runs half as long. */
-    private final long paceNanos;
+    /** How long the robot-pace phase and the idle phase run. */
+    private final long phaseNanos;
 
-    private FleetBench(Abstraction abstraction, ModelSet models, long pollMicros, double seconds, Path dir)
-            throws Exception {
-        this.paceNanos = (long) (seconds * 1e9);
+    private FleetBench(Abstraction abstraction, ModelSet models, long pollMicros, boolean polling, double seconds,
+                       Path dir) throws Exception {
+        this.phaseNanos = (long) (seconds * 1e9);
         this.abstraction = abstraction;
         this.models = models;
-        this.pollMicros = pollMicros;
+        this.pauseNanos = pollMicros * 1000;
+        this.polling = polling;
         this.dir = dir;
         String[] parts = LatencyBench.warningRun(abstraction, models, dir);
         this.before = parts[0].getBytes(StandardCharsets.UTF_8);
@@ -93,25 +116,30 @@ final class FleetBench {
     /**
      * Measures fleets of each size in {@code sizes}, about {@code samples} latencies each.
      *
-     * @param seconds how long the loop runs at robot pace per size (and half that idle)
+     * @param pollMicros the pause between two polls of a log that is polled
+     * @param polling    poll every log ({@code watch --polling}) instead of waiting for notifications
+     * @param seconds    how long the robot-pace and the idle phase run per size
      */
     static List<Result> run(Abstraction abstraction, ModelSet models, List<Integer> sizes, int samples, long pollMicros,
-                            double seconds, Path dir) throws Exception {
-        FleetBench b = new FleetBench(abstraction, models, pollMicros, seconds, dir);
-        b.measure(Math.min(10, sizes.get(sizes.size() - 1)), Math.min(20, samples)); // warm-up: JIT, page cache
+                            boolean polling, double seconds, Path dir) throws Exception {
+        FleetBench b = new FleetBench(abstraction, models, pollMicros, polling, seconds, dir);
+        b.measure(Math.min(10, sizes.get(sizes.size() - 1)), Math.min(20, samples), false); // warm-up: JIT, cache
         List<Result> out = new ArrayList<>();
         for (int n : sizes) {
-            out.add(b.measure(n, samples));
+            out.add(b.measure(n, samples, true));
         }
         return out;
     }
 
-    private Result measure(int logs, int samples) throws Exception {
+    /**
+     * Measures one fleet size; {@code full} false for the warm-up, which runs every phase but the idle one, shorter.
+     */
+    private Result measure(int logs, int samples, boolean full) throws Exception {
         int rounds = Math.max(1, (samples + logs - 1) / logs);
         double[] millis = new double[rounds * logs];
         long catchUpCpu = 0;
         long caughtUp = 0;
-        double idle = 0;
+        double[] idleCore = {0, 0};
         for (int r = 0; r < rounds; r++) {
             Path round = Files.createTempDirectory(dir, "predmon-fleet");
             try {
@@ -119,47 +147,63 @@ final class FleetBench {
                 for (int i = 0; i < logs; i++) {
                     files.add(Files.write(round.resolve("robot-" + i + ".log"), before));
                 }
-                long[] warnedAt = new long[logs];
+                AtomicLongArray warnedAt = new AtomicLongArray(logs);
                 Map<WatchedLog, Integer> index = new HashMap<>();
                 try (Fleet fleet = new Fleet(models, abstraction, 0, abstraction.confirm(), (log, e) -> {
                     if (e instanceof MonitorEvent.Warning) {
-                        warnedAt[index.get(log)] = System.nanoTime();
+                        warnedAt.set(index.get(log), System.nanoTime());
                     }
                 })) {
                     for (Path f : files) {
                         index.put(fleet.add(f), index.size());
                     }
-                    long cpu = cpu();
+                    long cpu = threads.getCurrentThreadCpuTime();
                     while (fleet.logs().stream().anyMatch(l -> l.monitor().pipeline().records() < beforeRecords)) {
                         fleet.poll();
                     }
-                    catchUpCpu += cpu() - cpu;
+                    catchUpCpu += threads.getCurrentThreadCpuTime() - cpu;
                     caughtUp += logs * beforeRecords;
-                    if (r == 0) {
-                        idle = idle(fleet);
+                    // Reading up to 1000 logs at once leaves garbage that watch's steady state does not make; on a
+                    // busy 2-core machine its collection paused the process for 20 to 160 ms in the phases below.
+                    System.gc();
+                    try (Following following = new Following(fleet, round)) {
+                        if (r == 0 && full) {
+                            idleCore = idle(following);
+                        } else {
+                            Thread.sleep(SETTLE_MILLIS);
+                        }
+                        latencies(files, warnedAt, new Random(r), millis, r * logs);
                     }
-                    latencies(fleet, files, warnedAt, new Random(r), millis, r * logs);
                 }
             } finally {
                 delete(round);
             }
         }
         Arrays.sort(millis);
-        double[] pace = pace(logs);
-        return new Result(logs, (double) catchUpCpu / caughtUp, idle, robotRate, pace[0], pace[1], millis, pollMicros);
+        double[] pace = pace(logs, full ? phaseNanos : phaseNanos / 5);
+        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], robotRate, pace[0], pace[1],
+                millis);
     }
 
-    /** The share of a core the loop spends on logs that do not grow. */
-    private double idle(Fleet fleet) throws IOException {
-        long cpu = cpu();
+    /** {share of a core of the process, of the following thread} while following logs that do not grow. */
+    private double[] idle(Following following) throws Exception {
+        CompilationMXBean jit = ManagementFactory.getCompilationMXBean();
+        long settled = System.nanoTime() + 20_000_000_000L;
+        long compiled;
+        do {
+            compiled = jit.getTotalCompilationTime();
+            Thread.sleep(IDLE_SETTLE_MILLIS);
+        } while (jit.getTotalCompilationTime() != compiled && System.nanoTime() < settled);
+        long cpu = os.getProcessCpuTime();
+        long loop = threads.getThreadCpuTime(following.thread.getId());
         long start = System.nanoTime();
-        while (System.nanoTime() - start < paceNanos / 2) {
-            pass(fleet);
-        }
-        return (double) (cpu() - cpu) / (System.nanoTime() - start);
+        Thread.sleep(phaseNanos / 1_000_000);
+        double wall = System.nanoTime() - start;
+        return new double[] {(os.getProcessCpuTime() - cpu) / wall,
+                (threads.getThreadCpuTime(following.thread.getId()) - loop) / wall};
     }
 
-    private void latencies(Fleet fleet, List<Path> files, long[] warnedAt, Random random, double[] into, int at)
+    private void latencies(List<Path> files, AtomicLongArray warnedAt, Random random, double[] into, int at)
             throws Exception {
         List<Integer> order = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
@@ -167,34 +211,28 @@ final class FleetBench {
         }
         Collections.shuffle(order, random);
         long[] writtenAt = new long[files.size()];
-        Thread writer = new Thread(() -> {
-            for (int i : order) {
-                try (OutputStream out = Files.newOutputStream(files.get(i), StandardOpenOption.APPEND)) {
-                    out.write(trigger);
-                } catch (IOException e) {
-                    throw new IllegalStateException(e);
-                }
-                writtenAt[i] = System.nanoTime(); // closed: the record is in the file
-                LockSupport.parkNanos(1_000_000L + random.nextInt(2_000_000));
+        for (int i : order) {
+            try (OutputStream out = Files.newOutputStream(files.get(i), StandardOpenOption.APPEND)) {
+                out.write(trigger);
             }
-        }, "predmon-bench-writer");
-        writer.start();
-        long deadline = System.nanoTime() + 60_000_000_000L;
-        while (Arrays.stream(warnedAt).anyMatch(t -> t == 0) && System.nanoTime() < deadline) {
-            pass(fleet);
+            writtenAt[i] = System.nanoTime(); // closed: the record is in the file
+            LockSupport.parkNanos(1_000_000L + random.nextInt(2_000_000));
         }
-        writer.join();
+        long deadline = System.nanoTime() + 60_000_000_000L;
+        while (IntStream.range(0, files.size()).anyMatch(i -> warnedAt.get(i) == 0) && System.nanoTime() < deadline) {
+            Thread.sleep(1);
+        }
         for (int i = 0; i < files.size(); i++) {
-            if (warnedAt[i] == 0) {
+            if (warnedAt.get(i) == 0) {
                 throw new IllegalStateException("log " + i + " of " + files.size() + ": no warning within 60 s");
             }
             // The warning can be seen before the writer stores its clock; such a sample is ~0.
-            into[at + i] = Math.max(0, warnedAt[i] - writtenAt[i]) / 1e6;
+            into[at + i] = Math.max(0, warnedAt.get(i) - writtenAt[i]) / 1e6;
         }
     }
 
     /** {share of a core, CPU ns per record} with every log growing at the robot's pace. */
-    private double[] pace(int logs) throws Exception {
+    private double[] pace(int logs, long nanos) throws Exception {
         Path round = Files.createTempDirectory(dir, "predmon-fleet-pace");
         try (Fleet fleet = new Fleet(models, abstraction, 0, abstraction.confirm(), (log, e) -> { })) {
             List<OutputStream> outs = new ArrayList<>();
@@ -203,41 +241,28 @@ final class FleetBench {
                 outs.add(Files.newOutputStream(f, StandardOpenOption.APPEND));
                 fleet.add(f);
             }
-            long start = System.nanoTime();
             // Each log starts at its own point of the run, as robots do not start together.
             int[] cursor = new int[logs];
             for (int i = 0; i < logs; i++) {
                 cursor[i] = (int) ((long) i * run.size() / Math.max(1, logs));
             }
-            Thread writer = new Thread(() -> {
-                long written = 0;
-                while (System.nanoTime() - start < paceNanos) {
-                    long due = (long) ((System.nanoTime() - start) / 1e9 * robotRate);
-                    try {
-                        for (; written < due; written++) {
-                            for (int i = 0; i < logs; i++) {
-                                outs.get(i).write(run.get(cursor[i]));
-                                cursor[i] = (cursor[i] + 1) % run.size();
-                            }
-                        }
-                        for (OutputStream o : outs) {
-                            o.flush();
-                        }
-                    } catch (IOException e) {
-                        throw new IllegalStateException(e);
-                    }
-                    LockSupport.parkNanos(5_000_000L);
-                }
-            }, "predmon-bench-pace");
-            writer.start();
-            long cpu = cpu();
-            long t0 = System.nanoTime();
-            while (writer.isAlive()) {
-                pass(fleet);
+            AtomicLong writerCpu = new AtomicLong();
+            long used;
+            double wall;
+            try (Following following = new Following(fleet, round)) {
+                Thread.sleep(SETTLE_MILLIS);
+                long start = System.nanoTime();
+                Thread writer = new Thread(() -> {
+                    write(outs, cursor, start, nanos);
+                    writerCpu.set(threads.getCurrentThreadCpuTime());
+                }, "predmon-bench-pace");
+                long cpu = os.getProcessCpuTime();
+                writer.start();
+                writer.join();
+                Thread.sleep(50); // the last appends read
+                used = os.getProcessCpuTime() - cpu - writerCpu.get();
+                wall = System.nanoTime() - start;
             }
-            pass(fleet);
-            long used = cpu() - cpu;
-            double wall = System.nanoTime() - t0;
             long records = fleet.logs().stream().mapToLong(l -> l.monitor().pipeline().records()).sum();
             for (OutputStream o : outs) {
                 o.close();
@@ -248,14 +273,54 @@ final class FleetBench {
         }
     }
 
-    /** One pass of watch's loop: every log polled once, then the pause. */
-    private void pass(Fleet fleet) throws IOException {
-        fleet.poll();
-        LockSupport.parkNanos(pollMicros * 1000);
+    /** Appends to every log at the robot's pace for {@code nanos}, flushing every 5 ms. */
+    private void write(List<OutputStream> outs, int[] cursor, long start, long nanos) {
+        long written = 0;
+        while (System.nanoTime() - start < nanos) {
+            long due = (long) ((System.nanoTime() - start) / 1e9 * robotRate);
+            try {
+                for (; written < due; written++) {
+                    for (int i = 0; i < outs.size(); i++) {
+                        outs.get(i).write(run.get(cursor[i]));
+                        cursor[i] = (cursor[i] + 1) % run.size();
+                    }
+                }
+                for (OutputStream o : outs) {
+                    o.flush();
+                }
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+            LockSupport.parkNanos(5_000_000L);
+        }
     }
 
-    private long cpu() {
-        return threads.getCurrentThreadCpuTime();
+    /** {@link Fleet#follow} over a directory of logs on its own thread, as {@code watch --log DIR} runs it. */
+    private final class Following implements AutoCloseable {
+
+        final Thread thread;
+        private final AtomicReference<Throwable> failed = new AtomicReference<>();
+
+        Following(Fleet fleet, Path logs) {
+            LogSources sources = new LogSources(List.of(logs));
+            thread = new Thread(() -> {
+                try {
+                    fleet.follow(sources, pauseNanos, polling);
+                } catch (Throwable t) {
+                    failed.set(t);
+                }
+            }, "predmon-bench-follow");
+            thread.start();
+        }
+
+        @Override
+        public void close() throws Exception {
+            thread.interrupt();
+            thread.join();
+            if (failed.get() != null) {
+                throw new IllegalStateException("following failed", failed.get());
+            }
+        }
     }
 
     /** A log text cut into its records, each with its lines. */

@@ -52,13 +52,19 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--tmp", paramLabel = "DIR", description = "Directory for generated logs (default: the system's).")
     Path tmp;
 
-    @Option(names = "--fleet-logs", defaultValue = "100",
-            description = "Logs watched at once by the fleet benchmark, against one (default: ${DEFAULT-VALUE}).")
-    int fleetLogs;
+    @Option(names = "--fleet-logs", split = ",", defaultValue = "1,100,1000",
+            description = "Fleet sizes: logs watched at once by the fleet benchmark, one measurement each (default: "
+                    + "${DEFAULT-VALUE}).")
+    List<Integer> fleetLogs;
 
     @Option(names = "--fleet-seconds", defaultValue = "5",
-            description = "Seconds the fleet benchmark appends at robot pace, per fleet size (default: ${DEFAULT-VALUE}).")
+            description = "Seconds the fleet benchmark appends at robot pace, and stays idle, per fleet size "
+                    + "(default: ${DEFAULT-VALUE}).")
     double fleetSeconds;
+
+    @Option(names = "--fleet-polling", description = "The fleet polls every log every --poll-us, as watch --polling "
+            + "does, instead of waiting for the operating system's file-change notification.")
+    boolean fleetPolling;
 
     @Override
     public Integer call() throws Exception {
@@ -67,7 +73,7 @@ final class BenchCommand implements Callable<Integer> {
                 : only.stream().map(this::kind).toList();
         Path dir = tmp != null ? tmp : Path.of(System.getProperty("java.io.tmpdir"));
         Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, learnRuns,
-                modelRuns, dir, fleetLogs, fleetSeconds), line -> {
+                modelRuns, dir, fleetLogs, fleetSeconds, fleetPolling), line -> {
             out.println(line);
             out.flush();
         });

@@ -27,6 +27,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
 
 /** {@code predmon watch}: the predictive monitor on a live log. */
 @Command(name = "watch", mixinStandardHelpOptions = true,
@@ -58,8 +59,16 @@ final class WatchCommand implements Callable<Integer> {
     @Option(names = "--eliminations", description = "Also print each model's elimination (--json always does).")
     boolean eliminations;
 
-    @Option(names = "--poll-ms", paramLabel = "MS", defaultValue = "2", description = "How often to look for new lines (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--poll-ms", paramLabel = "MS", defaultValue = "2",
+            description = "How often to look for new lines in a log whose changes the operating system does not "
+                    + "announce: on a network file system, in a directory that cannot be watched, or every log with "
+                    + "--polling (default: ${DEFAULT-VALUE}).")
     long pollMillis;
+
+    @Option(names = "--polling", description = "Look at every log every --poll-ms instead of waiting for the "
+            + "operating system's file-change notification (inotify), as for a file system whose notifications "
+            + "cannot be trusted. Costs CPU with many logs.")
+    boolean polling;
 
     @Mixin
     HookOptions hookOptions;
@@ -112,7 +121,7 @@ final class WatchCommand implements Callable<Integer> {
                 sources.missing().forEach(m -> err.println("predmon: waiting for " + Terminal.line(m) + " to appear"));
                 err.flush();
                 try (StopSignals signals = StopSignals.interrupting(Thread.currentThread())) {
-                    fleet.follow(sources, pollMillis);
+                    fleet.follow(sources, TimeUnit.MILLISECONDS.toNanos(pollMillis), polling);
                     stop = signals.received() != null ? signals.received() : "interrupted";
                 }
                 Thread.interrupted(); // stopped: the summaries are written in full

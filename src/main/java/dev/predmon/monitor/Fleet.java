@@ -15,18 +15,25 @@ import java.util.Map;
 
 /**
  * Several logs watched in one process, by one thread: each log has its own {@link LogWatcher} and
- * {@link PredictiveMonitor} ({@link WatchedLog}), and one loop polls them in turn. One log is a fleet of one, so
- * {@code watch} has a single code path.
+ * {@link PredictiveMonitor} ({@link WatchedLog}). One log is a fleet of one, so {@code watch} has a single code path.
  *
- * <p>Each pass polls every log once; a poll reads everything appended since the last one, so a pass is followed
- * by the pause whether or not it read anything: with many robots writing, some log almost always has something
- * new, and re-polling at once would spin. A record appended just after its log was polled waits at most one pause
- * plus one pass (see {@code bench --only fleet} for what that costs with 100 logs).
+ * <p>While following, the thread sleeps until the operating system says that a file in a log's directory changed
+ * ({@link Wakeups}, {@link DirectoryWatch}), then polls just the logs concerned: a thousand idle logs cost almost
+ * nothing, and an append is read within a millisecond or so. Logs whose changes cannot be notified (a network file
+ * system, a directory that cannot be watched, or {@code --polling}) are polled after every pause instead: a record
+ * appended just after its log was polled waits at most one pause plus one pass.
+ * Every {@link #SAFETY_NANOS} every log is polled anyway, as a backstop for what no notification covers: a file
+ * written through a memory map, or through a hard link in another directory, a directory replaced under its
+ * watch before {@link Wakeups#recheck} sees it. It costs a few microseconds per log (see {@code bench --only fleet}).
  */
 public final class Fleet implements AutoCloseable {
 
-    /** Rescans of directories and globs for new logs, at most this often. */
+    /** Rescans of directories and globs for new logs when some are not watched, and retries of watches. */
     static final long RESCAN_NANOS = 1_000_000_000L;
+    /** Every log polled, notified or not, and the rescan when everything is watched: the backstop. */
+    static final long SAFETY_NANOS = 2_000_000_000L;
+    /** A file created in a watched directory asks for a rescan, which waits this long after the last one. */
+    static final long RESCAN_SOON_NANOS = 50_000_000L;
 
     /** What a fleet reports, always from the thread that polls it. */
     public interface Listener {
@@ -62,6 +69,8 @@ public final class Fleet implements AutoCloseable {
     private final Settings settings;
     private final Listener listener;
     private final Map<Path, WatchedLog> logs = new LinkedHashMap<>();
+    /** While following: told of each log added. */
+    private Wakeups wakeups;
 
     /**
      * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
@@ -88,6 +97,9 @@ public final class Fleet implements AutoCloseable {
         WatchedLog added = new WatchedLog(log, settings, listener);
         logs.put(key, added);
         listener.added(added);
+        if (wakeups != null) {
+            wakeups.add(added);
+        }
         return added;
     }
 
@@ -100,12 +112,17 @@ public final class Fleet implements AutoCloseable {
     public boolean poll() throws IOException {
         boolean any = false;
         for (WatchedLog log : logs.values()) {
-            if (log.watcher().poll()) {
-                any = true;
-                listener.grew(log);
-            }
+            any |= poll(log);
         }
         return any;
+    }
+
+    private boolean poll(WatchedLog log) throws IOException {
+        if (log.watcher().poll()) {
+            listener.grew(log);
+            return true;
+        }
+        return false;
     }
 
     /** Reads every log to its end and completes its trace ({@code --no-follow}). */
@@ -117,33 +134,74 @@ public final class Fleet implements AutoCloseable {
 
     /**
      * Follows every log until the thread is interrupted, which is how watching is meant to end: an interrupt while
-     * sleeping or reading is a stop, not an error, and leaves the interrupt status set. Directories and globs among
-     * {@code sources} are looked at again about once a second for new logs.
+     * waiting or reading is a stop, not an error, and leaves the interrupt status set. Directories and globs among
+     * {@code sources} are looked at again for new logs when a file is created in them, and every
+     * {@link #SAFETY_NANOS} (every {@link #RESCAN_NANOS} while one of their directories cannot be watched).
      *
-     * @param pauseMillis the pause after each pass ({@code --poll-ms})
+     * @param pauseNanos the pause between two polls of a log whose changes are not notified ({@code --poll-ms})
+     * @param polling    poll every log after each pause, without the operating system's notification
      */
-    public void follow(LogSources sources, long pauseMillis) throws IOException {
-        long nextScan = System.nanoTime() + RESCAN_NANOS;
+    public void follow(LogSources sources, long pauseNanos, boolean polling) throws IOException {
+        follow(sources, pauseNanos, polling, SAFETY_NANOS);
+    }
+
+    /**
+     * As above, with the backstop's period: tests set it beyond their length, so that only the notification or the
+     * polling under test can wake the fleet.
+     */
+    void follow(LogSources sources, long pauseNanos, boolean polling, long safetyNanos) throws IOException {
         boolean growing = sources.growing();
-        try {
+        try (Wakeups w = new Wakeups(polling ? null : DirectoryWatch.open(), pauseNanos)) {
+            wakeups = w;
+            logs.values().forEach(w::add);
+            if (growing) {
+                rescan(sources); // also watches the directories in which new logs may appear
+            }
+            long now = System.nanoTime();
+            long lastScan = now;
+            long nextCheck = now + RESCAN_NANOS;
+            long nextSafety = now + safetyNanos;
             while (!Thread.currentThread().isInterrupted()) {
-                if (growing && System.nanoTime() - nextScan >= 0) {
+                now = System.nanoTime();
+                long scanPeriod = w.allWatched() ? safetyNanos : RESCAN_NANOS;
+                if (growing && (now - lastScan >= scanPeriod
+                        || w.rescanWanted() && now - lastScan >= RESCAN_SOON_NANOS)) {
+                    w.rescanning();
                     rescan(sources);
-                    nextScan = System.nanoTime() + RESCAN_NANOS;
+                    lastScan = now;
                 }
-                poll();
-                Thread.sleep(pauseMillis);
+                if (now - nextCheck >= 0) {
+                    w.recheck();
+                    nextCheck = now + (w.allWatched() ? safetyNanos : RESCAN_NANOS);
+                }
+                if (now - nextSafety >= 0) {
+                    if (w.notifying()) {
+                        poll();
+                    }
+                    nextSafety = now + safetyNanos;
+                }
+                long until = Math.min(nextCheck, nextSafety);
+                if (growing) {
+                    until = Math.min(until, lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
+                }
+                for (WatchedLog log : w.due(until - System.nanoTime())) {
+                    poll(log);
+                    w.polled(log);
+                }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (ClosedByInterruptException e) {
             // interrupted while reading (FileChannel reads are interruptible); the interrupt status stays set
+        } finally {
+            wakeups = null;
         }
     }
 
     private void rescan(LogSources sources) throws ClosedByInterruptException {
         try {
             sources.find().forEach(this::add);
+            wakeups.watchSources(sources.directories());
         } catch (ClosedByInterruptException stop) {
             throw stop;
         } catch (IOException e) {

@@ -156,39 +156,79 @@ public final class LogSources {
         return n.endsWith(".log") || n.endsWith(".txt");
     }
 
+    /**
+     * A glob cut where its first pattern begins: walk {@code from} (its fixed leading directories, or here) to
+     * {@code depth} and match each path from there against {@code rest}; {@code base} is what found paths are
+     * resolved against (null for a relative glob with no fixed directory).
+     */
+    private record GlobRoot(Path base, Path from, Path rest, int depth) {
+
+        static GlobRoot of(Path name) {
+            int fixed = 0;
+            while (fixed < name.getNameCount() - 1 && !isGlob(name.getName(fixed))) {
+                fixed++;
+            }
+            Path root = name.getRoot();
+            Path base = fixed == 0 ? root
+                    : root == null ? name.subpath(0, fixed) : root.resolve(name.subpath(0, fixed));
+            Path rest = name.subpath(fixed, name.getNameCount());
+            int depth = rest.toString().contains("**") ? Integer.MAX_VALUE : rest.getNameCount();
+            return new GlobRoot(base, base == null ? Path.of(".") : base, rest, depth);
+        }
+    }
+
     /** Files below the glob's fixed leading directories whose path from there matches the rest of the glob. */
     private static List<Path> glob(Path name) throws IOException {
-        int fixed = 0;
-        while (fixed < name.getNameCount() - 1 && !isGlob(name.getName(fixed))) {
-            fixed++;
-        }
-        Path root = name.getRoot();
-        Path base = fixed == 0 ? root : root == null ? name.subpath(0, fixed) : root.resolve(name.subpath(0, fixed));
-        Path from = base == null ? Path.of(".") : base; // a relative glob with no fixed directory: from here
-        if (!Files.isDirectory(from)) {
+        GlobRoot g = GlobRoot.of(name);
+        if (!Files.isDirectory(g.from())) {
             return List.of();
         }
-        Path rest = name.subpath(fixed, name.getNameCount());
-        int depth = rest.toString().contains("**") ? Integer.MAX_VALUE : rest.getNameCount();
         PathMatcher matcher;
         try {
-            matcher = FileSystems.getDefault().getPathMatcher("glob:" + rest);
+            matcher = FileSystems.getDefault().getPathMatcher("glob:" + g.rest());
         } catch (PatternSyntaxException e) {
             // the JDK's description of the syntax error is garbled ("Missing '])"): the pattern itself says more
             throw new FileSystemException(name.toString(), null, "no such file, and not a valid glob");
         }
         List<Path> out = new ArrayList<>();
-        try (Stream<Path> walk = Files.walk(from, depth)) {
+        try (Stream<Path> walk = Files.walk(g.from(), g.depth())) {
             walk.filter(Files::isRegularFile).forEach(p -> {
-                Path relative = from.relativize(p);
+                Path relative = g.from().relativize(p);
                 if (matcher.matches(relative)) {
-                    out.add(base == null ? relative : base.resolve(relative));
+                    out.add(g.base() == null ? relative : g.base().resolve(relative));
                 }
             });
         } catch (UncheckedIOException e) {
             throw e.getCause(); // a directory that went away or cannot be read while walking
         }
         out.sort(null);
+        return out;
+    }
+
+    /**
+     * The directories in which a new file may be a new log: each named directory, and for a glob the last of its
+     * fixed leading directories with every directory below it that the glob reaches (whose new entries may be new
+     * directories holding logs). A directory that does not exist is listed as named. A file named as such is not
+     * listed: its own directory is watched with it.
+     */
+    public List<Path> directories() throws IOException {
+        List<Path> out = new ArrayList<>();
+        for (Name name : names) {
+            if (name.kind() == Kind.DIRECTORY) {
+                out.add(name.path());
+            } else if (name.kind() == Kind.GLOB) {
+                GlobRoot g = GlobRoot.of(name.path());
+                if (!Files.isDirectory(g.from())) {
+                    out.add(g.from()); // cannot be watched yet: says that new logs must be looked for often
+                    continue;
+                }
+                try (Stream<Path> walk = Files.walk(g.from(), g.depth() - 1)) {
+                    walk.filter(Files::isDirectory).forEach(out::add);
+                } catch (UncheckedIOException e) {
+                    throw e.getCause();
+                }
+            }
+        }
         return out;
     }
 }

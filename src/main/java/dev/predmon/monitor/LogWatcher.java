@@ -102,6 +102,11 @@ public final class LogWatcher implements AutoCloseable {
         monitor.endOfInput();
     }
 
+    /** Whether a replaced file waits for a later {@link #poll()} to be finished ({@link LogFollower#replacing()}). */
+    public boolean replacing() {
+        return follower.replacing();
+    }
+
     /** Lines read since the start or the last rotation. */
     public long lines() {
         return lines;

@@ -144,6 +144,14 @@ public final class LogFollower implements AutoCloseable {
     }
 
     /**
+     * Whether a file found at the path waits for the one being read to be finished: only a later {@link #poll()} can
+     * finish it once the quiet time has passed, whether or not anything is written meanwhile.
+     */
+    public boolean replacing() {
+        return !waiting.isEmpty();
+    }
+
+    /**
      * Reads to the end of the file and delivers an unterminated last line too (for a single pass over a file
      * that is no longer written); a replacement found meanwhile is read to its end after it. A later
      * {@link #poll()} goes on from there.

@@ -126,8 +126,22 @@ class FleetWatchTest {
     @Test
     @Timeout(60)
     void aLogThatAppearsInAWatchedDirectoryIsFollowed() throws Exception {
+        newLogFollowed();
+    }
+
+    /** The same, with the file-change notification set aside: every log is polled, new ones looked for each second. */
+    @Test
+    @Timeout(60)
+    void withPollingForcedALogThatAppearsIsFollowedToo() throws Exception {
+        newLogFollowed("--polling");
+    }
+
+    private void newLogFollowed(String... options) throws Exception {
         Path robots = Files.createDirectories(dir.resolve("fleet"));
-        Cli.Running watch = Cli.start("watch", "--log", robots.toString(), "--models", MODELS.toString(), "--json");
+        List<String> args = new ArrayList<>(List.of("watch", "--log", robots.toString(), "--models", MODELS.toString(),
+                "--json"));
+        args.addAll(List.of(options));
+        Cli.Running watch = Cli.start(args.toArray(String[]::new));
         StringWriter out = watch.out();
         StringWriter err = watch.err();
         await(() -> err.toString().contains("waiting for logs in " + robots), "announces that it waits");

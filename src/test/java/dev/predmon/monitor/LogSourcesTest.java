@@ -7,6 +7,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -88,5 +89,20 @@ class LogSourcesTest {
         assertFalse(new LogSources(List.of(a)).growing());
         assertTrue(new LogSources(List.of(dir.resolve("a*.log"))).several(),
                 "decided by the name, not by how many files match it now");
+    }
+
+    @Test
+    void theDirectoriesWatchedForNewLogsAreTheNamedOnesAndThoseAGlobReaches() throws Exception {
+        Path a = file("robots/r1/monitor.log");
+        file("robots/r2/x/monitor.log");
+        Path d = Files.createDirectories(dir.resolve("d"));
+        Path gone = Files.createDirectories(dir.resolve("gone"));
+        Path robots = dir.resolve("robots");
+        LogSources s = new LogSources(List.of(a, d, gone, robots.resolve("*/monitor.log")));
+        Files.delete(gone);
+        assertEquals(Set.of(d, gone, robots, robots.resolve("r1"), robots.resolve("r2")), Set.copyOf(s.directories()),
+                "a named file is not listed (its own directory is watched with it); a directory gone is");
+        assertEquals(Set.of(robots, robots.resolve("r1"), robots.resolve("r2"), robots.resolve("r2/x")),
+                Set.copyOf(new LogSources(List.of(robots.resolve("**/monitor.log"))).directories()));
     }
 }

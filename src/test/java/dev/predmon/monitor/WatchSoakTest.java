@@ -106,11 +106,16 @@ class WatchSoakTest {
      * between the watcher's last read and a copytruncate (it exists only in the copy). Everything else races:
      * appends cut anywhere, the truncation and the rewrite after it, the new file after a rename or delete.
      */
-    private static void write(Path log, AtomicLong written, AtomicLong seenCount) throws Exception {
+    static void write(Path log, AtomicLong written, AtomicLong seenCount) throws Exception {
+        write(log, written, seenCount, ROTATIONS);
+    }
+
+    /** As above, rotating {@code rotations} times. */
+    static void write(Path log, AtomicLong written, AtomicLong seenCount, int rotations) throws Exception {
         Random random = new Random(2024);
         Thread.sleep(20); // the watcher starts first and must wait for the file to appear
         long seq = 0;
-        for (int rotation = 0; rotation <= ROTATIONS; rotation++) {
+        for (int rotation = 0; rotation <= rotations; rotation++) {
             int records = 1 + random.nextInt(40);
             try (FileChannel out = FileChannel.open(log, StandardOpenOption.CREATE, StandardOpenOption.WRITE,
                     StandardOpenOption.APPEND)) {
@@ -130,7 +135,7 @@ class WatchSoakTest {
                 seq += records;
                 written.set(seq);
             }
-            if (rotation == ROTATIONS) {
+            if (rotation == rotations) {
                 break;
             }
             boolean copyTruncate = rotation % 3 == 1;
@@ -154,7 +159,7 @@ class WatchSoakTest {
         }
     }
 
-    private static String record(long seq, String eol) {
+    static String record(long seq, String eol) {
         String time = String.format(Locale.ROOT, "%.6f", seq * 0.01);
         return time + "\tDEBUG\tCommand intercepted:" + eol
                 + "  From      : /Soak/client" + eol

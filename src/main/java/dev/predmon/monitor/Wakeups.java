@@ -1,0 +1,280 @@
+package dev.predmon.monitor;
+
+import dev.predmon.parse.LogFollower;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.WatchKey;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Which logs of a following {@link Fleet} to poll now: those the operating system says were written, created,
+ * renamed or deleted ({@link DirectoryWatch}), and, every pause, those whose changes cannot be notified. A log is
+ * polled rather than notified when its directory cannot be watched (on a network file system, missing, or past the
+ * inotify limit), when its path is a symbolic link (the target's writes are announced in the target's directory),
+ * and every log when there is no notification at all or polling is forced.
+ *
+ * <p>A log whose name was deleted or renamed away is an <i>orphan</i> until its name is back: a writer may still
+ * hold the old file, whose writes are then announced under its new name (or its last one, once deleted), so every
+ * change in its directory polls it, and the follower drains the old file. Once a new file is at the path, the
+ * follower finishes the old one only after it has been quiet for a while, a moment no event marks: such a log is
+ * also polled every {@link #REPLACING_NANOS} until the follower has moved to the new file.
+ */
+final class Wakeups implements AutoCloseable {
+
+    /** A watched directory: its logs by file name, and whether a new file in it may be a new log. */
+    private static final class Watched {
+        final Path dir;
+        final WatchKey key;
+        final Object identity;
+        final Map<Path, List<WatchedLog>> logs = new HashMap<>();
+        final Set<WatchedLog> orphans = new LinkedHashSet<>();
+        boolean source;
+
+        Watched(Path dir, WatchKey key) {
+            this.dir = dir;
+            this.key = key;
+            this.identity = DirectoryWatch.identity(dir);
+        }
+    }
+
+    /**
+     * How often a log in the middle of a rename rotation is looked at: a quarter of the quiet time after which its
+     * follower finishes the renamed file, so the new file is taken at most that much later.
+     */
+    static final long REPLACING_NANOS = TimeUnit.MILLISECONDS.toNanos(LogFollower.QUIET_MILLIS) / 4;
+
+    private final DirectoryWatch watch;
+    private final long pauseNanos;
+    private final Map<WatchKey, Watched> byKey = new HashMap<>();
+    private final Map<Path, Watched> byDir = new HashMap<>();
+    /** Per directory, whether its file system is one whose changes are not notified: asked once each. */
+    private final Map<Path, Boolean> remote = new HashMap<>();
+    /** Polled every pause. */
+    private final Set<WatchedLog> polled = new LinkedHashSet<>();
+    /** Polled at the next {@link #due}: just watched, so what they got before may not have been announced. */
+    private final Set<WatchedLog> pending = new LinkedHashSet<>();
+    /** Logs in the middle of a rename rotation, each with when to poll it next. */
+    private final Map<WatchedLog, Long> replacing = new HashMap<>();
+    private final List<WatchKey> invalid = new ArrayList<>();
+    private long nextPass = System.nanoTime();
+    private boolean rescan;
+    private boolean sourcesWatched = true;
+
+    /**
+     * @param watch      the notification, or null to poll every log
+     * @param pauseNanos the pause between two polls of a log that is polled
+     */
+    Wakeups(DirectoryWatch watch, long pauseNanos) {
+        this.watch = watch;
+        this.pauseNanos = pauseNanos;
+    }
+
+    /** Whether any log is notified rather than polled (only then is a safety poll worth it). */
+    boolean notifying() {
+        return !byKey.isEmpty();
+    }
+
+    /** Whether nothing is left to polling: no polled log, and every source directory watched. */
+    boolean allWatched() {
+        return polled.isEmpty() && sourcesWatched;
+    }
+
+    /** Follows {@code log} from now on: notified if its directory can be watched, else polled. */
+    void add(WatchedLog log) {
+        Path path = log.path().toAbsolutePath().normalize();
+        Watched w = Files.isSymbolicLink(path) || path.getParent() == null ? null : watched(path.getParent());
+        if (w == null) {
+            polled.add(log);
+            return;
+        }
+        w.logs.computeIfAbsent(path.getFileName(), n -> new ArrayList<>(1)).add(log);
+        pending.add(log);
+    }
+
+    /** Watches the directories in which a new file may be a new log, so that its creation asks for a rescan. */
+    void watchSources(Collection<Path> dirs) {
+        boolean all = watch != null;
+        for (Path d : dirs) {
+            Watched w = watched(d.toAbsolutePath().normalize());
+            if (w == null) {
+                all = false;
+            } else {
+                w.source = true;
+            }
+        }
+        sourcesWatched = all;
+    }
+
+    /** Whether a file was created in a source directory since the last rescan: new logs should be looked for. */
+    boolean rescanWanted() {
+        return rescan;
+    }
+
+    /** A rescan begins: it finds every file created before now. */
+    void rescanning() {
+        rescan = false;
+    }
+
+    /**
+     * Looks again at what is not watched, or not as it was: a directory replaced or moved away under its watch
+     * (the watch follows the old directory, so its logs are taken again from the path), and the directories of polled
+     * logs, which may have appeared or fallen below the watch limit. Cheap: one look per directory.
+     */
+    void recheck() {
+        for (Watched w : List.copyOf(byKey.values())) {
+            if (!Objects.equals(w.identity, DirectoryWatch.identity(w.dir))) {
+                w.key.cancel();
+                drop(w);
+            }
+        }
+        if (watch == null || polled.isEmpty()) {
+            return;
+        }
+        Set<Path> tried = new LinkedHashSet<>();
+        for (WatchedLog log : List.copyOf(polled)) {
+            Path path = log.path().toAbsolutePath().normalize();
+            Path dir = path.getParent();
+            if (dir != null && !Files.isSymbolicLink(path) && (byDir.containsKey(dir) || tried.add(dir))) {
+                polled.remove(log);
+                add(log); // back into polled if still not watchable
+            }
+        }
+    }
+
+    /**
+     * After {@code log} was polled: while a replacement of its file waits for the old file to be quiet, nothing may
+     * be written that would announce the moment to finish it, so the log is polled again every
+     * {@link #REPLACING_NANOS} until its follower has moved on.
+     */
+    void polled(WatchedLog log) {
+        if (log.watcher().replacing()) {
+            replacing.putIfAbsent(log, System.nanoTime() + REPLACING_NANOS);
+        }
+    }
+
+    /**
+     * Waits up to {@code nanos} (less when a polled log's pause or a rotation's next look comes first) for changes,
+     * and gives the logs to poll now, each once.
+     */
+    Set<WatchedLog> due(long nanos) throws InterruptedException {
+        long now = System.nanoTime();
+        long wait = pending.isEmpty() ? nanos : 0;
+        if (!polled.isEmpty()) {
+            wait = Math.min(wait, nextPass - now);
+        }
+        for (long at : replacing.values()) {
+            wait = Math.min(wait, at - now);
+        }
+        Set<WatchedLog> out = new LinkedHashSet<>();
+        if (watch == null) {
+            TimeUnit.NANOSECONDS.sleep(Math.max(0, wait));
+        } else {
+            for (DirectoryWatch.Change c : watch.take(Math.max(0, wait), invalid)) {
+                Watched w = byKey.get(c.key());
+                if (w != null) {
+                    changed(w, c, out);
+                }
+            }
+            for (WatchKey k : invalid) {
+                Watched w = byKey.get(k);
+                if (w != null) {
+                    out.addAll(drop(w)); // a last look at each, now polled
+                }
+            }
+            invalid.clear();
+        }
+        out.addAll(pending);
+        pending.clear();
+        long later = System.nanoTime();
+        for (Iterator<Map.Entry<WatchedLog, Long>> i = replacing.entrySet().iterator(); i.hasNext(); ) {
+            Map.Entry<WatchedLog, Long> next = i.next();
+            if (later - next.getValue() >= 0) {
+                out.add(next.getKey()); // polled() schedules it again if it still waits
+                i.remove();
+            }
+        }
+        if (!polled.isEmpty() && System.nanoTime() - nextPass >= 0) {
+            out.addAll(polled);
+            nextPass = System.nanoTime() + pauseNanos;
+        }
+        return out;
+    }
+
+    private void changed(Watched w, DirectoryWatch.Change c, Set<WatchedLog> out) {
+        if (c.kind() == DirectoryWatch.Kind.OVERFLOW) {
+            w.logs.values().forEach(out::addAll); // events were lost: anything may have changed
+            rescan |= w.source;
+            return;
+        }
+        List<WatchedLog> named = w.logs.get(c.name());
+        if (named == null) {
+            rescan |= w.source && c.kind() == DirectoryWatch.Kind.CREATED;
+        } else {
+            out.addAll(named);
+            if (c.kind() == DirectoryWatch.Kind.DELETED) {
+                w.orphans.addAll(named);
+            } else if (c.kind() == DirectoryWatch.Kind.CREATED) {
+                named.forEach(w.orphans::remove);
+                if (Files.isSymbolicLink(w.dir.resolve(c.name()))) {
+                    w.logs.remove(c.name());
+                    polled.addAll(named);
+                }
+            }
+        }
+        out.addAll(w.orphans);
+    }
+
+    /** Stops watching {@code w}; its logs go back to {@link #add}, where they are watched again or polled. */
+    private List<WatchedLog> drop(Watched w) {
+        byKey.remove(w.key);
+        byDir.remove(w.dir);
+        List<WatchedLog> logs = new ArrayList<>();
+        w.logs.values().forEach(logs::addAll);
+        logs.forEach(this::add);
+        if (w.source) {
+            sourcesWatched = false; // until the next rescan registers the source directories again
+            rescan = true;
+        }
+        return logs;
+    }
+
+    /** The watch of {@code dir}, registered now if need be, or null when its changes must be polled for. */
+    private Watched watched(Path dir) {
+        if (watch == null) {
+            return null;
+        }
+        Watched known = byDir.get(dir);
+        if (known != null && known.key.isValid()) {
+            return known;
+        }
+        if (Boolean.TRUE.equals(remote.computeIfAbsent(dir, DirectoryWatch::remote))) {
+            return null;
+        }
+        WatchKey key = watch.register(dir);
+        if (key == null) {
+            return null;
+        }
+        // The same directory under another spelling gives the same key: its logs share one table.
+        Watched w = byKey.computeIfAbsent(key, k -> new Watched(dir, k));
+        byDir.put(dir, w);
+        return w;
+    }
+
+    @Override
+    public void close() throws IOException {
+        if (watch != null) {
+            watch.close();
+        }
+    }
+}
