@@ -44,7 +44,7 @@ class SlowClientsTest {
         try {
             int port = port(err);
             assertEquals(200, status(port), "answers");
-            long before = descriptors(watch);
+            long before = settled(watch);
 
             List<Socket> slow = slowClients(port);
             long started = System.nanoTime();
@@ -111,6 +111,25 @@ class SlowClientsTest {
         s.setSoTimeout(10_000);
         InputStream in = s.getInputStream();
         return in.read();
+    }
+
+    /**
+     * The process's descriptors once their count has not changed for a second (at most 10 s): the fleet opens its
+     * file-change notification (an inotify descriptor and its wake-up pipe) on its own thread as it starts.
+     */
+    private static long settled(Process p) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        long last = descriptors(p);
+        long since = System.nanoTime();
+        while (System.nanoTime() < deadline && System.nanoTime() - since < TimeUnit.SECONDS.toNanos(1)) {
+            Thread.sleep(100);
+            long now = descriptors(p);
+            if (now != last) {
+                last = now;
+                since = System.nanoTime();
+            }
+        }
+        return last;
     }
 
     private static long descriptors(Process p) throws IOException {
