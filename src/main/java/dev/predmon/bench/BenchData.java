@@ -57,10 +57,11 @@ final class BenchData {
     }
 
     /**
-     * Models of the three scenarios learned in memory from {@code runs} runs each (seeds 1..runs), with their forecast
-     * as {@code learn} makes it (the runs written to a temporary directory and read back, as learn reads logs).
+     * The models of {@code learned} (from {@code runs} runs per scenario, seeds 1..runs, see {@link #learned}), with
+     * their forecast as {@code learn} makes it (the runs written to a temporary directory and read back, as learn
+     * reads logs).
      */
-    static ModelSet models(Abstraction abstraction, int runs) throws IOException {
+    static ModelSet models(Abstraction abstraction, List<LearnedScenario> learned, int runs) throws IOException {
         Path dir = Files.createTempDirectory("predmon-bench-models");
         try {
             List<ScenarioSpec> specs = new ArrayList<>();
@@ -73,7 +74,6 @@ final class BenchData {
             }
             Map<Path, LogTrace> traces = ScenarioLearner.read(specs.stream().flatMap(s -> s.logs().stream()).toList(),
                     abstraction);
-            List<LearnedScenario> learned = learned(abstraction, runs);
             ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
                     ModelStore.alphabetOf(abstraction), ForecastTraining.limit(abstraction), abstraction.confirm());
             return LearnedModels.modelSet(learned, abstraction, forecast);

@@ -1,7 +1,6 @@
 package dev.predmon.bench;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.PredictiveMonitor;
@@ -52,7 +51,7 @@ public final class Benchmarks {
         if (kinds.contains(Kind.BATCH) || kinds.contains(Kind.LATENCY) || kinds.contains(Kind.MEMORY)
                 || kinds.contains(Kind.FLEET)) {
             learned = BenchData.learned(abstraction, o.modelRuns());
-            models = BenchData.models(abstraction, o.modelRuns());
+            models = BenchData.models(abstraction, learned, o.modelRuns());
             out.accept(f("models: %d machines learned from %d runs per scenario, with their forecast (rule %s)",
                     models.models().size(), o.modelRuns(), PredictiveMonitor.defaultRule(models).id()));
         }

@@ -56,10 +56,11 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
 
     /**
      * P(violation | the property reads {@code value}, nothing else known): the value table's counts with the value
-     * table's rate as prior, the estimate of a state that is "anywhere".
+     * table's rate at that value ({@link #valueRate}, passed in by a caller that has it) as prior, the estimate of a
+     * state that is "anywhere".
      */
-    public double valueOnly(double value) {
-        return (lows.violating(value) + PRIOR_RUNS * valueRate(value)) / (lows.runs(value) + PRIOR_RUNS);
+    public double valueOnly(double value, double valueRate) {
+        return (lows.violating(value) + PRIOR_RUNS * valueRate) / (lows.runs(value) + PRIOR_RUNS);
     }
 
     /**
@@ -74,7 +75,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
 
     /** Whether {@code value} is lower than every training run that held ever read (false without such a run). */
     public boolean belowEverySafeRun(double value) {
-        return lows.runs(value) == lows.violating(value) && lows.safe().length > 0;
+        return lows.safeCount() > 0 && lows.runs(value) == lows.violating(value);
     }
 
     /** This model with another warning threshold. */

@@ -8,7 +8,7 @@ public final class ForecastWords {
     private ForecastWords() {
     }
 
-    /** {@code P 0.93}, with how it stands against a threshold when one is given (NaN: none). */
+    /** {@code P(violation) 0.93}. */
     public static String probability(Forecast f) {
         return String.format(Locale.ROOT, "P(violation) %.2f", f.probability());
     }

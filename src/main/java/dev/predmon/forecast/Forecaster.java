@@ -232,7 +232,7 @@ public final class Forecaster {
         } else {
             // the same estimate as in a state, the state being "anywhere": so that a run that left every learned
             // state is judged on the same scale as one that did not
-            double anywhere = stats.valueOnly(value);
+            double anywhere = stats.valueOnly(value, prior);
             if (weights > 0 && sum / weights >= anywhere) {
                 basis = Forecast.Basis.RESYNCHRONISED;
                 p = sum / weights;

@@ -29,6 +29,11 @@ public final class Lows {
         return safe.clone();
     }
 
+    /** How many runs held (with a reading). */
+    public int safeCount() {
+        return safe.length;
+    }
+
     /** The violating runs' lowest values before their violation, sorted. */
     public double[] violating() {
         return violating.clone();

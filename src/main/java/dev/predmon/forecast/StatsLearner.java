@@ -76,8 +76,7 @@ public final class StatsLearner {
     private static void replay(CompactMealy<String, String> machine, LogTrace.Run run, Map<Integer, Acc> acc) {
         RunTiming t = run.timing();
         List<IoPair> pairs = run.pairs();
-        Map<Integer, Double> firstVisit = new LinkedHashMap<>();
-        Map<Integer, Integer> firstIndex = new HashMap<>();
+        Map<Integer, Integer> firstVisit = new LinkedHashMap<>(); // state -> the pair that first reached it
         Map<Integer, double[]> drift = new HashMap<>(); // state -> {sum of value change, sum of time}
         int state = machine.getInitialState();
         for (int i = 0; i < pairs.size(); i++) {
@@ -90,8 +89,7 @@ public final class StatsLearner {
                 break;
             }
             state = next;
-            firstVisit.putIfAbsent(state, time);
-            firstIndex.putIfAbsent(state, i);
+            firstVisit.putIfAbsent(state, i);
             if (i + 1 < pairs.size()) {
                 double dt = t.time(i + 1) - time;
                 double dv = t.value(i + 1) - t.value(i);
@@ -104,14 +102,14 @@ public final class StatsLearner {
         }
         double end = run.violated() ? t.violationTime() : t.endTime();
         double[] suffixLow = suffixMinima(t, run);
-        for (Map.Entry<Integer, Double> v : firstVisit.entrySet()) {
+        for (Map.Entry<Integer, Integer> v : firstVisit.entrySet()) {
             Acc a = acc.computeIfAbsent(v.getKey(), s -> new Acc());
             a.runs++;
-            double low = suffixLow[firstIndex.get(v.getKey())];
+            double low = suffixLow[v.getValue()];
             if (!Double.isNaN(low)) {
                 (run.violated() ? a.violatingLows : a.safeLows).add(low);
             }
-            double left = end - v.getValue();
+            double left = end - t.time(v.getValue());
             if (run.violated()) {
                 a.violated++;
                 if (!Double.isNaN(left)) {
@@ -151,15 +149,20 @@ public final class StatsLearner {
         return safe && !Double.isNaN(v) && !(v >= min) ? v : min;
     }
 
-    /** The {@code q}-quantile of {@code values} (nearest rank on the sorted values), NaN when empty. */
-    static double quantile(List<Double> values, double q) {
-        if (values.isEmpty()) {
-            return Double.NaN;
-        }
+    /** {@code values} sorted. */
+    private static double[] sorted(List<Double> values) {
         double[] s = toArray(values);
         Arrays.sort(s);
-        int i = (int) Math.round(q * (s.length - 1));
-        return s[Math.max(0, Math.min(s.length - 1, i))];
+        return s;
+    }
+
+    /** The {@code q}-quantile of {@code sorted} values (nearest rank), NaN when empty. */
+    static double quantile(double[] sorted, double q) {
+        if (sorted.length == 0) {
+            return Double.NaN;
+        }
+        int i = (int) Math.round(q * (sorted.length - 1));
+        return sorted[Math.max(0, Math.min(sorted.length - 1, i))];
     }
 
     private static double[] toArray(List<Double> values) {
@@ -183,8 +186,9 @@ public final class StatsLearner {
                 double m = mean;
                 spread = Math.sqrt(rates.stream().mapToDouble(r -> (r - m) * (r - m)).sum() / rates.size());
             }
-            return new StateStats(runs, violated, quantile(toViolation, 0.1), quantile(toViolation, 0.5),
-                    quantile(toViolation, 0.9), quantile(toEnd, 0.5), mean, spread, rates.size(),
+            double[] times = sorted(toViolation);
+            return new StateStats(runs, violated, quantile(times, 0.1), quantile(times, 0.5), quantile(times, 0.9),
+                    quantile(sorted(toEnd), 0.5), mean, spread, rates.size(),
                     new Lows(toArray(safeLows), toArray(violatingLows)));
         }
     }

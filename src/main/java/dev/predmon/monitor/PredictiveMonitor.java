@@ -264,17 +264,8 @@ public final class PredictiveMonitor implements PipelineListener {
                         m.faulty(), t.elimination().describe(), trigger.clock(), run));
             }
         }
-        TreeSet<String> faultyAlive = new TreeSet<>();
-        boolean nominalAlive = false;
-        for (ModelTracker t : trackers) {
-            if (t.alive()) {
-                if (t.model().faulty()) {
-                    faultyAlive.add(t.model().scenario());
-                } else {
-                    nominalAlive = true;
-                }
-            }
-        }
+        List<String> faultyAlive = faultyAlive();
+        boolean nominalAlive = trackers.stream().anyMatch(t -> t.alive() && !t.model().faulty());
         if (!nominalAlive && !faultyAlive.isEmpty()) {
             sinceNominalGone++;
         }
@@ -290,7 +281,7 @@ public final class PredictiveMonitor implements PipelineListener {
                 reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
             }
             if (reason != null) {
-                warn(trigger, List.copyOf(faultyAlive), reason, f);
+                warn(trigger, faultyAlive, reason, f);
             }
         }
         if (!noMatch && !nominalAlive && faultyAlive.isEmpty()) {

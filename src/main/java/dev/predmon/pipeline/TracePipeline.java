@@ -48,15 +48,9 @@ public final class TracePipeline {
     public void accept(LogRecord record) {
         boolean starts = runs.startsRun(record) && records > 0;
         Classification c = abstraction.classify(record);
-        if (restart.holding()) {
+        // after a quiet pause, records are held until the commands say whether the tree started over
+        if (restart.holding() || (!starts && records > 0 && restart.quietBefore(record))) {
             QuietRestart.Decision d = restart.hold(record, c, starts);
-            if (d != QuietRestart.Decision.PENDING) {
-                release(d == QuietRestart.Decision.RESTART);
-            }
-            return;
-        }
-        if (!starts && records > 0 && restart.quietBefore(record)) {
-            QuietRestart.Decision d = restart.hold(record, c, false);
             if (d != QuietRestart.Decision.PENDING) {
                 release(d == QuietRestart.Decision.RESTART);
             }
