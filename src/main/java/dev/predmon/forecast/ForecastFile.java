@@ -38,6 +38,12 @@ public final class ForecastFile {
         root.put("threshold", m.threshold());
         root.put("thresholdNote", m.thresholdNote());
         root.put("thresholdValidated", m.validated());
+        if (m.calibration().runs() > 0) {
+            ObjectNode c = root.putObject("calibration");
+            c.put("slope", m.calibration().slope());
+            c.put("intercept", m.calibration().intercept());
+            c.put("runs", m.calibration().runs());
+        }
         ArrayNode starts = root.putArray("startInputs");
         m.startInputs().forEach(starts::add);
         lows(root, m.lows());
@@ -112,9 +118,23 @@ public final class ForecastFile {
         }
         List<String> starts = new ArrayList<>();
         required(root, "startInputs").forEach(s -> starts.add(s.asText()));
+        Calibration calibration = Calibration.IDENTITY;
+        JsonNode c = root.get("calibration");
+        if (c != null) {
+            double slope = number(c, "slope");
+            if (!(slope > 0)) {
+                throw new IllegalArgumentException("'calibration/slope': expected a positive number");
+            }
+            double intercept = number(c, "intercept");
+            if (Double.isNaN(intercept)) {
+                throw new IllegalArgumentException("'calibration/intercept': expected a number");
+            }
+            calibration = new Calibration(slope, intercept, integer(c, "runs"));
+        }
         return new ForecastModel(format, required(root, "unit").asText(), number(root, "limit"),
                 integer(root, "runs"), integer(root, "violating"), lows(root), number(root, "threshold"),
-                required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states, starts);
+                required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
+                starts, calibration);
     }
 
     private static void lows(ObjectNode n, Lows lows) {

@@ -20,9 +20,14 @@ import java.util.Map;
  *                    forecast rule is not the default rule)
  * @param states      by machine id, by state number: what the runs did from there
  * @param startInputs the inputs the training runs began with: where the tree starts over
+ * @param calibration the map from the per-state tables' estimate to the probability reported, fitted on the same
+ *                    held-out runs as the threshold ({@link Calibration#IDENTITY} when none was fitted); the
+ *                    threshold is on the calibrated scale
  */
-public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold, String thresholdNote, boolean validated,
-                            Map<String, Map<Integer, StateStats>> states, List<String> startInputs) {
+public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
+                            double threshold, String thresholdNote, boolean validated,
+                            Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
+                            Calibration calibration) {
 
     /** Current format. */
     public static final int FORMAT = 1;
@@ -33,6 +38,14 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     public ForecastModel {
         states = Map.copyOf(states);
         startInputs = List.copyOf(startInputs);
+    }
+
+    /** A model whose probabilities are reported as the tables estimate them. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold,
+                         String thresholdNote, boolean validated, Map<String, Map<Integer, StateStats>> states,
+                         List<String> startInputs) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                Calibration.IDENTITY);
     }
 
     /** The share of training runs that violated, with the prior of a fair coin of {@link #PRIOR_RUNS} runs. */
@@ -81,7 +94,13 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs);
+                startInputs, calibration);
+    }
+
+    /** This model with another calibration (the threshold is left as it is). */
+    public ForecastModel withCalibration(Calibration c) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, c);
     }
 
     @Override
@@ -90,7 +109,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && Double.compare(limit, m.limit) == 0 && runs == m.runs && violating == m.violating
                 && lows.equals(m.lows)
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
-                && states.equals(m.states) && startInputs.equals(m.startInputs);
+                && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration);
     }
 
     @Override

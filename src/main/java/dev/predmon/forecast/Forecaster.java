@@ -245,7 +245,7 @@ public final class Forecaster {
                 timed = weights > 0 ? timed : null;
             }
         }
-        return timed(Math.max(0.0, Math.min(1.0, p)), basis, runs, bad, v, drift, timed);
+        return timed(stats.calibration().apply(Math.max(0.0, Math.min(1.0, p))), basis, runs, bad, v, drift, timed);
     }
 
     /** Adds the time to violation: the property's drift first, the states' recorded times else. */

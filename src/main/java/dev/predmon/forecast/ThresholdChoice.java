@@ -81,8 +81,8 @@ public final class ThresholdChoice {
             }
         }
         return new Choice(best, String.format(Locale.ROOT,
-                "%.2f by cross-validation on %d held-out runs: warned %d of %d violations, %d false alarm(s) in %d",
-                best, peaks.size(), hits, bad, alarms, good), true);
+                "by cross-validation on %d held-out runs: warned %d of %d violations, %d false alarm(s) in %d",
+                peaks.size(), hits, bad, alarms, good), true);
     }
 
     private static int errors(List<Peak> peaks, double t) {

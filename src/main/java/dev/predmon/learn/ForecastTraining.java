@@ -2,6 +2,7 @@ package dev.predmon.learn;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.forecast.Calibration;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Forecaster;
@@ -18,6 +19,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -58,6 +60,7 @@ public final class ForecastTraining {
                     + ": too few logs to cross-validate", false);
         }
         List<ThresholdChoice.Peak> peaks = new ArrayList<>();
+        List<Calibration.Sample> heldOut = new ArrayList<>();
         for (int f = 0; f < k; f++) {
             int fold = f;
             List<Path> held = new ArrayList<>();
@@ -83,12 +86,23 @@ public final class ForecastTraining {
             ForecastModel foldStats = StatsLearner.learn(foldMachines, training, unit, limit);
             Forecaster forecaster = new Forecaster(foldStats, foldMachines);
             for (LogTrace.Run r : runsOf(specs, traces, held::contains)) {
-                peaks.add(new ThresholdChoice.Peak(peak(forecaster, r), r.violated(),
+                List<Double> ps = forecast(forecaster, r).stream().map(Forecast::probability).toList();
+                peaks.add(new ThresholdChoice.Peak(ps.stream().mapToDouble(p -> p).max().orElse(0), r.violated(),
                         matchWarns(foldMachines, faulty, confirm, r)));
+                heldOut.add(new Calibration.Sample(ps, r.violated()));
             }
         }
         ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
-        return stats.withThreshold(c.threshold(), c.note(), c.validated());
+        if (!c.validated()) {
+            return stats.withThreshold(c.threshold(), c.note(), false);
+        }
+        // The threshold was chosen on the raw estimates; the calibration is strictly increasing, so the same runs
+        // reach it on the calibrated scale.
+        Calibration calibration = Calibration.fit(heldOut);
+        double threshold = calibration.apply(c.threshold());
+        String note = String.format(Locale.ROOT, "%.2f (%.2f before calibration) %s", threshold,
+                c.threshold(), c.note());
+        return stats.withCalibration(calibration).withThreshold(threshold, note, true);
     }
 
     /** The safety property's threshold, NaN when the abstraction has no property. */

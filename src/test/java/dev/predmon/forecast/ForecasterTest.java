@@ -100,4 +100,25 @@ class ForecasterTest {
         assertEquals(ForecastFile.write(m), ForecastFile.write(ForecastFile.read(ForecastFile.write(m))),
                 "the same model gives the same bytes");
     }
+
+    @Test
+    void theCalibrationReadsBackAndAFileWithoutOneIsTheIdentity() {
+        ForecastModel plain = model(4, 2).withThreshold(0.7, "chosen", true);
+        ForecastModel m = plain.withCalibration(new Calibration(0.6, -0.4, 12));
+        String text = ForecastFile.write(m);
+        assertTrue(text.contains("\"calibration\""), text);
+        assertEquals(m, ForecastFile.read(text));
+        assertEquals(Calibration.IDENTITY, ForecastFile.read(ForecastFile.write(plain)).calibration());
+        assertTrue(!ForecastFile.write(plain).contains("calibration"), "an identity map is not written");
+    }
+
+    @Test
+    void theReportedProbabilityIsTheCalibratedOne() {
+        ForecastModel m = model(4, 2);
+        Calibration c = new Calibration(0.5, -0.3, 10);
+        double raw = afterB(m);
+        double calibrated = afterB(m.withCalibration(c));
+        assertEquals(c.apply(raw), calibrated, 1e-12);
+        assertTrue(Math.abs(calibrated - raw) > 0.01, raw + " vs " + calibrated);
+    }
 }
