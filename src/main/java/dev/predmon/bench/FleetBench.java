@@ -71,11 +71,7 @@ final class FleetBench {
      */
     private static final long IDLE_SETTLE_MILLIS = 1000;
 
-    private final Abstraction abstraction;
-    private final ModelSet models;
-    private final long pauseNanos;
-    private final boolean polling;
-    private final Path dir;
+    private final FleetSetup setup;
     private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
     private final OperatingSystemMXBean os = ManagementFactory.getPlatformMXBean(OperatingSystemMXBean.class);
     private final byte[] before;
@@ -88,16 +84,12 @@ final class FleetBench {
     private FleetBench(Abstraction abstraction, ModelSet models, long pollMicros, boolean polling, double seconds,
                        Path dir) throws Exception {
         this.phaseNanos = (long) (seconds * 1e9);
-        this.abstraction = abstraction;
-        this.models = models;
-        this.pauseNanos = pollMicros * 1000;
-        this.polling = polling;
-        this.dir = dir;
+        this.setup = new FleetSetup(abstraction, models, pollMicros * 1000, polling, dir);
         String[] parts = LatencyBench.warningRun(abstraction, models, dir);
         this.before = parts[0].getBytes(StandardCharsets.UTF_8);
         this.trigger = parts[1].getBytes(StandardCharsets.UTF_8);
         this.beforeRecords = LatencyBench.countRecords(before);
-        this.pace = new RobotPace(abstraction, models, pauseNanos, polling, dir);
+        this.pace = new RobotPace(setup);
     }
 
     /**
@@ -128,14 +120,14 @@ final class FleetBench {
         long caughtUp = 0;
         double[] idleCore = {0, 0};
         for (int r = 0; r < rounds; r++) {
-            try (ScratchDir round = new ScratchDir(dir, "predmon-fleet")) {
+            try (ScratchDir round = setup.scratch("predmon-fleet")) {
                 List<Path> files = new ArrayList<>();
                 for (int i = 0; i < logs; i++) {
                     files.add(Files.write(round.resolve("robot-" + i + ".log"), before));
                 }
                 AtomicLongArray warnedAt = new AtomicLongArray(logs);
                 Map<WatchedLog, Integer> index = new HashMap<>();
-                try (Fleet fleet = new Fleet(models, abstraction, 0, abstraction.confirm(), (log, e) -> {
+                try (Fleet fleet = setup.fleet((log, e) -> {
                     if (e instanceof MonitorEvent.Warning) {
                         warnedAt.set(index.get(log), System.nanoTime());
                     }
@@ -152,7 +144,7 @@ final class FleetBench {
                     // Reading up to 1000 logs at once leaves garbage that watch's steady state does not make; on a
                     // busy 2-core machine its collection paused the process for 20 to 160 ms in the phases below.
                     System.gc();
-                    try (Following following = new Following(fleet, round.path(), pauseNanos, polling)) {
+                    try (Following following = setup.follow(fleet, round.path())) {
                         if (r == 0 && full) {
                             idleCore = idle(following);
                         } else {

@@ -1,8 +1,6 @@
 package dev.predmon.bench;
 
 import com.sun.management.OperatingSystemMXBean;
-import dev.predmon.abstraction.Abstraction;
-import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Fleet;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.simulate.Scenario;
@@ -36,11 +34,7 @@ final class RobotPace {
     record Load(double core, double nanosPerRecord) {
     }
 
-    private final Abstraction abstraction;
-    private final ModelSet models;
-    private final long pauseNanos;
-    private final boolean polling;
-    private final Path dir;
+    private final FleetSetup setup;
     private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
     private final OperatingSystemMXBean os = ManagementFactory.getPlatformMXBean(OperatingSystemMXBean.class);
     /** The depleted run every log repeats, record by record. */
@@ -48,17 +42,8 @@ final class RobotPace {
     /** Records per second of the run's own clock. */
     private final double rate;
 
-    /**
-     * @param pauseNanos the pause between two polls of a log that is polled
-     * @param polling    poll every log ({@code watch --polling}) instead of waiting for notifications
-     * @param dir        where the logs are written
-     */
-    RobotPace(Abstraction abstraction, ModelSet models, long pauseNanos, boolean polling, Path dir) {
-        this.abstraction = abstraction;
-        this.models = models;
-        this.pauseNanos = pauseNanos;
-        this.polling = polling;
-        this.dir = dir;
+    RobotPace(FleetSetup setup) {
+        this.setup = setup;
         String text = BenchData.text(Scenario.DEPLETED, 20_001);
         this.run = records(text);
         List<LogRecord> parsed = BenchData.records(text);
@@ -72,8 +57,7 @@ final class RobotPace {
 
     /** The load of following {@code logs} logs growing at the robot's pace for {@code nanos}. */
     Load measure(int logs, long nanos) throws Exception {
-        try (ScratchDir round = new ScratchDir(dir, "predmon-fleet-pace");
-             Fleet fleet = new Fleet(models, abstraction, 0, abstraction.confirm(), (log, e) -> { })) {
+        try (ScratchDir round = setup.scratch("predmon-fleet-pace"); Fleet fleet = setup.fleet((log, e) -> { })) {
             List<OutputStream> outs = new ArrayList<>();
             for (int i = 0; i < logs; i++) {
                 Path f = Files.createFile(round.resolve("robot-" + i + ".log"));
@@ -87,7 +71,7 @@ final class RobotPace {
             AtomicLong writerCpu = new AtomicLong();
             long used;
             double wall;
-            try (Following following = new Following(fleet, round.path(), pauseNanos, polling)) {
+            try (Following following = setup.follow(fleet, round.path())) {
                 Thread.sleep(FleetBench.SETTLE_MILLIS);
                 long start = System.nanoTime();
                 Thread writer = new Thread(() -> {
