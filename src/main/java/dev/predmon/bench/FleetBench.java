@@ -4,15 +4,10 @@ import com.sun.management.OperatingSystemMXBean;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Fleet;
-import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.WatchedLog;
-import dev.predmon.parse.LogRecord;
-import dev.predmon.simulate.Scenario;
 
-import java.io.IOException;
 import java.io.OutputStream;
-import java.io.UncheckedIOException;
 import java.lang.management.CompilationMXBean;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
@@ -23,17 +18,13 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
-import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicLongArray;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 import java.util.stream.IntStream;
-import java.util.stream.Stream;
 
 /**
  * {@code watch} with many logs in one process, against one log: {@link Fleet#follow} on a thread of its own, as
@@ -47,7 +38,7 @@ import java.util.stream.Stream;
  *   <li><b>idle</b>: the share of a core spent following logs nothing is appended to (and, apart, the following
  *       thread's own share);</li>
  *   <li><b>robot pace</b>: a writer thread appends to every log at the simulated robot's own pace (records per second
- *       of its log's clock); the share of a core and the CPU per record;</li>
+ *       of its log's clock); the share of a core and the CPU per record ({@link RobotPace});</li>
  *   <li><b>append to warning</b>: every log holds a depleted run up to the record that triggers the warning; the
  *       bench appends that record to the logs one by one, in random order, 1 to 3 ms apart, and each log's time
  *       from the end of the write to its warning event is one sample (as {@link LatencyBench} measures one log).</li>
@@ -73,44 +64,32 @@ final class FleetBench {
     }
 
     /** Time for a fresh follower to register its watches and look at every log once before it is measured. */
-    private static final long SETTLE_MILLIS = 300;
+    static final long SETTLE_MILLIS = 300;
     /**
      * Before the idle phase: at least this long, and until the JIT compiler has been quiet this long (at most 20 s),
      * so that compiling what the catch-up ran is not counted as the cost of idle logs.
      */
     private static final long IDLE_SETTLE_MILLIS = 1000;
 
-    private final Abstraction abstraction;
-    private final ModelSet models;
-    private final long pauseNanos;
-    private final boolean polling;
-    private final Path dir;
+    private final FleetSetup setup;
     private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
     private final OperatingSystemMXBean os = ManagementFactory.getPlatformMXBean(OperatingSystemMXBean.class);
     private final byte[] before;
     private final byte[] trigger;
     private final long beforeRecords;
-    private final List<byte[]> run;
-    private final double robotRate;
+    private final RobotPace pace;
     /** How long the robot-pace phase and the idle phase run. */
     private final long phaseNanos;
 
     private FleetBench(Abstraction abstraction, ModelSet models, long pollMicros, boolean polling, double seconds,
                        Path dir) throws Exception {
         this.phaseNanos = (long) (seconds * 1e9);
-        this.abstraction = abstraction;
-        this.models = models;
-        this.pauseNanos = pollMicros * 1000;
-        this.polling = polling;
-        this.dir = dir;
+        this.setup = new FleetSetup(abstraction, models, pollMicros * 1000, polling, dir);
         String[] parts = LatencyBench.warningRun(abstraction, models, dir);
         this.before = parts[0].getBytes(StandardCharsets.UTF_8);
         this.trigger = parts[1].getBytes(StandardCharsets.UTF_8);
         this.beforeRecords = LatencyBench.countRecords(before);
-        String text = BenchData.text(Scenario.DEPLETED, 20_001);
-        this.run = records(text);
-        List<LogRecord> parsed = BenchData.records(text);
-        this.robotRate = parsed.size() / (parsed.get(parsed.size() - 1).time() - parsed.get(0).time());
+        this.pace = new RobotPace(setup);
     }
 
     /**
@@ -141,15 +120,14 @@ final class FleetBench {
         long caughtUp = 0;
         double[] idleCore = {0, 0};
         for (int r = 0; r < rounds; r++) {
-            Path round = Files.createTempDirectory(dir, "predmon-fleet");
-            try {
+            try (ScratchDir round = setup.scratch("predmon-fleet")) {
                 List<Path> files = new ArrayList<>();
                 for (int i = 0; i < logs; i++) {
                     files.add(Files.write(round.resolve("robot-" + i + ".log"), before));
                 }
                 AtomicLongArray warnedAt = new AtomicLongArray(logs);
                 Map<WatchedLog, Integer> index = new HashMap<>();
-                try (Fleet fleet = new Fleet(models, abstraction, 0, abstraction.confirm(), (log, e) -> {
+                try (Fleet fleet = setup.fleet((log, e) -> {
                     if (e instanceof MonitorEvent.Warning) {
                         warnedAt.set(index.get(log), System.nanoTime());
                     }
@@ -166,7 +144,7 @@ final class FleetBench {
                     // Reading up to 1000 logs at once leaves garbage that watch's steady state does not make; on a
                     // busy 2-core machine its collection paused the process for 20 to 160 ms in the phases below.
                     System.gc();
-                    try (Following following = new Following(fleet, round)) {
+                    try (Following following = setup.follow(fleet, round.path())) {
                         if (r == 0 && full) {
                             idleCore = idle(following);
                         } else {
@@ -175,14 +153,12 @@ final class FleetBench {
                         latencies(files, warnedAt, new Random(r), millis, r * logs);
                     }
                 }
-            } finally {
-                delete(round);
             }
         }
         Arrays.sort(millis);
-        double[] pace = pace(logs, full ? phaseNanos : phaseNanos / 5);
-        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], robotRate, pace[0], pace[1],
-                millis);
+        RobotPace.Load load = pace.measure(logs, full ? phaseNanos : phaseNanos / 5);
+        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load.core(),
+                load.nanosPerRecord(), millis);
     }
 
     /** {share of a core of the process, of the following thread} while following logs that do not grow. */
@@ -195,12 +171,12 @@ final class FleetBench {
             Thread.sleep(IDLE_SETTLE_MILLIS);
         } while (jit.getTotalCompilationTime() != compiled && System.nanoTime() < settled);
         long cpu = os.getProcessCpuTime();
-        long loop = threads.getThreadCpuTime(following.thread.getId());
+        long loop = threads.getThreadCpuTime(following.thread().getId());
         long start = System.nanoTime();
         Thread.sleep(phaseNanos / 1_000_000);
         double wall = System.nanoTime() - start;
         return new double[] {(os.getProcessCpuTime() - cpu) / wall,
-                (threads.getThreadCpuTime(following.thread.getId()) - loop) / wall};
+                (threads.getThreadCpuTime(following.thread().getId()) - loop) / wall};
     }
 
     private void latencies(List<Path> files, AtomicLongArray warnedAt, Random random, double[] into, int at)
@@ -228,125 +204,6 @@ final class FleetBench {
             }
             // The warning can be seen before the writer stores its clock; such a sample is ~0.
             into[at + i] = Math.max(0, warnedAt.get(i) - writtenAt[i]) / 1e6;
-        }
-    }
-
-    /** {share of a core, CPU ns per record} with every log growing at the robot's pace. */
-    private double[] pace(int logs, long nanos) throws Exception {
-        Path round = Files.createTempDirectory(dir, "predmon-fleet-pace");
-        try (Fleet fleet = new Fleet(models, abstraction, 0, abstraction.confirm(), (log, e) -> { })) {
-            List<OutputStream> outs = new ArrayList<>();
-            for (int i = 0; i < logs; i++) {
-                Path f = Files.createFile(round.resolve("robot-" + i + ".log"));
-                outs.add(Files.newOutputStream(f, StandardOpenOption.APPEND));
-                fleet.add(f);
-            }
-            // Each log starts at its own point of the run, as robots do not start together.
-            int[] cursor = new int[logs];
-            for (int i = 0; i < logs; i++) {
-                cursor[i] = (int) ((long) i * run.size() / Math.max(1, logs));
-            }
-            AtomicLong writerCpu = new AtomicLong();
-            long used;
-            double wall;
-            try (Following following = new Following(fleet, round)) {
-                Thread.sleep(SETTLE_MILLIS);
-                long start = System.nanoTime();
-                Thread writer = new Thread(() -> {
-                    write(outs, cursor, start, nanos);
-                    writerCpu.set(threads.getCurrentThreadCpuTime());
-                }, "predmon-bench-pace");
-                long cpu = os.getProcessCpuTime();
-                writer.start();
-                writer.join();
-                Thread.sleep(50); // the last appends read
-                used = os.getProcessCpuTime() - cpu - writerCpu.get();
-                wall = System.nanoTime() - start;
-            }
-            long records = fleet.logs().stream().mapToLong(l -> l.monitor().pipeline().records()).sum();
-            for (OutputStream o : outs) {
-                o.close();
-            }
-            return new double[] {used / wall, (double) used / Math.max(1, records)};
-        } finally {
-            delete(round);
-        }
-    }
-
-    /** Appends to every log at the robot's pace for {@code nanos}, flushing every 5 ms. */
-    private void write(List<OutputStream> outs, int[] cursor, long start, long nanos) {
-        long written = 0;
-        while (System.nanoTime() - start < nanos) {
-            long due = (long) ((System.nanoTime() - start) / 1e9 * robotRate);
-            try {
-                for (; written < due; written++) {
-                    for (int i = 0; i < outs.size(); i++) {
-                        outs.get(i).write(run.get(cursor[i]));
-                        cursor[i] = (cursor[i] + 1) % run.size();
-                    }
-                }
-                for (OutputStream o : outs) {
-                    o.flush();
-                }
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-            LockSupport.parkNanos(5_000_000L);
-        }
-    }
-
-    /** {@link Fleet#follow} over a directory of logs on its own thread, as {@code watch --log DIR} runs it. */
-    private final class Following implements AutoCloseable {
-
-        final Thread thread;
-        private final AtomicReference<Throwable> failed = new AtomicReference<>();
-
-        Following(Fleet fleet, Path logs) {
-            LogSources sources = new LogSources(List.of(logs));
-            thread = new Thread(() -> {
-                try {
-                    fleet.follow(sources, pauseNanos, polling);
-                } catch (Throwable t) {
-                    failed.set(t);
-                }
-            }, "predmon-bench-follow");
-            thread.start();
-        }
-
-        @Override
-        public void close() throws Exception {
-            thread.interrupt();
-            thread.join();
-            if (failed.get() != null) {
-                throw new IllegalStateException("following failed", failed.get());
-            }
-        }
-    }
-
-    /** A log text cut into its records, each with its lines. */
-    private static List<byte[]> records(String text) {
-        List<byte[]> out = new ArrayList<>();
-        StringBuilder current = new StringBuilder();
-        for (String line : text.split("\n", -1)) {
-            if (line.endsWith("intercepted:") && current.length() > 0) {
-                out.add(current.toString().getBytes(StandardCharsets.UTF_8));
-                current.setLength(0);
-            }
-            if (!line.isEmpty()) {
-                current.append(line).append('\n');
-            }
-        }
-        if (current.length() > 0) {
-            out.add(current.toString().getBytes(StandardCharsets.UTF_8));
-        }
-        return out;
-    }
-
-    private static void delete(Path dir) throws IOException {
-        try (Stream<Path> files = Files.walk(dir)) {
-            for (Path p : files.sorted(Comparator.reverseOrder()).toList()) {
-                Files.deleteIfExists(p);
-            }
         }
     }
 }

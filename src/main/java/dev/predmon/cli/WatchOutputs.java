@@ -16,6 +16,7 @@ import dev.predmon.pipeline.Traces;
 import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.PrintWriter;
+import java.math.BigDecimal;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -221,6 +222,15 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             err.flush();
             lastRescanFailure = message;
         }
+    }
+
+    /** One line on stderr: what cannot be notified, why, and that it is polled instead, how often. */
+    @Override
+    public void unnotified(Path dir, String why, long pauseNanos) {
+        String every = BigDecimal.valueOf(pauseNanos, 6).stripTrailingZeros().toPlainString() + " ms";
+        err.println(Terminal.line("predmon: file-change notification unavailable" + (dir == null ? "" : " for " + dir)
+                + " (" + why + "); polling " + (dir == null ? "every log" : "its logs") + " every " + every));
+        err.flush();
     }
 
     @Override

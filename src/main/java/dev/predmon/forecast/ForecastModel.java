@@ -36,6 +36,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     public static final double PRIOR_RUNS = 2.0;
 
     public ForecastModel {
+        lows = lows.smoothed(PRIOR_RUNS, baseRate(runs, violating));
         states = Map.copyOf(states);
         startInputs = List.copyOf(startInputs);
     }
@@ -50,6 +51,10 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
 
     /** The share of training runs that violated, with the prior of a fair coin of {@link #PRIOR_RUNS} runs. */
     public double baseRate() {
+        return baseRate(runs, violating);
+    }
+
+    private static double baseRate(int runs, int violating) {
         return (violating + PRIOR_RUNS / 2) / (runs + PRIOR_RUNS);
     }
 
@@ -64,7 +69,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         }
         // A lower value is never safer: a run that went from 23 straight to its violation was below 22 too, though
         // no reading shows it. The rate at v is the highest rate at v or at a violating run's low above it.
-        return lows.monotoneRate(value, PRIOR_RUNS, baseRate());
+        return lows.monotoneRate(value);
     }
 
     /**

@@ -6,22 +6,48 @@ import java.util.Arrays;
  * How low training runs went while safe, split by outcome: the violating runs' and the safe runs' lowest values of
  * the property (sorted). Of the runs that went as low as a value {@code v}, it counts how many violated, which is
  * P(violation | the property reads v) without a machine, and, kept per state, P(violation | this state, v).
+ *
+ * <p>Immutable. The model's own lows also carry the smoothing of its value rate ({@link #smoothed}), with the
+ * monotone envelope of that rate computed once, when they are made.
  */
 public final class Lows {
 
     private final double[] safe;
     private final double[] violating;
-    /** For each violating low, the highest smoothed rate at it or above: computed on first use, for one prior. */
-    private double[] envelope;
-    private double envelopePrior = Double.NaN;
-    private double envelopeBase = Double.NaN;
+    /** The strength of the prior the rates are smoothed with, in runs; NaN for lows without a smoothing. */
+    private final double prior;
+    /** The rate the smoothing pulls towards; NaN for lows without a smoothing. */
+    private final double base;
+    /** For each violating low, the highest smoothed rate at it or above (one more, 0, past the last); null without. */
+    private final double[] envelope;
 
     /** @param safe the lowest values of the runs that held; {@code violating}, of the runs that violated */
     public Lows(double[] safe, double[] violating) {
-        this.safe = safe.clone();
-        this.violating = violating.clone();
-        Arrays.sort(this.safe);
-        Arrays.sort(this.violating);
+        this(sorted(safe), sorted(violating), Double.NaN, Double.NaN);
+    }
+
+    private Lows(double[] safe, double[] violating, double prior, double base) {
+        this.safe = safe;
+        this.violating = violating;
+        this.prior = prior;
+        this.base = base;
+        if (Double.isNaN(prior)) {
+            this.envelope = null;
+        } else {
+            this.envelope = new double[violating.length + 1];
+            for (int i = violating.length - 1; i >= 0; i--) {
+                envelope[i] = Math.max(envelope[i + 1], rate(violating[i]));
+            }
+        }
+    }
+
+    /**
+     * These lows with their rates smoothed as {@code (k + prior * base) / (n + prior)} over the {@code n} runs that
+     * went as low, {@code k} of them violating: what {@link #monotoneRate} answers with. The same lows (equal).
+     */
+    public Lows smoothed(double prior, double base) {
+        return Double.compare(prior, this.prior) == 0 && Double.compare(base, this.base) == 0 ? this
+                : new Lows(safe, violating, prior, base);
     }
 
     /** The safe runs' lowest values, sorted. */
@@ -50,25 +76,28 @@ public final class Lows {
     }
 
     /**
-     * The violation rate at {@code value}, {@code (k + prior * base) / (n + prior)} over the runs that went as low, made
+     * The violation rate at {@code value}, smoothed ({@link #smoothed}) over the runs that went as low, made
      * non-increasing in the value: the rate at a violating run's low above {@code value} counts too, since that run
      * went below its last safe reading on its way to the violation.
+     *
+     * @throws IllegalStateException on lows without a smoothing
      */
-    public synchronized double monotoneRate(double value, double prior, double base) {
-        if (envelope == null || prior != envelopePrior || base != envelopeBase) {
-            envelope = new double[violating.length + 1];
-            for (int i = violating.length - 1; i >= 0; i--) {
-                envelope[i] = Math.max(envelope[i + 1], rate(violating[i], prior, base));
-            }
-            envelopePrior = prior;
-            envelopeBase = base;
+    public double monotoneRate(double value) {
+        if (envelope == null) {
+            throw new IllegalStateException("lows without a smoothing have no rate: see smoothed()");
         }
         int above = atMost(violating, value); // the first violating low above value
-        return Math.max(rate(value, prior, base), envelope[above]);
+        return Math.max(rate(value), envelope[above]);
     }
 
-    private double rate(double value, double prior, double base) {
+    private double rate(double value) {
         return (violating(value) + prior * base) / (runs(value) + prior);
+    }
+
+    private static double[] sorted(double[] values) {
+        double[] copy = values.clone();
+        Arrays.sort(copy);
+        return copy;
     }
 
     private static int atMost(double[] sorted, double value) {

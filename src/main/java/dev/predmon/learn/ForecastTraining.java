@@ -10,6 +10,7 @@ import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
+import dev.predmon.model.MatchRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunTiming;
 import net.automatalib.alphabet.Alphabet;
@@ -111,8 +112,8 @@ public final class ForecastTraining {
     }
 
     /**
-     * Whether the thesis's rule warns {@code run} before its violation: every nominal machine eliminated while a
-     * faulty one still matches, for {@code confirm} more pairs.
+     * Whether the thesis's rule ({@link MatchRule}) warns {@code run} before its violation, each machine matched
+     * exactly.
      */
     static boolean matchWarns(Map<String, CompactMealy<String, String>> machines, Map<String, Boolean> faulty,
                               int confirm, LogTrace.Run run) {
@@ -121,7 +122,7 @@ public final class ForecastTraining {
         for (int m = 0; m < ids.size(); m++) {
             state[m] = machines.get(ids.get(m)).getInitialState();
         }
-        long since = -1;
+        MatchRule rule = new MatchRule(confirm);
         for (int i = 0; i < run.pairs().size(); i++) {
             if (run.violated() && !(run.timing().time(i) < run.timing().violationTime())) {
                 return false;
@@ -141,7 +142,7 @@ public final class ForecastTraining {
                     }
                 }
             }
-            if (!nominal && bad && ++since >= confirm) {
+            if (rule.warns(nominal, bad)) {
                 return true;
             }
         }

@@ -1,7 +1,9 @@
 package dev.predmon.monitor;
 
 import java.io.IOException;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.ClosedWatchServiceException;
+import java.nio.file.FileSystemException;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -14,6 +16,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 
 import static java.nio.file.StandardWatchEventKinds.ENTRY_CREATE;
 import static java.nio.file.StandardWatchEventKinds.ENTRY_DELETE;
@@ -27,11 +30,11 @@ import static java.nio.file.StandardWatchEventKinds.OVERFLOW;
  * also tells of files created, renamed or deleted in it, which rotation does. A whole fleet shares one inotify
  * instance ({@code fs.inotify.max_user_instances} is often 128 per user).
  *
- * <p>{@link #register} says no, and the caller polls instead, where a notification would not be trusted: a directory
- * on a network or FUSE file system (inotify only sees changes made through this machine's kernel, not a writer on
- * another host), a directory that does not exist or cannot be read, and any failure to add the watch (the limit
- * reached). {@link #open} gives none where the JDK's watch service itself polls (it looks every 2 to 10 seconds,
- * too slow for a warning).
+ * <p>The caller polls instead where a notification would not be trusted: a directory on a network or FUSE file
+ * system ({@link #remote}: inotify only sees changes made through this machine's kernel, not a writer on another
+ * host), and where {@link #register} fails: a directory that does not exist or cannot be read, or the watch limit
+ * reached. {@link #open} gives none where the JDK's watch service itself polls (it looks every 2 to 10 seconds,
+ * too slow for a warning), or cannot be had.
  */
 final class DirectoryWatch implements AutoCloseable {
 
@@ -57,11 +60,23 @@ final class DirectoryWatch implements AutoCloseable {
 
     /** The file system's notification, or null where there is none worth having (the caller then polls). */
     static DirectoryWatch open() {
+        return open(why -> { });
+    }
+
+    /**
+     * The file system's notification, or null where there is none worth having: then {@code unavailable} is told
+     * why, in a few words, and the caller polls.
+     */
+    static DirectoryWatch open(Consumer<String> unavailable) {
         WatchService service;
         try {
             service = FileSystems.getDefault().newWatchService();
-        } catch (IOException | UnsupportedOperationException e) {
-            return null; // e.g. "User limit of inotify instances reached": polling works the same, only dearer
+        } catch (IOException e) {
+            unavailable.accept(why(e)); // e.g. "User limit of inotify instances reached": polling works the same
+            return null;
+        } catch (UnsupportedOperationException e) {
+            unavailable.accept("not supported by the default file system");
+            return null;
         }
         if (service.getClass().getSimpleName().startsWith("Polling")) {
             try {
@@ -69,6 +84,7 @@ final class DirectoryWatch implements AutoCloseable {
             } catch (IOException ignored) {
                 // nothing was registered with it
             }
+            unavailable.accept("the JDK's watch service only polls here, every 2 to 10 s");
             return null;
         }
         return new DirectoryWatch(service);
@@ -78,14 +94,29 @@ final class DirectoryWatch implements AutoCloseable {
      * Watches {@code dir} for files created, deleted and written in it; the same directory under another spelling
      * (a symbolic link) gives the same key. Whether its file system notifies is for {@link #remote} to say first.
      *
-     * @return the key its changes will carry, or null when its changes must be polled for
+     * @return the key its changes will carry
+     * @throws IOException when its changes must be polled for: it is gone or unreadable, or the watch limit is
+     *                     reached ({@link #why} says which)
      */
-    WatchKey register(Path dir) {
+    WatchKey register(Path dir) throws IOException {
         try {
             return dir.register(service, ENTRY_CREATE, ENTRY_DELETE, ENTRY_MODIFY);
-        } catch (IOException | UnsupportedOperationException | ClosedWatchServiceException e) {
-            return null; // gone, unreadable, or the watch limit reached
+        } catch (UnsupportedOperationException e) {
+            throw new IOException("not supported by its file system", e);
+        } catch (ClosedWatchServiceException e) {
+            throw new IOException("the notification is closed", e);
         }
+    }
+
+    /** Why {@code e} denied a notification, in a few words (a file system exception's message is only its path). */
+    static String why(IOException e) {
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException f) {
+            return f.getReason() != null ? f.getReason() : f.getClass().getSimpleName();
+        }
+        return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
     }
 
     /**

@@ -60,6 +60,14 @@ public final class Fleet implements AutoCloseable {
         /** Looking for new logs under a directory or glob failed; the fleet goes on and looks again later. */
         default void rescanFailed(IOException e) {
         }
+
+        /**
+         * The operating system's file-change notification is unavailable for the logs in {@code dir}, or for every
+         * log when {@code dir} is null, because of {@code why} (a few words): they are polled every {@code pauseNanos}
+         * instead. Told once per directory while following, never with forced polling (it was asked for).
+         */
+        default void unnotified(Path dir, String why, long pauseNanos) {
+        }
     }
 
     /** How each log's monitor matches: the same for every log. */
@@ -151,7 +159,9 @@ public final class Fleet implements AutoCloseable {
      */
     void follow(LogSources sources, long pauseNanos, boolean polling, long safetyNanos) throws IOException {
         boolean growing = sources.growing();
-        try (Wakeups w = new Wakeups(polling ? null : DirectoryWatch.open(), pauseNanos)) {
+        DirectoryWatch watch = polling ? null
+                : DirectoryWatch.open(why -> listener.unnotified(null, why, pauseNanos));
+        try (Wakeups w = new Wakeups(watch, pauseNanos, (dir, why) -> listener.unnotified(dir, why, pauseNanos))) {
             wakeups = w;
             logs.values().forEach(w::add);
             if (growing) {

@@ -1,8 +1,11 @@
 package dev.predmon.monitor;
 
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.model.ModelSet;
+
+import java.util.Locale;
 
 /**
  * The forecast of the run being watched: a {@link Forecaster} over the models' machines, and which of its forecasts
@@ -38,6 +41,18 @@ final class ForecastTracker {
     /** Whether the forecast rule warns on {@code f} ({@link dev.predmon.forecast.ForecastModel#warns}). */
     boolean warns(Forecast f) {
         return forecaster.stats().warns(f);
+    }
+
+    /**
+     * Why the forecast rule warns on {@code f} ({@link #warns}), in an operator's words: its probability, time and
+     * evidence, and {@code where} (the reading or pair that gave it).
+     */
+    String reason(Forecast f, String where) {
+        String why = f.probability() >= threshold()
+                ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", threshold())
+                : "in behaviour no model has seen, with the value lower than any training run that held read";
+        return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
+                ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
 
     void reset() {

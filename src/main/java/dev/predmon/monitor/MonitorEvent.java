@@ -34,9 +34,13 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
         /** A warning of the match rule without a forecast. */
         public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
                        int run) {
-            this(time, line, scenarios, battery, pairs, clock, run, WarningRule.MATCH, null,
-                    "the run can only be faulty scenario " + String.join(", ", scenarios)
-                            + " (every nominal model eliminated)");
+            this(time, line, scenarios, battery, pairs, clock, run, WarningRule.MATCH, null, onlyFaulty(scenarios));
+        }
+
+        /** The match rule's reason, in an operator's words: the run can only be one of the faulty {@code scenarios}. */
+        static String onlyFaulty(List<String> scenarios) {
+            return "the run can only be faulty scenario " + String.join(", ", scenarios)
+                    + " (every nominal model eliminated)";
         }
     }
 

@@ -6,6 +6,7 @@ import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.model.LearnedModel;
+import dev.predmon.model.MatchRule;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
@@ -17,30 +18,27 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.function.ObjIntConsumer;
 
 /**
  * The predictive monitor: the thesis's Algorithm 8 with MatchTracesRT, made incremental. Records are pushed
  * one at a time through the shared {@link TracePipeline}; each compacted pair advances every model still alive
- * by its two Mealy steps ({@code input/OK}, {@code Delta/output}); a model is dropped at an input it cannot take
- * or when its discrepancies exceed the threshold. A scenario matches while any of its machines matches.
+ * by its two Mealy steps ({@code input/OK}, {@code Delta/output}) ({@link Matching}); a model is dropped at an input
+ * it cannot take or when its discrepancies exceed the threshold. A scenario matches while any of its machines
+ * matches.
  *
  * <p>The forecast ({@link ForecastTracker}) follows the same pairs when the models carry one: a probability of
  * violation and a time to it after every pair, also through behaviour no model has seen. With the default
  * {@link WarningRule#FORECAST} rule the monitor warns when that probability reaches the threshold learned with the
  * models; the thesis's rule below stays available as {@link WarningRule#MATCH}.
  *
- * <p>The match rule's warning: every nominal scenario is eliminated while a faulty one still matches, and a faulty model has
- * matched {@code confirm} more pairs since ({@code confirm = 0} is Algorithm 8; the abstraction sets the default,
- * {@link Abstraction#confirm()}). The nominal models are learned from finitely many runs, so a nominal run that does
- * something no training run did (its battery crosses a band while the robot grasps, say) eliminates them all; a
- * faulty model that happens to allow that step would then warn on no evidence but the novelty. With
- * {@code confirm = 1} the faulty model must also predict what happens next.
+ * <p>The match rule's warning ({@link MatchRule}): every nominal scenario is eliminated while a faulty one still
+ * matches, and a faulty model has matched {@code confirm} more pairs since ({@code confirm = 0} is Algorithm 8; the
+ * abstraction sets the default, {@link Abstraction#confirm()}).
  *
- * <p>Per record the work is constant (one step per model) and the state is constant (per model: state,
- * discrepancy count, alive), so the monitor never re-reads the log, unlike the thesis's loop.
+ * <p>Per record the work is constant (one step per model) and so is the state, so the monitor never re-reads the
+ * log, unlike the thesis's loop.
  *
  * <p>The built-in safety monitor (the property of the abstraction file, by default {@code level < 20.0} on the
  * BatteryReader channel) runs alongside on the raw records and reports the first violation, so that the lead
@@ -48,7 +46,7 @@ import java.util.function.ObjIntConsumer;
  */
 public final class PredictiveMonitor implements PipelineListener {
 
-    private final List<ModelTracker> trackers = new ArrayList<>();
+    private final Matching matching;
     private final Optional<SafetyRule> safety;
     private final Consumer<MonitorEvent> events;
     private final TracePipeline pipeline;
@@ -63,9 +61,6 @@ public final class PredictiveMonitor implements PipelineListener {
     private final List<RunOutcome> finished = new ArrayList<>();
     private MonitorEvent.Warning firstWarning;
     private MonitorEvent.Violation firstViolation;
-    private final int confirm;
-    /** Pairs matched since every nominal model was eliminated with a faulty one alive; -1 before. */
-    private long sinceNominalGone = -1;
     /** Runs before the last restart: the runs after it are numbered on from there. */
     private int runsBefore;
     private final LogTotals before = new LogTotals();
@@ -105,13 +100,7 @@ public final class PredictiveMonitor implements PipelineListener {
         }
         this.rule = rule;
         this.forecast = ForecastTracker.of(models);
-        if (confirm < 0) {
-            throw new IllegalArgumentException("confirm must be at least 0, got " + confirm);
-        }
-        this.confirm = confirm;
-        for (LearnedModel m : models.models()) {
-            trackers.add(new ModelTracker(m, threshold));
-        }
+        this.matching = new Matching(models.models(), threshold, confirm);
         this.safety = abstraction.safety();
         this.events = events;
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
@@ -162,13 +151,12 @@ public final class PredictiveMonitor implements PipelineListener {
     private void startRun(int number, long line) {
         run = number;
         runLine = line;
-        trackers.forEach(ModelTracker::reset);
+        matching.reset();
         warning = null;
         violation = null;
         noMatch = false;
         battery = null;
         pairs = 0;
-        sinceNominalGone = -1;
         if (forecast != null) {
             forecast.reset();
         }
@@ -208,17 +196,10 @@ public final class PredictiveMonitor implements PipelineListener {
             Forecast f = told(forecast.reading(record.time(), v), record);
             if (warning == null && violation == null && rule == WarningRule.FORECAST
                     && forecast.warns(f)) {
-                warn(record, faultyAlive(), forecastReason(f, "at the new reading " + String.format(Locale.ROOT, "%.2f",
-                        v)), f);
+                warn(record, matching.faultyAlive(), forecast.reason(f, "at the new reading "
+                        + String.format(Locale.ROOT, "%.2f", v)), f);
             }
         }
-    }
-
-    /** The faulty scenarios some machine of which still matches the run, sorted. */
-    private List<String> faultyAlive() {
-        TreeSet<String> alive = new TreeSet<>();
-        trackers.stream().filter(t -> t.alive() && t.model().faulty()).forEach(t -> alive.add(t.model().scenario()));
-        return List.copyOf(alive);
     }
 
     /** Reports {@code news} if it is news, and returns the latest forecast. */
@@ -229,14 +210,6 @@ public final class PredictiveMonitor implements PipelineListener {
             events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(), run));
         }
         return f;
-    }
-
-    private String forecastReason(Forecast f, String where) {
-        String why = f.probability() >= forecast.threshold()
-                ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", forecast.threshold())
-                : "in behaviour no model has seen, with the value lower than any training run that held read";
-        return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
-                ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
 
     private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f) {
@@ -254,37 +227,28 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void pair(IoPair pair, LogRecord trigger) {
         pairs++;
-        for (ModelTracker t : trackers) {
-            if (!t.alive()) {
-                continue;
-            }
-            if (!t.pair(pair.input(), pair.output())) {
-                LearnedModel m = t.model();
-                events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
-                        m.faulty(), t.elimination().describe(), trigger.clock(), run));
-            }
-        }
-        List<String> faultyAlive = faultyAlive();
-        boolean nominalAlive = trackers.stream().anyMatch(t -> t.alive() && !t.model().faulty());
-        if (!nominalAlive && !faultyAlive.isEmpty()) {
-            sinceNominalGone++;
+        Matching.Step step = matching.pair(pair);
+        for (ModelTracker t : step.eliminated()) {
+            LearnedModel m = t.model();
+            events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
+                    m.faulty(), t.elimination().describe(), trigger.clock(), run));
         }
         Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
-            if (!nominalAlive && !faultyAlive.isEmpty() && sinceNominalGone >= confirm) {
+            if (step.ruleWarns()) {
                 // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it)
-                reason = "the run can only be faulty scenario " + String.join(", ", faultyAlive)
-                        + " (every nominal model eliminated)" + (f == null ? "" : "; " + ForecastWords.line(f));
+                reason = MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
+                        + (f == null ? "" : "; " + ForecastWords.line(f));
             } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {
-                reason = forecastReason(f, "after " + pair.input() + " -> " + pair.output());
+                reason = forecast.reason(f, "after " + pair.input() + " -> " + pair.output());
             }
             if (reason != null) {
-                warn(trigger, faultyAlive, reason, f);
+                warn(trigger, step.faultyAlive(), reason, f);
             }
         }
-        if (!noMatch && !nominalAlive && faultyAlive.isEmpty()) {
+        if (!noMatch && step.noMatch()) {
             noMatch = true;
             events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock(), run));
         }
@@ -353,7 +317,7 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /** Every model's tracker, in model order. */
     public List<ModelTracker> trackers() {
-        return List.copyOf(trackers);
+        return matching.trackers();
     }
 
     /** Last value on the safety property's channel (the battery level), or null. */

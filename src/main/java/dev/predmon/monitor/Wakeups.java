@@ -9,6 +9,7 @@ import java.nio.file.WatchKey;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -16,13 +17,15 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BiConsumer;
 
 /**
  * Which logs of a following {@link Fleet} to poll now: those the operating system says were written, created,
  * renamed or deleted ({@link DirectoryWatch}), and, every pause, those whose changes cannot be notified. A log is
  * polled rather than notified when its directory cannot be watched (on a network file system, missing, or past the
  * inotify limit), when its path is a symbolic link (the target's writes are announced in the target's directory),
- * and every log when there is no notification at all or polling is forced.
+ * and every log when there is no notification at all or polling is forced. A directory that exists but cannot be
+ * watched is told once, with why, so that the cost of polling its logs has a cause ({@code watch} says it on stderr).
  *
  * <p>A log whose name was deleted or renamed away is an <i>orphan</i> until its name is back: a writer may still
  * hold the old file, whose writes are then announced under its new name (or its last one, once deleted), so every
@@ -67,6 +70,9 @@ final class Wakeups implements AutoCloseable {
     /** Logs in the middle of a rename rotation, each with when to poll it next. */
     private final Map<WatchedLog, Long> replacing = new HashMap<>();
     private final List<WatchKey> invalid = new ArrayList<>();
+    /** Told of each directory whose logs are polled because it cannot be watched, with why, once each. */
+    private final BiConsumer<Path, String> unwatched;
+    private final Set<Path> toldUnwatched = new HashSet<>();
     private long nextPass = System.nanoTime();
     private boolean rescan;
     private boolean sourcesWatched = true;
@@ -74,10 +80,13 @@ final class Wakeups implements AutoCloseable {
     /**
      * @param watch      the notification, or null to poll every log
      * @param pauseNanos the pause between two polls of a log that is polled
+     * @param unwatched  told of each existing directory that cannot be watched (its logs are polled), with why in a
+     *                   few words, once per directory; not of a directory that does not exist (yet)
      */
-    Wakeups(DirectoryWatch watch, long pauseNanos) {
+    Wakeups(DirectoryWatch watch, long pauseNanos, BiConsumer<Path, String> unwatched) {
         this.watch = watch;
         this.pauseNanos = pauseNanos;
+        this.unwatched = unwatched;
     }
 
     /** Whether any log is notified rather than polled (only then is a safety poll worth it). */
@@ -259,16 +268,28 @@ final class Wakeups implements AutoCloseable {
             return known;
         }
         if (Boolean.TRUE.equals(remote.computeIfAbsent(dir, DirectoryWatch::remote))) {
+            tellUnwatched(dir, "network or FUSE file system, whose changes on other hosts are not notified");
             return null;
         }
-        WatchKey key = watch.register(dir);
-        if (key == null) {
+        WatchKey key;
+        try {
+            key = watch.register(dir);
+        } catch (IOException e) {
+            if (Files.isDirectory(dir)) { // one that does not exist yet is watched once it does, without a word
+                tellUnwatched(dir, DirectoryWatch.why(e));
+            }
             return null;
         }
         // The same directory under another spelling gives the same key: its logs share one table.
         Watched w = byKey.computeIfAbsent(key, k -> new Watched(dir, k));
         byDir.put(dir, w);
         return w;
+    }
+
+    private void tellUnwatched(Path dir, String why) {
+        if (toldUnwatched.add(dir)) {
+            unwatched.accept(dir, why);
+        }
     }
 
     @Override

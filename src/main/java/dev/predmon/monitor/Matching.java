@@ -1,0 +1,81 @@
+package dev.predmon.monitor;
+
+import dev.predmon.compact.IoPair;
+import dev.predmon.model.LearnedModel;
+import dev.predmon.model.MatchRule;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.TreeSet;
+
+/**
+ * Which models still match the run being watched, the thesis's MatchTracesRT made incremental: each compacted pair
+ * advances every model still alive by its two Mealy steps ({@link ModelTracker}), a model is dropped at an input it
+ * cannot take or when its discrepancies exceed the threshold, and the match rule ({@link MatchRule}) is told what
+ * is left. A scenario matches while any of its machines matches. Per pair the work is one step per model and the
+ * state is constant (per model: state, discrepancy count, alive).
+ */
+final class Matching {
+
+    /**
+     * What one pair left.
+     *
+     * @param eliminated   the models the pair eliminated, in model order
+     * @param faultyAlive  the faulty scenarios some machine of which still matches, sorted
+     * @param nominalAlive whether some nominal model still matches
+     * @param ruleWarns    whether the match rule warns at this pair
+     */
+    record Step(List<ModelTracker> eliminated, List<String> faultyAlive, boolean nominalAlive, boolean ruleWarns) {
+
+        /** Whether no model, nominal or faulty, matches the run any more. */
+        boolean noMatch() {
+            return !nominalAlive && faultyAlive.isEmpty();
+        }
+    }
+
+    private final List<ModelTracker> trackers = new ArrayList<>();
+    private final MatchRule rule;
+
+    /**
+     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
+     * @param confirm   pairs a faulty model must match after the last nominal model is eliminated before the match
+     *                  rule warns
+     */
+    Matching(List<LearnedModel> models, int threshold, int confirm) {
+        this.rule = new MatchRule(confirm);
+        for (LearnedModel m : models) {
+            trackers.add(new ModelTracker(m, threshold));
+        }
+    }
+
+    /** A new run: every model back to its initial state, alive. */
+    void reset() {
+        trackers.forEach(ModelTracker::reset);
+        rule.reset();
+    }
+
+    /** Advances every model still alive by {@code pair}. */
+    Step pair(IoPair pair) {
+        List<ModelTracker> eliminated = new ArrayList<>();
+        for (ModelTracker t : trackers) {
+            if (t.alive() && !t.pair(pair.input(), pair.output())) {
+                eliminated.add(t);
+            }
+        }
+        List<String> faultyAlive = faultyAlive();
+        boolean nominalAlive = trackers.stream().anyMatch(t -> t.alive() && !t.model().faulty());
+        return new Step(eliminated, faultyAlive, nominalAlive, rule.warns(nominalAlive, !faultyAlive.isEmpty()));
+    }
+
+    /** The faulty scenarios some machine of which still matches the run, sorted. */
+    List<String> faultyAlive() {
+        TreeSet<String> alive = new TreeSet<>();
+        trackers.stream().filter(t -> t.alive() && t.model().faulty()).forEach(t -> alive.add(t.model().scenario()));
+        return List.copyOf(alive);
+    }
+
+    /** Every model's tracker, in model order. */
+    List<ModelTracker> trackers() {
+        return List.copyOf(trackers);
+    }
+}
