@@ -7,6 +7,7 @@ import dev.predmon.parse.RecordKind;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -64,10 +65,8 @@ public final class Abstraction {
     /** For each band symbol of a continuous rule with hysteresis: its band and the rule's hysteresis. */
     private final Map<String, Band> bandOf;
     private final Map<String, Double> hysteresisOf;
-    /** Input symbols of rules with {@code carry: true}. */
-    private final Set<String> carried;
-    /** The Mealy input alphabet: inputs, plus each carried input after each answer of its rule, sorted. */
-    private final List<String> mealyInputs;
+    /** Each input of a rule with {@code carry: true}, {@code {loc}} replaced, to the answers its rule gives. */
+    private final Map<String, Set<String>> carriedAnswers;
 
     private Abstraction(AbstractionSpec spec) {
         this(spec, null, Map.of());
@@ -126,21 +125,20 @@ public final class Abstraction {
         }
         this.bandOf = Map.copyOf(bands);
         this.hysteresisOf = Map.copyOf(hysteresis);
-        Set<String> carriedInputs = new TreeSet<>();
-        Set<String> mealy = new TreeSet<>(inputs);
+        Map<String, Set<String>> carries = new TreeMap<>();
         for (RuleSpec r : spec.rules()) {
             if (Boolean.TRUE.equals(r.carry())) {
                 for (String loc : abbreviations()) {
                     String in = r.input().replace(AbstractionValidator.LOC, loc);
-                    carriedInputs.add(in);
+                    Set<String> answers = new TreeSet<>(carries.getOrDefault(in, Set.of()));
                     for (ReplySpec p : r.replies()) {
-                        mealy.add(carriedSymbol(in, p.symbol().replace(AbstractionValidator.LOC, loc)));
+                        answers.add(p.symbol().replace(AbstractionValidator.LOC, loc));
                     }
+                    carries.put(in, Collections.unmodifiableSet(answers));
                 }
             }
         }
-        this.carried = Set.copyOf(carriedInputs);
-        this.mealyInputs = List.copyOf(mealy);
+        this.carriedAnswers = Collections.unmodifiableMap(carries);
         this.inputAlphabet = List.copyOf(inputs);
         this.outputAlphabet = List.copyOf(outputs);
         this.runs = spec.runs() == null ? RunRule.DEFAULT : new RunRule(
@@ -205,27 +203,12 @@ public final class Abstraction {
     }
 
     /**
-     * The Mealy input for a query: its input symbol, or, for a rule with {@code carry: true} and a query answered
-     * before, the input symbol followed by {@code _after_} and the previous answer.
-     *
-     * <p>Why: in the thesis's I/O-automaton-to-Mealy mapping a Mealy state follows inputs only, so to predict the
-     * next battery band a machine must count {@code level_i} queries, entangled with every navigation event
-     * around them; each new interleaving is then a path no training run took. Carrying the current band in the
-     * query lets a band change be the same transition wherever it happens, which generalises across timing.
-     *
-     * @param previousAnswer the query's previous answer, or null for its first
+     * What a user configures about carrying: each input of a rule with {@code carry: true} ({@code {loc}} replaced),
+     * sorted, to every answer its rule can give, sorted. The Mealy symbols made of them are
+     * {@code dev.predmon.mealy}'s ({@code CarryEncoder}, {@code MealyAlphabet}).
      */
-    public String mealyInput(String input, String previousAnswer) {
-        return previousAnswer != null && carried.contains(input) ? carriedSymbol(input, previousAnswer) : input;
-    }
-
-    /** Every Mealy input {@link #mealyInput} can give, sorted (without {@code Delta}). */
-    public List<String> mealyInputAlphabet() {
-        return mealyInputs;
-    }
-
-    private static String carriedSymbol(String input, String previousAnswer) {
-        return input + "_after_" + previousAnswer;
+    public Map<String, Set<String>> carriedAnswers() {
+        return carriedAnswers;
     }
 
     /** The location abbreviations, sorted, or one empty one when there are none (for templates without {@code {loc}}). */

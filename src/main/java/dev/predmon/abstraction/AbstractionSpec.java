@@ -67,7 +67,7 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
      * {@code hysteresis: h} (continuous rules only) keeps a reading within {@code h} of the previous band in that
      * band, so a noisy sensor hovering at a boundary does not flip bands, see {@link Abstraction#settle}.
      * {@code carry: true} makes the query's Mealy input carry its previous answer
-     * ({@code level_i_after_o_level_medium_six}), see {@link Abstraction#mealyInput}.
+     * ({@code level_i_after_o_level_medium_six}, see {@code dev.predmon.mealy.CarryEncoder}).
      * {@code client}, a port pattern ({@code *} for any characters), restricts the rule to messages whose client
      * port matches (a command's {@code From}, a reply's {@code To}): one component method called by two skills
      * (a condition polling {@code hasGrasped} every tick, an action calling it while it grasps) is then two

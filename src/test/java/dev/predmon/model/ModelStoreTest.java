@@ -6,6 +6,7 @@ import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.pipeline.Traces;
@@ -36,12 +37,12 @@ class ModelStoreTest {
                 .isAt("kitchen", false).goTo("kitchen").status("kitchen", 1).level(60).isAt("kitchen", true)
                 .halt("kitchen").list(), ABSTRACTION), "direct-1.log");
         ScenarioSpec spec = new ScenarioSpec("direct", false, "reaches the kitchen", List.of(Path.of("direct-1.log")));
-        return List.of(ScenarioLearner.learnSamples(spec, List.of(run), ModelStore.alphabetOf(ABSTRACTION)));
+        return List.of(ScenarioLearner.learnSamples(spec, List.of(run), MealyAlphabet.inputs(ABSTRACTION)));
     }
 
     private void writeModels(Path dir) throws IOException, BadInputException {
         List<LearnedScenario> l = learned();
-        ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), LearnedModels.dots(l, ModelStore.alphabetOf(ABSTRACTION)),
+        ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), LearnedModels.dots(l, MealyAlphabet.inputs(ABSTRACTION)),
                 ABSTRACTION.canonicalJson());
     }
 

@@ -3,7 +3,7 @@ package dev.predmon.pipeline;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
 import dev.predmon.compact.IoPair;
-import dev.predmon.model.ModelStore;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.Test;
 
@@ -38,7 +38,7 @@ class CarryTest {
 
     @Test
     void everyCarriedInputIsInTheModelAlphabet() {
-        List<String> alphabet = List.copyOf(ModelStore.alphabetOf(A));
+        List<String> alphabet = List.copyOf(MealyAlphabet.inputs(A));
         for (String band : A.outputAlphabet().stream().filter(s -> s.startsWith("o_level_")).toList()) {
             assertTrue(alphabet.contains("level_i_after_" + band), band);
         }
