@@ -1,6 +1,7 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
@@ -28,7 +29,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class ReplayTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     @TempDir
     Path dir;

@@ -1,6 +1,7 @@
 package dev.predmon.explain;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
@@ -30,7 +31,7 @@ class ExplanationTest {
 
     @Test
     void namesTheModelAndTheExpectedAndSeenSymbols() throws Exception {
-        Abstraction a = Abstraction.defaults();
+        Abstraction a = AbstractionFiles.defaults();
         Path recharge = dir.resolve("recharge.log");
         Path depleted = dir.resolve("depleted.log");
         Files.writeString(recharge, HandRuns.recharge().text());

@@ -2,6 +2,7 @@ package dev.predmon.model;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
@@ -27,7 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 class ModelStoreTest {
 
-    private static final Abstraction ABSTRACTION = Abstraction.defaults();
+    private static final Abstraction ABSTRACTION = AbstractionFiles.defaults();
 
     @TempDir
     Path tmp;
@@ -179,7 +180,7 @@ class ModelStoreTest {
         writeModels(dir);
         String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes())
                 .replace("\"charging_station\"", "\"dock\"");
-        Abstraction other = Abstraction.fromJson("other.json", json);
+        Abstraction other = AbstractionFiles.fromJson("other.json", json);
         BadInputException e = assertThrows(BadInputException.class, () -> ModelStore.read(dir, other));
         assertTrue(e.getMessage().contains("abstraction"), e.getMessage());
     }

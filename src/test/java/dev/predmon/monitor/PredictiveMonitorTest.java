@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
@@ -29,7 +30,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class PredictiveMonitorTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     static Records recharge() {
         return HandRuns.recharge();
@@ -116,7 +117,7 @@ class PredictiveMonitorTest {
     @Test
     void coarseBandsOfSection42GiveNoLeadFigure56() throws Exception {
         String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes());
-        Abstraction coarse = Abstraction.fromJson("coarse.json", coarsen(json));
+        Abstraction coarse = AbstractionFiles.fromJson("coarse.json", coarsen(json));
         List<LearnedScenario> l = new ArrayList<>();
         l.add(ScenarioLearner.learnSamples(new ScenarioSpec("recharge", false, "", List.of()),
                 List.of(MealyMapping.toTrace(Traces.compact(recharge().list(), coarse), "r")), MealyAlphabet.inputs(coarse)));

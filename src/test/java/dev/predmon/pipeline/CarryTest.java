@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.compact.IoPair;
 import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.support.Records;
@@ -16,7 +17,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /** A carried query's Mealy input names its previous answer, identically for learn and watch (one pipeline). */
 class CarryTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     @Test
     void levelQueriesCarryTheirPreviousBandOtherQueriesDoNot() {
@@ -51,7 +52,7 @@ class CarryTest {
         String json = """
                 {"name": "x", "rules": [{"protocol": "P", "command": "c", "input": "c_i", "carry": false,
                   "replies": [{"equals": ["1"], "symbol": "o_one"}]}]}""";
-        AbstractionException e = assertThrows(AbstractionException.class, () -> Abstraction.fromJson("x.json", json));
+        AbstractionException e = assertThrows(AbstractionException.class, () -> AbstractionFiles.fromJson("x.json", json));
         assertTrue(e.getMessage().contains("carry"), e.getMessage());
     }
 }
