@@ -1,12 +1,12 @@
 package dev.predmon.abstraction;
 
-import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
-import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
+import dev.predmon.abstraction.Definition.Reply;
+import dev.predmon.abstraction.Definition.Rule;
 import dev.predmon.parse.LogRecord;
-import dev.predmon.parse.RecordKind;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -16,42 +16,23 @@ import java.util.TreeMap;
 import java.util.TreeSet;
 
 /**
- * The abstraction of the skill-component interface, loaded from JSON (thesis Tables 4.1/4.2, Section 5.2).
+ * The abstraction of the skill-component interface (thesis Tables 4.1/4.2, Section 5.2): what a log record means.
  *
  * <p>It maps each log record to one of three outcomes (see {@link #classify}): dropped on purpose (ticks,
  * BT-to-skill traffic), mapped to an input symbol (a command) or an output symbol (a reply), or unmapped
  * (interface traffic no rule covers, which the caller reports instead of losing). Everything is data: adding a
- * location, changing the battery bands or adding a component means editing the JSON file only.
- *
- * <p>The file has the keys {@code name} (required), {@code description}, {@code drop} (filters, where {@code *}
- * matches any characters, on
- * {@code kind}/{@code from}/{@code to}/{@code protocol}/{@code command}), {@code locations} (name to
- * abbreviation, used for {@code {loc}} in symbols), {@code rules} (required: {@code protocol}, {@code command},
- * {@code input}, {@code replies}, optional {@code description}; each reply has a {@code symbol} and exactly one
- * of {@code any: true}, {@code equals: [strings]}, {@code range: {above|atLeast, below|atMost}}) and
- * {@code safety} (see {@link SafetyRule}).
- *
- * <p>Band boundaries of the default: bands are upper-inclusive, {@code (lower, upper]}, like the thesis's
- * notation and the behaviour tree's {@code level > 50} early-warning condition, so exactly 50.0 is already
- * {@code o_level_medium_six} and exactly 45.0 {@code o_level_medium_five}; the exception is
- * {@code o_level_medium_one = [20, 25]}, so that {@code o_level_low = (0, 20)} coincides exactly with the safety
- * monitor's violation {@code level < 20.0}. {@code o_level_zero} is 0 and below. Validation guarantees the
- * bands of one rule neither overlap nor leave gaps.
+ * location, changing the battery bands or adding a component means editing the JSON file only
+ * ({@code dev.predmon.abstraction.file} reads, checks and writes the files, and holds the built-in ones).
  *
  * <p>Instances are immutable and thread-safe.
  */
 public final class Abstraction {
 
-
-
-    private final String name;
+    private final Definition definition;
     private final Map<String, String> locations;
     /** The compiled drop filters and rules: what {@link #classify} decides. */
     private final Rules rules;
     private final Optional<SafetyRule> safety;
-    private final int confirm;
-    private final RunRule runs;
-    private final AbstractionSpec spec;
     private final Map<String, Double> learnedHysteresis;
     /** Each continuous rule's band symbols, expanded, to the rule's input template. */
     private final Map<String, String> continuousInputOf;
@@ -64,61 +45,63 @@ public final class Abstraction {
     /** For each band symbol of a continuous rule with hysteresis: its band and the rule's hysteresis. */
     private final Map<String, Band> bandOf;
     private final Map<String, Double> hysteresisOf;
-    /** Input symbols of rules with {@code carry: true}. */
-    private final Set<String> carried;
-    /** The Mealy input alphabet: inputs, plus each carried input after each answer of its rule, sorted. */
-    private final List<String> mealyInputs;
-
-    private Abstraction(AbstractionSpec spec) {
-        this(spec, null, Map.of());
-    }
+    /** Each input of a rule with {@code carry: true}, {@code {loc}} replaced, to the answers its rule gives. */
+    private final Map<String, Set<String>> carriedAnswers;
 
     /**
-     * @param fingerprintOf the abstraction whose identity this one keeps (its canonical JSON and fingerprint), or
-     *                      null for the spec's own
-     * @param learned       the hysteresis learned per continuous rule input, already in {@code spec}
+     * The abstraction {@code definition} defines, which its caller has validated ({@code abstraction.file} does).
+     *
+     * @param canonicalJson the definition's file in canonical form, stored beside models
+     * @param fingerprint   what tells whether models were learned with this abstraction (see {@link #fingerprint()})
      */
-    private Abstraction(AbstractionSpec spec, Abstraction fingerprintOf, Map<String, Double> learned) {
-        this.spec = spec;
+    public Abstraction(Definition definition, String canonicalJson, String fingerprint) {
+        this(definition, canonicalJson, fingerprint, Map.of());
+    }
+
+    /** @param learned the hysteresis learned per continuous rule input, already in {@code definition} */
+    private Abstraction(Definition definition, String canonicalJson, String fingerprint, Map<String, Double> learned) {
+        this.definition = definition;
+        this.canonicalJson = canonicalJson;
+        this.fingerprint = fingerprint;
         this.learnedHysteresis = Map.copyOf(learned);
-        this.name = spec.name();
-        this.locations = spec.locations() == null ? Map.of() : Map.copyOf(spec.locations());
-        this.rules = new Rules(spec);
+        this.locations = definition.locations();
+        this.rules = new Rules(definition);
+        this.safety = Optional.ofNullable(definition.safety());
         Set<String> inputs = new TreeSet<>();
         Set<String> outputs = new TreeSet<>();
-        for (RuleSpec r : spec.rules()) {
-            for (ReplySpec p : r.replies()) {
+        for (Rule r : definition.rules()) {
+            for (Reply p : r.replies()) {
                 outputs.addAll(expand(p.symbol()));
             }
             inputs.addAll(expand(r.input()));
         }
         Map<String, List<String>> ordered = new HashMap<>();
-        for (RuleSpec r : spec.rules()) {
-            if (Boolean.TRUE.equals(r.continuous())) {
+        for (Rule r : definition.rules()) {
+            if (r.continuous()) {
                 List<String> ascending = r.replies().stream()
-                        .sorted(java.util.Comparator.comparing(p -> Band.of(p.range()), Band.BY_LOWER))
-                        .map(ReplySpec::symbol).distinct().toList();
+                        .sorted(Comparator.comparing(Reply::range, Band.BY_LOWER))
+                        .map(Reply::symbol).distinct().toList();
                 for (String loc : abbreviations()) {
-                    List<String> family = ascending.stream().map(t -> t.replace(AbstractionValidator.LOC, loc)).toList();
+                    List<String> family = ascending.stream().map(t -> t.replace(Definition.LOC, loc)).toList();
                     family.forEach(band -> ordered.put(band, family));
                 }
             }
         }
         this.continuousBands = Map.copyOf(ordered);
         Map<String, String> inputOfBand = new HashMap<>();
-        for (RuleSpec r : spec.rules()) {
-            if (Boolean.TRUE.equals(r.continuous())) {
+        for (Rule r : definition.rules()) {
+            if (r.continuous()) {
                 r.replies().forEach(p -> expand(p.symbol()).forEach(band -> inputOfBand.put(band, r.input())));
             }
         }
         this.continuousInputOf = Map.copyOf(inputOfBand);
         Map<String, Band> bands = new HashMap<>();
         Map<String, Double> hysteresis = new HashMap<>();
-        for (RuleSpec r : spec.rules()) {
+        for (Rule r : definition.rules()) {
             if (r.hysteresis() != null && r.hysteresis() > 0) {
-                for (ReplySpec p : r.replies()) {
+                for (Reply p : r.replies()) {
                     for (String symbol : expand(p.symbol())) {
-                        bands.put(symbol, Band.of(p.range()));
+                        bands.put(symbol, p.range());
                         hysteresis.put(symbol, r.hysteresis());
                     }
                 }
@@ -126,39 +109,22 @@ public final class Abstraction {
         }
         this.bandOf = Map.copyOf(bands);
         this.hysteresisOf = Map.copyOf(hysteresis);
-        Set<String> carriedInputs = new TreeSet<>();
-        Set<String> mealy = new TreeSet<>(inputs);
-        for (RuleSpec r : spec.rules()) {
-            if (Boolean.TRUE.equals(r.carry())) {
+        Map<String, Set<String>> carries = new TreeMap<>();
+        for (Rule r : definition.rules()) {
+            if (r.carry()) {
                 for (String loc : abbreviations()) {
-                    String in = r.input().replace(AbstractionValidator.LOC, loc);
-                    carriedInputs.add(in);
-                    for (ReplySpec p : r.replies()) {
-                        mealy.add(carriedSymbol(in, p.symbol().replace(AbstractionValidator.LOC, loc)));
+                    String in = r.input().replace(Definition.LOC, loc);
+                    Set<String> answers = new TreeSet<>(carries.getOrDefault(in, Set.of()));
+                    for (Reply p : r.replies()) {
+                        answers.add(p.symbol().replace(Definition.LOC, loc));
                     }
+                    carries.put(in, Collections.unmodifiableSet(answers));
                 }
             }
         }
-        this.carried = Set.copyOf(carriedInputs);
-        this.mealyInputs = List.copyOf(mealy);
+        this.carriedAnswers = Collections.unmodifiableMap(carries);
         this.inputAlphabet = List.copyOf(inputs);
         this.outputAlphabet = List.copyOf(outputs);
-        this.runs = spec.runs() == null ? RunRule.DEFAULT : new RunRule(
-                spec.runs().tickRestart() == null || spec.runs().tickRestart(),
-                spec.runs().silence() == null ? RunRule.DEFAULT_SILENCE : spec.runs().silence());
-        this.confirm = spec.warning() == null || spec.warning().confirm() == null ? 0 : spec.warning().confirm();
-        if (fingerprintOf != null) {
-            this.canonicalJson = fingerprintOf.canonicalJson;
-            this.fingerprint = fingerprintOf.fingerprint;
-        } else {
-            this.canonicalJson = SpecWriter.canonical(spec);
-            // The recommended action is advice to operators: it changes no trace, so models stay valid when it does.
-            this.fingerprint = AbstractionFiles.sha256(spec.safety() == null || spec.safety().action() == null
-                    ? canonicalJson : SpecWriter.canonical(spec.withoutAction()));
-        }
-        this.safety = Optional.ofNullable(spec.safety()).map(s -> new SafetyRule(s.name(), s.protocol(), s.command(),
-                s.from() == null ? "" : s.from(), s.to() == null ? "" : s.to(), s.below(),
-                s.action() != null ? s.action() : AbstractionFiles.builtinAction(fingerprint)));
     }
 
     /**
@@ -205,27 +171,12 @@ public final class Abstraction {
     }
 
     /**
-     * The Mealy input for a query: its input symbol, or, for a rule with {@code carry: true} and a query answered
-     * before, the input symbol followed by {@code _after_} and the previous answer.
-     *
-     * <p>Why: in the thesis's I/O-automaton-to-Mealy mapping a Mealy state follows inputs only, so to predict the
-     * next battery band a machine must count {@code level_i} queries, entangled with every navigation event
-     * around them; each new interleaving is then a path no training run took. Carrying the current band in the
-     * query lets a band change be the same transition wherever it happens, which generalises across timing.
-     *
-     * @param previousAnswer the query's previous answer, or null for its first
+     * What a user configures about carrying: each input of a rule with {@code carry: true} ({@code {loc}} replaced),
+     * sorted, to every answer its rule can give, sorted. The Mealy symbols made of them are
+     * {@code dev.predmon.mealy}'s ({@code CarryEncoder}, {@code MealyAlphabet}).
      */
-    public String mealyInput(String input, String previousAnswer) {
-        return previousAnswer != null && carried.contains(input) ? carriedSymbol(input, previousAnswer) : input;
-    }
-
-    /** Every Mealy input {@link #mealyInput} can give, sorted (without {@code Delta}). */
-    public List<String> mealyInputAlphabet() {
-        return mealyInputs;
-    }
-
-    private static String carriedSymbol(String input, String previousAnswer) {
-        return input + "_after_" + previousAnswer;
+    public Map<String, Set<String>> carriedAnswers() {
+        return carriedAnswers;
     }
 
     /** The location abbreviations, sorted, or one empty one when there are none (for templates without {@code {loc}}). */
@@ -234,52 +185,10 @@ public final class Abstraction {
     }
 
     private List<String> expand(String template) {
-        if (!template.contains(AbstractionValidator.LOC)) {
+        if (!template.contains(Definition.LOC)) {
             return List.of(template);
         }
-        return locations.values().stream().map(a -> template.replace(AbstractionValidator.LOC, a)).toList();
-    }
-
-    /**
-     * The built-in abstractions by name: {@code thesis}, the default (Tables 4.1/4.2 with the battery bands of
-     * Section 5.2, for the thesis's tree), and {@code scope-fetch} (the R1 fetch-and-carry tree whose monitor the
-     * public SCOPE recordings show).
-     */
-    public static final List<String> BUILTIN_NAMES = List.of("thesis", "scope-fetch");
-
-    /** The embedded default: the built-in {@code thesis}. */
-    public static Abstraction defaults() {
-        return builtin("thesis").orElseThrow();
-    }
-
-    /** The built-in abstraction of that name, if there is one. */
-    public static Optional<Abstraction> builtin(String name) {
-        return AbstractionFiles.builtin(name);
-    }
-
-    /** The JSON text of a built-in abstraction, as shipped, for users to start their own from. */
-    public static Optional<String> builtinJson(String name) {
-        return AbstractionFiles.builtinJson(name);
-    }
-
-    /** Loads and validates an abstraction file. */
-    public static Abstraction load(Path file) throws AbstractionException {
-        return AbstractionFiles.load(file);
-    }
-
-    /**
-     * Parses and validates abstraction JSON text.
-     *
-     * @param source names the text in error messages, usually its file
-     * @throws AbstractionException one line, {@code source:line:column: reason}, on the first problem
-     */
-    public static Abstraction fromJson(String source, String json) throws AbstractionException {
-        return AbstractionFiles.fromJson(source, json);
-    }
-
-    /** The abstraction of a validated spec. */
-    static Abstraction of(AbstractionSpec spec) {
-        return new Abstraction(spec);
+        return locations.values().stream().map(a -> template.replace(Definition.LOC, a)).toList();
     }
 
     /**
@@ -297,7 +206,7 @@ public final class Abstraction {
 
     /** Whether some rule maps messages of {@code protocol}: the abstraction knows that component. */
     public boolean mapsProtocol(String protocol) {
-        return spec.rules().stream().anyMatch(r -> r.protocol().equals(protocol));
+        return definition.rules().stream().anyMatch(r -> r.protocol().equals(protocol));
     }
 
     /** Every input symbol the rules can produce, sorted. */
@@ -315,13 +224,12 @@ public final class Abstraction {
         return new TreeMap<>(locations);
     }
 
-    /** The built-in safety monitor's property, if the file defines one. */
     /**
      * Pairs a faulty model must still match after the last nominal model is eliminated before the predictive
      * warning, unless the user says otherwise: 0 (the thesis's Algorithm 8) unless the file's {@code warning} sets it.
      */
     public int confirm() {
-        return confirm;
+        return definition.confirm();
     }
 
     /**
@@ -340,24 +248,23 @@ public final class Abstraction {
      * noise, and {@code models/index.json} records the values beside the fingerprint. An empty map gives this one.
      */
     public Abstraction withLearnedHysteresis(Map<String, Double> byInput) {
-        Map<String, Double> applied = new java.util.TreeMap<>();
-        List<RuleSpec> rules = new ArrayList<>();
-        for (RuleSpec r : spec.rules()) {
+        Map<String, Double> applied = new TreeMap<>();
+        List<Rule> tuned = new ArrayList<>();
+        for (Rule r : definition.rules()) {
             Double h = byInput.get(r.input());
-            if (Boolean.TRUE.equals(r.continuous()) && r.hysteresis() == null && h != null && h > 0) {
+            if (r.continuous() && r.hysteresis() == null && h != null && h > 0) {
                 applied.put(r.input(), h);
-                rules.add(new RuleSpec(r.protocol(), r.command(), r.client(), r.input(), r.description(),
-                        r.continuous(), r.carry(), h, r.replies()));
+                tuned.add(r.withHysteresis(h));
             } else {
-                rules.add(r);
+                tuned.add(r);
             }
         }
         if (applied.isEmpty()) {
             return this;
         }
-        AbstractionSpec tuned = new AbstractionSpec(spec.name(), spec.description(), spec.drop(), spec.locations(),
-                List.copyOf(rules), spec.safety(), spec.warning(), spec.runs());
-        return new Abstraction(tuned, this, applied);
+        Definition d = definition;
+        return new Abstraction(new Definition(d.name(), d.locations(), d.drop(), tuned, d.safety(), d.confirm(),
+                d.runs()), canonicalJson, fingerprint, applied);
     }
 
     /** The hysteresis learned from training runs that this abstraction applies, by rule input; empty if none. */
@@ -367,16 +274,17 @@ public final class Abstraction {
 
     /** Where runs begin in a log that holds several ({@link RunRule#DEFAULT} unless the file's {@code runs} says). */
     public RunRule runs() {
-        return runs;
+        return definition.runs();
     }
 
+    /** The built-in safety monitor's property, if the file defines one. */
     public Optional<SafetyRule> safety() {
         return safety;
     }
 
     /** The abstraction's name from the file. */
     public String name() {
-        return name;
+        return definition.name();
     }
 
     /** Canonical JSON text of this abstraction (stable key order), stored in models/index.json. */
@@ -394,6 +302,6 @@ public final class Abstraction {
 
     @Override
     public String toString() {
-        return "Abstraction[" + name + ", " + fingerprint.substring(0, 12) + "]";
+        return "Abstraction[" + definition.name() + ", " + fingerprint.substring(0, 12) + "]";
     }
 }

@@ -8,15 +8,10 @@ import java.util.Comparator;
  * between the lowest and the highest band may fall in none. This is what makes a band table such as Section
  * 5.2's unambiguous at its boundaries.
  */
-record Band(double lower, boolean lowerClosed, double upper, boolean upperClosed) {
+public record Band(double lower, boolean lowerClosed, double upper, boolean upperClosed) {
 
-    static Band of(AbstractionSpec.RangeSpec r) {
-        double lo = r.above() != null ? r.above() : r.atLeast() != null ? r.atLeast() : Double.NEGATIVE_INFINITY;
-        double hi = r.below() != null ? r.below() : r.atMost() != null ? r.atMost() : Double.POSITIVE_INFINITY;
-        return new Band(lo, r.atLeast() != null, hi, r.atMost() != null);
-    }
-
-    boolean isEmpty() {
+    /** Whether no value lies in this band. */
+    public boolean isEmpty() {
         return lower > upper || (lower == upper && !(lowerClosed && upperClosed));
     }
 
@@ -46,16 +41,16 @@ record Band(double lower, boolean lowerClosed, double upper, boolean upperClosed
     }
 
     /** Orders by lower end, a closed lower end first (it starts earlier). */
-    static final Comparator<Band> BY_LOWER = Comparator.comparingDouble(Band::lower)
+    public static final Comparator<Band> BY_LOWER = Comparator.comparingDouble(Band::lower)
             .thenComparing(b -> !b.lowerClosed());
 
     /** Whether this band and {@code next}, which starts no earlier, share a value. */
-    boolean overlaps(Band next) {
+    public boolean overlaps(Band next) {
         return upper > next.lower || (upper == next.lower && upperClosed && next.lowerClosed);
     }
 
     /** Whether some value lies between this band and {@code next}, which starts no earlier. */
-    boolean leavesGapBefore(Band next) {
+    public boolean leavesGapBefore(Band next) {
         return upper < next.lower || (upper == next.lower && !upperClosed && !next.lowerClosed);
     }
 

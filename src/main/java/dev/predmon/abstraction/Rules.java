@@ -1,8 +1,6 @@
 package dev.predmon.abstraction;
 
-import dev.predmon.abstraction.AbstractionSpec.DropSpec;
-import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
-import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
+import dev.predmon.abstraction.Definition.Drop;
 import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
@@ -38,11 +36,11 @@ final class Rules {
     private record Rule(String protocol, String command, String client, String input, Reply[] replies,
                         boolean numeric) {
         boolean usesLocation() {
-            if (input.contains(AbstractionValidator.LOC)) {
+            if (input.contains(Definition.LOC)) {
                 return true;
             }
             for (Reply r : replies) {
-                if (r.symbol.contains(AbstractionValidator.LOC)) {
+                if (r.symbol.contains(Definition.LOC)) {
                     return true;
                 }
             }
@@ -94,7 +92,7 @@ final class Rules {
         }
     }
 
-    private final List<DropSpec> drop;
+    private final List<Drop> drop;
     private final Map<String, String> locations;
     /** Rules by command, in file order. */
     private final Map<String, List<Rule>> rulesByCommand;
@@ -102,15 +100,15 @@ final class Rules {
     private final Map<String, Map<String, String>> expanded = new ConcurrentHashMap<>();
     private final Route[] routes = new Route[ROUTES];
 
-    Rules(AbstractionSpec spec) {
-        this.drop = spec.drop() == null ? List.of() : List.copyOf(spec.drop());
-        this.locations = spec.locations() == null ? Map.of() : Map.copyOf(spec.locations());
+    Rules(Definition definition) {
+        this.drop = definition.drop();
+        this.locations = definition.locations();
         Map<String, List<Rule>> byCommand = new HashMap<>();
-        for (RuleSpec r : spec.rules()) {
+        for (Definition.Rule r : definition.rules()) {
             List<Reply> replies = new ArrayList<>();
-            for (ReplySpec p : r.replies()) {
-                replies.add(new Reply(p.any() != null, p.values() == null ? null : Set.copyOf(p.values()),
-                        p.range() == null ? null : Band.of(p.range()), p.symbol()));
+            for (Definition.Reply p : r.replies()) {
+                replies.add(new Reply(p.any(), p.values() == null ? null : Set.copyOf(p.values()), p.range(),
+                        p.symbol()));
             }
             // An array, not a List: rules have one to a dozen replies, and List.of's two classes (up to two elements,
             // more) made the JIT recompile classify's reply loop whenever the other kind came along.
@@ -150,7 +148,7 @@ final class Rules {
         if (template == null) {
             return new Classification.Unmapped(what(r) + " reply '" + r.reply() + "'");
         }
-        if (template.contains(AbstractionValidator.LOC)) {
+        if (template.contains(Definition.LOC)) {
             String abbreviation = route.location != null ? route.location : locations.get(r.reply().trim());
             if (abbreviation == null) {
                 abbreviation = route.client;
@@ -212,7 +210,7 @@ final class Rules {
                     locations.get(lastSegment(channel.client())));
         }
         String input = rule.input;
-        if (input.contains(AbstractionValidator.LOC)) {
+        if (input.contains(Definition.LOC)) {
             String abbreviation = location(r);
             if (abbreviation == null) {
                 Classification unknown = new Classification.Unmapped(what(r) + " command about unknown location '"
@@ -238,14 +236,14 @@ final class Rules {
         String known = byLocation == null ? null : byLocation.get(abbreviation);
         return known != null ? known
                 : expanded.computeIfAbsent(template, t -> new ConcurrentHashMap<>())
-                .computeIfAbsent(abbreviation, a -> template.replace(AbstractionValidator.LOC, a));
+                .computeIfAbsent(abbreviation, a -> template.replace(Definition.LOC, a));
     }
 
     private static String what(LogRecord r) {
         return (r.protocol().isEmpty() ? "" : r.protocol() + "/") + r.command();
     }
 
-    private static boolean dropped(DropSpec d, LogRecord r) {
+    private static boolean dropped(Drop d, LogRecord r) {
         return (d.kind() == null || d.kind().equalsIgnoreCase(r.kind().name()))
                 && (d.from() == null || glob(d.from(), r.from()))
                 && (d.to() == null || glob(d.to(), r.to()))

@@ -3,6 +3,7 @@ package dev.predmon.bench;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.monitor.PredictiveMonitor;
@@ -70,7 +71,7 @@ final class BatchBench {
         try {
             BenchData.bigLog(file, megabytes * 1_000_000L);
             ModelStore.write(modelDir, LearnedModels.index(learned, abstraction),
-                    LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson());
+                    LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson());
             long size = Files.size(file);
             double[] seconds = new double[repeats];
             long records = 0;

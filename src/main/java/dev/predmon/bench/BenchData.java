@@ -8,10 +8,10 @@ import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
-import dev.predmon.model.ModelStore;
 import dev.predmon.parse.LogParser;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.LogTrace;
@@ -75,7 +75,7 @@ final class BenchData {
             Map<Path, LogTrace> traces = ScenarioLearner.read(specs.stream().flatMap(s -> s.logs().stream()).toList(),
                     abstraction);
             ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
-                    ModelStore.alphabetOf(abstraction), ForecastTraining.limit(abstraction), abstraction.confirm());
+                    MealyAlphabet.inputs(abstraction), ForecastTraining.limit(abstraction), abstraction.confirm());
             return LearnedModels.modelSet(learned, abstraction, forecast);
         } catch (BadInputException e) {
             throw new IOException(e.getMessage(), e);
@@ -98,7 +98,7 @@ final class BenchData {
                 samples.add(sample(text(s, seed), abstraction, s.id() + "-" + seed + ".log"));
             }
             learned.add(ScenarioLearner.learnSamples(new ScenarioSpec(s.id(), s.faulty(), s.description(), List.of()),
-                    samples, ModelStore.alphabetOf(abstraction)));
+                    samples, MealyAlphabet.inputs(abstraction)));
         }
         return learned;
     }

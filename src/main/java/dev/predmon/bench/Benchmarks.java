@@ -1,6 +1,7 @@
 package dev.predmon.bench;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.PredictiveMonitor;
@@ -45,7 +46,7 @@ public final class Benchmarks {
 
     /** Runs {@code kinds} in order, handing each figure's line to {@code out} as soon as it is measured. */
     public static void run(List<Kind> kinds, Options o, Consumer<String> out) throws Exception {
-        Abstraction abstraction = Abstraction.defaults();
+        Abstraction abstraction = AbstractionFiles.defaults();
         ModelSet models = null;
         List<LearnedScenario> learned = null;
         if (kinds.contains(Kind.BATCH) || kinds.contains(Kind.LATENCY) || kinds.contains(Kind.MEMORY)

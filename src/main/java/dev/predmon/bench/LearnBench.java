@@ -5,8 +5,8 @@ import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyTrace;
-import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.simulate.Scenario;
@@ -126,7 +126,7 @@ final class LearnBench {
             learned.add(ScenarioLearner.learn(new ScenarioSpec(s.id(), s.faulty(), s.description(), logs.get(s)),
                     abstraction, traces));
         }
-        return LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction));
+        return LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction));
     }
 
     static Result run(Abstraction abstraction, int runs) {
@@ -150,7 +150,7 @@ final class LearnBench {
         for (int i = 0; i < Scenario.values().length; i++) {
             Scenario s = Scenario.values()[i];
             var learned = ScenarioLearner.learnSamples(new ScenarioSpec(s.id(), s.faulty(), s.description(), List.of()),
-                    samples.get(i), ModelStore.alphabetOf(abstraction));
+                    samples.get(i), MealyAlphabet.inputs(abstraction));
             for (var m : learned.machines()) {
                 states += m.machine().size();
                 machines++;

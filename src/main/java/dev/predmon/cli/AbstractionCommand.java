@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
@@ -35,8 +36,8 @@ final class AbstractionCommand implements Runnable {
         @Override
         public Integer call() {
             PrintWriter out = spec.commandLine().getOut();
-            for (String name : Abstraction.BUILTIN_NAMES) {
-                Abstraction a = Abstraction.builtin(name).orElseThrow();
+            for (String name : AbstractionFiles.BUILTIN_NAMES) {
+                Abstraction a = AbstractionFiles.builtin(name).orElseThrow();
                 out.println(name + "\t" + a.inputAlphabet().size() + " inputs, " + a.outputAlphabet().size()
                         + " outputs, locations " + a.locations().keySet().stream().sorted().toList());
             }
@@ -57,8 +58,8 @@ final class AbstractionCommand implements Runnable {
 
         @Override
         public Integer call() throws BadInputException {
-            String json = Abstraction.builtinJson(name).orElseThrow(() -> new BadInputException(
-                    "'" + name + "': not a built-in abstraction (one of " + String.join(", ", Abstraction.BUILTIN_NAMES) + ")"));
+            String json = AbstractionFiles.builtinJson(name).orElseThrow(() -> new BadInputException(
+                    "'" + name + "': not a built-in abstraction (one of " + String.join(", ", AbstractionFiles.BUILTIN_NAMES) + ")"));
             PrintWriter out = spec.commandLine().getOut();
             out.print(json);
             out.flush();

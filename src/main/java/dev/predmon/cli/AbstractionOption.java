@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.files.OutputFiles;
 import picocli.CommandLine.Option;
 
@@ -37,7 +38,7 @@ final class AbstractionOption {
      */
     Abstraction loadFor(Optional<Path> stored) throws AbstractionException {
         if (value == null && stored.isPresent()) {
-            return Abstraction.load(stored.get());
+            return AbstractionFiles.load(stored.get());
         }
         return load();
     }
@@ -48,16 +49,16 @@ final class AbstractionOption {
      */
     static Abstraction resolve(String value) throws AbstractionException {
         if (value == null) {
-            return Abstraction.defaults();
+            return AbstractionFiles.defaults();
         }
         Path file = Path.of(value);
-        if (Files.exists(file) || Abstraction.builtin(value).isEmpty()) {
+        if (Files.exists(file) || AbstractionFiles.builtin(value).isEmpty()) {
             if (!Files.exists(file)) {
                 throw new AbstractionException(value + ": cannot read: no such file (nor a built-in abstraction: "
-                        + String.join(", ", Abstraction.BUILTIN_NAMES) + ")");
+                        + String.join(", ", AbstractionFiles.BUILTIN_NAMES) + ")");
             }
-            return Abstraction.load(file);
+            return AbstractionFiles.load(file);
         }
-        return Abstraction.builtin(value).orElseThrow();
+        return AbstractionFiles.builtin(value).orElseThrow();
     }
 }

@@ -46,7 +46,7 @@ final class ClassifyCommand implements Callable<Integer> {
                 List<Score> scores = r.scores().stream().map(s -> new Score(s.model().id(), s.model().scenario(),
                         s.model().faulty(), s.deleted(), s.discrepancies(),
                         s.failure() == null ? null : s.failure().describe())).toList();
-                results.add(new Result(run.source(), run.length() / 2, scores,
+                results.add(new Result(run.source(), run.pairs(), scores,
                         r.best().map(s -> s.model().id()).orElse(null),
                         r.best().map(s -> s.model().scenario()).orElse(null), r.faulty()));
             } else {
@@ -61,7 +61,7 @@ final class ClassifyCommand implements Callable<Integer> {
     }
 
     private void print(PrintWriter out, Classifier.Result r, MealyTrace run) {
-        out.println(Terminal.line(run.source()) + ": " + run.length() / 2 + " compacted pairs");
+        out.println(Terminal.line(run.source()) + ": " + run.pairs() + " compacted pairs");
         for (Classifier.Score s : r.scores()) {
             out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
                     s.deleted() ? "deleted: " + s.failure().describe()

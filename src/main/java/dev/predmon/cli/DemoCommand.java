@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.files.AtomicFiles;
 import dev.predmon.learn.Learning;
 import dev.predmon.live.Board;
@@ -94,10 +95,10 @@ final class DemoCommand implements Callable<Integer> {
         if (!Files.isRegularFile(models.resolve(ModelStore.INDEX))) {
             out.println("no models in " + models + ": learning them from " + logs);
             out.flush();
-            Learning.learnAndWrite(logs, models, Abstraction.defaults(), l -> { });
+            Learning.learnAndWrite(logs, models, AbstractionFiles.defaults(), l -> { });
         }
         Optional<Path> stored = ModelStore.storedAbstraction(models);
-        Abstraction abstraction = stored.isPresent() ? Abstraction.load(stored.get()) : Abstraction.defaults();
+        Abstraction abstraction = stored.isPresent() ? AbstractionFiles.load(stored.get()) : AbstractionFiles.defaults();
         ModelSet set = ModelStore.read(models, abstraction);
         out.println("predmon demo: " + set.models().size() + " learned machines in " + models + " ("
                 + String.join(", ", set.index().scenarios().stream()

@@ -63,9 +63,9 @@ final class VerifyCommand implements Callable<Integer> {
                         describe(v)));
             }
             all &= matched;
-            results.add(new Result(mealy.source(), scenario, mealy.length() / 2, mealy.length(), machines, matched));
+            results.add(new Result(mealy.source(), scenario, mealy.pairs(), mealy.length(), machines, matched));
             if (!input.json) {
-                out.println(Terminal.line(mealy.source()) + ": " + mealy.length() / 2 + " compacted pairs, " + mealy.length()
+                out.println(Terminal.line(mealy.source()) + ": " + mealy.pairs() + " compacted pairs, " + mealy.length()
                         + " Mealy steps");
                 machines.forEach(m -> out.println("  " + m.model() + ": " + m.reason()));
                 if (runs.size() > 1) {

@@ -9,11 +9,11 @@ import dev.predmon.learn.Learning;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
-import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import net.automatalib.alphabet.Alphabet;
@@ -58,7 +58,7 @@ public final class Evaluator {
         this.abstraction = abstraction;
         this.threshold = threshold;
         this.progress = progress;
-        this.alphabet = ModelStore.alphabetOf(abstraction);
+        this.alphabet = MealyAlphabet.inputs(abstraction);
     }
 
     /** Judges by {@code rule} instead of the models' default ({@link PredictiveMonitor#defaultRule}). */

@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
+import dev.predmon.mealy.MealyMapping;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.ModelTracker;
@@ -100,11 +101,12 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                         : "matches the whole run with " + t.discrepancies() + " discrepancy(ies), first: "
                         + t.firstDiscrepancy().describe()));
             } else {
-                int pair = f.step() / 2;
-                // Step 2k is the command (input/OK); step 2k+1 is Delta/reply: name the real symbols.
-                String input = f.step() % 2 == 0 ? f.input() : steps.get(pair).input();
+                int pair = MealyMapping.pairOfStep(f.step());
+                // A pair's command step is input/OK, its reply step Delta/reply: name the real symbols.
+                boolean command = MealyMapping.isCommandStep(f.step());
+                String input = command ? f.input() : steps.get(pair).input();
                 String reason = f.expected() == null
-                        ? (f.step() % 2 == 0 ? "no transition for command " + input
+                        ? (command ? "no transition for command " + input
                         : "no transition for the reply to " + input)
                         : "after command " + input + " expected reply " + f.expected() + " but saw " + f.seen();
                 fates.add(new ModelFate(m.id(), m.scenario(), m.faulty(), false, pair, input, f.expected(), f.seen(),

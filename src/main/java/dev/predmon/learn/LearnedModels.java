@@ -3,6 +3,7 @@ package dev.predmon.learn;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelIndex;
@@ -42,7 +43,7 @@ public final class LearnedModels {
             ModelIndex.AbstractionInfo info = new ModelIndex.AbstractionInfo(abstraction.name(),
                     abstraction.fingerprint(), new ObjectMapper().readTree(abstraction.canonicalJson()),
                     abstraction.learnedHysteresis());
-            return new ModelIndex(ModelIndex.FORMAT, info, List.copyOf(ModelStore.alphabetOf(abstraction)),
+            return new ModelIndex(ModelIndex.FORMAT, info, List.copyOf(MealyAlphabet.inputs(abstraction)),
                     List.copyOf(entries));
         } catch (JsonProcessingException e) {
             throw new IllegalStateException("the abstraction's canonical JSON does not parse", e);
@@ -74,7 +75,7 @@ public final class LearnedModels {
 
     /** The learned machines and their forecast as a model set in memory, as {@code watch} would load them. */
     public static ModelSet modelSet(List<LearnedScenario> scenarios, Abstraction abstraction, ForecastModel forecast) {
-        Alphabet<String> alphabet = ModelStore.alphabetOf(abstraction);
+        Alphabet<String> alphabet = MealyAlphabet.inputs(abstraction);
         List<LearnedModel> models = new ArrayList<>();
         for (LearnedScenario s : scenarios) {
             for (LearnedScenario.Machine m : s.machines()) {

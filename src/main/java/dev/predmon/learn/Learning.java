@@ -3,6 +3,7 @@ package dev.predmon.learn;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.model.ModelStore;
 
 import java.io.IOException;
@@ -62,9 +63,9 @@ public final class Learning {
             learned.add(l);
         }
         ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
-                ModelStore.alphabetOf(abstraction), ForecastTraining.limit(tuned), tuned.confirm());
+                MealyAlphabet.inputs(abstraction), ForecastTraining.limit(tuned), tuned.confirm());
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
-                LearnedModels.dots(learned, ModelStore.alphabetOf(abstraction)), abstraction.canonicalJson(), forecast, step);
+                LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(), forecast, step);
         return new Result(List.copyOf(learned), notes, forecast);
     }
 

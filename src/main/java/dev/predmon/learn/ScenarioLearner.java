@@ -2,6 +2,7 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.LogTrace;
@@ -68,7 +69,7 @@ public final class ScenarioLearner {
             throw new BadInputException(spec.logs().get(0).getParent() + ": no log of scenario '" + spec.name()
                     + "' holds a skill-component interface message; nothing to learn");
         }
-        LearnedScenario learned = learnSamples(spec, samples, ModelStore.alphabetOf(abstraction));
+        LearnedScenario learned = learnSamples(spec, samples, MealyAlphabet.inputs(abstraction));
         return new LearnedScenario(spec, learned.machines(), learned.splits(), List.copyOf(skipped),
                 List.copyOf(problems), java.util.Collections.unmodifiableMap(unmapped));
     }

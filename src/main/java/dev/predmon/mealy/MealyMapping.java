@@ -41,6 +41,25 @@ public final class MealyMapping {
         return next;
     }
 
+    /**
+     * Feeds the pair {@code (input, output)} to {@code steps} as its two Mealy steps, {@code input/OK} then
+     * {@code Delta/output}; returns what the second step answered.
+     */
+    public static <R> R feedPair(MealySteps<R> steps, String input, String output) {
+        steps.step(input, OK);
+        return steps.step(DELTA, output);
+    }
+
+    /** The index of the pair whose command or reply is Mealy step {@code step} (0-based; two steps per pair). */
+    public static int pairOfStep(int step) {
+        return step / 2;
+    }
+
+    /** Whether Mealy step {@code step} is a pair's command ({@code input/OK}) rather than its reply ({@code Delta/output}). */
+    public static boolean isCommandStep(int step) {
+        return step % 2 == 0;
+    }
+
     /** Maps a compacted trace to its Mealy sample. */
     public static MealyTrace toTrace(List<IoPair> pairs, String source) {
         WordBuilder<String> in = new WordBuilder<>(pairs.size() * 2);

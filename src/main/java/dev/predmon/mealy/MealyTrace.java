@@ -22,4 +22,9 @@ public record MealyTrace(Word<String> inputs, Word<String> outputs, String sourc
     public int length() {
         return inputs.length();
     }
+
+    /** Number of I/O pairs the trace encodes. */
+    public int pairs() {
+        return inputs.length() / 2;
+    }
 }

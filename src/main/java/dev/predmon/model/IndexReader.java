@@ -4,7 +4,7 @@ import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.BadInputException;
-import dev.predmon.abstraction.LocatedJson;
+import dev.predmon.abstraction.file.LocatedJson;
 
 import java.io.FileNotFoundException;
 import java.io.IOException;

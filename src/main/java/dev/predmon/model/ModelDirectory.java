@@ -2,9 +2,9 @@ package dev.predmon.model;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.BadInputException;
-import dev.predmon.forecast.ForecastFile;
-import dev.predmon.abstraction.LocatedJson;
+import dev.predmon.abstraction.file.LocatedJson;
 import dev.predmon.files.OutputFiles;
+import dev.predmon.forecast.ForecastFile;
 
 import java.io.IOException;
 import java.nio.file.FileAlreadyExistsException;

@@ -4,7 +4,7 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.ForecastModel;
-import dev.predmon.mealy.MealyMapping;
+import dev.predmon.mealy.MealyAlphabet;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.CompactTransition;
 import net.automatalib.automaton.transducer.CompactMealy;
@@ -43,9 +43,8 @@ final class ModelReader {
 
     private ModelReader(Path indexFile, Abstraction abstraction) {
         this.indexFile = indexFile;
-        this.alphabet = ModelStore.alphabetOf(abstraction);
-        this.outputs = new HashSet<>(abstraction.outputAlphabet());
-        outputs.add(MealyMapping.OK);
+        this.alphabet = MealyAlphabet.inputs(abstraction);
+        this.outputs = MealyAlphabet.outputs(abstraction);
     }
 
     /** Reads the model directory {@code base} ({@code dir} as the user named it) against {@code abstraction}. */

@@ -8,9 +8,7 @@ import dev.predmon.files.AtomicFiles;
 import dev.predmon.files.OutputFiles;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.ForecastModel;
-import dev.predmon.mealy.MealyMapping;
 import net.automatalib.alphabet.Alphabet;
-import net.automatalib.alphabet.Alphabets;
 import net.automatalib.automaton.transducer.CompactMealy;
 import net.automatalib.serialization.dot.GraphDOT;
 
@@ -22,7 +20,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -61,14 +58,6 @@ public final class ModelStore {
     }
 
     private ModelStore() {
-    }
-
-    /** The Mealy input alphabet for an abstraction: its Mealy inputs plus {@code Delta}, sorted. */
-    public static Alphabet<String> alphabetOf(Abstraction abstraction) {
-        List<String> symbols = new ArrayList<>(abstraction.mealyInputAlphabet());
-        symbols.add(MealyMapping.DELTA);
-        symbols.sort(Comparator.naturalOrder());
-        return Alphabets.fromList(symbols);
     }
 
     /** The DOT text of a machine, as written to disk (deterministic for a given machine). */

@@ -1,5 +1,7 @@
 package dev.predmon.monitor;
 
+import dev.predmon.mealy.MealyMapping;
+import dev.predmon.mealy.MealySteps;
 import dev.predmon.model.LearnedModel;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -12,7 +14,7 @@ import net.automatalib.automaton.transducer.CompactMealy;
  * (Section 5.1.1) stay apart: an output that differs is a <em>discrepancy</em> (the walk goes on, following
  * the input); an input the model has no transition for ends the walk (the thesis's "Key exception").
  */
-public final class ModelTracker {
+public final class ModelTracker implements MealySteps<ModelTracker.Outcome> {
 
     /** What one step did. */
     public enum Outcome { MATCH, DISCREPANCY, UNDEFINED }
@@ -60,6 +62,7 @@ public final class ModelTracker {
     }
 
     /** Feeds one Mealy step; a model already eliminated stays so and answers {@link Outcome#UNDEFINED}. */
+    @Override
     public Outcome step(String input, String observed) {
         if (elimination != null) {
             return Outcome.UNDEFINED;
@@ -92,8 +95,7 @@ public final class ModelTracker {
      * I/O-automaton-to-Mealy mapping); returns whether the model is still alive.
      */
     public boolean pair(String input, String output) {
-        step(input, dev.predmon.mealy.MealyMapping.OK);
-        step(dev.predmon.mealy.MealyMapping.DELTA, output);
+        MealyMapping.feedPair(this, input, output);
         return alive();
     }
 

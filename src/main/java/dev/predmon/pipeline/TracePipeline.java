@@ -3,6 +3,7 @@ package dev.predmon.pipeline;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.Compactor;
+import dev.predmon.mealy.CarryEncoder;
 import dev.predmon.parse.LogRecord;
 
 import java.util.Collections;

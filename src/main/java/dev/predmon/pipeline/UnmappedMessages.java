@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 
@@ -161,11 +162,11 @@ public final class UnmappedMessages {
         long total = unmapped.values().stream().mapToLong(Long::longValue).sum();
         String best = null;
         long bestCovered = 0;
-        for (String name : Abstraction.BUILTIN_NAMES) {
+        for (String name : AbstractionFiles.BUILTIN_NAMES) {
             if (name.equals(current.name())) {
                 continue;
             }
-            Abstraction other = Abstraction.builtin(name).orElseThrow();
+            Abstraction other = AbstractionFiles.builtin(name).orElseThrow();
             long covered = 0;
             for (Map.Entry<String, Long> e : unmapped.entrySet()) {
                 if (!(other.classify(example(e.getKey())) instanceof Classification.Unmapped)) {

@@ -1,5 +1,6 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 import org.junit.jupiter.api.Test;
@@ -16,19 +17,19 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The default abstraction against the thesis's Tables 4.1/4.2 and the Section 5.2 bands. */
-class AbstractionTest {
+public class AbstractionTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
-    static LogRecord command(String from, String to, String protocol, String command, String arguments) {
+    public static LogRecord command(String from, String to, String protocol, String command, String arguments) {
         return new LogRecord(1, 0.0, "DEBUG", RecordKind.COMMAND, from, to, protocol, command, arguments, "");
     }
 
-    static LogRecord reply(String from, String to, String protocol, String command, String arguments, String reply) {
+    public static LogRecord reply(String from, String to, String protocol, String command, String arguments, String reply) {
         return new LogRecord(1, 0.0, "DEBUG", RecordKind.REPLY, from, to, protocol, command, arguments, reply);
     }
 
-    static AbstractEvent mapped(Abstraction a, LogRecord r) {
+    public static AbstractEvent mapped(Abstraction a, LogRecord r) {
         Classification c = a.classify(r);
         return assertInstanceOf(Classification.Mapped.class, c, () -> r + " -> " + c).event();
     }
@@ -192,7 +193,7 @@ class AbstractionTest {
         assertEquals("thesis-tables-4.1-4.2-bands-5.2", A.name());
         assertTrue(A.fingerprint().matches("[0-9a-f]{64}"));
         // Same content in another key order and layout: same canonical form and fingerprint.
-        Abstraction again = Abstraction.fromJson("again.json", A.canonicalJson());
+        Abstraction again = AbstractionFiles.fromJson("again.json", A.canonicalJson());
         assertEquals(A.canonicalJson(), again.canonicalJson());
         assertEquals(A.fingerprint(), again.fingerprint());
         String reordered = """
@@ -201,8 +202,8 @@ class AbstractionTest {
         String ordered = """
                 {"name": "n", "rules": [{"protocol": "P", "command": "x", "input": "x_i",
                  "replies": [{"any": true, "symbol": "o_x"}]}]}""";
-        assertEquals(Abstraction.fromJson("a", reordered).fingerprint(), Abstraction.fromJson("b", ordered).fingerprint());
-        assertNotEquals(A.fingerprint(), Abstraction.fromJson("b", ordered).fingerprint());
+        assertEquals(AbstractionFiles.fromJson("a", reordered).fingerprint(), AbstractionFiles.fromJson("b", ordered).fingerprint());
+        assertNotEquals(A.fingerprint(), AbstractionFiles.fromJson("b", ordered).fingerprint());
         assertTrue(A.canonicalJson().indexOf("\"drop\"") < A.canonicalJson().indexOf("\"name\""));
     }
 }

@@ -1,5 +1,6 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 import org.junit.jupiter.api.Test;
@@ -27,6 +28,6 @@ class DropGlobTest {
     void olderFormatBtTrafficIsDroppedNotUnmapped() {
         LogRecord r = new LogRecord(1, 1.0, "DEBUG", RecordKind.COMMAND, "/GoToDestination/BT_rpc/client",
                 "/GoToDestination/BT_rpc/server", "", "request_ack", "", "");
-        assertInstanceOf(Classification.Dropped.class, Abstraction.defaults().classify(r));
+        assertInstanceOf(Classification.Dropped.class, AbstractionFiles.defaults().classify(r));
     }
 }

@@ -1,5 +1,6 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.LogRecord;
 import org.junit.jupiter.api.Test;
 
@@ -50,9 +51,9 @@ class RouteTableTest {
 
     @Test
     void everyRecordClassifiedAsAlone() {
-        Abstraction shared = Abstraction.defaults();
+        Abstraction shared = AbstractionFiles.defaults();
         for (LogRecord r : records(new Random(5), 20_000)) {
-            assertEquals(describe(Abstraction.defaults().classify(r)), describe(shared.classify(r)), r.toString());
+            assertEquals(describe(AbstractionFiles.defaults().classify(r)), describe(shared.classify(r)), r.toString());
         }
     }
 

@@ -1,5 +1,6 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.abstraction.file.AbstractionFiles;
 import org.junit.jupiter.api.Test;
 
 import static dev.predmon.abstraction.AbstractionTest.command;
@@ -16,7 +17,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class ScopeFetchAbstractionTest {
 
-    private static final Abstraction S = Abstraction.builtin("scope-fetch").orElseThrow();
+    private static final Abstraction S = AbstractionFiles.builtin("scope-fetch").orElseThrow();
 
     @Test
     void hasGraspedIsTwoMessagesToldApartByTheClient() {
@@ -49,7 +50,7 @@ class ScopeFetchAbstractionTest {
         assertEquals("o_level_medium_one", mapped(S, reply("/BatteryComponent", level, "BatteryReader", "level", "", "20.0")).symbol());
         assertEquals("o_level_low", mapped(S, reply("/BatteryComponent", level, "BatteryReader", "level", "", "19.99")).symbol());
         assertEquals(1, S.confirm());
-        assertEquals(0, Abstraction.defaults().confirm());
+        assertEquals(0, AbstractionFiles.defaults().confirm());
         assertEquals(RunRule.DEFAULT, S.runs());
     }
 
@@ -64,22 +65,22 @@ class ScopeFetchAbstractionTest {
     void aClientRuleShadowedByAnEarlierOneIsRejected() throws Exception {
         String specific = String.format(HAS_GRASPED, "\"client\": \"*IsFetched*\",", "a_i", "a");
         String any = String.format(HAS_GRASPED, "", "b_i", "b");
-        Abstraction.fromJson("ok.json", with(specific + "," + any)); // specific first, then the rest: fine
+        AbstractionFiles.fromJson("ok.json", with(specific + "," + any)); // specific first, then the rest: fine
         AbstractionException e = assertThrows(AbstractionException.class,
-                () -> Abstraction.fromJson("bad.json", with(any + "," + specific)));
+                () -> AbstractionFiles.fromJson("bad.json", with(any + "," + specific)));
         assertTrue(e.getMessage().contains("would never be used"), e.getMessage());
         AbstractionException twice = assertThrows(AbstractionException.class,
-                () -> Abstraction.fromJson("bad.json", with(specific + "," + specific.replace("a_i", "c_i").replace("o_a", "o_c"))));
+                () -> AbstractionFiles.fromJson("bad.json", with(specific + "," + specific.replace("a_i", "c_i").replace("o_a", "o_c"))));
         assertTrue(twice.getMessage().contains("from client *IsFetched*"), twice.getMessage());
     }
 
     @Test
     void warningAndRunsAreValidated() {
         String rule = String.format(HAS_GRASPED, "", "a_i", "a");
-        AbstractionException confirm = assertThrows(AbstractionException.class, () -> Abstraction.fromJson("w.json",
+        AbstractionException confirm = assertThrows(AbstractionException.class, () -> AbstractionFiles.fromJson("w.json",
                 "{\"name\": \"x\", \"rules\": [" + rule + "], \"warning\": {\"confirm\": -1}}"));
         assertTrue(confirm.getMessage().contains("warning.confirm: confirm must be at least 0"), confirm.getMessage());
-        AbstractionException silence = assertThrows(AbstractionException.class, () -> Abstraction.fromJson("r.json",
+        AbstractionException silence = assertThrows(AbstractionException.class, () -> AbstractionFiles.fromJson("r.json",
                 "{\"name\": \"x\", \"rules\": [" + rule + "], \"runs\": {\"silence\": -5}}"));
         assertTrue(silence.getMessage().contains("runs.silence: silence must be"), silence.getMessage());
     }

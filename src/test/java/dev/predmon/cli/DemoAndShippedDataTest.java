@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.abstraction.file.AbstractionFiles;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -52,7 +53,7 @@ class DemoAndShippedDataTest {
         String sha = java.util.HexFormat.of().formatHex(java.security.MessageDigest.getInstance("SHA-256")
                 .digest(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
         assertTrue(Files.readString(MODELS.resolve("index.json")).contains("\"fingerprint\" : \"" + sha + "\""));
-        assertEquals(sha, dev.predmon.abstraction.Abstraction.load(MODELS.resolve("abstraction.json")).fingerprint());
+        assertEquals(sha, AbstractionFiles.load(MODELS.resolve("abstraction.json")).fingerprint());
     }
 
     private static List<String> dots(Path dir) throws IOException {

@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.live.Board;
 import dev.predmon.live.HttpAddress;
 import dev.predmon.live.LiveServer;
@@ -33,7 +34,7 @@ final class LiveScene implements AutoCloseable {
     final LiveServer server;
 
     LiveScene(Path modelsDir, Duration staleAfter, RobotNames names, List<String> watching) throws Exception {
-        abstraction = Abstraction.load(ModelStore.storedAbstraction(modelsDir).orElseThrow());
+        abstraction = AbstractionFiles.load(ModelStore.storedAbstraction(modelsDir).orElseThrow());
         models = ModelStore.read(modelsDir, abstraction);
         board = new Board(models, abstraction, staleAfter, names);
         board.watching(watching);

@@ -2,7 +2,7 @@ package dev.predmon.cli;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
@@ -39,7 +39,7 @@ class RecordingsCliTest {
         // What 'show' prints is a valid abstraction file: a user starts from it.
         Path file = dir.resolve("mine.json");
         Files.writeString(file, show.out());
-        assertEquals(Abstraction.builtin("scope-fetch").orElseThrow().fingerprint(), Abstraction.load(file).fingerprint());
+        assertEquals(AbstractionFiles.builtin("scope-fetch").orElseThrow().fingerprint(), AbstractionFiles.load(file).fingerprint());
         Cli bad = Cli.run("abstraction", "show", "nope");
         assertEquals(ExitCodes.BAD_INPUT, bad.code());
         assertTrue(bad.err().contains("'nope': not a built-in abstraction (one of thesis, scope-fetch)"), bad.err());

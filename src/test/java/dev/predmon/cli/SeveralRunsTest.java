@@ -3,6 +3,7 @@ package dev.predmon.cli;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
@@ -124,7 +125,7 @@ class SeveralRunsTest {
             assertEquals(r.get("log").asText().endsWith("#1"), faulty, r.toString());
             assertEquals(faulty ? "warned-before-violation" : "quiet", r.get("verdict").asText(), r.toString());
         }
-        Abstraction a = Abstraction.defaults();
+        Abstraction a = AbstractionFiles.defaults();
         LearnedScenario l = ScenarioLearner.learn(new ScenarioSpec("day", false, "",
                 List.of(folder.resolve("a.log"), folder.resolve("b.log"))), a);
         assertEquals(4, l.machines().stream().mapToInt(m -> m.samples().size()).sum(), "one sample per run");

@@ -2,7 +2,7 @@ package dev.predmon.evaluate;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioSpec;
 import dev.predmon.support.SimulatedSets;
@@ -34,8 +34,8 @@ class EvaluatorTest {
 
     @BeforeAll
     static void evaluate() throws Exception {
-        specs = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("logs"), 3, 1), Abstraction.defaults());
-        folds = new Evaluator(Abstraction.defaults(), 0, Progress.NONE).crossValidate(specs, 3);
+        specs = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("logs"), 3, 1), AbstractionFiles.defaults());
+        folds = new Evaluator(AbstractionFiles.defaults(), 0, Progress.NONE).crossValidate(specs, 3);
     }
 
     @Test
@@ -99,8 +99,8 @@ class EvaluatorTest {
 
     @Test
     void testSetModeJudgesEveryTestLog() throws Exception {
-        List<ScenarioSpec> test = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("test"), 2, 500), Abstraction.defaults());
-        Evaluation e = new Evaluator(Abstraction.defaults(), 0, Progress.NONE).trainTest(specs, test);
+        List<ScenarioSpec> test = ScenarioLayout.scan(SimulatedSets.write(dir.resolve("test"), 2, 500), AbstractionFiles.defaults());
+        Evaluation e = new Evaluator(AbstractionFiles.defaults(), 0, Progress.NONE).trainTest(specs, test);
         assertEquals(6, e.runs().size());
         assertTrue(e.runs().stream().allMatch(r -> r.fold() == -1));
         assertEquals("test-set", e.mode());

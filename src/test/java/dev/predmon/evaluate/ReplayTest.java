@@ -1,11 +1,12 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.model.ModelSet;
-import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.support.HandRuns;
@@ -28,7 +29,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class ReplayTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     @TempDir
     Path dir;
@@ -39,7 +40,7 @@ class ReplayTest {
         Path recharge = Files.writeString(dir.resolve("recharge.log"), HandRuns.recharge().text());
         ScenarioSpec spec = new ScenarioSpec("recharge", false, "", List.of(recharge));
         models = LearnedModels.modelSet(List.of(ScenarioLearner.learnSamples(spec,
-                List.of(Traces.read(recharge, A).mealy()), ModelStore.alphabetOf(A))), A);
+                List.of(Traces.read(recharge, A).mealy()), MealyAlphabet.inputs(A))), A);
     }
 
     private RunResult replay(String name, Records r) throws Exception {

@@ -1,13 +1,14 @@
 package dev.predmon.explain;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
-import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.support.HandRuns;
 import org.junit.jupiter.api.Test;
@@ -30,7 +31,7 @@ class ExplanationTest {
 
     @Test
     void namesTheModelAndTheExpectedAndSeenSymbols() throws Exception {
-        Abstraction a = Abstraction.defaults();
+        Abstraction a = AbstractionFiles.defaults();
         Path recharge = dir.resolve("recharge.log");
         Path depleted = dir.resolve("depleted.log");
         Files.writeString(recharge, HandRuns.recharge().text());
@@ -60,6 +61,6 @@ class ExplanationTest {
     private static LearnedScenario learn(String name, boolean faulty, Path log, Abstraction a) throws Exception {
         ScenarioSpec spec = new ScenarioSpec(name, faulty, "", List.of(log));
         MealyTrace t = Traces.read(log, a).mealy();
-        return ScenarioLearner.learnSamples(spec, List.of(t), ModelStore.alphabetOf(a));
+        return ScenarioLearner.learnSamples(spec, List.of(t), MealyAlphabet.inputs(a));
     }
 }

@@ -2,6 +2,7 @@ package dev.predmon.live;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
@@ -25,7 +26,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /** A tile shows what an operator beside the robot needs, per run, in bounded memory. */
 class TileTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
     private static ModelSet models;
     private final AtomicLong now = new AtomicLong(1_000_000);
 

@@ -1,6 +1,7 @@
 package dev.predmon.model;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.Learning;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -43,7 +44,7 @@ class KilledLearnTest {
 
     /** Logs of three runs per scenario (a learn of about a second), the models they give, and different previous ones. */
     private void prepare(Path models) throws Exception {
-        Abstraction abstraction = Abstraction.defaults();
+        Abstraction abstraction = AbstractionFiles.defaults();
         logs = tmp.resolve("logs");
         try (Stream<Path> scenarios = Files.list(SAMPLE_LOGS)) {
             for (Path scenario : scenarios.filter(Files::isDirectory).toList()) {
@@ -96,7 +97,7 @@ class KilledLearnTest {
     @Test
     @Timeout(120)
     void aLearnKilledJustBeforeEachStepLeavesPreviousOrNewModelsAndTheNextLearnCleansUp() throws Exception {
-        Abstraction abstraction = Abstraction.defaults();
+        Abstraction abstraction = AbstractionFiles.defaults();
         Path models = tmp.resolve("workspace/models");
         prepare(models);
         Map<String, String> user = userFilesBeside(models);
@@ -127,7 +128,7 @@ class KilledLearnTest {
     @Test
     @Timeout(120)
     void aLearnKilledAtAnyMomentLeavesPreviousOrNewModels() throws Exception {
-        Abstraction abstraction = Abstraction.defaults();
+        Abstraction abstraction = AbstractionFiles.defaults();
         Path models = tmp.resolve("models");
         prepare(models);
 

@@ -2,10 +2,12 @@ package dev.predmon.model;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.pipeline.Traces;
@@ -26,7 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 class ModelStoreTest {
 
-    private static final Abstraction ABSTRACTION = Abstraction.defaults();
+    private static final Abstraction ABSTRACTION = AbstractionFiles.defaults();
 
     @TempDir
     Path tmp;
@@ -36,12 +38,12 @@ class ModelStoreTest {
                 .isAt("kitchen", false).goTo("kitchen").status("kitchen", 1).level(60).isAt("kitchen", true)
                 .halt("kitchen").list(), ABSTRACTION), "direct-1.log");
         ScenarioSpec spec = new ScenarioSpec("direct", false, "reaches the kitchen", List.of(Path.of("direct-1.log")));
-        return List.of(ScenarioLearner.learnSamples(spec, List.of(run), ModelStore.alphabetOf(ABSTRACTION)));
+        return List.of(ScenarioLearner.learnSamples(spec, List.of(run), MealyAlphabet.inputs(ABSTRACTION)));
     }
 
     private void writeModels(Path dir) throws IOException, BadInputException {
         List<LearnedScenario> l = learned();
-        ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), LearnedModels.dots(l, ModelStore.alphabetOf(ABSTRACTION)),
+        ModelStore.write(dir, LearnedModels.index(l, ABSTRACTION), LearnedModels.dots(l, MealyAlphabet.inputs(ABSTRACTION)),
                 ABSTRACTION.canonicalJson());
     }
 
@@ -178,7 +180,7 @@ class ModelStoreTest {
         writeModels(dir);
         String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes())
                 .replace("\"charging_station\"", "\"dock\"");
-        Abstraction other = Abstraction.fromJson("other.json", json);
+        Abstraction other = AbstractionFiles.fromJson("other.json", json);
         BadInputException e = assertThrows(BadInputException.class, () -> ModelStore.read(dir, other));
         assertTrue(e.getMessage().contains("abstraction"), e.getMessage());
     }

@@ -1,6 +1,7 @@
 package dev.predmon.model;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.Learning;
 
 import java.nio.file.Path;
@@ -19,7 +20,7 @@ final class PausedLearn {
         Path logs = Path.of(args[0]);
         Path models = Path.of(args[1]);
         String pauseBefore = args[2];
-        Abstraction abstraction = Abstraction.defaults();
+        Abstraction abstraction = AbstractionFiles.defaults();
         Learning.learnAndWrite(logs, models, abstraction, l -> { }, step -> {
             if (step.equals(pauseBefore)) {
                 System.out.println("paused before " + step);

@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.parse.LogRecord;
 import org.junit.jupiter.api.Test;
@@ -38,7 +39,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
  */
 class FleetFollowTest {
 
-    private static final Abstraction ABSTRACTION = Abstraction.defaults();
+    private static final Abstraction ABSTRACTION = AbstractionFiles.defaults();
     private static final long HOUR = TimeUnit.HOURS.toNanos(1);
     private static final long PAUSE = TimeUnit.MILLISECONDS.toNanos(5);
 

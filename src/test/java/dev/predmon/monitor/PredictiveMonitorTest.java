@@ -1,14 +1,15 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
-import dev.predmon.model.ModelStore;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.support.HandRuns;
@@ -29,7 +30,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class PredictiveMonitorTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     static Records recharge() {
         return HandRuns.recharge();
@@ -46,9 +47,9 @@ class PredictiveMonitorTest {
     static ModelSet models() {
         List<LearnedScenario> l = new ArrayList<>();
         l.add(ScenarioLearner.learnSamples(new ScenarioSpec("recharge", false, "", List.of(Path.of("r.log"))),
-                List.of(trace(recharge(), "r.log")), ModelStore.alphabetOf(A)));
+                List.of(trace(recharge(), "r.log")), MealyAlphabet.inputs(A)));
         l.add(ScenarioLearner.learnSamples(new ScenarioSpec("depleted", true, "", List.of(Path.of("d.log"))),
-                List.of(trace(depleted(), "d.log")), ModelStore.alphabetOf(A)));
+                List.of(trace(depleted(), "d.log")), MealyAlphabet.inputs(A)));
         return LearnedModels.modelSet(l, A);
     }
 
@@ -116,12 +117,12 @@ class PredictiveMonitorTest {
     @Test
     void coarseBandsOfSection42GiveNoLeadFigure56() throws Exception {
         String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes());
-        Abstraction coarse = Abstraction.fromJson("coarse.json", coarsen(json));
+        Abstraction coarse = AbstractionFiles.fromJson("coarse.json", coarsen(json));
         List<LearnedScenario> l = new ArrayList<>();
         l.add(ScenarioLearner.learnSamples(new ScenarioSpec("recharge", false, "", List.of()),
-                List.of(MealyMapping.toTrace(Traces.compact(recharge().list(), coarse), "r")), ModelStore.alphabetOf(coarse)));
+                List.of(MealyMapping.toTrace(Traces.compact(recharge().list(), coarse), "r")), MealyAlphabet.inputs(coarse)));
         l.add(ScenarioLearner.learnSamples(new ScenarioSpec("depleted", true, "", List.of()),
-                List.of(MealyMapping.toTrace(Traces.compact(depleted().list(), coarse), "d")), ModelStore.alphabetOf(coarse)));
+                List.of(MealyMapping.toTrace(Traces.compact(depleted().list(), coarse), "d")), MealyAlphabet.inputs(coarse)));
         List<MonitorEvent> events = new ArrayList<>();
         PredictiveMonitor m = new PredictiveMonitor(LearnedModels.modelSet(l, coarse), coarse, 0, events::add);
         depleted().list().forEach(m::accept);

@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
@@ -13,9 +14,9 @@ import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -37,7 +38,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class WatchSoakTest {
 
     private static final int ROTATIONS = 100;
-    private static final Abstraction ABSTRACTION = Abstraction.defaults();
+    private static final Abstraction ABSTRACTION = AbstractionFiles.defaults();
 
     @TempDir
     Path dir;

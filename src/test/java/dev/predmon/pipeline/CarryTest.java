@@ -2,8 +2,9 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.compact.IoPair;
-import dev.predmon.model.ModelStore;
+import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.Test;
 
@@ -16,7 +17,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /** A carried query's Mealy input names its previous answer, identically for learn and watch (one pipeline). */
 class CarryTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     @Test
     void levelQueriesCarryTheirPreviousBandOtherQueriesDoNot() {
@@ -38,7 +39,7 @@ class CarryTest {
 
     @Test
     void everyCarriedInputIsInTheModelAlphabet() {
-        List<String> alphabet = List.copyOf(ModelStore.alphabetOf(A));
+        List<String> alphabet = List.copyOf(MealyAlphabet.inputs(A));
         for (String band : A.outputAlphabet().stream().filter(s -> s.startsWith("o_level_")).toList()) {
             assertTrue(alphabet.contains("level_i_after_" + band), band);
         }
@@ -51,7 +52,7 @@ class CarryTest {
         String json = """
                 {"name": "x", "rules": [{"protocol": "P", "command": "c", "input": "c_i", "carry": false,
                   "replies": [{"equals": ["1"], "symbol": "o_one"}]}]}""";
-        AbstractionException e = assertThrows(AbstractionException.class, () -> Abstraction.fromJson("x.json", json));
+        AbstractionException e = assertThrows(AbstractionException.class, () -> AbstractionFiles.fromJson("x.json", json));
         assertTrue(e.getMessage().contains("carry"), e.getMessage());
     }
 }

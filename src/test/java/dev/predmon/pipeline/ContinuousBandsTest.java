@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.compact.IoPair;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.Test;
@@ -18,7 +19,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class ContinuousBandsTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     private static List<String> levels(List<IoPair> pairs) {
         return pairs.stream().filter(p -> p.input().startsWith("level_i")).map(IoPair::output).toList();
@@ -61,7 +62,7 @@ class ContinuousBandsTest {
         String json = """
                 {"name": "x", "rules": [{"protocol": "P", "command": "c", "input": "c_i", "continuous": true,
                   "replies": [{"equals": ["1"], "symbol": "o_one"}]}]}""";
-        AbstractionException e = assertThrows(AbstractionException.class, () -> Abstraction.fromJson("x.json", json));
+        AbstractionException e = assertThrows(AbstractionException.class, () -> AbstractionFiles.fromJson("x.json", json));
         assertTrue(e.getMessage().contains("continuous"), e.getMessage());
     }
 }

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.compact.IoPair;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.Test;
@@ -26,7 +27,7 @@ class HysteresisTest {
                 ((ObjectNode) rule).set("hysteresis", om.valueToTree(value));
             }
         }
-        return Abstraction.fromJson("noisy.json", om.writeValueAsString(root));
+        return AbstractionFiles.fromJson("noisy.json", om.writeValueAsString(root));
     }
 
     private static final Records HOVERING = new Records().level(80).level(50.2).level(49.9).level(50.1).level(49.8)
@@ -39,7 +40,7 @@ class HysteresisTest {
     @Test
     void withoutHysteresisEveryCrossingIsABand() {
         assertEquals(List.of("o_level_high", "o_level_medium_six", "o_level_high", "o_level_medium_six",
-                "o_level_medium_five", "o_level_medium_six", "o_level_medium_five"), bands(Abstraction.defaults()));
+                "o_level_medium_five", "o_level_medium_six", "o_level_medium_five"), bands(AbstractionFiles.defaults()));
     }
 
     @Test
@@ -54,7 +55,7 @@ class HysteresisTest {
         String json = """
                 {"name": "x", "rules": [{"protocol": "P", "command": "c", "input": "c_i", "hysteresis": 1,
                   "replies": [{"range": {"atMost": 0}, "symbol": "o_a"}, {"range": {"above": 0}, "symbol": "o_b"}]}]}""";
-        AbstractionException notContinuous = assertThrows(AbstractionException.class, () -> Abstraction.fromJson("x.json", json));
+        AbstractionException notContinuous = assertThrows(AbstractionException.class, () -> AbstractionFiles.fromJson("x.json", json));
         assertTrue(notContinuous.getMessage().contains("continuous"), notContinuous.getMessage());
     }
 }

@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
@@ -10,9 +11,9 @@ import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
 import dev.predmon.simulate.SimRun;
 import dev.predmon.simulate.Simulator;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
-import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,7 +31,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
  */
 class LogVariantsTraceTest {
 
-    private static final Abstraction A = Abstraction.defaults();
+    private static final Abstraction A = AbstractionFiles.defaults();
 
     @TempDir
     Path tmp;

@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
@@ -40,7 +41,7 @@ class ParallelTracesTest {
         List<Path> logs = logs(12);
         List<Path> asked = new ArrayList<>(logs);
         asked.add(logs.get(3)); // a log named twice is read once
-        Abstraction abstraction = Abstraction.defaults();
+        Abstraction abstraction = AbstractionFiles.defaults();
         Map<Path, LogTrace> one = Traces.readAll(asked, abstraction, 1);
         Map<Path, LogTrace> four = Traces.readAll(asked, abstraction, 4);
         assertEquals(logs, List.copyOf(one.keySet()));
@@ -61,7 +62,7 @@ class ParallelTracesTest {
         logs.add(1, dir.resolve("missing-a.log"));
         logs.add(dir.resolve("missing-b.log"));
         Traces.ReadFailure e = assertThrows(Traces.ReadFailure.class,
-                () -> Traces.readAll(logs, Abstraction.defaults(), 3));
+                () -> Traces.readAll(logs, AbstractionFiles.defaults(), 3));
         assertEquals(dir.resolve("missing-a.log"), e.log());
     }
 }

@@ -1,7 +1,7 @@
 package dev.predmon.reallogs;
 
-import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
@@ -41,7 +41,7 @@ class RealLogsTest {
 
     @Test
     void everyRecordingHasItsTablesCountsAndViolation() throws IOException {
-        SafetyRule safety = Abstraction.defaults().safety().orElseThrow();
+        SafetyRule safety = AbstractionFiles.defaults().safety().orElseThrow();
         List<org.junit.jupiter.api.function.Executable> checks = new ArrayList<>();
         for (RealLogs.Row row : RealLogs.rows()) {
             Seen seen = new Seen();

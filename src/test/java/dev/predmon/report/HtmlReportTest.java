@@ -1,6 +1,6 @@
 package dev.predmon.report;
 
-import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.Evaluator;
 import dev.predmon.evaluate.Progress;
@@ -40,9 +40,9 @@ class HtmlReportTest {
     @BeforeAll
     static void evaluate() throws Exception {
         Path logs = SimulatedSets.write(dir.resolve("logs"), 34, 1);
-        hundred = new Evaluator(Abstraction.defaults(), 0, Progress.NONE)
-                .crossValidate(ScenarioLayout.scan(logs, Abstraction.defaults()), 5);
-        html = HtmlReport.html(hundred, Abstraction.defaults());
+        hundred = new Evaluator(AbstractionFiles.defaults(), 0, Progress.NONE)
+                .crossValidate(ScenarioLayout.scan(logs, AbstractionFiles.defaults()), 5);
+        html = HtmlReport.html(hundred, AbstractionFiles.defaults());
     }
 
     private static List<String> all(String regex, String text) {

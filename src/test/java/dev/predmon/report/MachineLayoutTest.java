@@ -1,6 +1,7 @@
 package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.Evaluator;
 import dev.predmon.evaluate.Progress;
 import dev.predmon.learn.ScenarioLayout;
@@ -36,7 +37,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 class MachineLayoutTest {
 
     static Stream<LearnedModel> shipped() throws Exception {
-        return ModelStore.read(Path.of("models"), Abstraction.defaults()).models().stream();
+        return ModelStore.read(Path.of("models"), AbstractionFiles.defaults()).models().stream();
     }
 
     @ParameterizedTest(name = "{0}")
@@ -101,7 +102,7 @@ class MachineLayoutTest {
     @Test
     void machinesLearnedFromTheRealRecordingsAreDrawnInsideTheirBox() throws Exception {
         assumeTrue(Files.isDirectory(RealLogs.DIR), "no " + RealLogs.DIR + ", so no machine is learned from it");
-        Abstraction a = Abstraction.builtin("scope-fetch").orElseThrow();
+        Abstraction a = AbstractionFiles.builtin("scope-fetch").orElseThrow();
         // The models the report of 'evaluate' draws: learned on every log, with the noise tuned as learn tunes it.
         ModelSet shown = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(RealLogs.DIR, a), 2)
                 .models();

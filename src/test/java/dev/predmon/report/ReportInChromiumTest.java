@@ -3,6 +3,7 @@ package dev.predmon.report;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.Evaluator;
 import dev.predmon.evaluate.Progress;
@@ -79,13 +80,13 @@ class ReportInChromiumTest {
     void noTextOverlapsAnotherInTheRenderedReportWithEveryShippedModel() throws Exception {
         assumeChromium();
         Path logs = SimulatedSets.write(dir.resolve("logs"), 2, 1);
-        Evaluation e = new Evaluator(Abstraction.defaults(), 0, Progress.NONE)
-                .crossValidate(ScenarioLayout.scan(logs, Abstraction.defaults()), 2);
-        ModelSet shipped = ModelStore.read(Path.of("models"), Abstraction.defaults());
+        Evaluation e = new Evaluator(AbstractionFiles.defaults(), 0, Progress.NONE)
+                .crossValidate(ScenarioLayout.scan(logs, AbstractionFiles.defaults()), 2);
+        ModelSet shipped = ModelStore.read(Path.of("models"), AbstractionFiles.defaults());
         Evaluation withShipped = new Evaluation(e.mode(), e.folds(), e.threshold(), e.abstraction(), e.scenarios(),
                 e.confusion(), e.runs(), e.notes(), shipped);
 
-        SvgTexts.Measured m = SvgTexts.measure(open("shipped.html", HtmlReport.html(withShipped, Abstraction.defaults())));
+        SvgTexts.Measured m = SvgTexts.measure(open("shipped.html", HtmlReport.html(withShipped, AbstractionFiles.defaults())));
 
         assertEquals(List.of(), m.overlaps(), "overlapping texts (svg, text, text)");
         int drawings = 0;
@@ -105,7 +106,7 @@ class ReportInChromiumTest {
     void noTextOverlapsAnotherInTheReportOfTheRealRecordings() throws Exception {
         assumeChromium();
         assumeTrue(Files.isDirectory(RealLogs.DIR), "no " + RealLogs.DIR + ", so its report is not rendered");
-        Abstraction a = Abstraction.builtin("scope-fetch").orElseThrow();
+        Abstraction a = AbstractionFiles.builtin("scope-fetch").orElseThrow();
         Evaluation e = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(RealLogs.DIR, a), 5);
         SvgTexts.Measured m = SvgTexts.measure(open("real.html", HtmlReport.html(e, a)));
         assertEquals(List.of(), m.overlaps(), "overlapping texts (svg, text, text)");
@@ -131,7 +132,7 @@ class ReportInChromiumTest {
     @Test
     void everyRunIsOneClickFromItsRowToItsPlotAndBack() throws Exception {
         assumeChromium();
-        Abstraction a = Abstraction.defaults();
+        Abstraction a = AbstractionFiles.defaults();
         Evaluation e = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(Path.of("sample-logs"), a), 5);
         HeadlessChromium.Page page = open("sample.html", HtmlReport.html(e, a));
 

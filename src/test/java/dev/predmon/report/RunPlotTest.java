@@ -1,7 +1,7 @@
 package dev.predmon.report;
 
-import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
 import dev.predmon.simulate.LogWriter;
@@ -25,7 +25,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /** The report's plots as SVG text: times from the start of the run, round ticks, labels apart, curves thinned. */
 class RunPlotTest {
 
-    private static final SafetyRule RULE = Abstraction.defaults().safety().orElseThrow();
+    private static final SafetyRule RULE = AbstractionFiles.defaults().safety().orElseThrow();
     private static final Pattern TEXT = Pattern.compile(
             "<text class=\"([^\"]+)\" x=\"([-0-9.]+)\" y=\"([-0-9.]+)\">([^<]*)</text>");
 
@@ -79,7 +79,7 @@ class RunPlotTest {
         Path log = dir.resolve("epoch.log");
         SimOptions epoch = SimOptions.defaults().withEpoch(true);
         Files.writeString(log, LogWriter.toText(Simulator.run(Scenario.DEPLETED, 3, epoch), epoch));
-        Timeline t = Timeline.ofRun(log.toString(), Abstraction.defaults(), RULE, 20_000);
+        Timeline t = Timeline.ofRun(log.toString(), AbstractionFiles.defaults(), RULE, 20_000);
         assertTrue(t.start() > 1e9, "epoch start " + t.start());
         List<Drawn> texts = texts(RunPlot.svg(run(t.start(), 20.0, 25.0, null, t.clock()), t, RULE));
         assertEquals("time (s from start)", only(texts, "xl").text());

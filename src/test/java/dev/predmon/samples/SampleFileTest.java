@@ -2,6 +2,7 @@ package dev.predmon.samples;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.ScenarioLayout;
@@ -29,7 +30,7 @@ class SampleFileTest {
     @Test
     void exportedSamplesParseBackToTheWordsLearnUses() throws Exception {
         Path logs = SimulatedSets.write(dir.resolve("logs"), 2, 1);
-        Abstraction a = Abstraction.defaults();
+        Abstraction a = AbstractionFiles.defaults();
         for (ScenarioSpec s : ScenarioLayout.scan(logs, a)) {
             LearnedScenario l = ScenarioLearner.learn(s, a);
             Path file = dir.resolve(s.name() + ".txt");

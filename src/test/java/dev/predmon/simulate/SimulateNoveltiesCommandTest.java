@@ -3,6 +3,7 @@ package dev.predmon.simulate;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.cli.Main;
 import dev.predmon.cli.SimulateCommand;
 import dev.predmon.pipeline.LogTrace;
@@ -159,7 +160,7 @@ class SimulateNoveltiesCommandTest {
 
     @Test
     void everyVariationReadsThroughThePipelineWithoutAParseProblem() throws IOException {
-        Abstraction abstraction = Abstraction.defaults();
+        Abstraction abstraction = AbstractionFiles.defaults();
         int k = 0;
         for (String[] variation : VARIATIONS) {
             for (String scenario : List.of("direct", "recharge", "depleted")) {

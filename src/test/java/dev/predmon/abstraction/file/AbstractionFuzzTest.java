@@ -1,6 +1,8 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.AbstractionException;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.support.Choices;
 import dev.predmon.support.HandRuns;
@@ -17,7 +19,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 
 /**
- * Fuzzes {@link Abstraction#fromJson} with mutations of the default abstraction file (deleted ranges, inserted
+ * Fuzzes {@link AbstractionFiles#fromJson} with mutations of the default abstraction file (deleted ranges, inserted
  * JSON tokens, swapped numbers, copied spans) and with raw bytes: the only exception that may escape is
  * {@link AbstractionException}, its message one line; an abstraction that loads classifies every record of the
  * hand-written runs without throwing.
@@ -44,7 +46,7 @@ class AbstractionFuzzTest {
         String json = c.flip() ? mutate(c) : new String(c.rest(), StandardCharsets.UTF_8);
         Abstraction a;
         try {
-            a = Abstraction.fromJson("fuzz.json", json);
+            a = AbstractionFiles.fromJson("fuzz.json", json);
         } catch (AbstractionException e) {
             assertNotNull(e.getMessage());
             assertFalse(e.getMessage().contains("\n"), e.getMessage());

@@ -1,13 +1,14 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.core.JsonGenerator;
-import dev.predmon.abstraction.AbstractionSpec.DropSpec;
-import dev.predmon.abstraction.AbstractionSpec.RangeSpec;
-import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
-import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
-import dev.predmon.abstraction.AbstractionSpec.RunsSpec;
-import dev.predmon.abstraction.AbstractionSpec.SafetySpec;
-import dev.predmon.abstraction.AbstractionSpec.WarningSpec;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionSpec.DropSpec;
+import dev.predmon.abstraction.file.AbstractionSpec.RangeSpec;
+import dev.predmon.abstraction.file.AbstractionSpec.ReplySpec;
+import dev.predmon.abstraction.file.AbstractionSpec.RuleSpec;
+import dev.predmon.abstraction.file.AbstractionSpec.RunsSpec;
+import dev.predmon.abstraction.file.AbstractionSpec.SafetySpec;
+import dev.predmon.abstraction.file.AbstractionSpec.WarningSpec;
 
 import java.io.IOException;
 import java.io.StringWriter;

@@ -1,7 +1,11 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.AbstractionException;
+import dev.predmon.abstraction.SafetyRule;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -12,32 +16,56 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.HashMap;
 import java.util.HexFormat;
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 
 /**
- * Abstraction files: the built-in ones, reading and validating a file into an {@link Abstraction} with one-line
- * errors ({@code file:line:column: path: reason}), and the canonical form its fingerprint hashes. The public entry
- * points are {@link Abstraction#load}, {@link Abstraction#fromJson} and {@link Abstraction#builtin}.
+ * Abstraction files, the one entry point for them: the built-in ones, reading and validating a file into an
+ * {@link Abstraction} with one-line errors ({@code file:line:column: path: reason}), and the canonical form its
+ * fingerprint hashes.
+ *
+ * <p>A file has the keys {@code name} (required), {@code description}, {@code drop} (filters, where {@code *}
+ * matches any characters, on {@code kind}/{@code from}/{@code to}/{@code protocol}/{@code command}),
+ * {@code locations} (name to abbreviation, used for {@code {loc}} in symbols), {@code rules} (required:
+ * {@code protocol}, {@code command}, {@code input}, {@code replies}, optional {@code description}; each reply has a
+ * {@code symbol} and exactly one of {@code any: true}, {@code equals: [strings]},
+ * {@code range: {above|atLeast, below|atMost}}), {@code safety} (see {@link SafetyRule}), {@code warning} and
+ * {@code runs} ({@link AbstractionSpec} says what each means).
+ *
+ * <p>Band boundaries of the default: bands are upper-inclusive, {@code (lower, upper]}, like the thesis's
+ * notation and the behaviour tree's {@code level > 50} early-warning condition, so exactly 50.0 is already
+ * {@code o_level_medium_six} and exactly 45.0 {@code o_level_medium_five}; the exception is
+ * {@code o_level_medium_one = [20, 25]}, so that {@code o_level_low = (0, 20)} coincides exactly with the safety
+ * monitor's violation {@code level < 20.0}. {@code o_level_zero} is 0 and below. Validation guarantees the
+ * bands of one rule neither overlap nor leave gaps.
  *
  * <p>A file is parsed by {@link LocatedJson} and bound by {@link SpecBinder}, its canonical form written by
  * {@link SpecWriter}: jackson-core and databind's tree nodes only, no {@code ObjectMapper}, whose construction and
  * data binding were half a second of every start of predmon.
  */
-final class AbstractionFiles {
-
-    private AbstractionFiles() {
-    }
+public final class AbstractionFiles {
 
     /**
      * The built-in abstractions by name: {@code thesis}, the default (Tables 4.1/4.2 with the battery bands of
      * Section 5.2, for the thesis's tree), and {@code scope-fetch} (the R1 fetch-and-carry tree whose monitor the
      * public SCOPE recordings show).
      */
+    public static final List<String> BUILTIN_NAMES = List.of("thesis", "scope-fetch");
+
+    /** Each built-in's resource, beside {@link Abstraction}. */
     private static final Map<String, String> BUILTIN = Map.of("thesis", "default-abstraction.json", "scope-fetch", "scope-fetch.json");
 
+    private AbstractionFiles() {
+    }
+
+    /** The embedded default: the built-in {@code thesis}. */
+    public static Abstraction defaults() {
+        return builtin("thesis").orElseThrow();
+    }
+
     /** The built-in abstraction of that name, if there is one. */
-    static Optional<Abstraction> builtin(String name) {
+    public static Optional<Abstraction> builtin(String name) {
         String resource = BUILTIN.get(name);
         if (resource == null) {
             return Optional.empty();
@@ -51,7 +79,7 @@ final class AbstractionFiles {
     }
 
     /** The JSON text of a built-in abstraction, as shipped, for users to start their own from. */
-    static Optional<String> builtinJson(String name) {
+    public static Optional<String> builtinJson(String name) {
         String resource = BUILTIN.get(name);
         if (resource == null) {
             return Optional.empty();
@@ -67,7 +95,7 @@ final class AbstractionFiles {
     }
 
     /** Loads and validates an abstraction file. */
-    static Abstraction load(Path file) throws AbstractionException {
+    public static Abstraction load(Path file) throws AbstractionException {
         String text;
         try {
             // Read whole before parsing: a file of gigabytes would exhaust the heap before the parser's limit
@@ -77,7 +105,7 @@ final class AbstractionFiles {
             }
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
-            throw new AbstractionException(file + ": cannot read: " + dev.predmon.BadInputException.reason(e), e);
+            throw new AbstractionException(file + ": cannot read: " + BadInputException.reason(e), e);
         }
         return fromJson(file.toString(), text);
     }
@@ -88,7 +116,7 @@ final class AbstractionFiles {
      * @param source names the text in error messages, usually its file
      * @throws AbstractionException one line, {@code source:line:column: reason}, on the first problem
      */
-    static Abstraction fromJson(String source, String json) throws AbstractionException {
+    public static Abstraction fromJson(String source, String json) throws AbstractionException {
         LocatedJson tree;
         try {
             tree = LocatedJson.parse(json);
@@ -108,7 +136,12 @@ final class AbstractionFiles {
         } catch (AbstractionValidator.Invalid e) {
             throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
         }
-        return Abstraction.of(spec);
+        String canonical = SpecWriter.canonical(spec);
+        // The recommended action is advice to operators: it changes no trace, so models stay valid when it does.
+        String fingerprint = sha256(spec.safety() == null || spec.safety().action() == null
+                ? canonical : SpecWriter.canonical(spec.withoutAction()));
+        String action = spec.safety() == null || spec.safety().action() != null ? null : builtinAction(fingerprint);
+        return new Abstraction(spec.definition(action), canonical, fingerprint);
     }
 
     private static String at(String pointer) {
@@ -152,7 +185,7 @@ final class AbstractionFiles {
         }
     }
 
-    static String sha256(String text) {
+    private static String sha256(String text) {
         try {
             return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256")
                     .digest(text.getBytes(StandardCharsets.UTF_8)));

@@ -1,5 +1,7 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.AbstractionException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -36,7 +38,7 @@ class AbstractionFileTest {
     /** Loads {@code json}, expects failure and checks the message is one line with file, position and reason. */
     private String failure(String json, String position, String reason) throws IOException {
         Path f = write(json);
-        AbstractionException e = assertThrows(AbstractionException.class, () -> Abstraction.load(f));
+        AbstractionException e = assertThrows(AbstractionException.class, () -> AbstractionFiles.load(f));
         String m = e.getMessage();
         assertFalse(m.contains("\n"), m);
         // position is "line:column" or "line:" when only the line is pinned down by the test
@@ -48,21 +50,21 @@ class AbstractionFileTest {
 
     @Test
     void addingALocationIsOneLineOfJson() throws Exception {
-        Abstraction a = Abstraction.load(write(defaultJson().replace("\"kitchen\": \"ki\",",
+        Abstraction a = AbstractionFiles.load(write(defaultJson().replace("\"kitchen\": \"ki\",",
                 "\"kitchen\": \"ki\", \"bedroom\": \"be\",")));
         assertEquals("goTo_be_i", mapped(a, command("/GoToGoToClient/bedroom", "/GoToComponent", "GoTo", "goTo", "bedroom")).symbol());
         assertEquals("o_getStatus_be_suc", mapped(a, reply("/GoToComponent", "/GoToGoToClient/bedroom", "GoTo",
                 "getStatus", "bedroom", "2")).symbol());
         assertTrue(a.inputAlphabet().containsAll(java.util.List.of("goTo_be_i", "getStatus_be_i", "isAt_be_i", "halt_be_i")));
         assertTrue(a.outputAlphabet().contains("o_isAt_be_true"));
-        assertEquals(Abstraction.defaults().name(), a.name());
-        assertFalse(a.fingerprint().equals(Abstraction.defaults().fingerprint()));
+        assertEquals(AbstractionFiles.defaults().name(), a.name());
+        assertFalse(a.fingerprint().equals(AbstractionFiles.defaults().fingerprint()));
     }
 
     @Test
     void defaultsLoadThroughTheSamePathAsFiles() throws Exception {
-        Abstraction fromFile = Abstraction.load(write(defaultJson()));
-        assertEquals(Abstraction.defaults().canonicalJson(), fromFile.canonicalJson());
+        Abstraction fromFile = AbstractionFiles.load(write(defaultJson()));
+        assertEquals(AbstractionFiles.defaults().canonicalJson(), fromFile.canonicalJson());
     }
 
     @Test
@@ -161,7 +163,7 @@ class AbstractionFileTest {
     @Test
     void unreadableFile() {
         Path missing = dir.resolve("missing.json");
-        AbstractionException e = assertThrows(AbstractionException.class, () -> Abstraction.load(missing));
+        AbstractionException e = assertThrows(AbstractionException.class, () -> AbstractionFiles.load(missing));
         assertTrue(e.getMessage().startsWith(missing + ": cannot read"), e.getMessage());
     }
 }

@@ -1,9 +1,11 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.fasterxml.jackson.databind.node.TextNode;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.AbstractionException;
 import org.junit.jupiter.api.Test;
 
 import java.io.IOException;
@@ -55,11 +57,11 @@ class SpecBindingTest {
 
     @Test
     void canonicalJsonOfTheBuiltInsIsWhatDataBindingWrote() {
-        for (String name : Abstraction.BUILTIN_NAMES) {
-            String json = Abstraction.builtinJson(name).orElseThrow();
+        for (String name : AbstractionFiles.BUILTIN_NAMES) {
+            String json = AbstractionFiles.builtinJson(name).orElseThrow();
             DatabindOracle.Outcome before = DatabindOracle.fromJson(name, json);
             assertNotNull(before.canonical(), before.error());
-            assertEquals(before.canonical(), Abstraction.builtin(name).orElseThrow().canonicalJson(), name);
+            assertEquals(before.canonical(), AbstractionFiles.builtin(name).orElseThrow().canonicalJson(), name);
         }
     }
 
@@ -68,7 +70,7 @@ class SpecBindingTest {
     void theShippedModelsKeepTheirFingerprint() throws Exception {
         Path file = Path.of("models", "abstraction.json");
         String json = Files.readString(file);
-        Abstraction a = Abstraction.load(file);
+        Abstraction a = AbstractionFiles.load(file);
         assertEquals(json, a.canonicalJson(), "abstraction.json is its own canonical form");
         assertEquals(DatabindOracle.fromJson(file.toString(), json).canonical(), a.canonicalJson());
         assertTrue(Files.readString(Path.of("models", "index.json")).contains(a.fingerprint()));
@@ -78,7 +80,7 @@ class SpecBindingTest {
     void everyKeyIsWrittenAsDataBindingWroteIt() throws Exception {
         DatabindOracle.Outcome before = DatabindOracle.fromJson("all.json", ALL_KEYS);
         assertNotNull(before.canonical(), before.error());
-        assertEquals(before.canonical(), Abstraction.fromJson("all.json", ALL_KEYS).canonicalJson());
+        assertEquals(before.canonical(), AbstractionFiles.fromJson("all.json", ALL_KEYS).canonicalJson());
     }
 
     /**
@@ -89,7 +91,7 @@ class SpecBindingTest {
     void everyValueOfEveryTypeBindsAsBefore() throws IOException {
         int compared = 0;
         List<String> files = new ArrayList<>(List.of(ALL_KEYS));
-        Abstraction.BUILTIN_NAMES.forEach(name -> files.add(Abstraction.builtinJson(name).orElseThrow()));
+        AbstractionFiles.BUILTIN_NAMES.forEach(name -> files.add(AbstractionFiles.builtinJson(name).orElseThrow()));
         for (String file : files) {
             JsonNode tree = LocatedJson.parse(file).root();
             // Binding depends on where a value is, not on which rule or reply: two places of each kind suffice.
@@ -110,7 +112,7 @@ class SpecBindingTest {
     /** Unknown keys first, last and beside bad values, in every object; keys left out of every object. */
     @Test
     void unknownAndMissingKeysAreReportedAsBefore() throws IOException {
-        JsonNode tree = LocatedJson.parse(Abstraction.builtinJson("thesis").orElseThrow()).root();
+        JsonNode tree = LocatedJson.parse(AbstractionFiles.builtinJson("thesis").orElseThrow()).root();
         List<String> pointers = new ArrayList<>(List.of(""));
         pointers.addAll(pointers(tree, ""));
         for (String pointer : pointers) {
@@ -138,8 +140,8 @@ class SpecBindingTest {
         String[] tokens = {"{", "}", "[", "]", ",", ":", "\"", "null", "true", "false", "0", "-1", "1e999", "-0.0",
                 "20.0", "\"NaN\"", "\"x\"", "\"{loc}\"", "\"equals\"", "\"any\"", "\"symbol\"", "\"values\"", "\n"};
         Random random = new Random(12);
-        for (String name : Abstraction.BUILTIN_NAMES) {
-            String text = Abstraction.builtinJson(name).orElseThrow();
+        for (String name : AbstractionFiles.BUILTIN_NAMES) {
+            String text = AbstractionFiles.builtinJson(name).orElseThrow();
             for (int n = 0; n < 1500; n++) {
                 StringBuilder s = new StringBuilder(text);
                 for (int edits = 1 + random.nextInt(3); edits > 0; edits--) {
@@ -163,7 +165,7 @@ class SpecBindingTest {
         String error = null;
         String canonical = null;
         try {
-            canonical = Abstraction.fromJson("t.json", json).canonicalJson();
+            canonical = AbstractionFiles.fromJson("t.json", json).canonicalJson();
         } catch (AbstractionException e) {
             error = e.getMessage();
         }

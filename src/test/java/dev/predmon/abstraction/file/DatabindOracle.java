@@ -1,4 +1,4 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;

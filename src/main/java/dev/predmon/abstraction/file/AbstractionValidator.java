@@ -1,10 +1,13 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
-import dev.predmon.abstraction.AbstractionSpec.DropSpec;
-import dev.predmon.abstraction.AbstractionSpec.RangeSpec;
-import dev.predmon.abstraction.AbstractionSpec.ReplySpec;
-import dev.predmon.abstraction.AbstractionSpec.RuleSpec;
-import dev.predmon.abstraction.AbstractionSpec.SafetySpec;
+import dev.predmon.abstraction.Band;
+import dev.predmon.abstraction.Definition;
+import dev.predmon.abstraction.file.AbstractionSpec.DropSpec;
+import dev.predmon.abstraction.file.AbstractionSpec.RangeSpec;
+import dev.predmon.abstraction.file.AbstractionSpec.ReplySpec;
+import dev.predmon.abstraction.file.AbstractionSpec.RuleSpec;
+import dev.predmon.abstraction.file.AbstractionSpec.SafetySpec;
+import dev.predmon.mealy.MealyMapping;
 import dev.predmon.parse.RecordKind;
 
 import java.util.ArrayList;
@@ -26,10 +29,8 @@ final class AbstractionValidator {
 
     /** A symbol must be usable as a DOT label and a LearnLib alphabet entry without quoting. */
     static final Pattern SYMBOL = Pattern.compile("[A-Za-z0-9_]+");
-    /** The placeholder for the location abbreviation. */
-    static final String LOC = "{loc}";
     /** Symbols the I/O-automaton-to-Mealy mapping adds itself (thesis Section 4.2, Figure 4.9). */
-    static final Set<String> RESERVED = Set.of("Delta", "OK");
+    static final Set<String> RESERVED = Set.of(MealyMapping.DELTA, MealyMapping.OK);
 
     /** The longest recommended action: it must fit one line of a tile. */
     static final int MAX_ACTION = 120;
@@ -236,7 +237,7 @@ final class AbstractionValidator {
         if (r.above() == null && r.atLeast() == null && r.below() == null && r.atMost() == null) {
             throw new Invalid(at, "a range needs at least one of 'above', 'atLeast', 'below', 'atMost'");
         }
-        Band band = Band.of(r);
+        Band band = r.band();
         if (band.isEmpty()) {
             throw new Invalid(at, "range " + band + " contains no value");
         }
@@ -270,17 +271,17 @@ final class AbstractionValidator {
     static List<String> expand(String template, String at, Map<String, String> locations) throws Invalid {
         Matcher m = PLACEHOLDER.matcher(template);
         while (m.find()) {
-            if (!m.group().equals(LOC)) {
+            if (!m.group().equals(Definition.LOC)) {
                 throw new Invalid(at, "unknown placeholder '" + m.group() + "' in '" + template + "'; only {loc} exists");
             }
         }
         List<String> symbols = new ArrayList<>();
-        if (template.contains(LOC)) {
+        if (template.contains(Definition.LOC)) {
             if (locations.isEmpty()) {
                 throw new Invalid(at, "'" + template + "' uses {loc} but no locations are defined");
             }
             locations.values().stream().sorted(Comparator.naturalOrder())
-                    .forEach(abbreviation -> symbols.add(template.replace(LOC, abbreviation)));
+                    .forEach(abbreviation -> symbols.add(template.replace(Definition.LOC, abbreviation)));
         } else {
             symbols.add(template);
         }

@@ -1,8 +1,14 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.annotation.JsonInclude;
 import com.fasterxml.jackson.annotation.JsonProperty;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.Band;
+import dev.predmon.abstraction.Definition;
+import dev.predmon.abstraction.RunRule;
+import dev.predmon.abstraction.SafetyRule;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
@@ -32,6 +38,36 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
     AbstractionSpec withoutAction() {
         return new AbstractionSpec(name, description, drop, locations, rules,
                 safety == null ? null : safety.withoutAction(), warning, runs);
+    }
+
+    /**
+     * What this validated spec defines, with the defaults of absent keys.
+     *
+     * @param action the safety property's action when the spec gives none, or null
+     */
+    Definition definition(String action) {
+        List<Definition.Drop> drops = new ArrayList<>();
+        for (DropSpec d : drop == null ? List.<DropSpec>of() : drop) {
+            drops.add(new Definition.Drop(d.kind(), d.from(), d.to(), d.protocol(), d.command()));
+        }
+        List<Definition.Rule> compiled = new ArrayList<>();
+        for (RuleSpec r : rules) {
+            List<Definition.Reply> replies = new ArrayList<>();
+            for (ReplySpec p : r.replies()) {
+                replies.add(new Definition.Reply(p.any() != null, p.values(),
+                        p.range() == null ? null : p.range().band(), p.symbol()));
+            }
+            compiled.add(new Definition.Rule(r.protocol(), r.command(), r.client(), r.input(),
+                    Boolean.TRUE.equals(r.continuous()), Boolean.TRUE.equals(r.carry()), r.hysteresis(), replies));
+        }
+        SafetyRule property = safety == null ? null : new SafetyRule(safety.name(), safety.protocol(),
+                safety.command(), safety.from() == null ? "" : safety.from(), safety.to() == null ? "" : safety.to(),
+                safety.below(), safety.action() != null ? safety.action() : action);
+        RunRule runRule = runs == null ? RunRule.DEFAULT : new RunRule(runs.tickRestart() == null || runs.tickRestart(),
+                runs.silence() == null ? RunRule.DEFAULT_SILENCE : runs.silence());
+        int confirm = warning == null || warning.confirm() == null ? 0 : warning.confirm();
+        return new Definition(name, locations == null ? Map.of() : locations, drops, compiled, property, confirm,
+                runRule);
     }
 
     /**
@@ -67,7 +103,7 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
      * {@code hysteresis: h} (continuous rules only) keeps a reading within {@code h} of the previous band in that
      * band, so a noisy sensor hovering at a boundary does not flip bands, see {@link Abstraction#settle}.
      * {@code carry: true} makes the query's Mealy input carry its previous answer
-     * ({@code level_i_after_o_level_medium_six}), see {@link Abstraction#mealyInput}.
+     * ({@code level_i_after_o_level_medium_six}, see {@code dev.predmon.mealy.CarryEncoder}).
      * {@code client}, a port pattern ({@code *} for any characters), restricts the rule to messages whose client
      * port matches (a command's {@code From}, a reply's {@code To}): one component method called by two skills
      * (a condition polling {@code hasGrasped} every tick, an action calling it while it grasps) is then two
@@ -86,6 +122,13 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
     /** A numeric interval; each end is open ({@code above}/{@code below}), closed or absent (unbounded). */
     @JsonInclude(JsonInclude.Include.NON_NULL)
     record RangeSpec(Double above, Double atLeast, Double below, Double atMost) {
+
+        /** The interval, an absent end unbounded. */
+        Band band() {
+            double lo = above != null ? above : atLeast != null ? atLeast : Double.NEGATIVE_INFINITY;
+            double hi = below != null ? below : atMost != null ? atMost : Double.POSITIVE_INFINITY;
+            return new Band(lo, atLeast != null, hi, atMost != null);
+        }
     }
 
     /**

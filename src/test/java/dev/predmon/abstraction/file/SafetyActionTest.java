@@ -1,5 +1,7 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.AbstractionException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -31,29 +33,29 @@ class SafetyActionTest {
 
     @Test
     void theActionIsReadKeptAndChangesNoFingerprint() throws Exception {
-        Abstraction with = Abstraction.fromJson("with.json", file(", \"action\": \"plug the robot in\""));
-        Abstraction without = Abstraction.fromJson("without.json", file(""));
+        Abstraction with = AbstractionFiles.fromJson("with.json", file(", \"action\": \"plug the robot in\""));
+        Abstraction without = AbstractionFiles.fromJson("without.json", file(""));
         assertEquals("plug the robot in", with.safety().orElseThrow().action());
         assertNull(without.safety().orElseThrow().action(), "no action given, and no built-in is this file");
         assertTrue(with.canonicalJson().contains("\"action\":\"plug the robot in\""), with.canonicalJson());
         assertEquals(without.fingerprint(), with.fingerprint(), "advice changes no trace");
-        Abstraction again = Abstraction.fromJson("again.json", with.canonicalJson());
+        Abstraction again = AbstractionFiles.fromJson("again.json", with.canonicalJson());
         assertEquals(with.canonicalJson(), again.canonicalJson(), "the canonical form reads back to itself");
         assertEquals("plug the robot in", again.safety().orElseThrow().action());
     }
 
     @Test
     void theBuiltInsRecommendChargingAndLendItToACopyWithoutAnAction() throws Exception {
-        for (String name : Abstraction.BUILTIN_NAMES) {
+        for (String name : AbstractionFiles.BUILTIN_NAMES) {
             assertEquals("send the robot to the charging station",
-                    Abstraction.builtin(name).orElseThrow().safety().orElseThrow().action(), name);
+                    AbstractionFiles.builtin(name).orElseThrow().safety().orElseThrow().action(), name);
         }
         // models/abstraction.json of models learned before actions existed: the built-in but for the action.
-        String stored = Abstraction.defaults().canonicalJson().replace(
+        String stored = AbstractionFiles.defaults().canonicalJson().replace(
                 "\"action\":\"send the robot to the charging station\",", "");
         assertFalse(stored.contains("action"), stored);
-        Abstraction old = Abstraction.fromJson("models/abstraction.json", stored);
-        assertEquals(Abstraction.defaults().fingerprint(), old.fingerprint());
+        Abstraction old = AbstractionFiles.fromJson("models/abstraction.json", stored);
+        assertEquals(AbstractionFiles.defaults().fingerprint(), old.fingerprint());
         assertEquals("send the robot to the charging station", old.safety().orElseThrow().action());
     }
 
@@ -61,7 +63,7 @@ class SafetyActionTest {
     void aBlankOrMultiLineActionIsOneLineOfError() throws Exception {
         for (String bad : new String[] {"\"\"", "\"  \"", "\"first\\nsecond\"", "\"" + "x".repeat(121) + "\""}) {
             Path f = Files.writeString(dir.resolve("bad.json"), file(",\n \"action\": " + bad));
-            AbstractionException e = assertThrows(AbstractionException.class, () -> Abstraction.load(f), bad);
+            AbstractionException e = assertThrows(AbstractionException.class, () -> AbstractionFiles.load(f), bad);
             assertFalse(e.getMessage().contains("\n"), e.getMessage());
             assertTrue(e.getMessage().startsWith(f + ":2:"), e.getMessage());
             assertTrue(e.getMessage().contains("safety.action"), e.getMessage());

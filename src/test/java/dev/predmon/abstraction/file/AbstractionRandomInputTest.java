@@ -1,4 +1,4 @@
-package dev.predmon.abstraction;
+package dev.predmon.abstraction.file;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
