@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import org.junit.jupiter.api.Test;
 
 import java.io.PrintWriter;
@@ -22,7 +23,7 @@ class UnnotifiedLineTest {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         try (WatchOutputs outputs = new WatchOutputs(new PrintWriter(out), new PrintWriter(err), false, false, true,
-                false, null, null, Abstraction.defaults(), p -> false)) {
+                false, null, null, AbstractionFiles.defaults(), p -> false)) {
             outputs.unnotified(null, "User limit of inotify instances reached or too many open files",
                     TimeUnit.MILLISECONDS.toNanos(2));
             outputs.unnotified(Path.of("/mnt/robots"), "network or FUSE file system, whose changes on other hosts "

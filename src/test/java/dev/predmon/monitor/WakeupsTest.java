@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -23,7 +24,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
  */
 class WakeupsTest {
 
-    private static final Abstraction ABSTRACTION = Abstraction.defaults();
+    private static final Abstraction ABSTRACTION = AbstractionFiles.defaults();
 
     @TempDir
     Path dir;
