@@ -52,6 +52,18 @@ class LiveServerTest {
         }
     }
 
+    /** A head of blank lines alone is no request: it gets a 400, and the server goes on answering. */
+    @Test
+    void blankLinesAloneGet400AndTheServerStaysUp() throws Exception {
+        Board board = new Board(List.of(), Optional.empty(), Duration.ofSeconds(10), System::currentTimeMillis);
+        try (LiveServer server = LiveServer.start(HttpAddress.parse("0"), board)) {
+            String host = "Host: 127.0.0.1:" + server.url().getPort() + "\r\n";
+            assertTrue(ask(server.url(), "\r\n\r\n").startsWith("HTTP/1.1 400 "));
+            assertTrue(ask(server.url(), "\n\n").startsWith("HTTP/1.1 400 "));
+            assertTrue(ask(server.url(), "GET /status HTTP/1.1\r\n" + host + "\r\n").startsWith("HTTP/1.1 200 OK\r\n"));
+        }
+    }
+
     /** The page carries the state it was served with, and no log name can break out of it. */
     @Test
     void thePageCarriesTheCurrentStatusSafely() throws Exception {
