@@ -24,6 +24,8 @@ import java.util.concurrent.locks.LockSupport;
 final class LatencyBench {
 
     /** @param millis one latency per run, sorted */
+    // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
+    @SuppressWarnings("ArrayRecordComponent")
     record Result(double[] millis, long pollMicros) {
         double median() {
             return percentile(0.5);

@@ -10,7 +10,6 @@ import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Random;
 
 /**
@@ -69,7 +68,8 @@ public final class LogWriter {
             return order;
         }
         Random random = new Random(run.seed() * 31 + 0x1A7E);
-        Map<SimEvent, Boolean> moved = new IdentityHashMap<>();
+        // By identity: each event of the list moves once at most, whatever the other events hold.
+        IdentityHashMap<SimEvent, Boolean> moved = new IdentityHashMap<>();
         for (int i = 0; i < order.size(); i++) {
             SimEvent e = order.get(i);
             if (e.kind() != RecordKind.REPLY || moved.containsKey(e) || random.nextDouble() >= options.lateReplies()) {
