@@ -2,6 +2,7 @@ package dev.predmon.abstraction;
 
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import dev.predmon.BadInputException;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -77,7 +78,7 @@ final class AbstractionFiles {
             }
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
-            throw new AbstractionException(file + ": cannot read: " + dev.predmon.BadInputException.reason(e), e);
+            throw new AbstractionException(file + ": cannot read: " + BadInputException.reason(e), e);
         }
         return fromJson(file.toString(), text);
     }

@@ -3,6 +3,7 @@ package dev.predmon.learn;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelStore;
 
 import java.io.IOException;
@@ -42,7 +43,7 @@ public final class Learning {
 
     /**
      * As above; {@code step} is told each step of replacing the model directory before it is taken
-     * ({@link ModelStore#write(Path, dev.predmon.model.ModelIndex, Map, String, ForecastModel, Consumer)}), so that a
+     * ({@link ModelStore#write(Path, ModelIndex, Map, String, ForecastModel, Consumer)}), so that a
      * test can kill a learn at each.
      */
     public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each,

@@ -1,5 +1,6 @@
 package dev.predmon.model;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastModel;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -45,7 +46,7 @@ public record ModelSet(Path dir, ModelIndex index, List<LearnedModel> models, Fo
      * training runs' sensor noise ({@link ModelIndex.AbstractionInfo#hysteresis()}), so that a log abstracts as the
      * training logs did.
      */
-    public dev.predmon.abstraction.Abstraction tune(dev.predmon.abstraction.Abstraction abstraction) {
+    public Abstraction tune(Abstraction abstraction) {
         return abstraction.withLearnedHysteresis(index.abstraction().hysteresis());
     }
 }

@@ -10,6 +10,7 @@ import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Random;
 
 /**
@@ -101,7 +102,7 @@ public final class LogWriter {
         if (options.rawLines()) {
             sb.append(time).append(sep).append("INFO").append(sep)
                     .append('"').append(e.from()).append("\" \"").append(e.to()).append("\" \"")
-                    .append(e.kind().name().toLowerCase(java.util.Locale.ROOT)).append("\" \"")
+                    .append(e.kind().name().toLowerCase(Locale.ROOT)).append("\" \"")
                     .append(e.protocol()).append("\" (").append(e.command()).append(") (")
                     .append(e.argument()).append(") (").append(reply).append(')').append(nl);
         }

@@ -1,11 +1,15 @@
 package dev.predmon.cli;
 
+import dev.predmon.abstraction.Abstraction;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.util.HexFormat;
 import java.util.List;
 import java.util.stream.Stream;
 
@@ -49,10 +53,10 @@ class DemoAndShippedDataTest {
     void shippedModelsCarryTheirAbstraction() throws Exception {
         String text = Files.readString(MODELS.resolve("abstraction.json"))
                 .replace("\"action\":\"send the robot to the charging station\",", "");
-        String sha = java.util.HexFormat.of().formatHex(java.security.MessageDigest.getInstance("SHA-256")
-                .digest(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        String sha = HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256")
+                .digest(text.getBytes(StandardCharsets.UTF_8)));
         assertTrue(Files.readString(MODELS.resolve("index.json")).contains("\"fingerprint\" : \"" + sha + "\""));
-        assertEquals(sha, dev.predmon.abstraction.Abstraction.load(MODELS.resolve("abstraction.json")).fingerprint());
+        assertEquals(sha, Abstraction.load(MODELS.resolve("abstraction.json")).fingerprint());
     }
 
     private static List<String> dots(Path dir) throws IOException {

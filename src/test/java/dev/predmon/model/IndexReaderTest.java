@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -161,7 +162,7 @@ class IndexReaderTest {
                 + " \"samples\": 1, \"learningMillis\": 0}]}]}")) {
             Files.writeString(dir.resolve("index.json"), text);
             BadInputException e = assertThrows(BadInputException.class,
-                    () -> ModelStore.read(dir, dev.predmon.abstraction.Abstraction.defaults()), text);
+                    () -> ModelStore.read(dir, Abstraction.defaults()), text);
             assertEquals(dir.resolve("index.json") + ": not a predmon model index of format 1", e.getMessage());
         }
     }

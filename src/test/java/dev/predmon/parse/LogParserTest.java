@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.predmon.parse.ParseProblem.Severity;
 import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 class LogParserTest {
@@ -353,7 +354,7 @@ class LogParserTest {
     @Test
     void garbageAndBinaryNeverThrowAndYieldNothing() {
         StringBuilder garbage = new StringBuilder();
-        java.util.Random random = new java.util.Random(42);
+        Random random = new Random(42);
         for (int i = 0; i < 20_000; i++) {
             int c = random.nextInt(5) == 0 ? "\n\r\t :<>#".charAt(random.nextInt(8)) : random.nextInt(0x3000);
             garbage.append((char) c);
