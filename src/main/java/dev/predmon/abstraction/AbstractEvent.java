@@ -1,5 +1,6 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 
 /**
@@ -9,7 +10,7 @@ import dev.predmon.parse.LogRecord;
  * @param symbol    the abstract symbol, safe in DOT: {@code goTo_ki_i}, {@code o_level_medium_four}
  * @param channel   the connection, used to pair a reply with its command
  * @param record    the record it came from
- * @param value     a reply's value as the number its rule's ranges read ({@link dev.predmon.parse.Decimals#parse}),
+ * @param value     a reply's value as the number its rule's ranges read ({@link Decimals#parse}),
  *                  NaN for commands and replies of rules without ranges: read once, by the abstraction, and used by
  *                  the hysteresis and the noise estimate
  */

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 
@@ -33,6 +34,8 @@ final class Rules {
     private static final int PROBES = 4;
 
     /** A compiled rule; {@code input} and reply symbols may still contain {@code {loc}}. */
+    // An array for the loop over a rule's replies, which runs for every reply record; rules are never compared.
+    @SuppressWarnings("ArrayRecordComponent")
     private record Rule(String protocol, String command, String client, String input, Reply[] replies,
                         boolean numeric) {
         boolean usesLocation() {
@@ -88,7 +91,7 @@ final class Rules {
         }
 
         private static boolean same(String a, String b) {
-            return a == b || a.equals(b);
+            return Objects.equals(a, b);
         }
     }
 
@@ -163,6 +166,8 @@ final class Rules {
     }
 
     /** The route of {@code r}'s strings: remembered, or decided now and remembered. */
+    // The ordinal only mixes the record's kind into a hash, where any fixed number per kind would do.
+    @SuppressWarnings("EnumOrdinal")
     private Route route(LogRecord r) {
         int h = (r.from().hashCode() * 31 + r.to().hashCode()) * 31 + r.command().hashCode() + r.kind().ordinal();
         h ^= h >>> 16;

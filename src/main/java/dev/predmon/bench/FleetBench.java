@@ -56,6 +56,8 @@ final class FleetBench {
      * @param paceNanos     CPU ns per record at robot pace
      * @param millis        append-to-warning latencies, sorted
      */
+    // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
+    @SuppressWarnings("ArrayRecordComponent")
     record Result(int logs, double catchUpNanos, double idleCore, double idleLoopCore, double paceRate,
                   double paceCore, double paceNanos, double[] millis) {
         double percentile(double q) {

@@ -12,6 +12,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 
@@ -24,6 +25,8 @@ import java.util.concurrent.locks.LockSupport;
 final class LatencyBench {
 
     /** @param millis one latency per run, sorted */
+    // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
+    @SuppressWarnings("ArrayRecordComponent")
     record Result(double[] millis, long pollMicros) {
         double median() {
             return percentile(0.5);
@@ -62,7 +65,7 @@ final class LatencyBench {
         Path file = Files.createTempFile(dir, "predmon-latency", ".log");
         AtomicLong warnedAt = new AtomicLong();
         AtomicLong written = new AtomicLong();
-        java.util.concurrent.atomic.AtomicBoolean caughtUp = new java.util.concurrent.atomic.AtomicBoolean();
+        AtomicBoolean caughtUp = new AtomicBoolean();
         PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> {
             if (e instanceof MonitorEvent.Warning) {
                 warnedAt.set(System.nanoTime());

@@ -131,13 +131,13 @@ final class LearnBench {
 
     static Result run(Abstraction abstraction, int runs) {
         long prep = System.nanoTime();
-        List<List<MealyTrace>> samples = new ArrayList<>();
+        Map<Scenario, List<MealyTrace>> samples = new EnumMap<>(Scenario.class);
         for (Scenario s : Scenario.values()) {
             List<MealyTrace> list = new ArrayList<>(runs);
             for (long seed = 1; seed <= runs; seed++) {
                 list.add(BenchData.sample(BenchData.text(s, seed), abstraction, s.id() + "-" + seed + ".log"));
             }
-            samples.add(list);
+            samples.put(s, list);
         }
         double prepareSeconds = (System.nanoTime() - prep) / 1e9;
         System.gc();
@@ -147,10 +147,9 @@ final class LearnBench {
         long start = System.nanoTime();
         int states = 0;
         int machines = 0;
-        for (int i = 0; i < Scenario.values().length; i++) {
-            Scenario s = Scenario.values()[i];
+        for (Scenario s : Scenario.values()) {
             var learned = ScenarioLearner.learnSamples(new ScenarioSpec(s.id(), s.faulty(), s.description(), List.of()),
-                    samples.get(i), MealyAlphabet.inputs(abstraction));
+                    samples.get(s), MealyAlphabet.inputs(abstraction));
             for (var m : learned.machines()) {
                 states += m.machine().size();
                 machines++;

@@ -4,12 +4,14 @@ import dev.predmon.bench.Benchmarks;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /** {@code predmon bench}: the performance figures of the README, measured on this machine. */
@@ -82,9 +84,9 @@ final class BenchCommand implements Callable<Integer> {
 
     private Benchmarks.Kind kind(String name) {
         try {
-            return Benchmarks.Kind.valueOf(name.trim().toUpperCase(java.util.Locale.ROOT));
+            return Benchmarks.Kind.valueOf(name.trim().toUpperCase(Locale.ROOT));
         } catch (IllegalArgumentException e) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+            throw new ParameterException(spec.commandLine(),
                     "--only: unknown benchmark '" + name + "' (expected batch, latency, memory, learn or fleet)");
         }
     }

@@ -1,9 +1,9 @@
 package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
-import dev.predmon.mealy.MealyTrace;
 import dev.predmon.pipeline.LogTrace;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;

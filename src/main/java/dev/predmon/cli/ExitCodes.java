@@ -1,5 +1,8 @@
 package dev.predmon.cli;
 
+import java.util.Arrays;
+import java.util.stream.IntStream;
+
 /** Exit codes of every predmon command (the README's table; BadInputCliTest checks every row). */
 public final class ExitCodes {
     /** Success; watch/classify/explain: no warning and a model still matches; verify: a machine matches. */
@@ -37,11 +40,11 @@ public final class ExitCodes {
      * The code of a log that holds several runs, from each run's {@link #of} code: a warning in any run is the log's
      * warning; else a run that no model matched makes it {@link #NO_MATCH}; else {@link #OK}.
      */
-    static int ofRuns(java.util.stream.IntStream runCodes) {
+    static int ofRuns(IntStream runCodes) {
         int[] codes = runCodes.toArray();
-        if (java.util.Arrays.stream(codes).anyMatch(c -> c == WARNING)) {
+        if (Arrays.stream(codes).anyMatch(c -> c == WARNING)) {
             return WARNING;
         }
-        return java.util.Arrays.stream(codes).anyMatch(c -> c == NO_MATCH) ? NO_MATCH : OK;
+        return Arrays.stream(codes).anyMatch(c -> c == NO_MATCH) ? NO_MATCH : OK;
     }
 }

@@ -1,8 +1,13 @@
 package dev.predmon.cli;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.ObjectWriter;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import java.util.Iterator;
+import java.util.Map;
 
 /**
  * The one JSON writer of command output. Commands print records (their fields in declaration order), either one
@@ -30,12 +35,12 @@ final class Json {
 
     /** {@code value} as a JSON object with {@code "log": log} right after its first field ({@code "event"}). */
     static Object tagged(Object value, String log) {
-        com.fasterxml.jackson.databind.node.ObjectNode plain = MAPPER.valueToTree(value);
-        com.fasterxml.jackson.databind.node.ObjectNode tagged = MAPPER.createObjectNode();
-        java.util.Iterator<java.util.Map.Entry<String, com.fasterxml.jackson.databind.JsonNode>> fields = plain.fields();
+        ObjectNode plain = MAPPER.valueToTree(value);
+        ObjectNode tagged = MAPPER.createObjectNode();
+        Iterator<Map.Entry<String, JsonNode>> fields = plain.fields();
         boolean first = true;
         while (fields.hasNext()) {
-            java.util.Map.Entry<String, com.fasterxml.jackson.databind.JsonNode> f = fields.next();
+            Map.Entry<String, JsonNode> f = fields.next();
             tagged.set(f.getKey(), f.getValue());
             if (first) {
                 tagged.put("log", log);

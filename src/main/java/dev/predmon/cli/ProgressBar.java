@@ -2,6 +2,8 @@ package dev.predmon.cli;
 
 import dev.predmon.evaluate.Progress;
 
+import java.io.Console;
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -36,10 +38,28 @@ final class ProgressBar implements Progress {
                 String target = Files.readSymbolicLink(fd).toString();
                 return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty");
             }
-        } catch (java.io.IOException | UnsupportedOperationException | SecurityException e) {
-            return System.console() != null;
+        } catch (IOException | UnsupportedOperationException | SecurityException e) {
+            return consoleIsTerminal();
         }
-        return System.console() != null;
+        return consoleIsTerminal();
+    }
+
+    /**
+     * Whether stdin and stdout are a terminal. Up to JDK 21 {@link System#console()} is null when they are not; from
+     * JDK 22 on it returns a console all the same, and the console's {@code isTerminal()} (new in JDK 22) says.
+     */
+    // A null console is the answer of JDK 21 and before; JDK 22 and later are asked isTerminal() below.
+    @SuppressWarnings("SystemConsoleNull")
+    private static boolean consoleIsTerminal() {
+        Console console = System.console();
+        if (console == null) {
+            return false;
+        }
+        try {
+            return (Boolean) Console.class.getMethod("isTerminal").invoke(console);
+        } catch (ReflectiveOperationException beforeJdk22) {
+            return true; // up to JDK 21 there is a console only for a terminal
+        }
     }
 
     @Override

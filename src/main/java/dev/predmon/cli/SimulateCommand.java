@@ -120,7 +120,8 @@ public final class SimulateCommand implements Callable<Integer> {
         List<Scenario> day = new ArrayList<>();
         SimOptions options;
         try {
-            for (String id : scenario.split(",")) {
+            // Limit 0: a trailing comma is ignored, as it always was; an empty id elsewhere is an error.
+            for (String id : scenario.split(",", 0)) {
                 day.add(Scenario.fromId(id.strip()));
             }
             s = day.get(0);

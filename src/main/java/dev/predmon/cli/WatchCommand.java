@@ -2,15 +2,15 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastWords;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
 import dev.predmon.model.ModelSet;
-import dev.predmon.forecast.ForecastWords;
-import dev.predmon.monitor.WarningRule;
 import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
+import dev.predmon.monitor.WarningRule;
 import dev.predmon.monitor.WatchedLog;
 import dev.predmon.pipeline.Evidence;
 import picocli.CommandLine.Command;

@@ -15,6 +15,7 @@ import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.pipeline.UnmappedMessages;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.math.BigDecimal;
 import java.nio.file.Path;
@@ -215,7 +216,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     }
 
     @Override
-    public void rescanFailed(java.io.IOException e) {
+    public void rescanFailed(IOException e) {
         String message = "predmon: looking for new logs: " + Terminal.line(e.getMessage());
         if (!message.equals(lastRescanFailure)) { // once, not every second
             err.println(message);

@@ -12,6 +12,8 @@ import java.util.List;
 public interface BandPath {
 
     /**
+     * The answers from {@code from} to {@code to}, in the order they are emitted.
+     *
      * @param from the query's previous answer, or null for its first
      * @param to   the new answer, different from {@code from}
      * @return the answers to emit in order, ending with {@code to}; never empty

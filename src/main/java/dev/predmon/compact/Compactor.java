@@ -7,6 +7,7 @@ import dev.predmon.abstraction.Direction;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.function.Consumer;
@@ -65,7 +66,7 @@ public final class Compactor {
 
     /** @param out receives the kept pairs, in the order of their commands in the log */
     public Compactor(Consumer<IoPair> out) {
-        this(out, (from, to) -> java.util.List.of(to));
+        this(out, (from, to) -> List.of(to));
     }
 
     /**

@@ -3,6 +3,7 @@ package dev.predmon.learn;
 import dev.predmon.mealy.MealyTrace;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.BitSet;
 import java.util.List;
 
@@ -52,7 +53,7 @@ public final class ConflictGrouping {
             }
         }
         int[] colour = new int[n];
-        java.util.Arrays.fill(colour, -1);
+        Arrays.fill(colour, -1);
         BitSet[] neighbourColours = new BitSet[n];
         for (int i = 0; i < n; i++) {
             neighbourColours[i] = new BitSet();

@@ -22,6 +22,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Predicate;
 
 /**
  * Learns the forecast that goes with the machines: the per-state statistics over every training run
@@ -190,7 +191,7 @@ public final class ForecastTraining {
 
     /** The runs of the logs {@code include} selects, each of the runs its scenario learns from. */
     private static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
-                                             java.util.function.Predicate<Path> include) {
+                                             Predicate<Path> include) {
         List<LogTrace.Run> runs = new ArrayList<>();
         for (ScenarioSpec s : specs) {
             for (Path log : s.logs()) {

@@ -3,13 +3,13 @@ package dev.predmon.learn;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastModel;
 import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
-import dev.predmon.forecast.ForecastModel;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 

@@ -4,6 +4,7 @@ import dev.predmon.mealy.MealyTrace;
 import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.util.List;
+import java.util.Map;
 
 /**
  * What learning made of one scenario.
@@ -16,7 +17,7 @@ import java.util.List;
  * @param unmapped interface messages no abstraction rule maps, by key, over all its logs
  */
 public record LearnedScenario(ScenarioSpec spec, List<Machine> machines, List<Conflict> splits, List<String> skipped,
-                              List<String> problems, java.util.Map<String, Long> unmapped) {
+                              List<String> problems, Map<String, Long> unmapped) {
 
     /**
      * One machine and the samples it was learned from.

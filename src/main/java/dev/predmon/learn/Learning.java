@@ -4,14 +4,15 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.mealy.MealyAlphabet;
+import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelStore;
+import dev.predmon.pipeline.LogTrace;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import dev.predmon.pipeline.LogTrace;
 import java.util.function.Consumer;
 
 /** The {@code learn} job as a library call: every scenario of a log directory, then the models written. */
@@ -43,7 +44,7 @@ public final class Learning {
 
     /**
      * As above; {@code step} is told each step of replacing the model directory before it is taken
-     * ({@link ModelStore#write(Path, dev.predmon.model.ModelIndex, Map, String, ForecastModel, Consumer)}), so that a
+     * ({@link ModelStore#write(Path, ModelIndex, Map, String, ForecastModel, Consumer)}), so that a
      * test can kill a learn at each.
      */
     public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each,

@@ -10,11 +10,14 @@ import dev.predmon.pipeline.Traces;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 import java.util.function.Consumer;
 
 /**
@@ -43,7 +46,7 @@ public final class ScenarioLearner {
         try {
             return Traces.readAll(logs, abstraction, Runtime.getRuntime().availableProcessors(), read);
         } catch (Traces.ReadFailure e) {
-            throw BadInputException.cannotRead(e.log(), e.getCause() instanceof java.io.IOException io ? io : e);
+            throw BadInputException.cannotRead(e.log(), e.getCause() instanceof IOException io ? io : e);
         }
     }
 
@@ -53,7 +56,7 @@ public final class ScenarioLearner {
         List<MealyTrace> samples = new ArrayList<>();
         List<String> skipped = new ArrayList<>();
         List<String> problems = new ArrayList<>();
-        java.util.Map<String, Long> unmapped = new java.util.TreeMap<>();
+        Map<String, Long> unmapped = new TreeMap<>();
         for (Path log : spec.logs()) {
             LogTrace trace = traces.get(log);
             trace.problems().forEach(p -> problems.add(p.format(log.toString())));
@@ -71,7 +74,7 @@ public final class ScenarioLearner {
         }
         LearnedScenario learned = learnSamples(spec, samples, MealyAlphabet.inputs(abstraction));
         return new LearnedScenario(spec, learned.machines(), learned.splits(), List.copyOf(skipped),
-                List.copyOf(problems), java.util.Collections.unmodifiableMap(unmapped));
+                List.copyOf(problems), Collections.unmodifiableMap(unmapped));
     }
 
     /** Learns from samples already mapped (used by {@code learn} and by cross-validation). */
@@ -88,6 +91,6 @@ public final class ScenarioLearner {
             machines.add(new LearnedScenario.Machine(id, m, group, millis));
             k++;
         }
-        return new LearnedScenario(spec, List.copyOf(machines), grouping.splits(), List.of(), List.of(), java.util.Map.of());
+        return new LearnedScenario(spec, List.copyOf(machines), grouping.splits(), List.of(), List.of(), Map.of());
     }
 }

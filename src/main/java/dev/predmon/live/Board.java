@@ -81,7 +81,7 @@ public final class Board {
 
     /**
      * {@code /status}: {@code {"staleAfter": seconds, "watching": [...], "logs": [tile, ...]}}, every tile worst
-     * first, or only {@code log}'s ({@code logs} is then empty for a log not watched).
+     * first, or only {@code log}'s ({@code "logs"} is then empty for a log not watched).
      */
     public ObjectNode status(String log) {
         List<Tile> all;

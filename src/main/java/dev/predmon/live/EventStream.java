@@ -28,6 +28,8 @@ final class EventStream implements AutoCloseable {
     private volatile boolean closed;
 
     /** Sends {@code json} (one line) to every connected client. */
+    // clients is a concurrent set: its iteration is weakly consistent and allows removing while iterating.
+    @SuppressWarnings("ModifyCollectionInEnhancedForLoop")
     void publish(String json) {
         for (BlockingQueue<String> q : clients) {
             if (!q.offer(json)) {
@@ -43,6 +45,8 @@ final class EventStream implements AutoCloseable {
     }
 
     /** Serves one client until it goes away or the stream is closed; returns then. */
+    // CLOSE is compared by identity on purpose: an event with the same text must not end the stream.
+    @SuppressWarnings("ReferenceEquality")
     void serve(Exchange x) throws IOException {
         if (closed || clients.size() >= MAX_CLIENTS) {
             x.send(503, "text/plain; charset=utf-8", "too many event streams open (" + MAX_CLIENTS + ")\n");

@@ -51,9 +51,9 @@ final class Exchange implements AutoCloseable {
      * ended. A bare newline ends a line as well as CR LF does.
      */
     static int headEnd(ByteBuffer buffer) {
-        byte[] b = buffer.array();
         for (int i = 1; i < buffer.position(); i++) {
-            if (b[i] == '\n' && (b[i - 1] == '\n' || (i >= 2 && b[i - 1] == '\r' && b[i - 2] == '\n'))) {
+            if (buffer.get(i) == '\n' && (buffer.get(i - 1) == '\n'
+                    || (i >= 2 && buffer.get(i - 1) == '\r' && buffer.get(i - 2) == '\n'))) {
                 return i + 1;
             }
         }
@@ -62,8 +62,11 @@ final class Exchange implements AutoCloseable {
 
     /** The request whose complete head is in {@code buffer}; {@link #malformed()} if it is no HTTP/1 request. */
     static Exchange of(Connection connection, ByteBuffer buffer) {
-        String head = new String(buffer.array(), 0, headEnd(buffer), StandardCharsets.ISO_8859_1);
-        String[] lines = head.split("\r?\n");
+        byte[] bytes = new byte[headEnd(buffer)];
+        buffer.get(0, bytes);
+        // With its trailing empty lines: a head of blank lines alone is then one empty request line (a 400), where
+        // split without a limit left no line at all.
+        String[] lines = new String(bytes, StandardCharsets.ISO_8859_1).split("\r?\n", -1);
         String[] request = lines[0].split(" ", -1);
         if (request.length != 3 || !METHOD.matcher(request[0]).matches() || !request[2].startsWith("HTTP/1.")) {
             return new Exchange(connection, null, null, Map.of());

@@ -126,7 +126,7 @@ public final class LiveServer implements AutoCloseable {
         if (q == null) {
             return null;
         }
-        for (String part : q.split("&")) {
+        for (String part : q.split("&", -1)) {
             int eq = part.indexOf('=');
             String key = URLDecoder.decode(eq < 0 ? part : part.substring(0, eq), StandardCharsets.UTF_8);
             if (key.equals(name)) {

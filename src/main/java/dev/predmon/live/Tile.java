@@ -210,7 +210,7 @@ public final class Tile {
         if (violation != null) {
             return TileState.OK; // it holds again; the violation stays in the history
         }
-        if (noMatch || forecast != null && (forecast.novel() || forecast.basis() == Forecast.Basis.VALUE_ONLY)) {
+        if (noMatch || (forecast != null && (forecast.novel() || forecast.basis() == Forecast.Basis.VALUE_ONLY))) {
             return TileState.UNKNOWN;
         }
         return data ? TileState.OK : TileState.WAITING;

@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.Abstraction;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
@@ -29,7 +30,7 @@ final class AbstractionMismatch {
      * @param inUse      the abstraction in use
      * @param storedFile the models' own abstraction file, or null when the directory has none (older models)
      */
-    static String describe(ModelIndex.AbstractionInfo learned, Abstraction inUse, java.nio.file.Path storedFile) {
+    static String describe(ModelIndex.AbstractionInfo learned, Abstraction inUse, Path storedFile) {
         String learnedFp = shortFp(learned.fingerprint());
         String inUseFp = shortFp(inUse.fingerprint());
         StringBuilder b = new StringBuilder();

@@ -11,6 +11,7 @@ import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashSet;
@@ -229,7 +230,7 @@ final class ModelDirectory {
             try {
                 return Files.getLastModifiedTime(p);
             } catch (IOException e) {
-                return java.nio.file.attribute.FileTime.fromMillis(0);
+                return FileTime.fromMillis(0);
             }
         }).reversed());
         return found.stream().findFirst();

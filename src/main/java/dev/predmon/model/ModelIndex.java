@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * The contents of {@code models/index.json}: what was learned, from what, with which abstraction.
@@ -38,7 +39,7 @@ public record ModelIndex(int format, AbstractionInfo abstraction, List<String> a
                                   @JsonInclude(JsonInclude.Include.NON_EMPTY) Map<String, Double> hysteresis) {
 
         public AbstractionInfo {
-            hysteresis = hysteresis == null ? Map.of() : Map.copyOf(new java.util.TreeMap<>(hysteresis));
+            hysteresis = hysteresis == null ? Map.of() : Map.copyOf(new TreeMap<>(hysteresis));
         }
     }
 

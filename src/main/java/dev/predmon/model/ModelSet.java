@@ -1,12 +1,13 @@
 package dev.predmon.model;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastModel;
 import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
-import java.util.Map;
 import java.util.List;
+import java.util.Map;
 
 /**
  * A model directory as loaded: its index, every machine and the forecast's statistics.
@@ -45,7 +46,7 @@ public record ModelSet(Path dir, ModelIndex index, List<LearnedModel> models, Fo
      * training runs' sensor noise ({@link ModelIndex.AbstractionInfo#hysteresis()}), so that a log abstracts as the
      * training logs did.
      */
-    public dev.predmon.abstraction.Abstraction tune(dev.predmon.abstraction.Abstraction abstraction) {
+    public Abstraction tune(Abstraction abstraction) {
         return abstraction.withLearnedHysteresis(index.abstraction().hysteresis());
     }
 }

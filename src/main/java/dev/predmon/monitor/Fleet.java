@@ -175,7 +175,7 @@ public final class Fleet implements AutoCloseable {
                 now = System.nanoTime();
                 long scanPeriod = w.allWatched() ? safetyNanos : RESCAN_NANOS;
                 if (growing && (now - lastScan >= scanPeriod
-                        || w.rescanWanted() && now - lastScan >= RESCAN_SOON_NANOS)) {
+                        || (w.rescanWanted() && now - lastScan >= RESCAN_SOON_NANOS))) {
                     w.rescanning();
                     rescan(sources);
                     lastScan = now;

@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.model.ModelSet;
@@ -38,7 +39,7 @@ final class ForecastTracker {
         return forecaster.stats().threshold();
     }
 
-    /** Whether the forecast rule warns on {@code f} ({@link dev.predmon.forecast.ForecastModel#warns}). */
+    /** Whether the forecast rule warns on {@code f} ({@link ForecastModel#warns}). */
     boolean warns(Forecast f) {
         return forecaster.stats().warns(f);
     }

@@ -130,18 +130,17 @@ public final class LogSources {
 
     /** The files one name stands for now (none for a directory that is gone). */
     private static List<Path> expand(Name name) throws IOException {
-        switch (name.kind()) {
-            case GLOB:
-                return glob(name.path());
-            case DIRECTORY:
+        return switch (name.kind()) {
+            case GLOB -> glob(name.path());
+            case DIRECTORY -> {
                 try (Stream<Path> files = Files.list(name.path())) {
-                    return files.filter(p -> Files.isRegularFile(p) && isLogName(p)).sorted().toList();
+                    yield files.filter(p -> Files.isRegularFile(p) && isLogName(p)).sorted().toList();
                 } catch (NoSuchFileException | NotDirectoryException gone) {
-                    return List.of(); // moved away or replaced: its logs are looked for again at the next rescan
+                    yield List.of(); // moved away or replaced: its logs are looked for again at the next rescan
                 }
-            default:
-                return List.of(name.path());
-        }
+            }
+            case FILE -> List.of(name.path());
+        };
     }
 
     /** Whether a name is a glob rather than a file or directory. */

@@ -1,5 +1,7 @@
 package dev.predmon.parse;
 
+import java.nio.charset.StandardCharsets;
+
 /**
  * Receives the lines of a log as {@link LogReader} or {@link LogFollower} cut them out of the file.
  *
@@ -17,7 +19,7 @@ public interface LineSink {
      * directly (the parser, for its hot path) overrides it. The bytes are only valid during the call.
      */
     default void line(byte[] bytes, int offset, int length) {
-        line(new String(bytes, offset, length, java.nio.charset.StandardCharsets.UTF_8));
+        line(new String(bytes, offset, length, StandardCharsets.UTF_8));
     }
 
     /**

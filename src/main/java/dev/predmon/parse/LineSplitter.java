@@ -1,6 +1,5 @@
 package dev.predmon.parse;
 
-import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 
 /**

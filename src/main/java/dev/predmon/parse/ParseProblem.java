@@ -1,5 +1,7 @@
 package dev.predmon.parse;
 
+import java.util.Locale;
+
 /**
  * Something the parser could not take as a record, with where it is.
  *
@@ -14,6 +16,6 @@ public record ParseProblem(long line, Severity severity, String message) {
 
     /** Renders the problem as {@code file:line: severity: message}. */
     public String format(String file) {
-        return file + ":" + line + ": " + severity.name().toLowerCase(java.util.Locale.ROOT) + ": " + message;
+        return file + ":" + line + ": " + severity.name().toLowerCase(Locale.ROOT) + ": " + message;
     }
 }

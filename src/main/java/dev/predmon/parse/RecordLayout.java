@@ -8,7 +8,7 @@ import java.util.function.Consumer;
  * What every layout shares: the record in progress ({@link RecordDraft}), field lines ({@code <Label> : <value>},
  * any spacing, value trimmed), the fast path for well-formed ASCII field lines, and how broken records are
  * reported. A layout adds how its header lines look and where a record's time comes from
- * ({@link #emit(RecordDraft)}).
+ * ({@link #build(RecordDraft)}).
  */
 abstract class RecordLayout implements LogLayout {
 

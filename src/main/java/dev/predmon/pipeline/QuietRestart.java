@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Classification;
 import dev.predmon.abstraction.Direction;
+import dev.predmon.abstraction.RunRule;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 
@@ -13,7 +14,7 @@ import java.util.List;
  * the log began (its first two distinct commands, in order). Records after such a pause are held back until the
  * commands decide, a few records later, so that a new run gets its first pair.
  *
- * <p>A pause is quiet when it lasts at least {@link dev.predmon.abstraction.RunRule#quiet()} seconds and
+ * <p>A pause is quiet when it lasts at least {@link RunRule#quiet()} seconds and
  * {@link #PACE} times the run's mean gap between records: a log that records every ten seconds pauses ten seconds all
  * the time. A paused tree that goes on (a blocking call, a robot waiting) does not start with the log's first two
  * commands, so it does not split.

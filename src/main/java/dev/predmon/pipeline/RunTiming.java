@@ -17,6 +17,8 @@ import java.util.List;
  * @param readings      every change of the property's value in the run, in order, with the number of pairs completed
  *                      before it: the forecast moves with the value between pairs too
  */
+// Arrays: one number per pair, read by index; a run's timing is never compared or hashed.
+@SuppressWarnings("ArrayRecordComponent")
 public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
                         double lowestSafeValue, String unit, List<Reading> readings) {
 

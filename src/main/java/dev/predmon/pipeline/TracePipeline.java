@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
+import dev.predmon.abstraction.RunRule;
 import dev.predmon.compact.Compactor;
 import dev.predmon.mealy.CarryEncoder;
 import dev.predmon.parse.LogRecord;
@@ -43,7 +44,7 @@ public final class TracePipeline {
     }
 
     /**
-     * Takes the next record of the log. A record that begins a new run ({@link dev.predmon.abstraction.RunRule})
+     * Takes the next record of the log. A record that begins a new run ({@link RunRule})
      * first ends the run before it, as the end of a log would, and starts matching over.
      */
     public void accept(LogRecord record) {

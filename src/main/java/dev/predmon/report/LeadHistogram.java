@@ -36,7 +36,8 @@ final class LeadHistogram {
             counts[Math.min(bins - 1, (int) Math.floor((l - from) / width + 1e-9))]++;
         }
         int pad = Math.max(0, MIN_BINS - bins);
-        double lower = Math.max(Math.min(0, from), from - (pad / 2) * width);
+        int padLeft = pad / 2; // whole bins: the left gets the smaller half of an odd padding
+        double lower = Math.max(Math.min(0, from), from - padLeft * width);
         double upper = Math.max(lower + MIN_BINS * width, from + bins * width);
         Axis x = Axis.covering(lower, upper, 10, clock == Clock.TICKS, Axis.LEFT, WIDTH - RIGHT);
         Axis y = Axis.covering(0, Arrays.stream(counts).max().orElse(1), 5, true, HEIGHT - Axis.BOTTOM, TOP);

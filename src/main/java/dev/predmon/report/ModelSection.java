@@ -34,14 +34,14 @@ final class ModelSection {
             h.append("<h3>").append(Svg.esc(m.id())).append(" (").append(m.faulty() ? "faulty" : "nominal")
                     .append(", ").append(m.machine().size()).append(" states)</h3>\n<p class=caption>")
                     .append(caption(folded)).append("</p>\n");
-            drawing(h, MachineLayout.of(folded), "z" + (n++));
+            drawing(h, MachineLayout.of(folded), "z" + n++);
             selfLoops(h, folded);
             if (folded.hidden() > 0) {
                 MachineGraph full = MachineGraph.full(m);
                 h.append("<details><summary>every state (").append(full.nodes().size()).append(" states, ")
                         .append(full.edges().stream().mapToInt(x -> x.labels().size()).sum())
                         .append(" transitions)</summary>\n");
-                drawing(h, MachineLayout.of(full), "z" + (n++));
+                drawing(h, MachineLayout.of(full), "z" + n++);
                 selfLoops(h, full);
                 h.append("</details>\n");
             }

@@ -30,6 +30,8 @@ import java.util.List;
  * @param values the watched values, same length
  * @param clock  what the times count
  */
+// Arrays: one number per point, read by index; a timeline is drawn, never compared or hashed.
+@SuppressWarnings("ArrayRecordComponent")
 public record Timeline(double start, double[] times, double[] values, Clock clock) {
 
     /**

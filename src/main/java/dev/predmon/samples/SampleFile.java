@@ -70,7 +70,7 @@ public final class SampleFile {
             }
             WordBuilder<String> in = new WordBuilder<>();
             WordBuilder<String> out = new WordBuilder<>();
-            for (String step : l.split(" ")) {
+            for (String step : l.split(" ", -1)) {
                 int slash = step.indexOf('/');
                 if (slash <= 0 || slash == step.length() - 1 || step.indexOf('/', slash + 1) >= 0) {
                     throw new BadInputException(file + ":" + (n + 1) + ": expected input/output, got '" + step + "'");

@@ -10,7 +10,7 @@ import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Map;
+import java.util.Locale;
 import java.util.Random;
 
 /**
@@ -69,7 +69,8 @@ public final class LogWriter {
             return order;
         }
         Random random = new Random(run.seed() * 31 + 0x1A7E);
-        Map<SimEvent, Boolean> moved = new IdentityHashMap<>();
+        // By identity: each event of the list moves once at most, whatever the other events hold.
+        IdentityHashMap<SimEvent, Boolean> moved = new IdentityHashMap<>();
         for (int i = 0; i < order.size(); i++) {
             SimEvent e = order.get(i);
             if (e.kind() != RecordKind.REPLY || moved.containsKey(e) || random.nextDouble() >= options.lateReplies()) {
@@ -101,7 +102,7 @@ public final class LogWriter {
         if (options.rawLines()) {
             sb.append(time).append(sep).append("INFO").append(sep)
                     .append('"').append(e.from()).append("\" \"").append(e.to()).append("\" \"")
-                    .append(e.kind().name().toLowerCase(java.util.Locale.ROOT)).append("\" \"")
+                    .append(e.kind().name().toLowerCase(Locale.ROOT)).append("\" \"")
                     .append(e.protocol()).append("\" (").append(e.command()).append(") (")
                     .append(e.argument()).append(") (").append(reply).append(')').append(nl);
         }

@@ -1,5 +1,6 @@
 package dev.predmon.simulate;
 
+import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.util.List;
 
@@ -35,7 +36,7 @@ public final class RealtimeWriter implements Runnable {
     /**
      * Writes all records, sleeping before each until it is due.
      *
-     * @throws java.io.UncheckedIOException if writing fails
+     * @throws UncheckedIOException if writing fails
      */
     @Override
     public void run() {

@@ -12,13 +12,17 @@ import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
+import java.io.ByteArrayOutputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Random;
 import java.util.concurrent.Callable;
+import java.util.regex.Pattern;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -43,7 +47,7 @@ class BadInputCliTest {
     }
 
     private Cli watch(Path log, String... more) {
-        List<String> args = new java.util.ArrayList<>(List.of("watch", "--log", log.toString(), "--models",
+        List<String> args = new ArrayList<>(List.of("watch", "--log", log.toString(), "--models",
                 models.toString(), "--no-follow"));
         args.addAll(List.of(more));
         return Cli.run(args.toArray(String[]::new));
@@ -66,7 +70,7 @@ class BadInputCliTest {
 
     private static byte[] garbage() {
         byte[] bytes = new byte[4096];
-        new java.util.Random(7).nextBytes(bytes);
+        new Random(7).nextBytes(bytes);
         return bytes;
     }
 
@@ -75,7 +79,7 @@ class BadInputCliTest {
     void aLogWithBinaryBytesIsReadToTheEndWithItsProblemsLocated() throws Exception {
         List<String> lines = HandRuns.recharge().text().lines().toList();
         int cut = 7 * 5 + 3; // inside the sixth record, after its From and To fields
-        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         bytes.write((String.join("\n", lines.subList(0, cut)) + "\n").getBytes(StandardCharsets.UTF_8));
         bytes.write(garbage());
         bytes.write(("\n" + String.join("\n", lines.subList(cut, lines.size())) + "\n").getBytes(StandardCharsets.UTF_8));
@@ -85,7 +89,7 @@ class BadInputCliTest {
         assertTrue(r.out().contains("end of " + log), r.out());
         assertFalse(r.err().isBlank(), "the broken record is reported");
         for (String line : r.err().strip().lines().toList()) {
-            assertTrue(line.matches(java.util.regex.Pattern.quote(log.toString()) + ":\\d+: error: .*"), "file:line: " + line);
+            assertTrue(line.matches(Pattern.quote(log.toString()) + ":\\d+: error: .*"), "file:line: " + line);
         }
     }
 

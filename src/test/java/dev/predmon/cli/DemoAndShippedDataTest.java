@@ -5,8 +5,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.util.HexFormat;
 import java.util.List;
 import java.util.stream.Stream;
 
@@ -50,8 +53,8 @@ class DemoAndShippedDataTest {
     void shippedModelsCarryTheirAbstraction() throws Exception {
         String text = Files.readString(MODELS.resolve("abstraction.json"))
                 .replace("\"action\":\"send the robot to the charging station\",", "");
-        String sha = java.util.HexFormat.of().formatHex(java.security.MessageDigest.getInstance("SHA-256")
-                .digest(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        String sha = HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256")
+                .digest(text.getBytes(StandardCharsets.UTF_8)));
         assertTrue(Files.readString(MODELS.resolve("index.json")).contains("\"fingerprint\" : \"" + sha + "\""));
         assertEquals(sha, AbstractionFiles.load(MODELS.resolve("abstraction.json")).fingerprint());
     }

@@ -8,6 +8,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -32,7 +33,7 @@ class ExitCodeTableTest {
     }
 
     private int code(String command, Path log, String... more) {
-        List<String> args = new java.util.ArrayList<>(List.of(command, "--log", log.toString(), "--models", models.toString()));
+        List<String> args = new ArrayList<>(List.of(command, "--log", log.toString(), "--models", models.toString()));
         if (command.equals("watch")) {
             args.add("--no-follow");
         }

@@ -8,8 +8,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
-import java.net.ServerSocket;
 import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
 import java.net.URI;
 import java.net.URLEncoder;
 import java.net.http.HttpClient;
@@ -24,6 +25,7 @@ import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -69,7 +71,7 @@ class LiveViewTest {
         assertEquals("grey", before.get("light").asText(), "no data yet");
 
         BlockingQueue<String> data = new LinkedBlockingQueue<>();
-        java.util.concurrent.atomic.AtomicBoolean connected = new java.util.concurrent.atomic.AtomicBoolean();
+        AtomicBoolean connected = new AtomicBoolean();
         http.sendAsync(HttpRequest.newBuilder(url.resolve("/events")).build(), HttpResponse.BodyHandlers.ofLines())
                 .thenAccept(r -> {
                     connected.set(true); // the server registers a client before it answers
@@ -130,7 +132,7 @@ class LiveViewTest {
                 .POST(HttpRequest.BodyPublishers.ofString("{}")).build(), HttpResponse.BodyHandlers.ofString()).statusCode());
         assertEquals(404, get(url, "/admin").statusCode());
         // A page elsewhere reaching this port through DNS rebinding names its own host, not a loopback one.
-        try (java.net.Socket s = new java.net.Socket(InetAddress.getLoopbackAddress(), url.getPort())) {
+        try (Socket s = new Socket(InetAddress.getLoopbackAddress(), url.getPort())) {
             s.getOutputStream().write(("GET /status HTTP/1.1\r\nHost: attacker.example\r\nConnection: close\r\n\r\n")
                     .getBytes(StandardCharsets.US_ASCII));
             String answer = new String(s.getInputStream().readAllBytes(), StandardCharsets.US_ASCII);

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.io.TempDir;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.stream.Stream;
 
@@ -71,7 +72,7 @@ class ModelFilesCliTest {
     @Test
     void aDotFileWithOtherStatesThanTheIndexSays() throws IOException {
         Files.copy(models.resolve("depleted.dot"), models.resolve("direct.dot"),
-                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                StandardCopyOption.REPLACE_EXISTING);
         refused(models.resolve("direct.dot"), "has 18 states, but index.json says 7");
     }
 

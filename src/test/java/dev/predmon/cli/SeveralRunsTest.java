@@ -21,6 +21,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -142,7 +143,7 @@ class SeveralRunsTest {
         StringWriter out = watch.out();
         byte[] bytes = Files.readAllBytes(full);
         for (int from = 0; from < bytes.length; from += 4096) {
-            Files.write(log, java.util.Arrays.copyOfRange(bytes, from, Math.min(bytes.length, from + 4096)),
+            Files.write(log, Arrays.copyOfRange(bytes, from, Math.min(bytes.length, from + 4096)),
                     StandardOpenOption.APPEND);
             Thread.sleep(1);
         }

@@ -1,6 +1,5 @@
 package dev.predmon.cli;
 
-import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import org.junit.jupiter.api.Test;
 

@@ -13,6 +13,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
@@ -50,7 +51,7 @@ class WatchFollowTest {
         byte[] run = HandRuns.depleted().text().getBytes(StandardCharsets.UTF_8);
         Files.write(log, new byte[0]);
         for (int from = 0; from < run.length; from += 97) { // pieces that cut lines and records anywhere
-            Files.write(log, java.util.Arrays.copyOfRange(run, from, Math.min(run.length, from + 97)),
+            Files.write(log, Arrays.copyOfRange(run, from, Math.min(run.length, from + 97)),
                     StandardOpenOption.APPEND);
             Thread.sleep(2);
         }

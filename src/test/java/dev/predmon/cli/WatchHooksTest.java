@@ -2,18 +2,21 @@ package dev.predmon.cli;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.sun.net.httpserver.HttpServer;
 import dev.predmon.simulate.Scenario;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import java.io.File;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
@@ -67,7 +70,7 @@ class WatchHooksTest {
         assertEquals(1, delivered.size(), "once: " + delivered);
         JsonNode got = JSON.readTree(delivered.get(0));
         assertEquals(log.toString(), got.get("log").asText(), "the hook always hears which log");
-        ((com.fasterxml.jackson.databind.node.ObjectNode) got).remove("log");
+        ((ObjectNode) got).remove("log");
         assertEquals(warning, got, "the same object --json prints");
         assertEquals("violation", JSON.readTree(Files.readAllLines(violations).get(0)).get("event").asText());
         assertTrue(!w.out().contains("this-goes-nowhere"), "a hook's stdout does not mix with --json: " + w.out());
@@ -140,7 +143,7 @@ class WatchHooksTest {
 
     private static boolean onPath(String program) {
         String path = System.getenv("PATH");
-        return path != null && java.util.Arrays.stream(path.split(java.io.File.pathSeparator))
+        return path != null && Arrays.stream(path.split(File.pathSeparator))
                 .anyMatch(d -> Files.isExecutable(Path.of(d, program)));
     }
 }

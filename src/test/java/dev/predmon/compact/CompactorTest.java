@@ -12,6 +12,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
+import java.util.TreeMap;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
@@ -136,7 +137,7 @@ class CompactorTest {
      */
     @Test
     void delayedRepliesGiveTheSameTrace() {
-        List<Channel> channels = List.copyOf(new java.util.TreeMap<>(CHANNELS).values());
+        List<Channel> channels = List.copyOf(new TreeMap<>(CHANNELS).values());
         String[][] outputs = {{"o_a", "o_b"}, {"o_c", "o_d", "o_e"}, {"o_f"}, {"o_g", "o_h"}};
         for (int seed = 0; seed < 500; seed++) {
             Random rnd = new Random(seed);

@@ -4,6 +4,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -93,7 +94,7 @@ class AtomicFilesTest {
         Path file = tmp.resolve("a.dot");
         AtomicFiles.create(file, "digraph g {}\n");
         assertEquals("digraph g {}\n", Files.readString(file));
-        assertThrows(java.nio.file.FileAlreadyExistsException.class, () -> AtomicFiles.create(file, "other"));
+        assertThrows(FileAlreadyExistsException.class, () -> AtomicFiles.create(file, "other"));
         assertEquals("digraph g {}\n", Files.readString(file), "an existing file is not touched");
     }
 

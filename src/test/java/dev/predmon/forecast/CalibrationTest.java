@@ -5,6 +5,7 @@ import org.junit.jupiter.api.Test;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.function.DoubleUnaryOperator;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -13,7 +14,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class CalibrationTest {
 
     /** Runs whose true chance of violating is {@code truth(p)} when the raw forecast says {@code p}. */
-    private static List<Calibration.Sample> runs(int n, java.util.function.DoubleUnaryOperator truth, long seed) {
+    private static List<Calibration.Sample> runs(int n, DoubleUnaryOperator truth, long seed) {
         Random random = new Random(seed);
         List<Calibration.Sample> out = new ArrayList<>();
         for (int i = 0; i < n; i++) {

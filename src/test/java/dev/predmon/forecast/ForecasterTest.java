@@ -1,5 +1,6 @@
 package dev.predmon.forecast;
 
+import dev.predmon.pipeline.LogTrace;
 import org.junit.jupiter.api.Test;
 
 import java.util.ArrayList;
@@ -14,7 +15,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class ForecasterTest {
 
     private static ForecastModel model(int safe, int violating) {
-        List<dev.predmon.pipeline.LogTrace.Run> runs = new ArrayList<>();
+        List<LogTrace.Run> runs = new ArrayList<>();
         for (int i = 0; i < safe; i++) {
             runs.add(run(List.of("a/x", "b/y", "c/z"), new double[] {90, 80, 70}, Double.NaN));
         }

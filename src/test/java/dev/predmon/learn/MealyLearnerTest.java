@@ -1,6 +1,7 @@
 package dev.predmon.learn;
 
 import dev.predmon.mealy.MealyTrace;
+import dev.predmon.model.ModelStore;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.alphabet.Alphabets;
 import net.automatalib.automaton.transducer.CompactMealy;
@@ -68,8 +69,8 @@ class MealyLearnerTest {
         List<MealyTrace> samples = List.of(ThesisExamples.chars("s0", "aabbba", "000111"),
                 ThesisExamples.chars("s1", "abbbbabb", "01101011"));
         Alphabet<String> ab = Alphabets.fromList(List.of("a", "b"));
-        String first = dev.predmon.model.ModelStore.toDot(MealyLearner.learn(ab, samples), ab);
-        String second = dev.predmon.model.ModelStore.toDot(MealyLearner.learn(ab, samples), ab);
+        String first = ModelStore.toDot(MealyLearner.learn(ab, samples), ab);
+        String second = ModelStore.toDot(MealyLearner.learn(ab, samples), ab);
         assertEquals(first, second);
     }
 }

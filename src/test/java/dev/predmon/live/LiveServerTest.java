@@ -7,10 +7,10 @@ import org.junit.jupiter.api.Test;
 import java.net.InetAddress;
 import java.net.Socket;
 import java.net.URI;
-import java.nio.charset.StandardCharsets;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
+import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
@@ -49,6 +49,18 @@ class LiveServerTest {
             String post = ask(server.url(), "POST /status HTTP/1.1\r\n" + host + "Content-Length: 2000\r\n\r\n"
                     + "x".repeat(2000));
             assertTrue(post.startsWith("HTTP/1.1 405 "), "the answer arrives though the body was not read: " + post);
+        }
+    }
+
+    /** A head of blank lines alone is no request: it gets a 400, and the server goes on answering. */
+    @Test
+    void blankLinesAloneGet400AndTheServerStaysUp() throws Exception {
+        Board board = new Board(List.of(), Optional.empty(), Duration.ofSeconds(10), System::currentTimeMillis);
+        try (LiveServer server = LiveServer.start(HttpAddress.parse("0"), board)) {
+            String host = "Host: 127.0.0.1:" + server.url().getPort() + "\r\n";
+            assertTrue(ask(server.url(), "\r\n\r\n").startsWith("HTTP/1.1 400 "));
+            assertTrue(ask(server.url(), "\n\n").startsWith("HTTP/1.1 400 "));
+            assertTrue(ask(server.url(), "GET /status HTTP/1.1\r\n" + host + "\r\n").startsWith("HTTP/1.1 200 OK\r\n"));
         }
     }
 

@@ -13,6 +13,7 @@ import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -102,7 +103,7 @@ class KilledLearnTest {
         prepare(models);
         Map<String, String> user = userFilesBeside(models);
         // before the set-aside rename the previous models are in place; after the move-in, the new ones
-        Map<String, Boolean> expectNew = new java.util.LinkedHashMap<>();
+        Map<String, Boolean> expectNew = new LinkedHashMap<>();
         expectNew.put("write", false);
         expectNew.put("set-aside", false);
         expectNew.put("move-in", false);

@@ -1,5 +1,9 @@
 package dev.predmon.monitor;
 
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
@@ -16,6 +20,7 @@ import dev.predmon.support.HandRuns;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.Test;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -133,31 +138,31 @@ class PredictiveMonitorTest {
 
     /** Replaces the six medium bands by the thesis's single o_level_medium (20 to 50). */
     private static String coarsen(String json) {
-        com.fasterxml.jackson.databind.ObjectMapper om = new com.fasterxml.jackson.databind.ObjectMapper();
+        ObjectMapper om = new ObjectMapper();
         try {
-            com.fasterxml.jackson.databind.node.ObjectNode root = (com.fasterxml.jackson.databind.node.ObjectNode) om.readTree(json);
+            ObjectNode root = (ObjectNode) om.readTree(json);
             root.put("name", "thesis-4.2-coarse");
-            for (com.fasterxml.jackson.databind.JsonNode rule : root.get("rules")) {
+            for (JsonNode rule : root.get("rules")) {
                 if (!"level".equals(rule.path("command").asText())) {
                     continue;
                 }
-                com.fasterxml.jackson.databind.node.ArrayNode replies = (com.fasterxml.jackson.databind.node.ArrayNode) rule.get("replies");
-                com.fasterxml.jackson.databind.node.ArrayNode kept = om.createArrayNode();
-                for (com.fasterxml.jackson.databind.JsonNode r : replies) {
+                ArrayNode replies = (ArrayNode) rule.get("replies");
+                ArrayNode kept = om.createArrayNode();
+                for (JsonNode r : replies) {
                     String s = r.get("symbol").asText();
                     if (!s.startsWith("o_level_medium")) {
                         kept.add(r);
                     } else if (s.equals("o_level_medium_one")) {
-                        com.fasterxml.jackson.databind.node.ObjectNode medium = om.createObjectNode();
+                        ObjectNode medium = om.createObjectNode();
                         medium.put("symbol", "o_level_medium");
                         medium.putObject("range").put("atLeast", 20).put("atMost", 50);
                         kept.add(medium);
                     }
                 }
-                ((com.fasterxml.jackson.databind.node.ObjectNode) rule).set("replies", kept);
+                ((ObjectNode) rule).set("replies", kept);
             }
             return om.writeValueAsString(root);
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             throw new IllegalStateException(e);
         }
     }

@@ -3,12 +3,10 @@ package dev.predmon.monitor;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
-import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;

@@ -1,13 +1,15 @@
 package dev.predmon.parse;
 
+import dev.predmon.parse.ParseProblem.Severity;
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+import java.util.Random;
+
 import static dev.predmon.parse.Collected.parse;
 import static dev.predmon.parse.Collected.record;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-
-import dev.predmon.parse.ParseProblem.Severity;
-import java.util.List;
-import org.junit.jupiter.api.Test;
 
 class LogParserTest {
 
@@ -353,7 +355,7 @@ class LogParserTest {
     @Test
     void garbageAndBinaryNeverThrowAndYieldNothing() {
         StringBuilder garbage = new StringBuilder();
-        java.util.Random random = new java.util.Random(42);
+        Random random = new Random(42);
         for (int i = 0; i < 20_000; i++) {
             int c = random.nextInt(5) == 0 ? "\n\r\t :<>#".charAt(random.nextInt(8)) : random.nextInt(0x3000);
             garbage.append((char) c);

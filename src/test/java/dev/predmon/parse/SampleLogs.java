@@ -1,5 +1,6 @@
 package dev.predmon.parse;
 
+import java.util.Locale;
 import java.util.Random;
 
 /** Generated logs that mix every variant a text log may hold, for the stream-level tests. */
@@ -15,7 +16,7 @@ final class SampleLogs {
         Random random = new Random(seed);
         StringBuilder log = new StringBuilder();
         for (int i = 0; i < records; i++) {
-            String time = String.format(java.util.Locale.ROOT, "%.6f", 1606737474.0 + i * 0.25);
+            String time = String.format(Locale.ROOT, "%.6f", 1606737474.0 + i * 0.25);
             String sep = random.nextBoolean() ? "\t" : " ";
             String eol = random.nextInt(4) == 0 ? "\r\n" : "\n";
             boolean reply = i % 2 == 1;

@@ -20,6 +20,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -43,7 +44,7 @@ class LogVariantsTraceTest {
     private List<String> trace(String text, String name) throws Exception {
         Path log = Files.writeString(tmp.resolve(name), text);
         LogTrace t = Traces.read(log, A);
-        assertEquals(java.util.Map.of(), t.unmapped(), name + ": unmapped interface messages");
+        assertEquals(Map.of(), t.unmapped(), name + ": unmapped interface messages");
         List<String> symbols = new ArrayList<>();
         for (IoPair p : t.pairs()) {
             symbols.add(p.input() + "/" + p.output());

@@ -9,6 +9,7 @@ import dev.predmon.parse.ParseProblem;
 import dev.predmon.parse.RecordKind;
 import dev.predmon.support.RealLogs;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.function.Executable;
 
 import java.io.IOException;
 import java.util.ArrayList;
@@ -42,7 +43,7 @@ class RealLogsTest {
     @Test
     void everyRecordingHasItsTablesCountsAndViolation() throws IOException {
         SafetyRule safety = AbstractionFiles.defaults().safety().orElseThrow();
-        List<org.junit.jupiter.api.function.Executable> checks = new ArrayList<>();
+        List<Executable> checks = new ArrayList<>();
         for (RealLogs.Row row : RealLogs.rows()) {
             Seen seen = new Seen();
             long records = LogReader.read(row.path(), r -> {

@@ -2,8 +2,8 @@ package dev.predmon.simulate;
 
 import org.junit.jupiter.api.Test;
 
-import java.util.IntSummaryStatistics;
 import java.util.DoubleSummaryStatistics;
+import java.util.IntSummaryStatistics;
 
 /**
  * Prints what typical runs look like over seeds 1..200 (records, duration, sampling attempts, levels), for the

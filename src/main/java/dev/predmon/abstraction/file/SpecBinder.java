@@ -291,7 +291,9 @@ final class SpecBinder {
         return new Invalid(at, "expected " + what);
     }
 
-    @SuppressWarnings("unchecked")
+    // Only for values whose type the binder has checked against the schema: it names the generic type (a list of
+    // rule specs, say) that a plain cast cannot check either.
+    @SuppressWarnings({"unchecked", "TypeParameterUnusedInFormals"})
     private static <T> T cast(Object value) {
         return (T) value;
     }

@@ -6,8 +6,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.regex.Pattern;
 
 import static dev.predmon.abstraction.AbstractionTest.command;
 import static dev.predmon.abstraction.AbstractionTest.mapped;
@@ -25,7 +28,7 @@ class AbstractionFileTest {
 
     private String defaultJson() throws IOException {
         try (var in = Abstraction.class.getResourceAsStream("default-abstraction.json")) {
-            return new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }
     }
 
@@ -43,7 +46,7 @@ class AbstractionFileTest {
         assertFalse(m.contains("\n"), m);
         // position is "line:column" or "line:" when only the line is pinned down by the test
         String at = position.endsWith(":") ? position + "\\d+" : position;
-        assertTrue(m.matches(java.util.regex.Pattern.quote(f.toString()) + ":" + at + ": .*"), m);
+        assertTrue(m.matches(Pattern.quote(f.toString()) + ":" + at + ": .*"), m);
         assertTrue(m.contains(reason), m);
         return m;
     }
@@ -55,7 +58,7 @@ class AbstractionFileTest {
         assertEquals("goTo_be_i", mapped(a, command("/GoToGoToClient/bedroom", "/GoToComponent", "GoTo", "goTo", "bedroom")).symbol());
         assertEquals("o_getStatus_be_suc", mapped(a, reply("/GoToComponent", "/GoToGoToClient/bedroom", "GoTo",
                 "getStatus", "bedroom", "2")).symbol());
-        assertTrue(a.inputAlphabet().containsAll(java.util.List.of("goTo_be_i", "getStatus_be_i", "isAt_be_i", "halt_be_i")));
+        assertTrue(a.inputAlphabet().containsAll(List.of("goTo_be_i", "getStatus_be_i", "isAt_be_i", "halt_be_i")));
         assertTrue(a.outputAlphabet().contains("o_isAt_be_true"));
         assertEquals(AbstractionFiles.defaults().name(), a.name());
         assertFalse(a.fingerprint().equals(AbstractionFiles.defaults().fingerprint()));

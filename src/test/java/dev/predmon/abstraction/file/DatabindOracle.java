@@ -1,5 +1,6 @@
 package dev.predmon.abstraction.file;
 
+import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonMappingException;
@@ -9,6 +10,8 @@ import com.fasterxml.jackson.databind.exc.MismatchedInputException;
 import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 
+import java.io.IOException;
+import java.util.Collection;
 import java.util.stream.Collectors;
 
 /**
@@ -50,7 +53,7 @@ final class DatabindOracle {
             tree = LocatedJson.parse(MAPPER.getFactory(), json);
         } catch (JsonProcessingException e) {
             return error(position(source, e.getLocation()) + "invalid JSON: " + firstLine(e.getOriginalMessage()));
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             return error(source + ": cannot read: " + e);
         }
         if (!tree.root().isObject()) {
@@ -105,7 +108,7 @@ final class DatabindOracle {
         if (type == Boolean.class) {
             return "true or false";
         }
-        return java.util.Collection.class.isAssignableFrom(type) ? "an array" : "an object";
+        return Collection.class.isAssignableFrom(type) ? "an array" : "an object";
     }
 
     private static String at(String pointer) {
@@ -124,7 +127,7 @@ final class DatabindOracle {
         return b.toString();
     }
 
-    private static String position(String source, com.fasterxml.jackson.core.JsonLocation l) {
+    private static String position(String source, JsonLocation l) {
         return AbstractionFiles.position(source, l);
     }
 

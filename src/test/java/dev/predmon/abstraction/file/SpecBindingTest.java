@@ -1,5 +1,6 @@
 package dev.predmon.abstraction.file;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -12,8 +13,10 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -95,7 +98,7 @@ class SpecBindingTest {
         for (String file : files) {
             JsonNode tree = LocatedJson.parse(file).root();
             // Binding depends on where a value is, not on which rule or reply: two places of each kind suffice.
-            java.util.Map<String, Integer> seen = new java.util.HashMap<>();
+            Map<String, Integer> seen = new HashMap<>();
             for (String pointer : pointers(tree, "")) {
                 if (seen.merge(pointer.replaceAll("/\\d+", "/*"), 1, Integer::sum) > 2) {
                     continue;
@@ -237,7 +240,7 @@ class SpecBindingTest {
     private static String text(JsonNode node) {
         try {
             return DatabindOracle.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(node);
-        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+        } catch (JsonProcessingException e) {
             throw new IllegalStateException(e);
         }
     }

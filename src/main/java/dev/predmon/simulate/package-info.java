@@ -1,0 +1,6 @@
+/**
+ * Simulates the thesis's case study (a behaviour tree driving a battery and a navigation component) and writes
+ * its runs as YARP monitor logs with their ground truth, for {@code simulate}, the sample logs, the tests and the
+ * benchmarks.
+ */
+package dev.predmon.simulate;
