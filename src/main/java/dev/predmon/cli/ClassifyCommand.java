@@ -1,10 +1,8 @@
 package dev.predmon.cli;
 
-import dev.predmon.abstraction.Abstraction;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
-import dev.predmon.pipeline.LogTrace;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -31,12 +29,11 @@ final class ClassifyCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
+        ModelSet set = in.models();
         PrintWriter out = spec.commandLine().getOut();
-        ModelSet set = input.models();
-        Abstraction abstraction = input.tuned();
-        LogTrace trace = input.readLog(abstraction, spec.commandLine().getErr());
         // A log of several runs (the tick counter started again) is classified run by run.
-        List<MealyTrace> runs = trace.judgedRuns();
+        List<MealyTrace> runs = in.trace().judgedRuns();
         List<Result> results = new ArrayList<>();
         List<Integer> codes = new ArrayList<>();
         for (MealyTrace run : runs) {

@@ -1,9 +1,6 @@
 package dev.predmon.cli;
 
-import dev.predmon.abstraction.Abstraction;
 import dev.predmon.explain.Explanation;
-import dev.predmon.model.ModelSet;
-import dev.predmon.pipeline.LogTrace;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -27,18 +24,17 @@ final class ExplainCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Mixin
-    LogAgainstModels input;
+    ConfirmOption confirm;
 
     @Mixin
-    ConfirmOption confirm;
+    LogAgainstModels input;
 
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        ModelSet set = input.models();
-        Abstraction abstraction = input.tuned();
-        LogTrace trace = input.readLog(abstraction, spec.commandLine().getErr());
-        List<Explanation> runs = Explanation.of(trace, set, abstraction, input.threshold(), confirm.value(abstraction));
+        LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
+        List<Explanation> runs = Explanation.of(in.trace(), in.models(), in.abstraction(), input.threshold(),
+                confirm.value(in.abstraction()));
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.
             out.println(Json.document(runs.size() == 1 ? runs.get(0) : Map.of("runs", runs)));

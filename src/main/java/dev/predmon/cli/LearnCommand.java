@@ -33,14 +33,14 @@ final class LearnCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    @Mixin
+    AbstractionOption abstractionOption;
+
     @Option(names = "--logs", paramLabel = "DIR", defaultValue = "sample-logs", description = "Log directory (default: ${DEFAULT-VALUE}).")
     Path logs;
 
     @Option(names = "--models", paramLabel = "DIR", defaultValue = "models", description = "Model directory to write (default: ${DEFAULT-VALUE}).")
     Path models;
-
-    @Mixin
-    AbstractionOption abstractionOption;
 
     @Override
     public Integer call() throws Exception {

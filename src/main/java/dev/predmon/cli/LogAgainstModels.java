@@ -72,6 +72,20 @@ final class LogAgainstModels {
     }
 
     /**
+     * What a command that judges one log starts from: the models, the abstraction tuned for them, and the log read
+     * through it.
+     */
+    record Opened(ModelSet models, Abstraction abstraction, LogTrace trace) {
+    }
+
+    /** The models, {@link #tuned()} and the log it reads ({@link #readLog}), parse problems printed to {@code err}. */
+    Opened open(PrintWriter err) throws BadInputException, IOException {
+        ModelSet set = models();
+        Abstraction abstraction = tuned();
+        return new Opened(set, abstraction, readLog(abstraction, err));
+    }
+
+    /**
      * Checks {@code --log}, reads it with {@code abstraction} through the shared pipeline, refuses a log that gives
      * no evidence (no monitor record, nothing the abstraction maps, a fragment amid other bytes) and prints its parse
      * problems to {@code err}; refuses, after its unmapped messages, a log the abstraction does not fit.
