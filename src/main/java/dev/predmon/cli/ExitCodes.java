@@ -1,5 +1,7 @@
 package dev.predmon.cli;
 
+import dev.predmon.monitor.RunsSummary;
+
 import java.util.Arrays;
 import java.util.stream.IntStream;
 
@@ -40,6 +42,11 @@ public final class ExitCodes {
      * The code of a log that holds several runs, from each run's {@link #of} code: a warning in any run is the log's
      * warning; else a run that no model matched makes it {@link #NO_MATCH}; else {@link #OK}.
      */
+    static int ofRuns(RunsSummary runs) {
+        return runs.warnedMatching() ? WARNING : runs.noMatch() ? NO_MATCH : OK;
+    }
+
+    /** {@link #ofRuns(RunsSummary)} from each run's {@link #of} code. */
     static int ofRuns(IntStream runCodes) {
         int[] codes = runCodes.toArray();
         if (Arrays.stream(codes).anyMatch(c -> c == WARNING)) {

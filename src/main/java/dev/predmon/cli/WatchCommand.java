@@ -10,6 +10,7 @@ import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
+import dev.predmon.monitor.RunsSummary;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.monitor.WatchedLog;
 import dev.predmon.pipeline.Evidence;
@@ -207,18 +208,23 @@ final class WatchCommand implements Callable<Integer> {
         Map<String, Long> unmapped = m.unmapped();
         Problems.unmapped(err, log.path(), unmapped);
         List<RunOutcome> runs = m.runs();
-        RunOutcome first = runs.stream().filter(r -> r.warning() != null).findFirst().orElse(runs.get(0));
-        long pairs = runs.stream().mapToLong(RunOutcome::pairs).sum();
+        RunsSummary all = m.summary();
+        RunOutcome first = all.firstWarned().orElse(runs.get(0));
+        long pairs = all.pairs();
         if (input.json) {
             List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
                     r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
                     ForecastJson.of(r.forecast()))).toList();
             End end = new End("end", stop, m.records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), m.noMatch(), perRun,
-                    unmapped, m.rule().id(), ForecastJson.of(runs.get(runs.size() - 1).forecast()));
+                    all.runs(), all.dropped(), unmapped, m.rule().id(),
+                    ForecastJson.of(runs.get(runs.size() - 1).forecast()));
             out.println(Json.line(several ? Json.tagged(end, log.name()) : end));
         } else {
-            if (runs.size() > 1) {
+            if (all.dropped() > 0) {
+                out.println("(the first " + all.dropped() + " of " + all.runs() + " runs are counted, not listed)");
+            }
+            if (all.runs() > 1) {
                 for (RunOutcome r : runs) {
                     out.println("run " + r.run() + " (from line " + r.firstLine()
                             + outputs.restartBefore(log, r.run()).map(how -> ", after the log was " + how).orElse("")
@@ -235,20 +241,19 @@ final class WatchCommand implements Callable<Integer> {
                     : (m.warning().isPresent() ? "warning raised" : "no warning")
                     + (m.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
-                    : runs.stream().anyMatch(RunOutcome::safetyObserved) ? ", property held" : ", property not observed");
+                    : all.safetyObserved() ? ", property held" : ", property not observed");
             out.println("end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
-                    + stop + ")") + ": " + m.records() + " records, " + (runs.size() > 1 ? runs.size() + " runs, " : "")
+                    + stop + ")") + ": " + m.records() + " records, " + (all.runs() > 1 ? all.runs() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
             RunOutcome last = runs.get(runs.size() - 1);
-            if (runs.size() == 1 && last.forecast() != null) {
+            if (all.runs() == 1 && last.forecast() != null) {
                 // in a fleet every line names its log
                 out.println((several ? Terminal.line(log.name()) + ": " : "") + "last forecast: "
                         + ForecastWords.line(last.forecast()));
             }
         }
         out.flush();
-        return runs.size() == 1 ? ExitCodes.of(m.noMatch(), m.warning().isPresent())
-                : ExitCodes.ofRuns(runs.stream().mapToInt(r -> ExitCodes.of(r.noMatch(), r.warning() != null)));
+        return all.runs() == 1 ? ExitCodes.of(m.noMatch(), m.warning().isPresent()) : ExitCodes.ofRuns(all);
     }
 
     /** One run's verdict in the {@code end} event. */
@@ -258,7 +263,7 @@ final class WatchCommand implements Callable<Integer> {
 
     /** The {@code end} event. */
     record End(String event, String stop, long records, long pairs, boolean warning, boolean violation, Double lead,
-               String unit, boolean noMatch, List<RunEnd> runs, Map<String, Long> unmapped, String rule,
-               ForecastJson forecast) {
+               String unit, boolean noMatch, List<RunEnd> runs, int runCount, int runsNotListed,
+               Map<String, Long> unmapped, String rule, ForecastJson forecast) {
     }
 }

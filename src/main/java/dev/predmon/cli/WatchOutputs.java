@@ -7,7 +7,6 @@ import dev.predmon.live.Tile;
 import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
-import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.WatchedLog;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
@@ -210,7 +209,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     /** What {@code log} has given so far to judge it by. */
     Evidence evidence(WatchedLog log) {
         PredictiveMonitor m = log.monitor();
-        long pairs = m.runs().stream().mapToLong(RunOutcome::pairs).sum();
+        long pairs = m.summary().pairs();
         return new Evidence(log.path(), log.watcher()::lines, m.records(), m.interfaceRecords(), pairs, m.unmapped(),
                 abstraction, outlets.get(log).firstProblem);
     }

@@ -13,7 +13,6 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -58,7 +57,7 @@ public final class PredictiveMonitor implements PipelineListener {
     private long pairs;
     private int run;
     private long runLine = 1;
-    private final List<RunOutcome> finished = new ArrayList<>();
+    private final RunHistory finished = new RunHistory();
     private MonitorEvent.Warning firstWarning;
     private MonitorEvent.Violation firstViolation;
     /** Runs before the last restart: the runs after it are numbered on from there. */
@@ -127,7 +126,7 @@ public final class PredictiveMonitor implements PipelineListener {
         }
         before.add(pipeline);
         pipeline.reset();
-        runsBefore = finished.size();
+        runsBefore = finished.count();
         startRun(runsBefore, 1);
         events.accept(new MonitorEvent.Restarted(reason));
     }
@@ -167,11 +166,17 @@ public final class PredictiveMonitor implements PipelineListener {
                 forecast == null ? null : forecast.last());
     }
 
-    /** The outcome of every run so far, the current one last. */
+    /**
+     * The outcome of every run so far, the current one last; of a log of more than {@value RunHistory#KEPT} runs,
+     * the latest of them ({@link #summary} counts them all).
+     */
     public List<RunOutcome> runs() {
-        List<RunOutcome> all = new ArrayList<>(finished);
-        all.add(current());
-        return List.copyOf(all);
+        return finished.withCurrent(current());
+    }
+
+    /** What all runs since the start add up to. */
+    public RunsSummary summary() {
+        return finished.summary(current());
     }
 
     @Override
@@ -312,7 +317,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * more.
      */
     public boolean noMatch() {
-        return noMatch || finished.stream().anyMatch(RunOutcome::noMatch);
+        return summary().noMatch();
     }
 
     /** Every model's tracker, in model order. */

@@ -1,0 +1,18 @@
+package dev.predmon.monitor;
+
+import java.util.Optional;
+
+/**
+ * What every run of a log since the start adds up to, also the runs whose outcome is no longer kept in full.
+ *
+ * @param runs           runs since the start, the current one included
+ * @param dropped        the oldest of them, whose outcome is no longer listed ({@link PredictiveMonitor#runs})
+ * @param pairs          compacted pairs over all of them
+ * @param noMatch        whether in one of them a point came where no model matched
+ * @param safetyObserved whether one of them had a value of the safety property
+ * @param warnedMatching whether one of them was warned while some model still matched it
+ * @param firstWarned    the first run warned, if one was
+ */
+public record RunsSummary(int runs, int dropped, long pairs, boolean noMatch, boolean safetyObserved,
+                          boolean warnedMatching, Optional<RunOutcome> firstWarned) {
+}
