@@ -55,7 +55,7 @@ class BackwardTimesCliTest {
         assertEquals(ExitCodes.WARNING, r.code(), "the same verdict as with sane times: " + r.err() + r.out());
         assertTrue(r.err().isEmpty(), "nothing to complain about: " + r.err());
         List<JsonNode> events = new ArrayList<>();
-        for (String line : r.out().split("\n")) {
+        for (String line : r.out().split("\n", 0)) {
             events.add(new ObjectMapper().readTree(line));
         }
         return events;

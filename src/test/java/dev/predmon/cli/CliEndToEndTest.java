@@ -61,7 +61,7 @@ class CliEndToEndTest {
         Cli r = Cli.run("watch", "--log", log.toString(), "--models", models.toString(), "--no-follow", "--json");
         assertEquals(ExitCodes.WARNING, r.code(), r.err());
         List<JsonNode> events = new ArrayList<>();
-        for (String line : r.out().split("\n")) {
+        for (String line : r.out().split("\n", 0)) {
             events.add(new ObjectMapper().readTree(line));
         }
         JsonNode warning = events.stream().filter(e -> e.get("event").asText().equals("warning")).findFirst().orElseThrow();

@@ -64,7 +64,7 @@ class ControlCharactersTest {
         Cli r = Cli.run("watch", "--no-follow", "--log", fleet.toString(), "--models", models.toString());
         assertEquals(ExitCodes.OK, r.code(), r.err());
         plain(r.out());
-        for (String line : r.out().split("\n")) {
+        for (String line : r.out().split("\n", 0)) {
             assertTrue(line.startsWith(fleet.toString()) || line.startsWith("end of " + fleet), "a forged line: " + line);
         }
         assertFalse(r.out().lines().anyMatch(l -> l.startsWith("WARNING")), r.out());

@@ -39,7 +39,7 @@ class FleetWatchTest {
 
     private static List<JsonNode> events(String out) throws Exception {
         List<JsonNode> events = new ArrayList<>();
-        for (String line : out.strip().split("\n")) {
+        for (String line : out.strip().split("\n", -1)) {
             events.add(JSON.readTree(line));
         }
         return events;

@@ -43,7 +43,7 @@ class ForecastCliTest {
         args.addAll(List.of(more));
         Cli r = Cli.run(args.toArray(String[]::new));
         List<JsonNode> events = new ArrayList<>();
-        for (String line : r.out().split("\n")) {
+        for (String line : r.out().split("\n", 0)) {
             if (!line.isBlank()) {
                 events.add(JSON.readTree(line));
             }

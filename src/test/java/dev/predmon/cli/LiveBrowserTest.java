@@ -59,7 +59,7 @@ class LiveBrowserTest {
     private static List<JsonNode> events(Path log) throws Exception {
         List<JsonNode> events = new ArrayList<>();
         Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow", "--json");
-        for (String line : w.out().strip().split("\n")) {
+        for (String line : w.out().strip().split("\n", -1)) {
             events.add(JSON.readTree(line));
         }
         return events;

@@ -44,7 +44,7 @@ class LiveForecastStatusTest {
     /** The last event of a kind that {@code watch --json} printed so far, or null. */
     private static JsonNode last(Cli.Running w, String kind) throws Exception {
         JsonNode found = null;
-        for (String line : w.out().toString().split("\n")) {
+        for (String line : w.out().toString().split("\n", 0)) {
             if (line.startsWith("{")) {
                 JsonNode e = JSON.readTree(line);
                 if (e.get("event").asText().equals(kind)) {

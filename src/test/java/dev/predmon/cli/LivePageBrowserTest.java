@@ -147,7 +147,7 @@ class LivePageBrowserTest {
         Cli w = Cli.run("watch", "--log", log.toString(), "--models", models.toString(), "--no-follow", "--json");
         long warning = 0;
         long violation = 0;
-        for (String line : w.out().split("\n")) {
+        for (String line : w.out().split("\n", 0)) {
             JsonNode e = JSON.readTree(line);
             String kind = e.get("event").asText();
             if (kind.equals("warning") && warning == 0) {

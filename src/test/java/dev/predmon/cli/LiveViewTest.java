@@ -89,7 +89,7 @@ class LiveViewTest {
             streamed.add(JSON.readTree(next));
         }
         List<JsonNode> printed = new ArrayList<>();
-        for (String line : w.out().toString().strip().split("\n")) {
+        for (String line : w.out().toString().strip().split("\n", -1)) {
             printed.add(JSON.readTree(line));
         }
         // the forecast that follows the violation (certain now) may be printed before the comparison: compare up to it

@@ -106,7 +106,7 @@ class NoEvidenceCliTest {
     void commandsWithoutReplies() throws Exception {
         String run = HandRuns.recharge().text();
         StringBuilder commands = new StringBuilder();
-        for (String record : run.split("(?=\\d+\\.\\d+\\tDEBUG\\t)")) {
+        for (String record : run.split("(?=\\d+\\.\\d+\\tDEBUG\\t)", -1)) {
             if (record.contains("Command intercepted")) {
                 commands.append(record);
             }

@@ -120,7 +120,7 @@ class RecordingsCliTest {
                 "--abstraction", "scope-fetch").code());
         Cli w = Cli.run("watch", "--log", row.path().toString(), "--models", models.toString(),
                 "--abstraction", "scope-fetch", "--no-follow", "--json");
-        String[] lines = w.out().strip().split("\n");
+        String[] lines = w.out().strip().split("\n", -1);
         JsonNode end = JSON.readTree(lines[lines.length - 1]);
         assertEquals("end", end.get("event").asText());
         assertEquals(row.commands() + row.replies() + row.ticks(), end.get("records").asLong());

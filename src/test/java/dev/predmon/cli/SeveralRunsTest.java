@@ -56,7 +56,7 @@ class SeveralRunsTest {
 
     private static List<JsonNode> events(String out) throws Exception {
         List<JsonNode> events = new ArrayList<>();
-        for (String line : out.strip().split("\n")) {
+        for (String line : out.strip().split("\n", -1)) {
             events.add(JSON.readTree(line));
         }
         return events;
@@ -154,7 +154,7 @@ class SeveralRunsTest {
         Thread.sleep(300);
         watch.stop();
         List<JsonNode> warnings = new ArrayList<>();
-        for (String line : out.toString().strip().split("\n")) {
+        for (String line : out.toString().strip().split("\n", -1)) {
             JsonNode e = JSON.readTree(line);
             if (e.get("event").asText().equals("warning")) {
                 warnings.add(e);

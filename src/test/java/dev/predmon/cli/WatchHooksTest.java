@@ -48,7 +48,7 @@ class WatchHooksTest {
     }
 
     private JsonNode event(Cli w, String kind) throws Exception {
-        for (String line : w.out().strip().split("\n")) {
+        for (String line : w.out().strip().split("\n", -1)) {
             JsonNode e = JSON.readTree(line);
             if (e.get("event").asText().equals(kind)) {
                 return e;

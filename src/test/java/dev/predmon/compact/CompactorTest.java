@@ -64,7 +64,7 @@ class CompactorTest {
                 level_i batteryStatus_i o_batteryStatus_false isAt_ki_i o_isAt_ki_false
                 batteryStatus_i o_batteryStatus_false isAt_ki_i o_isAt_ki_false
                 batteryStatus_i o_batteryStatus_false isAt_ki_i o_isAt_ki_false
-                level_i o_goto_ki""".split("\\s+")) {
+                level_i o_goto_ki""".split("\\s+", -1)) {
             a.add(event(s));
         }
         List<IoPair> out = new ArrayList<>();
@@ -81,7 +81,7 @@ class CompactorTest {
     @Test
     void outputChangeIsKeptAndLastIsUpdatedByDroppedPairs() {
         List<AbstractEvent> log = new ArrayList<>();
-        for (String s : "isAt_ki_i o_isAt_ki_false isAt_ki_i o_isAt_ki_false isAt_ki_i o_isAt_ki_true isAt_ki_i o_isAt_ki_true isAt_ki_i o_isAt_ki_false".split(" ")) {
+        for (String s : "isAt_ki_i o_isAt_ki_false isAt_ki_i o_isAt_ki_false isAt_ki_i o_isAt_ki_true isAt_ki_i o_isAt_ki_true isAt_ki_i o_isAt_ki_false".split(" ", -1)) {
             log.add(event(s));
         }
         List<IoPair> out = new ArrayList<>();

@@ -53,7 +53,7 @@ final class ForecastTestRuns {
         List<RunTiming.Reading> readings = new ArrayList<>();
         double low = Double.NaN;
         for (int i = 0; i < pairs.size(); i++) {
-            String[] p = pairs.get(i).split("/");
+            String[] p = pairs.get(i).split("/", -1);
             io.add(new IoPair(p[0], p[1], null, null));
             times[i] = i;
             readings.add(new RunTiming.Reading(i, values[i], i));

@@ -210,7 +210,7 @@ class LogFollowerTest {
     @Test
     void rotationMidRecordWarnsAndTheNewFileParses() throws IOException {
         String log = SampleLogs.mixed(2, 9);
-        String[] lines = log.split("(?<=\n)");
+        String[] lines = log.split("(?<=\n)", -1);
         Path file = Files.writeString(dir.resolve("a.log"), lines[0] + lines[1] + lines[2]);
         Collected live = new Collected();
         try (LogFollower follower = finishingAtOnce(file, live.parser.lineSink())) {

@@ -148,7 +148,7 @@ class LogWriterTest {
     @Test
     void rawLinesPrecedeEveryRecord() {
         SimRun run = Simulator.run(Scenario.DIRECT, 2, DEFAULTS);
-        String[] lines = LogWriter.toText(run, DEFAULTS.withRawLines(true)).split("\n");
+        String[] lines = LogWriter.toText(run, DEFAULTS.withRawLines(true)).split("\n", 0);
         assertEquals(run.events().size() * 8, lines.length);
         for (int i = 0; i < lines.length; i += 8) {
             String time = lines[i].substring(0, lines[i].indexOf('\t'));

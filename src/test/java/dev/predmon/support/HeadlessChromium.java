@@ -64,7 +64,7 @@ public final class HeadlessChromium implements AutoCloseable {
             return Optional.empty();
         }
         for (String name : NAMES) {
-            for (String dir : path.split(File.pathSeparator)) {
+            for (String dir : path.split(File.pathSeparator, 0)) {
                 Path p = Path.of(dir, name);
                 if (Files.isExecutable(p)) {
                     return Optional.of(p);
