@@ -34,7 +34,8 @@ class ControlCharactersTest {
 
     /** Nothing a terminal acts on: no control character but the line ends. */
     private static void plain(String text) {
-        for (char c : text.toCharArray()) {
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
             assertTrue(c == '\n' || (c >= 0x20 && c != 0x7f), "a raw control character " + (int) c + " in: " + text);
         }
     }

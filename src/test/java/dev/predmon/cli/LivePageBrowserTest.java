@@ -224,7 +224,7 @@ class LivePageBrowserTest {
         Path warned = robot("r1", head(depleted, at[1]));
         String recharge = FleetWatchTest.run(Scenario.RECHARGE, 9002);
         Path fine = robot("r2", head(recharge, 2000));
-        try (LiveScene scene = new LiveScene(models, Duration.ofSeconds(600), RobotNames.pattern("{dir}"), List.of())) {
+        try (LiveScene scene = new LiveScene(models, Duration.ofMinutes(10), RobotNames.pattern("{dir}"), List.of())) {
             scene.follow(warned);
             scene.follow(fine);
             HeadlessChromium.Page page = open(scene.url());

@@ -176,7 +176,7 @@ class CompactorTest {
                 continue;
             }
             int limit = i;
-            while (limit + 1 < result.size() && !(result.get(limit + 1).channel().equals(e.channel()))) {
+            while (limit + 1 < result.size() && !result.get(limit + 1).channel().equals(e.channel())) {
                 limit++;
             }
             int target = i + rnd.nextInt(limit - i + 1);

@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -178,7 +179,8 @@ class ModelStoreTest {
     void modelsLearnedWithAnotherAbstractionAreRefused() throws Exception {
         Path dir = tmp.resolve("models");
         writeModels(dir);
-        String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes())
+        String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes(),
+                StandardCharsets.UTF_8)
                 .replace("\"charging_station\"", "\"dock\"");
         Abstraction other = AbstractionFiles.fromJson("other.json", json);
         BadInputException e = assertThrows(BadInputException.class, () -> ModelStore.read(dir, other));

@@ -21,6 +21,7 @@ import dev.predmon.support.Records;
 import org.junit.jupiter.api.Test;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -121,7 +122,8 @@ class PredictiveMonitorTest {
     /** Thesis Section 5.2: with the coarse bands of Section 4.2 the two runs part only at o_level_low: no lead. */
     @Test
     void coarseBandsOfSection42GiveNoLeadFigure56() throws Exception {
-        String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes());
+        String json = new String(Abstraction.class.getResourceAsStream("default-abstraction.json").readAllBytes(),
+                StandardCharsets.UTF_8);
         Abstraction coarse = AbstractionFiles.fromJson("coarse.json", coarsen(json));
         List<LearnedScenario> l = new ArrayList<>();
         l.add(ScenarioLearner.learnSamples(new ScenarioSpec("recharge", false, "", List.of()),

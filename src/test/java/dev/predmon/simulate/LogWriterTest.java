@@ -73,7 +73,7 @@ class LogWriterTest {
     void doublesArePrintedLikeYarp() {
         assertEquals("100.0", LogWriter.formatDouble(100.0));
         assertEquals("0.0", LogWriter.formatDouble(0.0));
-        assertEquals("97.316999999987189085", LogWriter.formatDouble(97.316999999987189085));
+        assertEquals("97.316999999987189085", LogWriter.formatDouble(97.31699999998719));
         assertEquals("0.100000000000000005551", LogWriter.formatDouble(0.1));
         assertEquals("72.125394", LogWriter.formatTime(72_125_394));
         assertEquals("0.000042", LogWriter.formatTime(42));
