@@ -43,15 +43,18 @@ public final class ExitCodes {
      * warning; else a run that no model matched makes it {@link #NO_MATCH}; else {@link #OK}.
      */
     static int ofRuns(RunsSummary runs) {
-        return runs.warnedMatching() ? WARNING : runs.noMatch() ? NO_MATCH : OK;
+        return ofRuns(runs.warnedMatching(), runs.noMatch());
     }
 
     /** {@link #ofRuns(RunsSummary)} from each run's {@link #of} code. */
     static int ofRuns(IntStream runCodes) {
         int[] codes = runCodes.toArray();
-        if (Arrays.stream(codes).anyMatch(c -> c == WARNING)) {
-            return WARNING;
-        }
-        return Arrays.stream(codes).anyMatch(c -> c == NO_MATCH) ? NO_MATCH : OK;
+        return ofRuns(Arrays.stream(codes).anyMatch(c -> c == WARNING),
+                Arrays.stream(codes).anyMatch(c -> c == NO_MATCH));
+    }
+
+    /** The log's code: a run warned while a model still matched it wins over a run no model matched. */
+    private static int ofRuns(boolean warnedMatching, boolean noMatch) {
+        return warnedMatching ? WARNING : noMatch ? NO_MATCH : OK;
     }
 }

@@ -216,7 +216,7 @@ final class WatchCommand implements Callable<Integer> {
                     r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
                     ForecastJson.of(r.forecast()))).toList();
             End end = new End("end", stop, m.records(), pairs, m.warning().isPresent(),
-                    m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), m.noMatch(), perRun,
+                    m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), all.noMatch(), perRun,
                     all.runs(), all.dropped(), unmapped, m.rule().id(),
                     ForecastJson.of(runs.get(runs.size() - 1).forecast()));
             out.println(Json.line(several ? Json.tagged(end, log.name()) : end));
@@ -239,7 +239,7 @@ final class WatchCommand implements Callable<Integer> {
             }
             String verdict = !judged ? "no verdict"
                     : (m.warning().isPresent() ? "warning raised" : "no warning")
-                    + (m.noMatch() ? ", no model matches the run" : "")
+                    + (all.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
                     : all.safetyObserved() ? ", property held" : ", property not observed");
             out.println("end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
@@ -253,7 +253,7 @@ final class WatchCommand implements Callable<Integer> {
             }
         }
         out.flush();
-        return all.runs() == 1 ? ExitCodes.of(m.noMatch(), m.warning().isPresent()) : ExitCodes.ofRuns(all);
+        return all.runs() == 1 ? ExitCodes.of(all.noMatch(), m.warning().isPresent()) : ExitCodes.ofRuns(all);
     }
 
     /** One run's verdict in the {@code end} event. */

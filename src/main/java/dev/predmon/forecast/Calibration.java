@@ -93,7 +93,7 @@ public record Calibration(double slope, double intercept, int runs) {
             double db = (haa * gb - hab * ga) / det;
             if (!(det > 0) || a - da < MIN_SLOPE) {
                 // the slope rests on its floor (or the step is undefined): a step of the intercept alone
-                da = a - MIN_SLOPE > 0 && det > 0 ? a - MIN_SLOPE : 0;
+                da = det > 0 ? a - MIN_SLOPE : 0; // a is never below the floor
                 db = gb / hbb;
             }
             // Newton's step, halved until the loss goes down (the loss is convex; a long step may overshoot)

@@ -150,15 +150,6 @@ public final class ForecastTraining {
         return false;
     }
 
-    /** The run's highest forecast before its violation (or its end). */
-    public static double peak(Forecaster forecaster, LogTrace.Run run) {
-        double peak = 0;
-        for (Forecast f : forecast(forecaster, run)) {
-            peak = Math.max(peak, f.probability());
-        }
-        return peak;
-    }
-
     /**
      * The forecasts of {@code run} before its violation, in the order {@code watch} makes them: after each new value
      * of the property and after each pair.

@@ -317,7 +317,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * more.
      */
     public boolean noMatch() {
-        return summary().noMatch();
+        return noMatch || finished.noMatch();
     }
 
     /** Every model's tracker, in model order. */

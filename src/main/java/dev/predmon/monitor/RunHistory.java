@@ -17,23 +17,24 @@ final class RunHistory {
     static final int KEPT = 1000;
 
     private final ArrayDeque<RunOutcome> latest = new ArrayDeque<>();
-    private int count;
-    private long pairs;
-    private boolean noMatch;
-    private boolean safetyObserved;
-    private boolean warnedMatching;
-    private RunOutcome firstWarned;
+    private Totals finished = Totals.NONE;
+
+    /** What a number of runs add up to; {@link #plus} counts one more. */
+    private record Totals(int count, long pairs, boolean noMatch, boolean safetyObserved, boolean warnedMatching,
+                          RunOutcome firstWarned) {
+
+        static final Totals NONE = new Totals(0, 0, false, false, false, null);
+
+        Totals plus(RunOutcome o) {
+            return new Totals(count + 1, pairs + o.pairs(), noMatch || o.noMatch(),
+                    safetyObserved || o.safetyObserved(), warnedMatching || (o.warning() != null && !o.noMatch()),
+                    firstWarned != null || o.warning() == null ? firstWarned : o);
+        }
+    }
 
     /** A run has finished with {@code outcome}. */
     void add(RunOutcome outcome) {
-        count++;
-        pairs += outcome.pairs();
-        noMatch |= outcome.noMatch();
-        safetyObserved |= outcome.safetyObserved();
-        warnedMatching |= outcome.warning() != null && !outcome.noMatch();
-        if (firstWarned == null && outcome.warning() != null) {
-            firstWarned = outcome;
-        }
+        finished = finished.plus(outcome);
         latest.addLast(outcome);
         if (latest.size() > KEPT) {
             latest.removeFirst();
@@ -42,12 +43,17 @@ final class RunHistory {
 
     /** Runs finished since the start. */
     int count() {
-        return count;
+        return finished.count();
+    }
+
+    /** Whether in a finished run a point came where no model matched. */
+    boolean noMatch() {
+        return finished.noMatch();
     }
 
     /** Finished runs whose outcome is no longer kept in full. */
     int dropped() {
-        return count - latest.size();
+        return finished.count() - latest.size();
     }
 
     /** The kept outcomes, oldest first, then {@code current}. */
@@ -59,9 +65,8 @@ final class RunHistory {
 
     /** The summary of the finished runs and {@code current}. */
     RunsSummary summary(RunOutcome current) {
-        RunOutcome warned = firstWarned != null || current.warning() == null ? firstWarned : current;
-        return new RunsSummary(count + 1, dropped(), pairs + current.pairs(), noMatch || current.noMatch(),
-                safetyObserved || current.safetyObserved(),
-                warnedMatching || (current.warning() != null && !current.noMatch()), Optional.ofNullable(warned));
+        Totals all = finished.plus(current);
+        return new RunsSummary(all.count(), dropped(), all.pairs(), all.noMatch(), all.safetyObserved(),
+                all.warnedMatching(), Optional.ofNullable(all.firstWarned()));
     }
 }

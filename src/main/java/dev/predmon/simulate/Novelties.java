@@ -131,10 +131,6 @@ public record Novelties(int aborts, AbortOn abortOn, Span stuck, Span slowdown, 
         return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, value, gap);
     }
 
-    public Novelties withGap(Span value) {
-        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, noTicks, value);
-    }
-
     /**
      * A closed range of values, one drawn per use from a seeded stream; {@code low == high} is a fixed value.
      *
