@@ -83,17 +83,21 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
 
     /**
      * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run has done something
-     * no learned machine does and its property is lower than every training run that held ever read. The threshold
+     * no learned machine does and its property is below the floor of the training runs that held ({@link
+     * Lows#safeFloor}: the lowest of them less the typical spacing between the lowest few). The threshold
      * was chosen on runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so
      * without the second clause the rule would be blind exactly where the matching is.
      */
     public boolean warns(Forecast f) {
-        return f.probability() >= threshold || (f.novel() && f.value() != null && belowEverySafeRun(f.value()));
+        return f.probability() >= threshold || (f.novel() && f.value() != null && belowSafeFloor(f.value()));
     }
 
-    /** Whether {@code value} is lower than every training run that held ever read (false without such a run). */
-    public boolean belowEverySafeRun(double value) {
-        return lows.safeCount() > 0 && lows.runs(value) == lows.violating(value);
+    /**
+     * Whether {@code value} is below where the training runs that held are likely to go ({@link Lows#safeFloor}; false
+     * without such a run).
+     */
+    public boolean belowSafeFloor(double value) {
+        return lows.safeCount() > 0 && value < lows.safeFloor();
     }
 
     /** This model with another warning threshold. */

@@ -117,6 +117,22 @@ public final class Forecaster {
     }
 
     /**
+     * The robot did something the abstraction cannot name ({@code UnmappedMessages.novelty}: a place no training
+     * run went to, a reply no rule takes): the trace misses a step here. The run is novel from this line, and the
+     * pairs before it no longer join those after it: until the next pair re-synchronises, the value alone speaks.
+     */
+    public void unseen(long line) {
+        if (novelSince == null) {
+            novelSince = line;
+        }
+        recent = 0;
+        depth = 0;
+        for (int m = 0; m < machines.size(); m++) {
+            candidates[m] = new BitSet();
+        }
+    }
+
+    /**
      * The property read a new value between pairs: the same states, forecast again at that value (the battery moves
      * while the interface repeats itself, and the compacted trace then has no pair to tell).
      */

@@ -51,9 +51,14 @@ final class ForecastTracker {
     String reason(Forecast f, String where) {
         String why = f.probability() >= threshold()
                 ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", threshold())
-                : "in behaviour no model has seen, with the value lower than any training run that held read";
+                : "in behaviour no model has seen, with the value below where the training runs that held went";
         return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
                 ForecastWords.time(f), ForecastWords.evidence(f), where);
+    }
+
+    /** A message the models cannot read, at {@code line}: the run is novel from there ({@link Forecaster#unseen}). */
+    void unseen(long line) {
+        forecaster.unseen(line);
     }
 
     void reset() {

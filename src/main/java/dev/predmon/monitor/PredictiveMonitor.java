@@ -12,6 +12,7 @@ import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
+import dev.predmon.pipeline.UnmappedMessages;
 
 import java.util.List;
 import java.util.Locale;
@@ -225,8 +226,13 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     @Override
-    public void unmapped(String key, LogRecord record) {
-        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
+    public void unmapped(String key, LogRecord record, boolean first) {
+        if (first) {
+            events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
+        }
+        if (forecast != null && UnmappedMessages.novelty(key, pipeline.abstraction())) {
+            forecast.unseen(record.line());
+        }
     }
 
     @Override
@@ -242,8 +248,9 @@ public final class PredictiveMonitor implements PipelineListener {
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
-            if (step.ruleWarns()) {
-                // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it)
+            // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it) while the
+            // run does what the models know: a nominal machine that fails on a novelty says nothing of a fault
+            if (step.ruleWarns() && (rule == WarningRule.MATCH || f == null || f.novelSince() == null)) {
                 reason = MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
                         + (f == null ? "" : "; " + ForecastWords.line(f));
             } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {

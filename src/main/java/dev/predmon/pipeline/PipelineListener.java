@@ -12,10 +12,11 @@ public interface PipelineListener {
     }
 
     /**
-     * The first interface message of its kind that no abstraction rule maps (since the start or the last reset):
-     * reported, never silently dropped.
+     * An interface message that no abstraction rule maps: reported, never silently dropped.
+     *
+     * @param first whether it is the first of its kind since the start or the last reset
      */
-    default void unmapped(String key, LogRecord record) {
+    default void unmapped(String key, LogRecord record, boolean first) {
     }
 
     /**

@@ -88,9 +88,7 @@ public final class TracePipeline {
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;
-            if (unmapped.merge(u.key(), 1L, Long::sum) == 1L) {
-                listener.unmapped(u.key(), record);
-            }
+            listener.unmapped(u.key(), record, unmapped.merge(u.key(), 1L, Long::sum) == 1L);
         }
     }
 

@@ -96,6 +96,15 @@ public final class UnmappedMessages {
         return groups;
     }
 
+    /**
+     * Whether a message of this kind is the robot doing something the models never saw, rather than a component the
+     * abstraction leaves out talking (a camera): it names a location the abstraction does not know, or it is a command
+     * or a reply of a component the abstraction maps that no rule takes. The trace misses a step there.
+     */
+    public static boolean novelty(String kind, Abstraction abstraction) {
+        return kind.contains(LOCATION) || abstraction.mapsProtocol(protocol(command(kind)));
+    }
+
     /** At most {@value #MAX_LINES} lines, one per command, then one that counts the commands left out. */
     public static List<String> lines(Map<String, Long> unmapped) {
         List<Group> groups = groups(unmapped);

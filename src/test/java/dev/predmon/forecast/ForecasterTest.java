@@ -64,6 +64,22 @@ class ForecasterTest {
     }
 
     @Test
+    void aMessageTheModelsCannotReadMakesTheRunNovelAndCutsItsPast() {
+        Forecaster f = new Forecaster(model(5, 5), ForecastTestRuns.machines());
+        f.pair("a", "x", 0, 90, 10);
+        f.unseen(11);
+        Forecast gap = f.reading(1, 85);
+        assertEquals(Long.valueOf(11), gap.novelSince());
+        assertEquals(Forecast.Basis.VALUE_ONLY, gap.basis(), "the trace misses a step: no state is known");
+        Forecast back = f.pair("b", "y", 2, 80, 12);
+        assertEquals(Forecast.Basis.RESYNCHRONISED, back.basis(), "b/y alone, not a/x then b/y: " + back);
+        f.unseen(13);
+        assertEquals(Long.valueOf(11), f.reading(3, 75).novelSince(), "novel since the first such message");
+        f.reset();
+        assertNull(f.pair("a", "x", 0, 90, 20).novelSince(), "a new run starts known");
+    }
+
+    @Test
     void theTimeToViolationFollowsTheDrift() {
         Forecaster f = new Forecaster(model(3, 3), ForecastTestRuns.machines());
         f.pair("a", "x", 0, 90, 1);

@@ -1,0 +1,36 @@
+package dev.predmon.forecast;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The value tables' counts, and where the runs that held are likely to stop. */
+class LowsTest {
+
+    @Test
+    void theSafeFloorLiesOneTypicalSpacingBelowTheLowestSafeRun() {
+        // nine safe lows 1 apart from 30: the lowest three are 30, 31, 32, so a next run may well read 29
+        Lows lows = new Lows(new double[] {38, 30, 31, 32, 33, 34, 35, 36, 37}, new double[] {21, 22});
+        assertEquals(29.0, lows.safeFloor(), 1e-9);
+    }
+
+    @Test
+    void oneSafeRunGivesNoSpacingAndNoneGivesNoFloor() {
+        assertEquals(40.0, new Lows(new double[] {40}, new double[] {21}).safeFloor(), 1e-9);
+        assertTrue(Double.isNaN(new Lows(new double[0], new double[] {21}).safeFloor()));
+    }
+
+    @Test
+    void theNoveltyClauseWaitsForTheFloorNotTheLowestSafeRun() {
+        Lows lows = new Lows(new double[] {30, 31, 32, 33, 34, 35, 36, 37, 38}, new double[] {21, 22, 23});
+        ForecastModel m = new ForecastModel(ForecastModel.FORMAT, "s", 20, 12, 3, lows, 0.9, "test", true,
+                Map.of(), List.of());
+        assertFalse(m.belowSafeFloor(29.5), "below the lowest safe run, yet within a spacing of it");
+        assertTrue(m.belowSafeFloor(28.9));
+    }
+}
