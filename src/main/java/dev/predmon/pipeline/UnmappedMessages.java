@@ -122,9 +122,11 @@ public final class UnmappedMessages {
 
     /**
      * Why the models cannot judge this log, in one line naming it, when its unmapped messages show that the
-     * abstraction does not fit it: most interface records are unmapped, or the log names locations the abstraction
-     * does not know, or commands of a component it maps that it has no rule for (the robot does what the models
-     * never saw). Interface messages of components the abstraction knows nothing of (a camera) are only reported.
+     * abstraction does not fit it: most interface records are unmapped, or commands of a component it maps that it
+     * has no rule for (another robot, or another version of its interface). The locations it does not know are named
+     * too, but a new place alone is no misfit: it is behaviour the models never saw, which the forecast follows
+     * ({@link #novelty}). Interface messages of components the abstraction knows nothing of (a camera) are only
+     * reported.
      *
      * @param interfaceRecords the log's interface records, mapped or not
      * @param abstraction      the abstraction the log was read with
@@ -141,11 +143,11 @@ public final class UnmappedMessages {
                 unseen.add(g.command());
             }
         }
-        places.forEach(p -> unseen.add("location '" + p + "'"));
         boolean most = notMapped * 2 > interfaceRecords;
         if (!most && unseen.isEmpty()) {
-            return Optional.empty();
+            return Optional.empty(); // a new place alone is novelty, which the forecast follows through
         }
+        places.forEach(p -> unseen.add("location '" + p + "'"));
         List<String> why = new ArrayList<>();
         if (most) {
             long mapped = interfaceRecords - notMapped;

@@ -77,7 +77,7 @@ class ExitCodeTableTest {
      */
     @Test
     void row5AlsoWhenAWarningCameBefore() throws Exception {
-        // (at a location the models know: one they never saw is no verdict at all, see ModelsThatDoNotFitTest)
+        // (at a location the models know: a new place makes the run novel from there, see NewPlaceCliTest)
         Records warnedThenUnknown = HandRuns.depleted().at(100).level(100).charging(true).isAt("kitchen", true);
         Path log = log("warned-then-unknown.log", warnedThenUnknown);
         Cli watch = Cli.run("watch", "--no-follow", "--log", log.toString(), "--models", models.toString());

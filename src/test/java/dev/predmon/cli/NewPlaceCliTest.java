@@ -77,6 +77,7 @@ class NewPlaceCliTest {
             assertFalse(events.stream().anyMatch(e -> e.get("event").asText().equals("warning")),
                     "seed " + seed + ": a safe run that went elsewhere is no fault: " + all);
             JsonNode end = events.get(events.size() - 1);
+            assertEquals("end", end.get("event").asText(), "a new place alone still gets a verdict: " + all);
             long place = firstLineAbout(tmp.resolve("recharge-" + seed + ".log"), "office");
             long novel = end.get("forecast").get("novelSince").asLong();
             assertTrue(novel >= place - 8 && novel <= place,
