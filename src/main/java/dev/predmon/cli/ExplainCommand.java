@@ -1,6 +1,10 @@
 package dev.predmon.cli;
 
+import dev.predmon.evaluate.RunResult;
 import dev.predmon.explain.Explanation;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastWords;
+import dev.predmon.monitor.WarningRule;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -37,7 +41,8 @@ final class ExplainCommand implements Callable<Integer> {
                 confirm.value(in.abstraction()));
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.
-            out.println(Json.document(runs.size() == 1 ? runs.get(0) : Map.of("runs", runs)));
+            List<ExplanationJson> json = runs.stream().map(ExplanationJson::of).toList();
+            out.println(Json.document(json.size() == 1 ? json.get(0) : Map.of("runs", json)));
         } else {
             for (int i = 0; i < runs.size(); i++) {
                 if (i > 0) {
@@ -61,6 +66,9 @@ final class ExplainCommand implements Callable<Integer> {
             }
             out.printf(Locale.ROOT, "  %4d  t=%-10.3f line %-7d %s -> %s%s%n", s.index(), s.time(), s.line(),
                     s.input(), s.output(), ends);
+            if (s.forecast() != null) {
+                out.println("        " + ForecastWords.brief(s.forecast()));
+            }
         }
         out.println();
         out.println("models:");
@@ -70,22 +78,52 @@ final class ExplainCommand implements Callable<Integer> {
         }
         out.println();
         var r = x.run();
-        if (r.warningTime() != null) {
-            out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d): every nominal model is eliminated while %s "
-                    + "still matches%n", r.warningTime(), r.warningLine(), String.join(", ", r.warningScenarios()));
+        boolean nominal = x.models().stream().anyMatch(f -> !f.faulty() && f.matched());
+        int lastNominal = x.models().stream().filter(f -> !f.faulty() && f.stoppedAt() != null)
+                .mapToInt(Explanation.ModelFate::stoppedAt).max().orElse(-1);
+        boolean outlived = x.models().stream().anyMatch(f -> f.faulty()
+                && (f.matched() || (f.stoppedAt() != null && f.stoppedAt() > lastNominal)));
+        String matching = nominal ? "a nominal model matches the whole run"
+                : outlived ? "every nominal model was eliminated by pair " + lastNominal + " while a faulty one still "
+                + "matched" : "no faulty model was left when the last nominal one was eliminated";
+        if (x.warning() != null) {
+            out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d), rule %s: %s%n", x.warning().time(),
+                    x.warning().line(), x.rule().id(), x.warning().reason());
+        } else if (x.rule() == WarningRule.FORECAST && r.forecast() != null) {
+            Forecast last = r.forecast().last();
+            if (outlived && last != null && last.novelSince() != null) {
+                matching += ", which does not warn once the run is novel (line " + last.novelSince() + ")";
+            }
+            out.printf(Locale.ROOT, "watch does not warn, rule forecast: the highest probability before any violation "
+                    + "was %.2f, under the threshold %.2f; the thesis's matching: %s%n", r.forecast().peak(),
+                    r.forecast().threshold(), matching);
         } else {
-            boolean nominal = x.models().stream().anyMatch(f -> !f.faulty() && f.matched());
-            boolean faulty = x.models().stream().anyMatch(f -> f.faulty() && f.matched());
-            out.println("watch does not warn: " + (nominal ? "a nominal model matches the whole run"
-                    : faulty ? "a nominal model matched until the faulty ones were gone"
-                    : "no model was left when the nominal ones were eliminated"));
+            out.println("watch does not warn, rule " + x.rule().id() + ": " + matching);
         }
         if (r.noMatch()) {
-            out.println("no model matches the whole run: it is unlike every learned scenario (no prediction)");
+            Forecast last = r.forecast() == null ? null : r.forecast().last();
+            out.println("no model matches the whole run: it is unlike every learned scenario"
+                    + (last != null && last.novelSince() != null ? "; the forecast went on, novel since line "
+                    + last.novelSince() : " (no prediction)"));
         }
         out.println(r.violationTime() != null
                 ? String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime())
                 : r.safetyObserved() ? "the safety property holds throughout the log"
                 : "the safety property is not observed in the log (no value for it): no verdict on it");
+    }
+
+    /** {@code explain --json}: the explanation with its forecasts as {@code watch --json} writes them. */
+    record ExplanationJson(String log, List<StepJson> steps, List<Explanation.ModelFate> models, RunResult run,
+                           String rule, String warning) {
+
+        static ExplanationJson of(Explanation x) {
+            return new ExplanationJson(x.log(), x.steps().stream().map(s -> new StepJson(s.index(), s.time(),
+                    s.line(), s.input(), s.output(), ForecastJson.of(s.forecast()))).toList(), x.models(), x.run(),
+                    x.rule().id(), x.warning() == null ? null : x.warning().reason());
+        }
+    }
+
+    /** One pair of {@code explain --json}, with the forecast right after it (null without one). */
+    record StepJson(int index, double time, long line, String input, String output, ForecastJson forecast) {
     }
 }

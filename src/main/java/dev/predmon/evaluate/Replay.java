@@ -49,12 +49,20 @@ public final class Replay {
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
                                       ModelSet models, Abstraction abstraction, int threshold, int confirm,
                                       WarningRule rule) throws IOException {
+        return run(log, scenario, faulty, label, fold, models, abstraction, threshold, confirm, rule, new Trail());
+    }
+
+    /** As above, also telling {@code trail} the forecast after each pair and the warnings as raised. */
+    public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
+                                      ModelSet models, Abstraction abstraction, int threshold, int confirm,
+                                      WarningRule rule, Trail trail) throws IOException {
         List<MonitorEvent> events = new ArrayList<>();
         int[] problems = {0};
         PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, rule, events::add);
         Map<Integer, List<Double>> probabilities = new HashMap<>();
         Set<Integer> violated = new HashSet<>();
         monitor.onEveryForecast((f, run) -> {
+            trail.forecast(run, monitor.pairs(), f);
             if (!violated.contains(run) && f.basis() != Forecast.Basis.VIOLATED) {
                 probabilities.computeIfAbsent(run, r -> new ArrayList<>()).add(f.probability());
             } else {
@@ -82,6 +90,7 @@ public final class Replay {
                 }
             }
             MonitorEvent.Warning warning = o.warning();
+            trail.warning(o.run(), warning);
             MonitorEvent.Violation violation = o.violation();
             Double warningTime = warning == null ? null : warning.time();
             Double violationTime = violation == null ? null : violation.time();

@@ -4,10 +4,15 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
+import dev.predmon.evaluate.Trail;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.ModelTracker;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.Traces;
@@ -27,8 +32,11 @@ import java.util.List;
  * @param steps  the compacted trace, one query/reply pair each
  * @param models every model's fate, in model order
  * @param run    the monitor's verdict on the run (scenario unknown: judged as nominal)
+ * @param rule   the rule the monitor warned by
+ * @param warning the warning as the monitor raised it, with its reason, or null
  */
-public record Explanation(String log, List<Step> steps, List<ModelFate> models, RunResult run) {
+public record Explanation(String log, List<Step> steps, List<ModelFate> models, RunResult run, WarningRule rule,
+                          MonitorEvent.Warning warning) {
 
     /**
      * One compacted pair.
@@ -36,10 +44,11 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
      * @param index  0-based pair index (Mealy steps {@code 2*index} and {@code 2*index+1})
      * @param time   time of the record that completed it
      * @param line   that record's line
-     * @param input  input symbol (the command)
-     * @param output output symbol (the reply)
+     * @param input    input symbol (the command)
+     * @param output   output symbol (the reply)
+     * @param forecast the monitor's forecast right after it, or null when the models carry none
      */
-    public record Step(int index, double time, long line, String input, String output) {
+    public record Step(int index, double time, long line, String input, String output, Forecast forecast) {
     }
 
     /**
@@ -70,20 +79,25 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
     public static List<Explanation> of(LogTrace trace, ModelSet models, Abstraction abstraction, int threshold,
                                        int confirm) throws IOException {
         Path log = trace.log();
-        List<RunResult> verdicts = Replay.run(log, "?", false, RunLabel.ALL, -1, models, abstraction, threshold, confirm);
+        WarningRule rule = PredictiveMonitor.defaultRule(models);
+        Trail trail = new Trail();
+        List<RunResult> verdicts = Replay.run(log, "?", false, RunLabel.ALL, -1, models, abstraction, threshold, confirm,
+                rule, trail);
         List<Explanation> all = new ArrayList<>();
         for (LogTrace.Run r : trace.runs()) {
             all.add(of(LogTrace.name(log, r.index(), trace.runs().size()), r.pairs(), models, threshold,
-                    verdicts.get(r.index())));
+                    verdicts.get(r.index()), rule, trail.afterPairs(r.index()), trail.warning(r.index()).orElse(null)));
         }
         return List.copyOf(all);
     }
 
-    private static Explanation of(String name, List<IoPair> pairs, ModelSet models, int threshold, RunResult run) {
+    private static Explanation of(String name, List<IoPair> pairs, ModelSet models, int threshold, RunResult run,
+                                  WarningRule rule, List<Forecast> forecasts, MonitorEvent.Warning warning) {
         List<Step> steps = new ArrayList<>();
         for (int i = 0; i < pairs.size(); i++) {
             IoPair p = pairs.get(i);
-            steps.add(new Step(i, p.reply().time(), p.reply().line(), p.input(), p.output()));
+            steps.add(new Step(i, p.reply().time(), p.reply().line(), p.input(), p.output(),
+                    i < forecasts.size() ? forecasts.get(i) : null));
         }
         List<ModelFate> fates = new ArrayList<>();
         for (LearnedModel m : models.models()) {
@@ -113,6 +127,6 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                         t.discrepancies(), reason));
             }
         }
-        return new Explanation(name, List.copyOf(steps), List.copyOf(fates), run);
+        return new Explanation(name, List.copyOf(steps), List.copyOf(fates), run, rule, warning);
     }
 }

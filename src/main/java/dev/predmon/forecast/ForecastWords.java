@@ -59,6 +59,17 @@ public final class ForecastWords {
         return b.toString();
     }
 
+    /**
+     * The forecast in a few words, for a line under each pair: {@code P(violation) 0.34, about 76.0 s to the violation
+     * (49.6-162 s) [matched, 10 of 29 runs]}, and {@code novel since line N} when it is.
+     */
+    public static String brief(Forecast f) {
+        String runs = f.basis() == Forecast.Basis.VIOLATED ? ""
+                : String.format(Locale.ROOT, ", %d of %d runs", f.violated(), f.runs());
+        return probability(f) + ", " + time(f) + " [" + f.basis().label() + runs + "]"
+                + (f.novel() ? "; novel since line " + f.novelSince() : "");
+    }
+
     /** The whole forecast on one line. */
     public static String line(Forecast f) {
         return probability(f) + ", " + time(f) + " [" + f.basis().label() + "]: " + evidence(f);

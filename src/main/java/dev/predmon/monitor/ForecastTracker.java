@@ -1,10 +1,12 @@
 package dev.predmon.monitor;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.model.ModelSet;
+import dev.predmon.pipeline.UnmappedMessages;
 
 import java.util.Locale;
 
@@ -56,9 +58,23 @@ final class ForecastTracker {
                 ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
 
-    /** A message the models cannot read, at {@code line}: the run is novel from there ({@link Forecaster#unseen}). */
-    void unseen(long line) {
-        forecaster.unseen(line);
+    /**
+     * An interface message no rule maps, at {@code line}: when it is the robot doing something the models never saw
+     * ({@link UnmappedMessages#novelty}), the run is novel from there ({@link Forecaster#unseen}).
+     */
+    void unmapped(String key, Abstraction abstraction, long line) {
+        if (UnmappedMessages.novelty(key, abstraction)) {
+            forecaster.unseen(line);
+        }
+    }
+
+    /**
+     * Whether the forecast rule takes the thesis's "only faulty" verdict at {@code f} (its threshold was chosen
+     * knowing that verdict): only while the run does what the models know, for a nominal machine that fails on a
+     * novelty, or on a gap in the trace, says nothing of a fault.
+     */
+    static boolean takesMatching(Forecast f) {
+        return f == null || f.novelSince() == null;
     }
 
     void reset() {

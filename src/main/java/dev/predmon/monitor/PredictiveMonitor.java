@@ -12,7 +12,6 @@ import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
-import dev.predmon.pipeline.UnmappedMessages;
 
 import java.util.List;
 import java.util.Locale;
@@ -37,8 +36,7 @@ import java.util.function.ObjIntConsumer;
  * matches, and a faulty model has matched {@code confirm} more pairs since ({@code confirm = 0} is Algorithm 8; the
  * abstraction sets the default, {@link Abstraction#confirm()}).
  *
- * <p>Per record the work is constant (one step per model) and so is the state, so the monitor never re-reads the
- * log, unlike the thesis's loop.
+ * <p>Per record the work and the state are constant (one step per model): it never re-reads the log, unlike the thesis.
  *
  * <p>The built-in safety monitor (the property of the abstraction file, by default {@code level < 20.0} on the
  * BatteryReader channel) runs alongside on the raw records and reports the first violation, so that the lead
@@ -230,8 +228,8 @@ public final class PredictiveMonitor implements PipelineListener {
         if (first) {
             events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
         }
-        if (forecast != null && UnmappedMessages.novelty(key, pipeline.abstraction())) {
-            forecast.unseen(record.line());
+        if (forecast != null) {
+            forecast.unmapped(key, pipeline.abstraction(), record.line());
         }
     }
 
@@ -248,9 +246,7 @@ public final class PredictiveMonitor implements PipelineListener {
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
-            // the thesis's evidence; the forecast rule takes it too (its threshold was chosen knowing it) while the
-            // run does what the models know: a nominal machine that fails on a novelty says nothing of a fault
-            if (step.ruleWarns() && (rule == WarningRule.MATCH || f == null || f.novelSince() == null)) {
+            if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f))) {
                 reason = MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
                         + (f == null ? "" : "; " + ForecastWords.line(f));
             } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {

@@ -96,6 +96,29 @@ class ForecastCliTest {
     }
 
     @Test
+    void explainPrintsTheForecastAfterEveryPairAndWhyWatchWarned() throws Exception {
+        Path log = simulate("explained.log", "--scenario", "depleted", "--seed", "424242");
+        Cli text = Cli.run("explain", "--log", log.toString(), "--models", models.toString());
+        assertEquals(ExitCodes.WARNING, text.code(), text.err());
+        List<String> lines = text.out().lines().toList();
+        long pairs = lines.stream().filter(l -> l.matches("\\s+\\d+\\s+t=.*")).count();
+        long forecasts = lines.stream().filter(l -> l.startsWith("        P(violation) ")).count();
+        assertTrue(pairs > 5 && forecasts == pairs, "a forecast under each of the " + pairs + " pairs: " + text.out());
+        String verdict = lines.stream().filter(l -> l.startsWith("watch WARNS at")).findFirst()
+                .orElseThrow(() -> new AssertionError(text.out()));
+        assertTrue(verdict.contains("rule forecast: ") && verdict.contains("training runs"), verdict);
+
+        Cli json = Cli.run("explain", "--json", "--log", log.toString(), "--models", models.toString());
+        JsonNode x = JSON.readTree(json.out());
+        assertEquals("forecast", x.get("rule").asText());
+        assertTrue(x.get("warning").asText().contains("P(violation)"), x.get("warning").toString());
+        for (JsonNode step : x.get("steps")) {
+            double p = step.get("forecast").get("probability").asDouble();
+            assertTrue(p >= 0 && p <= 1, step.toString());
+        }
+    }
+
+    @Test
     void anAbortedNavigationIsNovelYetTheForecastGoesOnToTheEnd() throws Exception {
         List<JsonNode> events = watch(simulate("aborted.log", "--scenario", "depleted", "--seed", "31337", "--aborts",
                 "1", "--abort-on", "station"));

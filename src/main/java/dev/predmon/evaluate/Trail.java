@@ -1,0 +1,44 @@
+package dev.predmon.evaluate;
+
+import dev.predmon.forecast.Forecast;
+import dev.predmon.monitor.MonitorEvent;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * What a replay saw on the way, beyond each run's verdict: per run, the forecast right after each compacted pair and
+ * the warning as the monitor raised it, with its reason. Filled by {@link Replay#run}; read by {@code explain}.
+ */
+public final class Trail {
+
+    private final Map<Integer, List<Forecast>> afterPairs = new HashMap<>();
+    private final Map<Integer, MonitorEvent.Warning> warnings = new HashMap<>();
+
+    /** Takes the monitor's forecast of {@code run} when it has seen {@code pairs} pairs of that run. */
+    void forecast(int run, long pairs, Forecast f) {
+        List<Forecast> list = afterPairs.computeIfAbsent(run, r -> new ArrayList<>());
+        if (pairs > list.size()) {
+            list.add(f); // the first forecast once a pair came is the one after it; readings between pairs follow
+        }
+    }
+
+    void warning(int run, MonitorEvent.Warning w) {
+        if (w != null) {
+            warnings.put(run, w);
+        }
+    }
+
+    /** The forecast after each pair of {@code run}, in pair order; empty without a forecast. */
+    public List<Forecast> afterPairs(int run) {
+        return List.copyOf(afterPairs.getOrDefault(run, List.of()));
+    }
+
+    /** The warning raised in {@code run}, if any. */
+    public Optional<MonitorEvent.Warning> warning(int run) {
+        return Optional.ofNullable(warnings.get(run));
+    }
+}
