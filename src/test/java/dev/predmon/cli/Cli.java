@@ -1,15 +1,22 @@
 package dev.predmon.cli;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 import picocli.CommandLine;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import static org.junit.jupiter.api.Assertions.assertFalse;
 
 /** Runs predmon's command line in-process and captures what it prints. */
 record Cli(int code, String out, String err) {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
 
     static Cli run(String... args) {
         StringWriter out = new StringWriter();
@@ -19,6 +26,17 @@ record Cli(int code, String out, String err) {
         cl.setErr(new PrintWriter(err, true));
         int code = cl.execute(args);
         return new Cli(code, out.toString(), err.toString());
+    }
+
+    /** The output as {@code --json} commands print it, one JSON value per line (blank lines skipped). */
+    List<JsonNode> jsonLines() throws JsonProcessingException {
+        List<JsonNode> values = new ArrayList<>();
+        for (String line : out.split("\n", -1)) {
+            if (!line.isBlank()) {
+                values.add(JSON.readTree(line));
+            }
+        }
+        return values;
     }
 
     /**

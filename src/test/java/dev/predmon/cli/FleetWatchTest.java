@@ -1,7 +1,6 @@
 package dev.predmon.cli;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
@@ -27,7 +26,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class FleetWatchTest {
 
-    private static final ObjectMapper JSON = new ObjectMapper();
     private static final Path MODELS = Path.of("models");
 
     @TempDir
@@ -38,11 +36,7 @@ class FleetWatchTest {
     }
 
     private static List<JsonNode> events(String out) throws Exception {
-        List<JsonNode> events = new ArrayList<>();
-        for (String line : out.strip().split("\n", -1)) {
-            events.add(JSON.readTree(line));
-        }
-        return events;
+        return new Cli(0, out, "").jsonLines();
     }
 
     private static List<JsonNode> of(List<JsonNode> events, String log, String kind) {

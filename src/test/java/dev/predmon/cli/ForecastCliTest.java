@@ -41,14 +41,7 @@ class ForecastCliTest {
         List<String> args = new ArrayList<>(List.of("watch", "--no-follow", "--json", "--log", log.toString(),
                 "--models", models.toString()));
         args.addAll(List.of(more));
-        Cli r = Cli.run(args.toArray(String[]::new));
-        List<JsonNode> events = new ArrayList<>();
-        for (String line : r.out().split("\n", 0)) {
-            if (!line.isBlank()) {
-                events.add(JSON.readTree(line));
-            }
-        }
-        return events;
+        return Cli.run(args.toArray(String[]::new)).jsonLines();
     }
 
     private static Path simulate(String name, String... options) {

@@ -57,12 +57,8 @@ class LiveBrowserTest {
 
     /** The events {@code watch --json --no-follow} gives for a log. */
     private static List<JsonNode> events(Path log) throws Exception {
-        List<JsonNode> events = new ArrayList<>();
-        Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow", "--json");
-        for (String line : w.out().strip().split("\n", -1)) {
-            events.add(JSON.readTree(line));
-        }
-        return events;
+        return Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow", "--json")
+                .jsonLines();
     }
 
     private static JsonNode first(List<JsonNode> events, String kind) {

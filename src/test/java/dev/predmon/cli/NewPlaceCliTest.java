@@ -1,14 +1,12 @@
 package dev.predmon.cli;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -23,8 +21,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * at about 44% battery because every nominal machine was eliminated while the faulty one still matched).
  */
 class NewPlaceCliTest {
-
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     @TempDir
     static Path tmp;
@@ -49,14 +45,8 @@ class NewPlaceCliTest {
         Cli sim = Cli.run("simulate", "--scenario", scenario, "--seed", Integer.toString(seed), "--new-location",
                 "office", "--out", log.toString());
         assertEquals(0, sim.code(), sim.err());
-        Cli r = Cli.run("watch", "--no-follow", "--json", "--log", log.toString(), "--models", models.toString());
-        List<JsonNode> events = new ArrayList<>();
-        for (String line : r.out().split("\n", 0)) {
-            if (!line.isBlank()) {
-                events.add(JSON.readTree(line));
-            }
-        }
-        return events;
+        return Cli.run("watch", "--no-follow", "--json", "--log", log.toString(), "--models", models.toString())
+                .jsonLines();
     }
 
     private static long firstLineAbout(Path log, String place) throws Exception {

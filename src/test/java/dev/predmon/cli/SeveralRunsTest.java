@@ -55,11 +55,7 @@ class SeveralRunsTest {
     }
 
     private static List<JsonNode> events(String out) throws Exception {
-        List<JsonNode> events = new ArrayList<>();
-        for (String line : out.strip().split("\n", -1)) {
-            events.add(JSON.readTree(line));
-        }
-        return events;
+        return new Cli(0, out, "").jsonLines();
     }
 
     @Test
