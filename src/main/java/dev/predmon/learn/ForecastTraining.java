@@ -159,8 +159,13 @@ public final class ForecastTraining {
         List<Forecast> out = new ArrayList<>();
         RunTiming t = run.timing();
         List<RunTiming.Reading> readings = t.readings();
+        List<RunTiming.Gap> gaps = t.gaps();
         int r = 0;
+        int g = 0;
         for (int i = 0; i <= run.pairs().size(); i++) {
+            for (; g < gaps.size() && gaps.get(g).pairsBefore() <= i; g++) {
+                forecaster.unseen(gaps.get(g).line()); // as watch does at a message the models cannot read
+            }
             for (; r < readings.size() && readings.get(r).pairsBefore() <= i; r++) {
                 RunTiming.Reading x = readings.get(r);
                 if (run.violated() && !(x.time() < t.violationTime())) {

@@ -16,11 +16,29 @@ import java.util.List;
  * @param unit          what the times count: {@code s}, or {@code ticks} in a log without time stamps
  * @param readings      every change of the property's value in the run, in order, with the number of pairs completed
  *                      before it: the forecast moves with the value between pairs too
+ * @param gaps          where the trace misses a step: the interface messages of the run that the abstraction cannot
+ *                      name ({@link UnmappedMessages#novelty}), in order, so that the forecast made offline treats them
+ *                      as {@code watch} does
  */
 // Arrays: one number per pair, read by index; a run's timing is never compared or hashed.
 @SuppressWarnings("ArrayRecordComponent")
 public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
-                        double lowestSafeValue, String unit, List<Reading> readings) {
+                        double lowestSafeValue, String unit, List<Reading> readings, List<Gap> gaps) {
+
+    /** As above, with a trace that misses no step. */
+    public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
+                     String unit, List<Reading> readings) {
+        this(times, values, violationTime, endTime, lowestSafeValue, unit, readings, List.of());
+    }
+
+    /**
+     * A message the abstraction cannot name.
+     *
+     * @param line        its line in the log
+     * @param pairsBefore pairs of the run completed before it
+     */
+    public record Gap(long line, int pairsBefore) {
+    }
 
     /**
      * A new value of the property.
@@ -40,6 +58,7 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
         times = times.clone();
         values = values.clone();
         readings = List.copyOf(readings);
+        gaps = List.copyOf(gaps);
     }
 
     /** No timing known for {@code pairs} pairs (every time and value NaN). */
@@ -77,7 +96,8 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
     public boolean equals(Object o) {
         return o instanceof RunTiming t && Arrays.equals(times, t.times) && Arrays.equals(values, t.values)
                 && Double.compare(violationTime, t.violationTime) == 0 && Double.compare(endTime, t.endTime) == 0
-                && Double.compare(lowestSafeValue, t.lowestSafeValue) == 0 && unit.equals(t.unit) && readings.equals(t.readings);
+                && Double.compare(lowestSafeValue, t.lowestSafeValue) == 0 && unit.equals(t.unit) && readings.equals(t.readings)
+                && gaps.equals(t.gaps);
     }
 
     @Override

@@ -161,6 +161,7 @@ public final class Traces {
         private double endTime = Double.NaN;
         private String unit = "s";
         private List<RunTiming.Reading> changes = new ArrayList<>();
+        private List<RunTiming.Gap> gaps = new ArrayList<>();
         private double[] times = new double[64];
         private double[] values = new double[64];
 
@@ -212,6 +213,13 @@ public final class Traces {
         }
 
         @Override
+        public void unmapped(String key, LogRecord record, boolean first) {
+            if (UnmappedMessages.novelty(key, abstraction)) {
+                gaps.add(new RunTiming.Gap(record.line(), pairs.size()));
+            }
+        }
+
+        @Override
         public void pair(IoPair pair, LogRecord trigger) {
             int i = pairs.size();
             if (i == times.length) {
@@ -234,8 +242,9 @@ public final class Traces {
             Map<String, List<Double>> frozen = new TreeMap<>();
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
             RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
-                    violationTime, endTime, lowestSafe, unit, changes);
+                    violationTime, endTime, lowestSafe, unit, changes, gaps);
             changes = new ArrayList<>();
+            gaps = new ArrayList<>();
             done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated,
                     Collections.unmodifiableMap(frozen), timing));
             pairs = new ArrayList<>();
