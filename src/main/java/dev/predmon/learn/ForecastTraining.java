@@ -114,7 +114,7 @@ public final class ForecastTraining {
 
     /**
      * Whether the thesis's rule ({@link MatchRule}) warns {@code run} before its violation, each machine matched
-     * exactly.
+     * exactly, as the forecast rule takes that rule's warning: not from the run's first gap on ({@link RunTiming#gaps}).
      */
     static boolean matchWarns(Map<String, CompactMealy<String, String>> machines, Map<String, Boolean> faulty,
                               int confirm, LogTrace.Run run) {
@@ -124,9 +124,13 @@ public final class ForecastTraining {
             state[m] = machines.get(ids.get(m)).getInitialState();
         }
         MatchRule rule = new MatchRule(confirm);
+        List<RunTiming.Gap> gaps = run.timing().gaps();
         for (int i = 0; i < run.pairs().size(); i++) {
             if (run.violated() && !(run.timing().time(i) < run.timing().violationTime())) {
                 return false;
+            }
+            if (!gaps.isEmpty() && gaps.get(0).pairsBefore() <= i) {
+                return false; // novel from the gap on: the forecast rule takes no elimination there (as watch)
             }
             boolean nominal = false;
             boolean bad = false;
