@@ -78,6 +78,7 @@ final class ExplainCommand implements Callable<Integer> {
         }
         out.println();
         var r = x.run();
+        Forecast last = r.forecast() == null ? null : r.forecast().last();
         boolean nominal = x.models().stream().anyMatch(f -> !f.faulty() && f.matched());
         int lastNominal = x.models().stream().filter(f -> !f.faulty() && f.stoppedAt() != null)
                 .mapToInt(Explanation.ModelFate::stoppedAt).max().orElse(-1);
@@ -90,7 +91,6 @@ final class ExplainCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d), rule %s: %s%n", x.warning().time(),
                     x.warning().line(), x.rule().id(), x.warning().reason());
         } else if (x.rule() == WarningRule.FORECAST && r.forecast() != null) {
-            Forecast last = r.forecast().last();
             if (outlived && last != null && last.novelSince() != null) {
                 matching += ", which does not warn once the run is novel (line " + last.novelSince() + ")";
             }
@@ -101,7 +101,6 @@ final class ExplainCommand implements Callable<Integer> {
             out.println("watch does not warn, rule " + x.rule().id() + ": " + matching);
         }
         if (r.noMatch()) {
-            Forecast last = r.forecast() == null ? null : r.forecast().last();
             out.println("no model matches the whole run: it is unlike every learned scenario"
                     + (last != null && last.novelSince() != null ? "; the forecast went on, novel since line "
                     + last.novelSince() : " (no prediction)"));

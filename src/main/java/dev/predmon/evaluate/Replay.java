@@ -49,7 +49,7 @@ public final class Replay {
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
                                       ModelSet models, Abstraction abstraction, int threshold, int confirm,
                                       WarningRule rule) throws IOException {
-        return run(log, scenario, faulty, label, fold, models, abstraction, threshold, confirm, rule, new Trail());
+        return run(log, scenario, faulty, label, fold, models, abstraction, threshold, confirm, rule, Trail.NONE);
     }
 
     /** As above, also telling {@code trail} the forecast after each pair and the warnings as raised. */

@@ -15,11 +15,27 @@ import java.util.Optional;
  */
 public final class Trail {
 
+    /** A trail that keeps nothing: scoring a replay needs none, and keeps nothing per pair. */
+    static final Trail NONE = new Trail(false);
+
+    private final boolean keeps;
     private final Map<Integer, List<Forecast>> afterPairs = new HashMap<>();
     private final Map<Integer, MonitorEvent.Warning> warnings = new HashMap<>();
 
+    /** An empty trail, for {@link Replay#run} to fill. */
+    public Trail() {
+        this(true);
+    }
+
+    private Trail(boolean keeps) {
+        this.keeps = keeps;
+    }
+
     /** Takes the monitor's forecast of {@code run} when it has seen {@code pairs} pairs of that run. */
     void forecast(int run, long pairs, Forecast f) {
+        if (!keeps) {
+            return;
+        }
         List<Forecast> list = afterPairs.computeIfAbsent(run, r -> new ArrayList<>());
         if (pairs > list.size()) {
             list.add(f); // the first forecast once a pair came is the one after it; readings between pairs follow
@@ -27,7 +43,7 @@ public final class Trail {
     }
 
     void warning(int run, MonitorEvent.Warning w) {
-        if (w != null) {
+        if (keeps && w != null) {
             warnings.put(run, w);
         }
     }

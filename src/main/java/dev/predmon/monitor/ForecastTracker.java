@@ -1,12 +1,10 @@
 package dev.predmon.monitor;
 
-import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.model.ModelSet;
-import dev.predmon.pipeline.UnmappedMessages;
 
 import java.util.Locale;
 
@@ -58,14 +56,9 @@ final class ForecastTracker {
                 ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
 
-    /**
-     * An interface message no rule maps, at {@code line}: when it is the robot doing something the models never saw
-     * ({@link UnmappedMessages#novelty}), the run is novel from there ({@link Forecaster#unseen}).
-     */
-    void unmapped(String key, Abstraction abstraction, long line) {
-        if (UnmappedMessages.novelty(key, abstraction)) {
-            forecaster.unseen(line);
-        }
+    /** A gap in the trace at {@code line}: the run is novel from there ({@link Forecaster#unseen}). */
+    void unseen(long line) {
+        forecaster.unseen(line);
     }
 
     /**

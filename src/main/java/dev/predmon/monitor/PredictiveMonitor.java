@@ -66,10 +66,7 @@ public final class PredictiveMonitor implements PipelineListener {
     private final ForecastTracker forecast;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
 
-    /**
-     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
-     * @param events    receives every event, in log order
-     */
+    /** As below, confirming as the abstraction says ({@link Abstraction#confirm()}). */
     public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, Consumer<MonitorEvent> events) {
         this(models, abstraction, threshold, abstraction.confirm(), events);
     }
@@ -224,12 +221,14 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     @Override
-    public void unmapped(String key, LogRecord record, boolean first) {
-        if (first) {
-            events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
-        }
+    public void unmapped(String key, LogRecord record) {
+        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
+    }
+
+    @Override
+    public void gap(LogRecord record) {
         if (forecast != null) {
-            forecast.unmapped(key, pipeline.abstraction(), record.line());
+            forecast.unseen(record.line());
         }
     }
 

@@ -12,11 +12,18 @@ public interface PipelineListener {
     }
 
     /**
-     * An interface message that no abstraction rule maps: reported, never silently dropped.
-     *
-     * @param first whether it is the first of its kind since the start or the last reset
+     * The first interface message of its kind that no abstraction rule maps (since the start or the last reset):
+     * reported, never silently dropped.
      */
-    default void unmapped(String key, LogRecord record, boolean first) {
+    default void unmapped(String key, LogRecord record) {
+    }
+
+    /**
+     * {@code record} is a message of the robot's own interface that the abstraction cannot name (a place no training
+     * run went to, a reply no rule takes: {@link UnmappedMessages#novelty}), each one, after {@link #unmapped}: the
+     * trace misses a step there.
+     */
+    default void gap(LogRecord record) {
     }
 
     /**

@@ -88,7 +88,12 @@ public final class TracePipeline {
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;
-            listener.unmapped(u.key(), record, unmapped.merge(u.key(), 1L, Long::sum) == 1L);
+            if (unmapped.merge(u.key(), 1L, Long::sum) == 1L) {
+                listener.unmapped(u.key(), record);
+            }
+            if (UnmappedMessages.novelty(u.key(), abstraction)) {
+                listener.gap(record);
+            }
         }
     }
 

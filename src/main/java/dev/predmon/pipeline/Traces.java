@@ -213,10 +213,8 @@ public final class Traces {
         }
 
         @Override
-        public void unmapped(String key, LogRecord record, boolean first) {
-            if (UnmappedMessages.novelty(key, abstraction)) {
-                gaps.add(new RunTiming.Gap(record.line(), pairs.size()));
-            }
+        public void gap(LogRecord record) {
+            gaps.add(new RunTiming.Gap(record.line(), pairs.size()));
         }
 
         @Override
