@@ -82,20 +82,18 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     }
 
     /**
-     * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run has done something
-     * no learned machine does and its property is below the floor of the training runs that held ({@link
-     * Lows#safeFloor}: the lowest of them less the typical spacing between the lowest few). The threshold
-     * was chosen on runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so
-     * without the second clause the rule would be blind exactly where the matching is.
+     * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run is beyond what
+     * the training runs that held did (it is novel, or {@code beyondNominal}: no nominal machine matches it) and its
+     * property is below the lowest value those runs went to ({@link Lows#safeFloor}). The threshold was chosen on
+     * runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so without the
+     * second clause the rule would be blind exactly where the matching is.
      */
-    public boolean warns(Forecast f) {
-        return f.probability() >= threshold || (f.novel() && f.value() != null && belowSafeFloor(f.value()));
+    public boolean warns(Forecast f, boolean beyondNominal) {
+        return f.probability() >= threshold
+                || ((f.novel() || beyondNominal) && f.value() != null && belowSafeFloor(f.value()));
     }
 
-    /**
-     * Whether {@code value} is below where the training runs that held are likely to go ({@link Lows#safeFloor}; false
-     * without such a run).
-     */
+    /** Whether {@code value} is below the lowest value of the training runs that held (false without such a run). */
     public boolean belowSafeFloor(double value) {
         return lows.safeCount() > 0 && value < lows.safeFloor();
     }

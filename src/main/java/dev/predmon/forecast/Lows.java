@@ -61,17 +61,12 @@ public final class Lows {
     }
 
     /**
-     * The lowest value a run that holds is likely to read: the lowest safe low, less the mean spacing between the
-     * lowest {@code sqrt(n)} of the {@code n} safe lows (at least two). The next safe run falls below the lowest one
-     * seen about one spacing in {@code n + 1}; the spacing is the distance it is likely to go below it. The lowest
-     * safe low itself with a single safe run; NaN without one.
+     * The lowest value a run that held went to (NaN without one). No margin is taken below it: a robot stuck on
+     * its way to recover drains past it in seconds, and a margin of the lowest runs' spacing (four points on the
+     * public recordings) left a warning one reading before the violation.
      */
     public double safeFloor() {
-        if (safe.length == 0) {
-            return Double.NaN;
-        }
-        int k = Math.min(safe.length, Math.max(2, (int) Math.round(Math.sqrt(safe.length))));
-        return k < 2 ? safe[0] : safe[0] - (safe[k - 1] - safe[0]) / (k - 1);
+        return safe.length == 0 ? Double.NaN : safe[0];
     }
 
     /** The violating runs' lowest values before their violation, sorted. */

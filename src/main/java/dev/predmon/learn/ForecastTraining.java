@@ -30,9 +30,11 @@ import java.util.function.Predicate;
  * machines and statistics are learned without it, its runs are forecast pair by pair, and each run's highest
  * forecast before its violation decides ({@link ThresholdChoice}).
  *
- * <p>The forecast rule also warns where the thesis's rule would (every nominal machine eliminated while a faulty one
- * matches, {@code confirm} pairs on): that is evidence the run can only be faulty. A held-out run so warned before its
- * violation counts as reaching any threshold, so the threshold is chosen for the runs the matching does not catch.
+ * <p>The forecast rule also warns where the thesis's rule would, when every nominal machine was contradicted (every
+ * nominal machine eliminated by an output it predicted otherwise while a faulty one matches, {@code confirm} pairs
+ * on), and where the run is beyond the training runs that held with its value below theirs ({@link
+ * ForecastModel#warns}). A held-out run so warned before its violation counts as reaching any threshold, so the
+ * threshold is chosen for the runs those clauses do not catch.
  */
 public final class ForecastTraining {
 
@@ -90,7 +92,7 @@ public final class ForecastTraining {
             for (LogTrace.Run r : runsOf(specs, traces, held::contains)) {
                 List<Double> ps = forecast(forecaster, r).stream().map(Forecast::probability).toList();
                 peaks.add(new ThresholdChoice.Peak(ps.stream().mapToDouble(p -> p).max().orElse(0), r.violated(),
-                        matchWarns(foldMachines, faulty, confirm, r)));
+                        warnsAnyway(foldMachines, faulty, foldStats, confirm, r)));
                 heldOut.add(new Calibration.Sample(ps, r.violated()));
             }
         }
@@ -113,31 +115,50 @@ public final class ForecastTraining {
     }
 
     /**
-     * Whether the thesis's rule ({@link MatchRule}) warns {@code run} before its violation, each machine matched
-     * exactly, as the forecast rule takes that rule's warning: not from the run's first gap on ({@link RunTiming#gaps}).
+     * Whether the forecast rule warns {@code run} before its violation whatever its threshold, as watch takes the
+     * rule's other clauses ({@link ForecastModel#warns}): the thesis's rule ({@link MatchRule}, each machine matched
+     * exactly) when every nominal machine was contradicted and the run has no gap yet ({@link RunTiming#gaps}), or
+     * the value below the lowest of the training runs that held once the run is beyond them (a gap, or no nominal
+     * machine matching).
      */
-    static boolean matchWarns(Map<String, CompactMealy<String, String>> machines, Map<String, Boolean> faulty,
-                              int confirm, LogTrace.Run run) {
+    static boolean warnsAnyway(Map<String, CompactMealy<String, String>> machines, Map<String, Boolean> faulty,
+                               ForecastModel stats, int confirm, LogTrace.Run run) {
         List<String> ids = List.copyOf(machines.keySet());
         int[] state = new int[ids.size()];
+        boolean contradicted = true;
         for (int m = 0; m < ids.size(); m++) {
             state[m] = machines.get(ids.get(m)).getInitialState();
         }
         MatchRule rule = new MatchRule(confirm);
-        List<RunTiming.Gap> gaps = run.timing().gaps();
+        RunTiming t = run.timing();
+        List<RunTiming.Gap> gaps = t.gaps();
+        List<RunTiming.Reading> readings = t.readings();
+        boolean nominalAlive = true;
+        int r = 0;
         for (int i = 0; i < run.pairs().size(); i++) {
-            if (run.violated() && !(run.timing().time(i) < run.timing().violationTime())) {
+            boolean gap = !gaps.isEmpty() && gaps.get(0).pairsBefore() <= i;
+            for (; r < readings.size() && readings.get(r).pairsBefore() <= i; r++) {
+                RunTiming.Reading x = readings.get(r);
+                if ((gap || !nominalAlive) && stats.belowSafeFloor(x.value())
+                        && !(run.violated() && !(x.time() < t.violationTime()))) {
+                    return true; // as watch does at a new reading
+                }
+            }
+            if (run.violated() && !(t.time(i) < t.violationTime())) {
                 return false;
             }
-            if (!gaps.isEmpty() && gaps.get(0).pairsBefore() <= i) {
-                return false; // novel from the gap on: the forecast rule takes no elimination there (as watch)
-            }
+            String input = run.pairs().get(i).input();
+            String output = run.pairs().get(i).output();
             boolean nominal = false;
             boolean bad = false;
             for (int m = 0; m < ids.size(); m++) {
+                CompactMealy<String, String> machine = machines.get(ids.get(m));
                 if (state[m] >= 0) {
-                    state[m] = MealyMapping.pairStep(machines.get(ids.get(m)), state[m], run.pairs().get(i).input(),
-                            run.pairs().get(i).output());
+                    int next = MealyMapping.pairStep(machine, state[m], input, output);
+                    if (next < 0 && !faulty.get(ids.get(m))) {
+                        contradicted &= MealyMapping.contradicts(machine, state[m], input, output);
+                    }
+                    state[m] = next;
                 }
                 if (state[m] >= 0) {
                     if (faulty.get(ids.get(m))) {
@@ -147,11 +168,17 @@ public final class ForecastTraining {
                     }
                 }
             }
-            if (rule.warns(nominal, bad)) {
+            if (rule.warns(nominal, bad) && contradicted && !gap) {
+                return true;
+            }
+            nominalAlive = nominal;
+            if ((gap || !nominal) && stats.belowSafeFloor(t.value(i))) {
                 return true;
             }
         }
-        return false;
+        boolean beyond = !gaps.isEmpty() || !nominalAlive;
+        return beyond && readings.subList(r, readings.size()).stream().anyMatch(x -> stats.belowSafeFloor(x.value())
+                && !(run.violated() && !(x.time() < t.violationTime())));
     }
 
     /**

@@ -39,9 +39,12 @@ final class ForecastTracker {
         return forecaster.stats().threshold();
     }
 
-    /** Whether the forecast rule warns on {@code f} ({@link ForecastModel#warns}). */
-    boolean warns(Forecast f) {
-        return forecaster.stats().warns(f);
+    /**
+     * Whether the forecast rule warns on {@code f} ({@link ForecastModel#warns}), {@code beyondNominal} when no
+     * nominal machine matches the run any more.
+     */
+    boolean warns(Forecast f, boolean beyondNominal) {
+        return forecaster.stats().warns(f, beyondNominal);
     }
 
     /**
@@ -51,7 +54,7 @@ final class ForecastTracker {
     String reason(Forecast f, String where) {
         String why = f.probability() >= threshold()
                 ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", threshold())
-                : "in behaviour no model has seen, with the value below where the training runs that held went";
+                : "beyond what the training runs that held did, with the value below the lowest they went to";
         return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
                 ForecastWords.time(f), ForecastWords.evidence(f), where);
     }
@@ -62,12 +65,14 @@ final class ForecastTracker {
     }
 
     /**
-     * Whether the forecast rule takes the thesis's "only faulty" verdict at {@code f} (its threshold was chosen
-     * knowing that verdict): only while the run does what the models know, for a nominal machine that fails on a
-     * novelty, or on a gap in the trace, says nothing of a fault.
+     * Whether the forecast rule takes the thesis's "only faulty" verdict of {@code step}, forecast {@code f} (its
+     * threshold was chosen knowing that verdict): only when every nominal machine was contradicted (it predicted
+     * another output), and only while the run does what the models know. A nominal machine that has no transition
+     * for what the run did, or that fails after a gap in the trace, says the run is new, not that it is faulty.
+     * Models without a forecast ({@code f} null) have the thesis's rule only, and take every verdict.
      */
-    static boolean takesMatching(Forecast f) {
-        return f == null || f.novelSince() == null;
+    static boolean takesMatching(Forecast f, Matching.Step step) {
+        return f == null || (step.contradicted() && f.novelSince() == null);
     }
 
     void reset() {

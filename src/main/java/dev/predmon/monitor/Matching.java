@@ -24,8 +24,12 @@ final class Matching {
      * @param faultyAlive  the faulty scenarios some machine of which still matches, sorted
      * @param nominalAlive whether some nominal model still matches
      * @param ruleWarns    whether the match rule warns at this pair
+     * @param contradicted whether every nominal model was eliminated by an output other than the one it predicted
+     *                     (not by an input it has no transition for: a gap in what its training runs did, which
+     *                     says the run is new to it, not that it is faulty)
      */
-    record Step(List<ModelTracker> eliminated, List<String> faultyAlive, boolean nominalAlive, boolean ruleWarns) {
+    record Step(List<ModelTracker> eliminated, List<String> faultyAlive, boolean nominalAlive, boolean ruleWarns,
+                boolean contradicted) {
 
         /** Whether no model, nominal or faulty, matches the run any more. */
         boolean noMatch() {
@@ -63,8 +67,16 @@ final class Matching {
             }
         }
         List<String> faultyAlive = faultyAlive();
-        boolean nominalAlive = trackers.stream().anyMatch(t -> t.alive() && !t.model().faulty());
-        return new Step(eliminated, faultyAlive, nominalAlive, rule.warns(nominalAlive, !faultyAlive.isEmpty()));
+        boolean nominalAlive = nominalAlive();
+        boolean contradicted = !nominalAlive && trackers.stream().filter(t -> !t.model().faulty())
+                .allMatch(t -> t.elimination().expected() != null);
+        return new Step(eliminated, faultyAlive, nominalAlive, rule.warns(nominalAlive, !faultyAlive.isEmpty()),
+                contradicted);
+    }
+
+    /** Whether some nominal model still matches the run. */
+    boolean nominalAlive() {
+        return trackers.stream().anyMatch(t -> t.alive() && !t.model().faulty());
     }
 
     /** The faulty scenarios some machine of which still matches the run, sorted. */

@@ -196,7 +196,7 @@ public final class PredictiveMonitor implements PipelineListener {
         if (forecast != null && (before == null || before != v)) {
             Forecast f = told(forecast.reading(record.time(), v), record);
             if (warning == null && violation == null && rule == WarningRule.FORECAST
-                    && forecast.warns(f)) {
+                    && forecast.warns(f, !matching.nominalAlive())) {
                 warn(record, matching.faultyAlive(), forecast.reason(f, "at the new reading "
                         + String.format(Locale.ROOT, "%.2f", v)), f);
             }
@@ -245,10 +245,10 @@ public final class PredictiveMonitor implements PipelineListener {
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
         if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
             String reason = null;
-            if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f))) {
+            if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f, step))) {
                 reason = MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
                         + (f == null ? "" : "; " + ForecastWords.line(f));
-            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f)) {
+            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f, !step.nominalAlive())) {
                 reason = forecast.reason(f, "after " + pair.input() + " -> " + pair.output());
             }
             if (reason != null) {

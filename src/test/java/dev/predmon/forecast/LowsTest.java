@@ -13,24 +13,22 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class LowsTest {
 
     @Test
-    void theSafeFloorLiesOneTypicalSpacingBelowTheLowestSafeRun() {
-        // nine safe lows 1 apart from 30: the lowest three are 30, 31, 32, so a next run may well read 29
+    void theSafeFloorIsTheLowestValueARunThatHeldWentTo() {
         Lows lows = new Lows(new double[] {38, 30, 31, 32, 33, 34, 35, 36, 37}, new double[] {21, 22});
-        assertEquals(29.0, lows.safeFloor(), 1e-9);
-    }
-
-    @Test
-    void oneSafeRunGivesNoSpacingAndNoneGivesNoFloor() {
+        assertEquals(30.0, lows.safeFloor(), 1e-9);
         assertEquals(40.0, new Lows(new double[] {40}, new double[] {21}).safeFloor(), 1e-9);
         assertTrue(Double.isNaN(new Lows(new double[0], new double[] {21}).safeFloor()));
     }
 
     @Test
-    void theNoveltyClauseWaitsForTheFloorNotTheLowestSafeRun() {
+    void theNoveltyClauseWarnsBelowTheLowestSafeRunWithoutAMargin() {
         Lows lows = new Lows(new double[] {30, 31, 32, 33, 34, 35, 36, 37, 38}, new double[] {21, 22, 23});
         ForecastModel m = new ForecastModel(ForecastModel.FORMAT, "s", 20, 12, 3, lows, 0.9, "test", true,
                 Map.of(), List.of());
-        assertFalse(m.belowSafeFloor(29.5), "below the lowest safe run, yet within a spacing of it");
-        assertTrue(m.belowSafeFloor(28.9));
+        assertFalse(m.belowSafeFloor(30.0), "as low as a run that held went");
+        assertTrue(m.belowSafeFloor(29.9), "a robot stuck below every safe run is warned at once");
+        ForecastModel noSafe = new ForecastModel(ForecastModel.FORMAT, "s", 20, 3, 3,
+                new Lows(new double[0], new double[] {21, 22, 23}), 0.9, "test", true, Map.of(), List.of());
+        assertFalse(noSafe.belowSafeFloor(5), "no run held: no floor to be below");
     }
 }
