@@ -135,16 +135,15 @@ public final class ForecastTraining {
         List<RunTiming.Reading> readings = t.readings();
         boolean nominalAlive = true;
         int r = 0;
-        for (int i = 0; i < run.pairs().size(); i++) {
+        for (int i = 0; ; i++) {
             boolean gap = !gaps.isEmpty() && gaps.get(0).pairsBefore() <= i;
             for (; r < readings.size() && readings.get(r).pairsBefore() <= i; r++) {
                 RunTiming.Reading x = readings.get(r);
-                if ((gap || !nominalAlive) && stats.belowSafeFloor(x.value())
-                        && !(run.violated() && !(x.time() < t.violationTime()))) {
+                if ((gap || !nominalAlive) && stats.belowSafeFloor(x.value()) && beforeViolation(run, x.time())) {
                     return true; // as watch does at a new reading
                 }
             }
-            if (run.violated() && !(t.time(i) < t.violationTime())) {
+            if (i == run.pairs().size() || !beforeViolation(run, t.time(i))) {
                 return false;
             }
             String input = run.pairs().get(i).input();
@@ -176,9 +175,11 @@ public final class ForecastTraining {
                 return true;
             }
         }
-        boolean beyond = !gaps.isEmpty() || !nominalAlive;
-        return beyond && readings.subList(r, readings.size()).stream().anyMatch(x -> stats.belowSafeFloor(x.value())
-                && !(run.violated() && !(x.time() < t.violationTime())));
+    }
+
+    /** Whether {@code time} is before {@code run}'s violation (always, for a run that held). */
+    private static boolean beforeViolation(LogTrace.Run run, double time) {
+        return !run.violated() || time < run.timing().violationTime();
     }
 
     /**
@@ -199,7 +200,7 @@ public final class ForecastTraining {
             }
             for (; r < readings.size() && readings.get(r).pairsBefore() <= i; r++) {
                 RunTiming.Reading x = readings.get(r);
-                if (run.violated() && !(x.time() < t.violationTime())) {
+                if (!beforeViolation(run, x.time())) {
                     return out;
                 }
                 out.add(forecaster.reading(x.time(), x.value()));
@@ -207,7 +208,7 @@ public final class ForecastTraining {
             if (i == run.pairs().size()) {
                 break;
             }
-            if (run.violated() && !(t.time(i) < t.violationTime())) {
+            if (!beforeViolation(run, t.time(i))) {
                 break;
             }
             out.add(forecaster.pair(run.pairs().get(i).input(), run.pairs().get(i).output(), t.time(i), t.value(i),

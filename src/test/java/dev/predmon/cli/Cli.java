@@ -9,6 +9,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -37,6 +38,11 @@ record Cli(int code, String out, String err) {
             }
         }
         return values;
+    }
+
+    /** The first of {@code events} (as {@link #jsonLines} reads them) whose "event" field is {@code kind}. */
+    static Optional<JsonNode> firstEvent(List<JsonNode> events, String kind) {
+        return events.stream().filter(e -> e.get("event").asText().equals(kind)).findFirst();
     }
 
     /**

@@ -62,7 +62,7 @@ class LiveBrowserTest {
     }
 
     private static JsonNode first(List<JsonNode> events, String kind) {
-        return events.stream().filter(e -> e.get("event").asText().equals(kind)).findFirst().orElseThrow();
+        return Cli.firstEvent(events, kind).orElseThrow();
     }
 
     /** The tile of {@code log} as the page shows it: light, run, lead text, verdict; "none" before it exists. */

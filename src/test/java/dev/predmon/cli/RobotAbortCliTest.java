@@ -45,9 +45,9 @@ class RobotAbortCliTest {
 
         Cli w = Cli.run("watch", "--no-follow", "--json", "--log", log.toString(), "--models", models.toString());
         List<JsonNode> events = w.jsonLines();
-        JsonNode noMatch = first(events, "no-match");
-        JsonNode warning = first(events, "warning");
-        JsonNode violation = first(events, "violation");
+        JsonNode noMatch = Cli.firstEvent(events, "no-match").orElse(null);
+        JsonNode warning = Cli.firstEvent(events, "warning").orElse(null);
+        JsonNode violation = Cli.firstEvent(events, "violation").orElse(null);
         assertNotNull(noMatch, "the abort is behaviour no model has seen: " + w.out());
         assertNotNull(violation, "the battery drains past 20");
         assertNotNull(warning, "warned: " + w.out());
@@ -55,10 +55,6 @@ class RobotAbortCliTest {
         assertTrue(lead >= 15, "warned " + lead + " ticks ahead, not at the last moment: " + warning);
         assertEquals("ticks", warning.get("unit").asText());
         assertTrue(warning.get("reason").asText().contains("novel behaviour since"), warning.toString());
-    }
-
-    private static JsonNode first(List<JsonNode> events, String kind) {
-        return events.stream().filter(e -> e.get("event").asText().equals(kind)).findFirst().orElse(null);
     }
 
     /** The recording up to the first tick whose level reading is at most {@code level}, then that tick aborted. */
