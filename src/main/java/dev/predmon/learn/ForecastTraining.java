@@ -8,9 +8,9 @@ import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
-import dev.predmon.mealy.MealyMapping;
+import dev.predmon.matching.Matching;
 import dev.predmon.mealy.MealyTrace;
-import dev.predmon.model.MatchRule;
+import dev.predmon.model.LearnedModel;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunTiming;
 import net.automatalib.alphabet.Alphabet;
@@ -72,14 +72,14 @@ public final class ForecastTraining {
                 held.add(logs.get(i));
             }
             Map<String, CompactMealy<String, String>> foldMachines = new LinkedHashMap<>();
-            Map<String, Boolean> faulty = new LinkedHashMap<>();
+            List<LearnedModel> foldModels = new ArrayList<>();
             for (ScenarioSpec s : specs) {
                 List<MealyTrace> samples = s.logs().stream().filter(traces::containsKey).filter(l -> !held.contains(l))
                         .flatMap(l -> traces.get(l).samples(s.runs()).stream()).toList();
                 if (!samples.isEmpty()) {
                     ScenarioLearner.learnSamples(s, samples, alphabet).machines().forEach(m -> {
                         foldMachines.put(m.id(), m.machine());
-                        faulty.put(m.id(), s.faulty());
+                        foldModels.add(new LearnedModel(m.id(), s.name(), s.faulty(), m.machine(), alphabet));
                     });
                 }
             }
@@ -92,7 +92,7 @@ public final class ForecastTraining {
             for (LogTrace.Run r : runsOf(specs, traces, held::contains)) {
                 List<Double> ps = forecast(forecaster, r).stream().map(Forecast::probability).toList();
                 peaks.add(new ThresholdChoice.Peak(ps.stream().mapToDouble(p -> p).max().orElse(0), r.violated(),
-                        warnsAnyway(foldMachines, faulty, foldStats, confirm, r)));
+                        warnsAnyway(foldModels, foldStats, confirm, r)));
                 heldOut.add(new Calibration.Sample(ps, r.violated()));
             }
         }
@@ -116,62 +116,34 @@ public final class ForecastTraining {
 
     /**
      * Whether the forecast rule warns {@code run} before its violation whatever its threshold, as watch takes the
-     * rule's other clauses ({@link ForecastModel#warns}): the thesis's rule ({@link MatchRule}, each machine matched
+     * rule's other clauses ({@link ForecastModel#warns}): the thesis's rule ({@link Matching}, each machine matched
      * exactly) when every nominal machine was contradicted and the run has no gap yet ({@link RunTiming#gaps}), or
      * the value below the lowest of the training runs that held once the run is beyond them (a gap, or no nominal
      * machine matching).
      */
-    static boolean warnsAnyway(Map<String, CompactMealy<String, String>> machines, Map<String, Boolean> faulty,
-                               ForecastModel stats, int confirm, LogTrace.Run run) {
-        List<String> ids = List.copyOf(machines.keySet());
-        int[] state = new int[ids.size()];
-        boolean contradicted = true;
-        for (int m = 0; m < ids.size(); m++) {
-            state[m] = machines.get(ids.get(m)).getInitialState();
-        }
-        MatchRule rule = new MatchRule(confirm);
+    static boolean warnsAnyway(List<LearnedModel> models, ForecastModel stats, int confirm, LogTrace.Run run) {
+        Matching matching = new Matching(models, 0, confirm);
         RunTiming t = run.timing();
         List<RunTiming.Gap> gaps = t.gaps();
         List<RunTiming.Reading> readings = t.readings();
-        boolean nominalAlive = true;
         int r = 0;
         for (int i = 0; ; i++) {
             boolean gap = !gaps.isEmpty() && gaps.get(0).pairsBefore() <= i;
+            boolean beyond = gap || !matching.nominalAlive();
             for (; r < readings.size() && readings.get(r).pairsBefore() <= i; r++) {
                 RunTiming.Reading x = readings.get(r);
-                if ((gap || !nominalAlive) && stats.belowSafeFloor(x.value()) && beforeViolation(run, x.time())) {
+                if (beyond && stats.belowSafeFloor(x.value()) && beforeViolation(run, x.time())) {
                     return true; // as watch does at a new reading
                 }
             }
             if (i == run.pairs().size() || !beforeViolation(run, t.time(i))) {
                 return false;
             }
-            String input = run.pairs().get(i).input();
-            String output = run.pairs().get(i).output();
-            boolean nominal = false;
-            boolean bad = false;
-            for (int m = 0; m < ids.size(); m++) {
-                CompactMealy<String, String> machine = machines.get(ids.get(m));
-                if (state[m] >= 0) {
-                    int next = MealyMapping.pairStep(machine, state[m], input, output);
-                    if (next < 0 && !faulty.get(ids.get(m))) {
-                        contradicted &= MealyMapping.contradicts(machine, state[m], input, output);
-                    }
-                    state[m] = next;
-                }
-                if (state[m] >= 0) {
-                    if (faulty.get(ids.get(m))) {
-                        bad = true;
-                    } else {
-                        nominal = true;
-                    }
-                }
-            }
-            if (rule.warns(nominal, bad) && contradicted && !gap) {
+            Matching.Step step = matching.pair(run.pairs().get(i));
+            if (step.ruleWarns() && step.contradicted() && !gap) {
                 return true;
             }
-            nominalAlive = nominal;
-            if ((gap || !nominal) && stats.belowSafeFloor(t.value(i))) {
+            if ((gap || !step.nominalAlive()) && stats.belowSafeFloor(t.value(i))) {
                 return true;
             }
         }

@@ -42,20 +42,6 @@ public final class MealyMapping {
     }
 
     /**
-     * Whether {@code machine} in {@code state} has both steps of the pair {@code (input, output)} but answers one of
-     * them otherwise: it predicted another output (a contradiction), rather than having no transition for the pair
-     * (a gap in what its training runs did). False when it takes the pair.
-     */
-    public static boolean contradicts(CompactMealy<String, String> machine, int state, String input, String output) {
-        if (!machine.getInputAlphabet().containsSymbol(input)) {
-            return false;
-        }
-        int mid = machine.getSuccessor(state, input); // the int overload: -1 where there is no transition
-        return mid >= 0 && machine.getSuccessor(mid, DELTA) >= 0
-                && (!OK.equals(machine.getOutput(state, input)) || !output.equals(machine.getOutput(mid, DELTA)));
-    }
-
-    /**
      * Feeds the pair {@code (input, output)} to {@code steps} as its two Mealy steps, {@code input/OK} then
      * {@code Delta/output}; returns what the second step answered.
      */

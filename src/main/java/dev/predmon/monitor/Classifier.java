@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.matching.ModelTracker;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;

@@ -4,6 +4,7 @@ import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
+import dev.predmon.matching.Matching;
 import dev.predmon.model.ModelSet;
 
 import java.util.Locale;

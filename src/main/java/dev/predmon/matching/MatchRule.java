@@ -1,4 +1,4 @@
-package dev.predmon.model;
+package dev.predmon.matching;
 
 /**
  * The thesis's warning rule (Algorithm 8, the match rule) over one run, pair by pair: it warns once every nominal

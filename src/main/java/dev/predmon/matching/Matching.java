@@ -1,8 +1,7 @@
-package dev.predmon.monitor;
+package dev.predmon.matching;
 
 import dev.predmon.compact.IoPair;
 import dev.predmon.model.LearnedModel;
-import dev.predmon.model.MatchRule;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -15,7 +14,7 @@ import java.util.TreeSet;
  * is left. A scenario matches while any of its machines matches. Per pair the work is one step per model and the
  * state is constant (per model: state, discrepancy count, alive).
  */
-final class Matching {
+public final class Matching {
 
     /**
      * What one pair left.
@@ -28,11 +27,11 @@ final class Matching {
      *                     (not by an input it has no transition for: a gap in what its training runs did, which
      *                     says the run is new to it, not that it is faulty)
      */
-    record Step(List<ModelTracker> eliminated, List<String> faultyAlive, boolean nominalAlive, boolean ruleWarns,
+    public record Step(List<ModelTracker> eliminated, List<String> faultyAlive, boolean nominalAlive, boolean ruleWarns,
                 boolean contradicted) {
 
         /** Whether no model, nominal or faulty, matches the run any more. */
-        boolean noMatch() {
+        public boolean noMatch() {
             return !nominalAlive && faultyAlive.isEmpty();
         }
     }
@@ -45,7 +44,7 @@ final class Matching {
      * @param confirm   pairs a faulty model must match after the last nominal model is eliminated before the match
      *                  rule warns
      */
-    Matching(List<LearnedModel> models, int threshold, int confirm) {
+    public Matching(List<LearnedModel> models, int threshold, int confirm) {
         this.rule = new MatchRule(confirm);
         for (LearnedModel m : models) {
             trackers.add(new ModelTracker(m, threshold));
@@ -53,13 +52,13 @@ final class Matching {
     }
 
     /** A new run: every model back to its initial state, alive. */
-    void reset() {
+    public void reset() {
         trackers.forEach(ModelTracker::reset);
         rule.reset();
     }
 
     /** Advances every model still alive by {@code pair}. */
-    Step pair(IoPair pair) {
+    public Step pair(IoPair pair) {
         List<ModelTracker> eliminated = new ArrayList<>();
         for (ModelTracker t : trackers) {
             if (t.alive() && !t.pair(pair.input(), pair.output())) {
@@ -75,19 +74,19 @@ final class Matching {
     }
 
     /** Whether some nominal model still matches the run. */
-    boolean nominalAlive() {
+    public boolean nominalAlive() {
         return trackers.stream().anyMatch(t -> t.alive() && !t.model().faulty());
     }
 
     /** The faulty scenarios some machine of which still matches the run, sorted. */
-    List<String> faultyAlive() {
+    public List<String> faultyAlive() {
         TreeSet<String> alive = new TreeSet<>();
         trackers.stream().filter(t -> t.alive() && t.model().faulty()).forEach(t -> alive.add(t.model().scenario()));
         return List.copyOf(alive);
     }
 
     /** Every model's tracker, in model order. */
-    List<ModelTracker> trackers() {
+    public List<ModelTracker> trackers() {
         return List.copyOf(trackers);
     }
 }

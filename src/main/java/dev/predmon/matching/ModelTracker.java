@@ -1,4 +1,4 @@
-package dev.predmon.monitor;
+package dev.predmon.matching;
 
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealySteps;
