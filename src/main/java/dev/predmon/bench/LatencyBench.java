@@ -11,7 +11,9 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
@@ -20,52 +22,77 @@ import java.util.concurrent.locks.LockSupport;
  * Append-to-warning latency of {@code watch}: a writer thread appends a depleted run to a file; the main thread
  * runs {@code watch}'s {@link LogWatcher} loop on it, polling every {@code pollMicros} (watch's {@code --poll-ms}).
  * Everything before the record that triggers the warning is appended first and let through; then that record
- * is appended, and the time from the end of its write to the warning event is one sample.
+ * is appended, and the time from the end of its write to the warning event is one sample. The time the poll that
+ * read the record took (reading, parsing, matching, forecasting, the event) is kept beside it: the rest of the
+ * latency is the poll pause and the operating system's scheduling.
+ *
+ * <p>{@link #compare} measures two model sets in alternation (the models with their forecast, and the same machines
+ * without), so that both see the same load: on a shared machine the tail of a latency moves with the load more than
+ * with anything the monitor does.
  */
 final class LatencyBench {
 
-    /** @param millis one latency per run, sorted */
+    /**
+     * @param millis     one latency per run, sorted
+     * @param processing per run, the time of the poll that read the warning's record, sorted
+     */
     // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
     @SuppressWarnings("ArrayRecordComponent")
-    record Result(double[] millis, long pollMicros) {
+    record Result(double[] millis, double[] processing, long pollMicros) {
         double median() {
-            return percentile(0.5);
+            return percentile(millis, 0.5);
         }
 
         double p99() {
-            return percentile(0.99);
+            return percentile(millis, 0.99);
         }
 
         double max() {
             return millis[millis.length - 1];
         }
 
-        double percentile(double q) {
-            return millis[Math.min(millis.length - 1, (int) Math.ceil(q * millis.length) - 1)];
+        static double percentile(double[] sorted, double q) {
+            return sorted[Math.min(sorted.length - 1, (int) Math.ceil(q * sorted.length) - 1)];
         }
     }
 
     private LatencyBench() {
     }
 
-    static Result run(Abstraction abstraction, ModelSet models, int runs, long pollMicros, Path dir) throws Exception {
-        String[] parts = warningRun(abstraction, models, dir);
-        byte[] before = parts[0].getBytes(StandardCharsets.UTF_8);
-        byte[] trigger = parts[1].getBytes(StandardCharsets.UTF_8);
-        double[] millis = new double[runs];
-        for (int i = 0; i < runs; i++) {
-            millis[i] = once(before, trigger, abstraction, models, pollMicros, dir);
+    /** One result per model set, their samples taken in alternation. */
+    static List<Result> compare(Abstraction abstraction, List<ModelSet> sets, int runs, long pollMicros, Path dir)
+            throws Exception {
+        List<String[]> parts = new ArrayList<>();
+        for (ModelSet m : sets) {
+            parts.add(warningRun(abstraction, m, dir));
         }
-        Arrays.sort(millis);
-        return new Result(millis, pollMicros);
+        double[][] millis = new double[sets.size()][runs];
+        double[][] processing = new double[sets.size()][runs];
+        for (int i = 0; i < runs; i++) {
+            for (int k = 0; k < sets.size(); k++) {
+                double[] sample = once(parts.get(k)[0].getBytes(StandardCharsets.UTF_8),
+                        parts.get(k)[1].getBytes(StandardCharsets.UTF_8), abstraction, sets.get(k), pollMicros, dir);
+                millis[k][i] = sample[0];
+                processing[k][i] = sample[1];
+            }
+        }
+        List<Result> results = new ArrayList<>();
+        for (int k = 0; k < sets.size(); k++) {
+            Arrays.sort(millis[k]);
+            Arrays.sort(processing[k]);
+            results.add(new Result(millis[k], processing[k], pollMicros));
+        }
+        return results;
     }
 
-    private static double once(byte[] before, byte[] trigger, Abstraction abstraction, ModelSet models,
+    /** One sample: {latency, time of the poll that read the trigger}, in ms. */
+    private static double[] once(byte[] before, byte[] trigger, Abstraction abstraction, ModelSet models,
                                long pollMicros, Path dir) throws Exception {
         Path file = Files.createTempFile(dir, "predmon-latency", ".log");
         AtomicLong warnedAt = new AtomicLong();
         AtomicLong written = new AtomicLong();
         AtomicBoolean caughtUp = new AtomicBoolean();
+        long polled = 0;
         PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> {
             if (e instanceof MonitorEvent.Warning) {
                 warnedAt.set(System.nanoTime());
@@ -92,7 +119,9 @@ final class LatencyBench {
             writer.start();
             long deadline = System.nanoTime() + 10_000_000_000L;
             while (warnedAt.get() == 0 && System.nanoTime() < deadline) {
+                long start = System.nanoTime();
                 boolean read = watcher.poll();
+                polled = System.nanoTime() - start;
                 if (!caughtUp.get() && monitor.pipeline().records() >= records) {
                     caughtUp.set(true);
                 }
@@ -108,7 +137,7 @@ final class LatencyBench {
             Files.deleteIfExists(file);
         }
         // The warning can be seen before the writer stores its clock; such a sample is ~0.
-        return Math.max(0, warnedAt.get() - written.get()) / 1e6;
+        return new double[] {Math.max(0, warnedAt.get() - written.get()) / 1e6, polled / 1e6};
     }
 
     /** A depleted run the models warn on, split at the warning's record: the text before it and its seven lines. */
