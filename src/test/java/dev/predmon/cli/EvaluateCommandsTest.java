@@ -73,7 +73,8 @@ class EvaluateCommandsTest {
                 "--learn-runs", "2", "--model-runs", "2", "--fleet-logs", "1,3", "--fleet-seconds", "0.2",
                 "--tmp", dir.toString());
         assertEquals(ExitCodes.OK, r.code(), r.err());
-        for (String figure : new String[] {"batch: parse", "grep -c", "latency:", "latency without the forecast", "p99 with the forecast / without", "watch cpu:", "watch heap:", "learn: 2 runs",
+        for (String figure : new String[] {"batch: parse", "grep -c", "latency:", "latency without the forecast",
+            "p99 with the forecast / without", "watch cpu:", "watch heap:", "learn: 2 runs",
             "fleet: 1 log in one process, woken by file-change notification",
             "fleet: 3 logs in one process, woken by file-change notification"}) {
             assertTrue(r.out().contains(figure), figure + " in\n" + r.out());
