@@ -62,16 +62,16 @@ final class LatencyBench {
     /** One result per model set, their samples taken in alternation. */
     static List<Result> compare(Abstraction abstraction, List<ModelSet> sets, int runs, long pollMicros, Path dir)
             throws Exception {
-        List<String[]> parts = new ArrayList<>();
+        List<byte[][]> parts = new ArrayList<>(); // per set: the text before the warning's record, and the record
         for (ModelSet m : sets) {
-            parts.add(warningRun(abstraction, m, dir));
+            String[] run = warningRun(abstraction, m, dir);
+            parts.add(new byte[][] {run[0].getBytes(StandardCharsets.UTF_8), run[1].getBytes(StandardCharsets.UTF_8)});
         }
         double[][] millis = new double[sets.size()][runs];
         double[][] processing = new double[sets.size()][runs];
         for (int i = 0; i < runs; i++) {
             for (int k = 0; k < sets.size(); k++) {
-                double[] sample = once(parts.get(k)[0].getBytes(StandardCharsets.UTF_8),
-                        parts.get(k)[1].getBytes(StandardCharsets.UTF_8), abstraction, sets.get(k), pollMicros, dir);
+                double[] sample = once(parts.get(k)[0], parts.get(k)[1], abstraction, sets.get(k), pollMicros, dir);
                 millis[k][i] = sample[0];
                 processing[k][i] = sample[1];
             }

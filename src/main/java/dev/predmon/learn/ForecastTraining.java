@@ -18,7 +18,6 @@ import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -71,18 +70,16 @@ public final class ForecastTraining {
             for (int i = fold; i < logs.size(); i += k) {
                 held.add(logs.get(i));
             }
-            Map<String, CompactMealy<String, String>> foldMachines = new LinkedHashMap<>();
-            List<LearnedModel> foldModels = new ArrayList<>();
+            List<LearnedScenario> foldLearned = new ArrayList<>();
             for (ScenarioSpec s : specs) {
                 List<MealyTrace> samples = s.logs().stream().filter(traces::containsKey).filter(l -> !held.contains(l))
                         .flatMap(l -> traces.get(l).samples(s.runs()).stream()).toList();
                 if (!samples.isEmpty()) {
-                    ScenarioLearner.learnSamples(s, samples, alphabet).machines().forEach(m -> {
-                        foldMachines.put(m.id(), m.machine());
-                        foldModels.add(new LearnedModel(m.id(), s.name(), s.faulty(), m.machine(), alphabet));
-                    });
+                    foldLearned.add(ScenarioLearner.learnSamples(s, samples, alphabet));
                 }
             }
+            Map<String, CompactMealy<String, String>> foldMachines = LearnedModels.machines(foldLearned);
+            List<LearnedModel> foldModels = LearnedModels.models(foldLearned, alphabet);
             List<LogTrace.Run> training = runsOf(specs, traces, l -> !held.contains(l));
             if (training.stream().allMatch(LogTrace.Run::violated) || training.stream().noneMatch(LogTrace.Run::violated)) {
                 continue; // a fold that trains on one outcome only says nothing about where to draw the line

@@ -75,14 +75,19 @@ public final class LearnedModels {
 
     /** The learned machines and their forecast as a model set in memory, as {@code watch} would load them. */
     public static ModelSet modelSet(List<LearnedScenario> scenarios, Abstraction abstraction, ForecastModel forecast) {
-        Alphabet<String> alphabet = MealyAlphabet.inputs(abstraction);
+        return new ModelSet(null, index(scenarios, abstraction), models(scenarios, MealyAlphabet.inputs(abstraction)),
+                forecast);
+    }
+
+    /** Every machine of {@code scenarios} as the monitor matches it, over {@code alphabet}, in scenario order. */
+    public static List<LearnedModel> models(List<LearnedScenario> scenarios, Alphabet<String> alphabet) {
         List<LearnedModel> models = new ArrayList<>();
         for (LearnedScenario s : scenarios) {
             for (LearnedScenario.Machine m : s.machines()) {
                 models.add(new LearnedModel(m.id(), s.spec().name(), s.spec().faulty(), m.machine(), alphabet));
             }
         }
-        return new ModelSet(null, index(scenarios, abstraction), List.copyOf(models), forecast);
+        return List.copyOf(models);
     }
 
     /** All samples of a scenario, for export. */
