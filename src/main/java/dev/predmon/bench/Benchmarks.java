@@ -33,12 +33,13 @@ public final class Benchmarks {
      * @param modelRuns       runs per scenario the monitored models are learned from
      * @param tempDir         where generated logs go
      * @param fleetLogs       fleet sizes: logs watched at once in the fleet benchmark, one measurement each
+     * @param fleetSamples    append-to-warning latencies measured per fleet size (at least one per log)
      * @param fleetSeconds    how long the fleet benchmark runs at robot pace, and idle, per fleet size
      * @param fleetPolling    the fleet polls every log ({@code watch --polling}) instead of waiting for notifications
      */
     public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
                           List<Integer> learnRuns, int modelRuns, Path tempDir, List<Integer> fleetLogs,
-                          double fleetSeconds, boolean fleetPolling) {
+                          int fleetSamples, double fleetSeconds, boolean fleetPolling) {
     }
 
     private Benchmarks() {
@@ -119,7 +120,7 @@ public final class Benchmarks {
                 case FLEET -> {
                     String how = o.fleetPolling() ? f("polling every %d us", o.pollMicros())
                             : "woken by file-change notification";
-                    for (FleetBench.Result r : FleetBench.run(abstraction, models, o.fleetLogs(), o.latencyRuns(),
+                    for (FleetBench.Result r : FleetBench.run(abstraction, models, o.fleetLogs(), o.fleetSamples(),
                             o.pollMicros(), o.fleetPolling(), o.fleetSeconds(), o.tempDir())) {
                         out.accept(f("fleet: %d log%s in one process, %s: catch-up %.0f ns CPU/record; idle %.1f%% of "
                                         + "a core (following thread %.1f%%); at robot pace (%.0f records/s per log) "

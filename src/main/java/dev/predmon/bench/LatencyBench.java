@@ -24,7 +24,7 @@ import java.util.concurrent.locks.LockSupport;
  * Everything before the record that triggers the warning is appended first and let through; then that record
  * is appended, and the time from the end of its write to the warning event is one sample. The time the poll that
  * read the record took (reading, parsing, matching, forecasting, the event) is kept beside it: the rest of the
- * latency is the poll pause and the operating system's scheduling.
+ * latency is the poll pause and the operating system's scheduling. Rounds of warm-up, not measured, come first.
  *
  * <p>{@link #compare} measures two model sets in alternation (the models with their forecast, and the same machines
  * without), so that both see the same load: on a shared machine the tail of a latency moves with the load more than
@@ -56,6 +56,12 @@ final class LatencyBench {
         }
     }
 
+    /**
+     * One unmeasured round per this many measured ones comes first, so that the tail measures the monitor, not the
+     * compiler still at work on the warning's code.
+     */
+    static final int WARM_UP_SHARE = 5;
+
     private LatencyBench() {
     }
 
@@ -69,11 +75,14 @@ final class LatencyBench {
         }
         double[][] millis = new double[sets.size()][runs];
         double[][] processing = new double[sets.size()][runs];
-        for (int i = 0; i < runs; i++) {
+        int warmUp = runs / WARM_UP_SHARE;
+        for (int i = -warmUp; i < runs; i++) {
             for (int k = 0; k < sets.size(); k++) {
                 double[] sample = once(parts.get(k)[0], parts.get(k)[1], abstraction, sets.get(k), pollMicros, dir);
-                millis[k][i] = sample[0];
-                processing[k][i] = sample[1];
+                if (i >= 0) {
+                    millis[k][i] = sample[0];
+                    processing[k][i] = sample[1];
+                }
             }
         }
         List<Result> results = new ArrayList<>();

@@ -32,7 +32,8 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--batch-mb", defaultValue = "200", description = "Size of the batch log in MB (default: ${DEFAULT-VALUE}).")
     long batchMb;
 
-    @Option(names = "--latency-runs", defaultValue = "200", description = "Appends measured (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--latency-runs", defaultValue = "1000",
+            description = "Appends measured, after a fifth as many not measured (default: ${DEFAULT-VALUE}).")
     int latencyRuns;
 
     @Option(names = "--poll-us", defaultValue = "1000",
@@ -59,6 +60,11 @@ final class BenchCommand implements Callable<Integer> {
                     + "${DEFAULT-VALUE}).")
     List<Integer> fleetLogs;
 
+    @Option(names = "--fleet-samples", defaultValue = "200",
+            description = "Append-to-warning latencies measured per fleet size, at least one per log (default: "
+                    + "${DEFAULT-VALUE}).")
+    int fleetSamples;
+
     @Option(names = "--fleet-seconds", defaultValue = "5",
             description = "Seconds the fleet benchmark appends at robot pace, and stays idle, per fleet size "
                     + "(default: ${DEFAULT-VALUE}).")
@@ -75,7 +81,7 @@ final class BenchCommand implements Callable<Integer> {
                 : only.stream().map(this::kind).toList();
         Path dir = tmp != null ? tmp : Path.of(System.getProperty("java.io.tmpdir"));
         Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, learnRuns,
-                modelRuns, dir, fleetLogs, fleetSeconds, fleetPolling), line -> {
+                modelRuns, dir, fleetLogs, fleetSamples, fleetSeconds, fleetPolling), line -> {
             out.println(line);
             out.flush();
         });

@@ -1,8 +1,15 @@
 package dev.predmon.forecast;
 
-import java.util.Locale;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
 
-/** A forecast in words an operator reads at a glance. */
+/**
+ * A forecast in words an operator reads at a glance.
+ *
+ * <p>Numbers are written by {@link #fixed}, not {@code String.format}: a warning's words are built on the poll that
+ * read its record, and a {@code Formatter} (a new one per call, with its locale's symbols) made up most of that
+ * poll's time.
+ */
 public final class ForecastWords {
 
     private ForecastWords() {
@@ -10,7 +17,7 @@ public final class ForecastWords {
 
     /** {@code P(violation) 0.93}. */
     public static String probability(Forecast f) {
-        return String.format(Locale.ROOT, "P(violation) %.2f", f.probability());
+        return "P(violation) " + fixed(f.probability(), 2);
     }
 
     /** {@code about 8.3 s (8.2-9.0 s)}, {@code about 48 ticks (30 ticks or more)}, or {@code no violation in sight}. */
@@ -20,8 +27,8 @@ public final class ForecastWords {
         }
         String unit = f.unit();
         String range = f.low() == null ? "" : f.high() == null
-                ? String.format(Locale.ROOT, " (%s %s or more)", amount(f.low()), unit)
-                : String.format(Locale.ROOT, " (%s-%s %s)", amount(f.low()), amount(f.high()), unit);
+                ? " (" + amount(f.low()) + " " + unit + " or more)"
+                : " (" + amount(f.low()) + "-" + amount(f.high()) + " " + unit + ")";
         return "about " + amount(f.timeToViolation()) + " " + unit + " to the violation" + range;
     }
 
@@ -32,29 +39,28 @@ public final class ForecastWords {
     public static String evidence(Forecast f) {
         StringBuilder b = new StringBuilder();
         switch (f.basis()) {
-            case MATCHED -> b.append(String.format(Locale.ROOT, "%d of %d training runs that were in this state",
-                    f.violated(), f.runs()));
-            case RESYNCHRONISED -> b.append(String.format(Locale.ROOT,
-                    "%d of %d training runs in the states the latest steps lead to", f.violated(), f.runs()));
-            case VALUE_ONLY -> b.append(String.format(Locale.ROOT, "%d of %d training runs", f.violated(), f.runs()));
+            case MATCHED -> b.append(f.violated()).append(" of ").append(f.runs())
+                    .append(" training runs that were in this state");
+            case RESYNCHRONISED -> b.append(f.violated()).append(" of ").append(f.runs())
+                    .append(" training runs in the states the latest steps lead to");
+            case VALUE_ONLY -> b.append(f.violated()).append(" of ").append(f.runs()).append(" training runs");
             case VIOLATED -> {
                 return "the property is violated";
             }
             default -> throw new IllegalStateException(f.basis().toString());
         }
         if (f.value() != null) {
-            b.append(String.format(Locale.ROOT, " and went as low as %.2f", f.value()));
+            b.append(" and went as low as ").append(fixed(f.value(), 2));
         }
         b.append(" violated");
         if (f.drift() != null && f.value() != null) {
-            b.append(String.format(Locale.ROOT, "; the value %.2f %s %s per %s", f.value(),
-                    f.drift() < 0 ? "falls" : "rises", amount(Math.abs(f.drift())), f.unit().equals("s") ? "s"
-                            : "tick"));
+            b.append("; the value ").append(fixed(f.value(), 2)).append(f.drift() < 0 ? " falls " : " rises ")
+                    .append(amount(Math.abs(f.drift()))).append(" per ").append(f.unit().equals("s") ? "s" : "tick");
         }
         if (f.novel()) {
-            b.append(String.format(Locale.ROOT, "; novel behaviour since line %d (%s)", f.novelSince(),
-                    f.basis() == Forecast.Basis.VALUE_ONLY ? "no learned state fits: the value alone speaks"
-                            : "matching resumed on the latest steps"));
+            b.append("; novel behaviour since line ").append(f.novelSince()).append(" (")
+                    .append(f.basis() == Forecast.Basis.VALUE_ONLY ? "no learned state fits: the value alone speaks"
+                            : "matching resumed on the latest steps").append(')');
         }
         return b.toString();
     }
@@ -65,7 +71,7 @@ public final class ForecastWords {
      */
     public static String brief(Forecast f) {
         String runs = f.basis() == Forecast.Basis.VIOLATED ? ""
-                : String.format(Locale.ROOT, ", %d of %d runs", f.violated(), f.runs());
+                : ", " + f.violated() + " of " + f.runs() + " runs";
         return probability(f) + ", " + time(f) + " [" + f.basis().label() + runs + "]"
                 + (f.novel() ? "; novel since line " + f.novelSince() : "");
     }
@@ -76,7 +82,18 @@ public final class ForecastWords {
     }
 
     private static String amount(double x) {
-        return Math.abs(x) >= 100 ? String.format(Locale.ROOT, "%.0f", x)
-                : Math.abs(x) >= 10 ? String.format(Locale.ROOT, "%.1f", x) : String.format(Locale.ROOT, "%.2f", x);
+        return fixed(x, Math.abs(x) >= 100 ? 0 : Math.abs(x) >= 10 ? 1 : 2);
+    }
+
+    /**
+     * {@code x} with {@code digits} decimals, as {@code String.format(Locale.ROOT, "%.<digits>f", x)} writes it: the
+     * shortest decimal that reads back as {@code x}, rounded half up, with its sign kept when it rounds to zero.
+     */
+    public static String fixed(double x, int digits) {
+        if (!Double.isFinite(x)) {
+            return Double.isNaN(x) ? "NaN" : x > 0 ? "Infinity" : "-Infinity";
+        }
+        String s = BigDecimal.valueOf(x).setScale(digits, RoundingMode.HALF_UP).toPlainString();
+        return (x < 0 || Double.compare(x, -0.0) == 0) && s.charAt(0) != '-' ? "-" + s : s;
     }
 }

@@ -7,7 +7,6 @@ import dev.predmon.forecast.Forecaster;
 import dev.predmon.matching.Matching;
 import dev.predmon.model.ModelSet;
 
-import java.util.Locale;
 
 /**
  * The forecast of the run being watched: a {@link Forecaster} over the models' machines, and which of its forecasts
@@ -54,10 +53,10 @@ final class ForecastTracker {
      */
     String reason(Forecast f, String where) {
         String why = f.probability() >= threshold()
-                ? String.format(Locale.ROOT, "reaches the warning threshold %.2f", threshold())
+                ? "reaches the warning threshold " + ForecastWords.fixed(threshold(), 2)
                 : "beyond what the training runs that held did, with the value below the lowest they went to";
-        return String.format(Locale.ROOT, "%s %s; %s; %s; %s", ForecastWords.probability(f), why,
-                ForecastWords.time(f), ForecastWords.evidence(f), where);
+        return ForecastWords.probability(f) + " " + why + "; " + ForecastWords.time(f) + "; "
+                + ForecastWords.evidence(f) + "; " + where;
     }
 
     /** A gap in the trace at {@code line}: the run is novel from there ({@link Forecaster#unseen}). */

@@ -16,7 +16,6 @@ import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Consumer;
@@ -200,7 +199,7 @@ public final class PredictiveMonitor implements PipelineListener {
             if (warning == null && violation == null && rule == WarningRule.FORECAST
                     && forecast.warns(f, !matching.nominalAlive())) {
                 warn(record, matching.faultyAlive(), forecast.reason(f, "at the new reading "
-                        + String.format(Locale.ROOT, "%.2f", v)), f);
+                        + ForecastWords.fixed(v, 2)), f);
             }
         }
     }
