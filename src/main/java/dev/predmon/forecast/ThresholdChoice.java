@@ -6,8 +6,8 @@ import java.util.Locale;
 import java.util.TreeSet;
 
 /**
- * Chooses the probability at which the forecast rule warns, from held-out runs: each run's highest forecast before its
- * violation (or before its end, when it held). A threshold warns on every run whose peak reaches it; it is chosen to
+ * Chooses the probability at which the forecast rule warns, from held-out runs: each run's highest calibrated forecast
+ * before its violation (or before its end, when it held), never below {@link #FLOOR}. A threshold warns on every run whose peak reaches it; it is chosen to
  * make the fewest wrong calls (a false alarm and a missed violation cost the same), and among the equally good ones,
  * the middle of the widest gap between peaks, so that a run not seen in training is least likely to fall on the
  * wrong side.
@@ -16,8 +16,12 @@ public final class ThresholdChoice {
 
     /** The threshold used when the held-out runs cannot choose one (none of one kind). */
     public static final double DEFAULT = 0.5;
-    /** Never warn below this, whatever the data: a warning at near even odds is not a prediction. */
-    static final double FLOOR = 0.3;
+    /**
+     * Never warn below even odds, whatever the data. The peaks are calibrated probabilities, and with a false alarm
+     * and a missed violation costing the same, a warning whose own probability says the run more likely holds is not
+     * a prediction: on runs like the training runs, more of those warnings would be false than true.
+     */
+    public static final double FLOOR = 0.5;
 
     private ThresholdChoice() {
     }

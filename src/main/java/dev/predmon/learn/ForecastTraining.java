@@ -93,16 +93,15 @@ public final class ForecastTraining {
                 heldOut.add(new Calibration.Sample(ps, r.violated()));
             }
         }
-        ThresholdChoice.Choice c = ThresholdChoice.choose(peaks);
+        // The threshold is chosen on the calibrated scale, where even odds mean what they say.
+        Calibration calibration = Calibration.fit(heldOut);
+        ThresholdChoice.Choice c = ThresholdChoice.choose(peaks.stream().map(p -> new ThresholdChoice.Peak(
+                calibration.apply(p.probability()), p.violated(), p.caught())).toList());
         if (!c.validated()) {
             return stats.withThreshold(c.threshold(), c.note(), false);
         }
-        // The threshold was chosen on the raw estimates; the calibration is strictly increasing, so the same runs
-        // reach it on the calibrated scale.
-        Calibration calibration = Calibration.fit(heldOut);
-        double threshold = calibration.apply(c.threshold());
-        String note = String.format(Locale.ROOT, "%.2f (%.2f before calibration) %s", threshold,
-                c.threshold(), c.note());
+        double threshold = c.threshold();
+        String note = String.format(Locale.ROOT, "%.2f %s", threshold, c.note());
         return stats.withCalibration(calibration).withThreshold(threshold, note, true);
     }
 

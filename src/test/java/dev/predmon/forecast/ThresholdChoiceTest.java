@@ -34,6 +34,15 @@ class ThresholdChoiceTest {
     }
 
     @Test
+    void peaksBelowEvenOddsNeverSetTheThreshold() {
+        // The violating runs stand out, but at 0.3-0.35 each warning would say the run more likely holds.
+        ThresholdChoice.Choice c = ThresholdChoice.choose(List.of(safe(0.1), safe(0.2), bad(0.3), bad(0.35)));
+        assertTrue(c.threshold() >= ThresholdChoice.FLOOR, c.toString());
+        assertTrue(c.note().contains("warned 0 of 2 violations, 0 false alarm(s)"), c.note());
+        assertTrue(c.validated());
+    }
+
+    @Test
     void withoutBothOutcomesTheDefaultIsNotValidated() {
         ThresholdChoice.Choice c = ThresholdChoice.choose(List.of(safe(0.2), safe(0.4)));
         assertEquals(ThresholdChoice.DEFAULT, c.threshold());
