@@ -7,8 +7,8 @@ import java.math.RoundingMode;
  * A forecast in words an operator reads at a glance.
  *
  * <p>Numbers are written by {@link #fixed}, not {@code String.format}: a warning's words are built on the poll that
- * read its record, and a {@code Formatter} (a new one per call, with its locale's symbols) made up most of that
- * poll's time.
+ * read its record, and a {@code Formatter} (a new one per call, with its locale's symbols) made up about two thirds
+ * of what the forecast added to that poll ({@code bench --only latency}).
  */
 public final class ForecastWords {
 
