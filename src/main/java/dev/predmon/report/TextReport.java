@@ -26,9 +26,9 @@ public final class TextReport {
 
     /** Prints the tables of {@code e}. */
     public static void print(PrintWriter out, Evaluation e) {
-        out.println(e.mode().equals("cross-validation")
-                ? e.folds() + "-fold cross-validation, threshold " + e.threshold() + ", abstraction '" + e.abstraction() + "'"
-                : "learned on --logs, judged --test, threshold " + e.threshold() + ", abstraction '" + e.abstraction() + "'");
+        out.println((e.mode().equals("cross-validation") ? e.folds() + "-fold cross-validation"
+                : "learned on --logs, judged --test") + ", discrepancy threshold " + e.threshold() + ", abstraction '"
+                + e.abstraction() + "'");
         out.println();
         Table scenarios = new Table("scenario", "kind", ">runs", ">warned", ">hits", ">false", ">missed", ">late",
                 ">no-vio", ">no-match", ">sudden", "lead: median [min..max]", "battery@warning: median [min..max]");
