@@ -7,10 +7,10 @@ import java.util.TreeSet;
 
 /**
  * Chooses the probability at which the forecast rule warns, from held-out runs: each run's highest calibrated forecast
- * before its violation (or before its end, when it held), never below {@link #FLOOR}. A threshold warns on every run whose peak reaches it; it is chosen to
- * make the fewest wrong calls (a false alarm and a missed violation cost the same), and among the equally good ones,
- * the middle of the widest gap between peaks, so that a run not seen in training is least likely to fall on the
- * wrong side.
+ * before its violation (or before its end, when it held). A threshold warns on every run whose peak reaches it; it is
+ * chosen to make the fewest wrong calls (a false alarm and a missed violation cost the same), never below
+ * {@link #FLOOR}, and among the equally good ones, the middle of the widest gap between peaks, so that a run not seen
+ * in training is least likely to fall on the wrong side.
  */
 public final class ThresholdChoice {
 

@@ -7,7 +7,6 @@ import dev.predmon.forecast.Forecaster;
 import dev.predmon.matching.Matching;
 import dev.predmon.model.ModelSet;
 
-
 /**
  * The forecast of the run being watched: a {@link Forecaster} over the models' machines, and which of its forecasts
  * changed enough to be told (a forecast after every pair would flood a terminal; a change of a twentieth in the
