@@ -1,0 +1,158 @@
+package dev.predmon.forecast;
+
+import java.util.Arrays;
+
+/**
+ * How long the training runs' obligations stayed pending (a {@code goTo} until its destination, a low battery until
+ * the turn to the charger): the Kaplan-Meier estimate of {@code S(t) = P(still pending after t)}, with censoring.
+ *
+ * <p>An obligation is observed either <em>discharged</em> after {@code d} (its response came) or <em>censored</em> at
+ * {@code c}: the run ended, or was recovered, while it was still pending, so all that is known is that it took longer
+ * than {@code c}. A missed deadline is censored at the time the run let go of it, or discharged late. Censored runs
+ * count as at risk up to their time and no further, which is what keeps runs that stopped early from reading as fast.
+ *
+ * <p>The forecast of a pending obligation that has run {@code t} against a deadline {@code T} is
+ * {@code P(miss) = S(T) / S(t)}, counted over the training obligations still pending at {@code t} (the runs "in the
+ * same place"), shrunk towards the overall miss rate {@code S(T)} with a prior of {@link ForecastModel#PRIOR_RUNS}
+ * runs so that three runs cannot claim certainty. Past every training obligation there is no evidence: the estimate
+ * says so ({@link Estimate#novel}) and gives only the time left.
+ *
+ * <p>Immutable; the durations are kept sorted, and one estimate is two binary searches and a product over the
+ * distinct discharge times (a few hundred at most).
+ */
+public final class Survival {
+
+    private final double[] discharged;
+    private final double[] censored;
+    /** Distinct discharge times, ascending, and the survival just after each. */
+    private final double[] times;
+    private final double[] after;
+
+    /**
+     * @param discharged how long each obligation that was discharged took
+     * @param censored   how long each obligation that was never discharged had been pending when it was let go
+     */
+    public Survival(double[] discharged, double[] censored) {
+        this.discharged = finiteSorted(discharged, "discharged");
+        this.censored = finiteSorted(censored, "censored");
+        double[] t = new double[this.discharged.length];
+        double[] s = new double[this.discharged.length];
+        int distinct = 0;
+        double survival = 1.0;
+        for (int i = 0; i < this.discharged.length; ) {
+            double time = this.discharged[i];
+            int events = 0;
+            while (i < this.discharged.length && this.discharged[i] == time) {
+                events++;
+                i++;
+            }
+            // at risk at time: every obligation, discharged or censored, that lasted at least that long
+            int atRisk = atLeast(this.discharged, time) + atLeast(this.censored, time);
+            survival *= 1.0 - events / (double) atRisk;
+            t[distinct] = time;
+            s[distinct] = survival;
+            distinct++;
+        }
+        this.times = Arrays.copyOf(t, distinct);
+        this.after = Arrays.copyOf(s, distinct);
+    }
+
+    /** Training obligations, discharged or not. */
+    public int size() {
+        return discharged.length + censored.length;
+    }
+
+    /** The longest any training obligation was seen pending (discharged or censored); NaN without one. */
+    public double longest() {
+        double d = discharged.length == 0 ? Double.NEGATIVE_INFINITY : discharged[discharged.length - 1];
+        double c = censored.length == 0 ? Double.NEGATIVE_INFINITY : censored[censored.length - 1];
+        double m = Math.max(d, c);
+        return Double.isInfinite(m) ? Double.NaN : m;
+    }
+
+    /** The Kaplan-Meier estimate of P(still pending after {@code t}); 1 before the first discharge. */
+    public double survival(double t) {
+        int i = atMost(times, t);
+        return i == 0 ? 1.0 : after[i - 1];
+    }
+
+    /** Training obligations still pending after {@code t}: at risk of missing a deadline beyond it. */
+    public int pendingAfter(double t) {
+        return discharged.length - atMost(discharged, t) + censored.length - atMost(censored, t);
+    }
+
+    /** Of those, how many are known to have been still pending after {@code deadline}. */
+    public int pendingAfterBoth(double t, double deadline) {
+        return pendingAfter(Math.max(t, deadline));
+    }
+
+    /**
+     * The forecast of an obligation pending for {@code elapsed} against {@code deadline} (same unit).
+     *
+     * @return the estimate; {@link Estimate#novel} when {@code elapsed} is past every training obligation (or there
+     *         is none), and then its probability is NaN
+     */
+    public Estimate estimate(double elapsed, double deadline) {
+        double left = Math.max(0.0, deadline - elapsed);
+        int atRisk = pendingAfter(elapsed);
+        if (atRisk == 0) {
+            return new Estimate(Double.NaN, left, 0, 0, true);
+        }
+        double base = survival(deadline);
+        double now = survival(elapsed);
+        double km = now <= 0 ? 1.0 : Math.min(1.0, survival(Math.max(elapsed, deadline)) / now);
+        double p = (atRisk * km + ForecastModel.PRIOR_RUNS * base) / (atRisk + ForecastModel.PRIOR_RUNS);
+        return new Estimate(p, left, atRisk, pendingAfterBoth(elapsed, deadline), false);
+    }
+
+    /**
+     * A deadline forecast.
+     *
+     * @param probability P(the deadline passes with the obligation still pending); NaN when novel
+     * @param timeLeft    time until the deadline, in the log's unit (0 once it is due)
+     * @param atRisk      training obligations that had been pending this long
+     * @param longer      of them, how many were still pending at the deadline
+     * @param novel       the obligation has been pending longer than any training obligation: no evidence
+     */
+    public record Estimate(double probability, double timeLeft, int atRisk, int longer, boolean novel) {
+    }
+
+    private static double[] finiteSorted(double[] values, String what) {
+        for (double v : values) {
+            if (!Double.isFinite(v) || v < 0) {
+                throw new IllegalArgumentException(what + " duration must be finite and not negative: " + v);
+            }
+        }
+        double[] copy = values.clone();
+        Arrays.sort(copy);
+        return copy;
+    }
+
+    private static int atLeast(double[] sorted, double value) {
+        int lo = 0;
+        int hi = sorted.length;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (sorted[mid] < value) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return sorted.length - lo;
+    }
+
+    private static int atMost(double[] sorted, double value) {
+        int lo = 0;
+        int hi = sorted.length;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (sorted[mid] <= value) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
+}
