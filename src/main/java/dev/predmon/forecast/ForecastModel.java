@@ -78,7 +78,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
      * state that is "anywhere".
      */
     public double valueOnly(double value, double valueRate) {
-        return (lows.violating(value) + PRIOR_RUNS * valueRate) / (lows.runs(value) + PRIOR_RUNS);
+        return (lows.violating(value) + PRIOR_RUNS * valueRate) / (lows.weight(value) + PRIOR_RUNS);
     }
 
     /**

@@ -212,14 +212,16 @@ public final class Forecaster {
         StateStats timed = null;
         for (int m = 0; m < machines.size(); m++) {
             Map<Integer, StateStats> table = stats.states().getOrDefault(ids.get(m), Map.of());
-            int n = 0;
+            double n = 0; // runs as low, with the safe runs' edge (Lows#weight)
+            int count = 0; // runs as low, as the words count them
             int k = 0;
             for (int q = candidates[m].nextSetBit(0); q >= 0; q = candidates[m].nextSetBit(q + 1)) {
                 StateStats s = table.get(q);
                 if (s == null) {
                     continue;
                 }
-                n += s.lows().runs(value);
+                n += s.lows().weight(value);
+                count += s.lows().runs(value);
                 k += s.lows().violating(value);
                 if (s.driftRuns() > 0) {
                     drift[0] += s.drift() * s.driftRuns();
@@ -234,8 +236,8 @@ public final class Forecaster {
                 double p = (weight * k + ForecastModel.PRIOR_RUNS * prior) / (weight * n + ForecastModel.PRIOR_RUNS);
                 sum += n * p;
                 weights += n;
-                if (n > runs) {
-                    runs = n;
+                if (count > runs) {
+                    runs = count;
                     bad = k;
                 }
             }

@@ -79,6 +79,17 @@ public final class Lows {
         return violating(value) + atMost(safe, value);
     }
 
+    /**
+     * Runs that went as low as {@code value}, with the safe runs' edge: below the lowest value any safe run went to,
+     * a new safe run still goes that low about once in {@code n + 1} (its low is as likely to be the lowest as any of
+     * the {@code n} seen), so {@code n / (n + 1)} of a safe run is counted there instead of none. Without it, a value
+     * just past the lowest of a few safe runs would read as certain violation.
+     */
+    public double weight(double value) {
+        double edge = safe.length > 0 && value < safe[0] ? safe.length / (safe.length + 1.0) : 0.0;
+        return runs(value) + edge;
+    }
+
     /** Violating runs that went as low as {@code value} while safe; all of them when the value is unknown (NaN). */
     public int violating(double value) {
         return atMost(violating, value);
@@ -100,7 +111,7 @@ public final class Lows {
     }
 
     private double rate(double value) {
-        return (violating(value) + prior * base) / (runs(value) + prior);
+        return (violating(value) + prior * base) / (weight(value) + prior);
     }
 
     private static double[] sorted(double[] values) {

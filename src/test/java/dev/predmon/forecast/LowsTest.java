@@ -31,4 +31,14 @@ class LowsTest {
                 new Lows(new double[0], new double[] {21, 22, 23}), 0.9, "test", true, Map.of(), List.of());
         assertFalse(noSafe.belowSafeFloor(5), "no run held: no floor to be below");
     }
+
+    @Test
+    void belowEverySafeRunANewSafeRunStillCountsOnceInNPlusOne() {
+        Lows lows = new Lows(new double[] {38, 40, 42}, new double[] {21, 22, 23});
+        assertEquals(3 + 3 / 4.0, lows.weight(30), 1e-9, "below every safe run: the violating runs and 3/4 of a safe one");
+        assertEquals(3 + 3 / 4.0, lows.weight(37.9), 1e-9, "just below the lowest of 3 safe runs: 3/4 of one");
+        assertEquals(4.0, lows.weight(38), 1e-9, "as low as a safe run went: counted as it is");
+        Lows smoothed = lows.smoothed(ForecastModel.PRIOR_RUNS, 0.5);
+        assertEquals((3 + 2 * 0.5) / (3.75 + 2), smoothed.monotoneRate(37.9), 1e-9, "3 of 3 violating runs as low, and 3/4 of a safe one");
+    }
 }
