@@ -17,9 +17,11 @@ import java.util.List;
  * @param reliability predicted probability against observed frequency, in ten bins of the probability
  * @param sweep       recall and false alarms as the threshold moves (a run is warned when its highest forecast
  *                    before the violation reaches the threshold)
+ * @param judged      the warning rule the runs were judged by, scored on the runs with a forecast
+ * @param rawValue    the raw-value baseline on the same runs ({@link ValueRule#rawValue})
  */
 public record ForecastScore(int runs, double brier, double baseBrier, double ece, List<Bin> reliability,
-                            List<Point> sweep) {
+                            List<Point> sweep, ValueRule judged, ValueRule rawValue) {
 
     /** Bins of the reliability table. */
     static final int BINS = 10;
@@ -90,7 +92,7 @@ public record ForecastScore(int runs, double brier, double baseBrier, double ece
             sweep.add(point(scored, i / 10.0));
         }
         return new ForecastScore(scored.size(), brier / scored.size(), base / scored.size(), ece / scored.size(),
-                List.copyOf(bins), List.copyOf(sweep));
+                List.copyOf(bins), List.copyOf(sweep), ValueRule.judged(runs), ValueRule.rawValue(runs));
     }
 
     /** The forecast rule at threshold {@code t} over {@code runs}. */

@@ -69,7 +69,8 @@ public final class Replay {
                 violated.add(run);
             }
         });
-        Approach approach = new Approach(abstraction.safety().orElse(null), monitor);
+        Approach approach = new Approach(abstraction.safety().orElse(null), monitor,
+                models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
         try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> problems[0]++, approach::record)) {
             watcher.drain();
         }
@@ -107,7 +108,7 @@ public final class Replay {
                     models.forecast() == null ? null : new RunResult.ForecastTrace(
                             List.copyOf(probabilities.getOrDefault(o.run(), List.of())), o.forecast(),
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
-                            models.forecast().threshold())));
+                            models.forecast().threshold(), approach.belowFloor(o.run()))));
         }
         return results;
     }
@@ -122,13 +123,20 @@ public final class Replay {
     private static final class Approach {
         private final SafetyRule rule;
         private final PredictiveMonitor monitor;
+        /** The lowest value a safe training run read: the raw-value baseline warns below it (NaN: never). */
+        private final double floor;
+        /** Per run, when the value first went below the floor, and when the current stretch below it began. */
+        private final Map<Integer, Double> firstBelow = new HashMap<>();
+        private final Map<Integer, Double> below = new HashMap<>();
+        private final Map<Integer, Double> belowAtViolation = new HashMap<>();
         private final Map<Integer, Double> start = new HashMap<>();
         private final Map<Integer, Integer> near = new HashMap<>();
         private final Set<Integer> violated = new HashSet<>();
 
-        Approach(SafetyRule rule, PredictiveMonitor monitor) {
+        Approach(SafetyRule rule, PredictiveMonitor monitor, double floor) {
             this.rule = rule;
             this.monitor = monitor;
+            this.floor = floor;
         }
 
         void record(LogRecord r) {
@@ -143,7 +151,19 @@ public final class Replay {
             }
             if (rule.violatedBy(v)) {
                 violated.add(run);
-            } else if (v < rule.below() + RunResult.APPROACH_BAND) {
+                Double stretch = below.get(run);
+                if (stretch != null) {
+                    belowAtViolation.put(run, stretch);
+                }
+                return;
+            }
+            if (v < floor) {
+                firstBelow.putIfAbsent(run, r.time());
+                below.putIfAbsent(run, r.time());
+            } else {
+                below.remove(run); // the baseline's alarm ends when its cause ends, as the monitor's do
+            }
+            if (v < rule.below() + RunResult.APPROACH_BAND) {
                 near.merge(run, 1, Integer::sum);
             } else {
                 // Back above the band: an earlier dip that recovered (a recharge) is no approach to a later violation.
@@ -153,6 +173,15 @@ public final class Replay {
 
         double start(int run) {
             return start.getOrDefault(run, 0.0);
+        }
+
+        /**
+         * When the raw-value baseline warned run {@code run}, or null: for a violated run, the start of the stretch
+         * below the floor that lasted until the violation (a dip that recovered earlier does not foresee it); for a
+         * run that held, its first stretch (a false alarm).
+         */
+        Double belowFloor(int run) {
+            return violated.contains(run) ? belowAtViolation.get(run) : firstBelow.get(run);
         }
 
         int near(int run) {

@@ -65,9 +65,19 @@ public record RunResult(String scenario, boolean faulty, String log, int fold, V
      * @param atWarning     the forecast at the warning, or null
      * @param baseRate      the share of violating runs among the training runs of the models that judged it
      * @param threshold     the probability at which the forecast rule warns
+     * @param valueRule     when the raw-value baseline ({@link ValueRule#rawValue}) warned: a reading below the
+     *                      lowest value a safe training run read that began a stretch below it lasting to the
+     *                      violation, or in a run that held the first such reading; null when none, or when the
+     *                      training runs had no safe run with a reading
      */
     public record ForecastTrace(List<Double> probabilities, Forecast last, Forecast atWarning, double baseRate,
-                                double threshold) {
+                                double threshold, Double valueRule) {
+
+        /** A trace without the baseline's time. */
+        public ForecastTrace(List<Double> probabilities, Forecast last, Forecast atWarning, double baseRate,
+                             double threshold) {
+            this(probabilities, last, atWarning, baseRate, threshold, null);
+        }
 
         /** The highest probability before the violation, 0 without a pair. */
         public double peak() {

@@ -2,8 +2,10 @@ package dev.predmon.report;
 
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.ForecastScore;
+import dev.predmon.evaluate.ValueRule;
 
 import java.io.PrintWriter;
+import java.util.List;
 import java.util.Locale;
 
 /** Prints how good the forecast was: the Brier score against the base rate, the reliability table, the sweep. */
@@ -28,11 +30,22 @@ final class ForecastTables {
             out.printf(Locale.ROOT, "  %.1f - %.1f  %9d %8.1f %10.2f %9.2f%n", b.from(), b.to(), b.forecasts(),
                     b.weight(), b.predicted(), b.observed());
         }
+        out.println("baseline, chosen by the same cross-validation: what the learned machines add");
+        for (ValueRule r : List.of(s.judged(), s.rawValue())) {
+            out.printf(Locale.ROOT, "  %-66s %s%n", r.rule(), words(r));
+        }
         out.println("threshold sweep: a run is warned when its forecast reaches the threshold before any violation");
         out.printf(Locale.ROOT, "  %-9s %-22s %s%n", "threshold", "violating runs warned", "false alarms");
         for (ForecastScore.Point p : s.sweep()) {
             out.printf(Locale.ROOT, "  %-9.1f %-22s %d of %d%n", p.threshold(), p.warned() + " of " + p.violating(),
                     p.falseAlarms(), p.held());
         }
+    }
+
+    /** A rule's counts in one line: "2 of 11 violations warned ahead, 1 of 32 false alarms, lead median 56.5". */
+    static String words(ValueRule r) {
+        return String.format(Locale.ROOT, "%d of %d violations warned ahead, %d of %d false alarms, lead median %s",
+                r.warned(), r.violating(), r.falseAlarms(), r.held(),
+                r.lead().n() == 0 ? "-" : String.format(Locale.ROOT, "%.1f", r.lead().median()));
     }
 }
