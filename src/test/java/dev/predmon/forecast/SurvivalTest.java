@@ -1,11 +1,11 @@
 package dev.predmon.forecast;
 
+import org.junit.jupiter.api.Test;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-
-import org.junit.jupiter.api.Test;
 
 /** Kaplan-Meier on a hand-computed sample: discharged after 2, 4, 4, 6; censored at 3 and 5. */
 class SurvivalTest {
