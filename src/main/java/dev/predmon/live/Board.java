@@ -35,6 +35,7 @@ public final class Board {
     private final RobotNames names;
     private final Map<String, Tile> tiles = new LinkedHashMap<>();
     private final EventStream stream = new EventStream();
+    private final Metrics metrics;
     private volatile List<String> watching = List.of();
 
     /** @param staleAfter a log that has not grown for this long is marked STALE (or its run ended, see Tile) */
@@ -53,11 +54,16 @@ public final class Board {
         this.staleMillis = staleAfter.toMillis();
         this.clock = clock;
         this.names = names;
+        this.metrics = new Metrics(() -> status(null), safety.map(SafetyRule::name).orElse(""));
     }
 
     /** The tile of {@code log}, made on first use. */
     public synchronized Tile tile(String log) {
-        return tiles.computeIfAbsent(log, l -> new Tile(l, names.of(l), models, safety, clock.getAsLong()));
+        return tiles.computeIfAbsent(log, l -> {
+            Tile t = new Tile(l, names.of(l), models, safety, clock.getAsLong());
+            metrics.added(t);
+            return t;
+        });
     }
 
     /**
@@ -71,6 +77,7 @@ public final class Board {
     /** An event of {@code tile}'s log: the tile takes it, and {@code /events} sends its JSON (which names the log). */
     public void event(Tile tile, MonitorEvent e, String json) {
         tile.event(e, json);
+        metrics.event(tile, e);
         stream.publish(json);
     }
 
@@ -119,5 +126,10 @@ public final class Board {
 
     EventStream stream() {
         return stream;
+    }
+
+    /** {@code /metrics}. */
+    Metrics metrics() {
+        return metrics;
     }
 }

@@ -18,10 +18,10 @@ import java.util.Set;
 /**
  * The live view's HTTP server, on {@link HttpListener} (bounded against slow and idle clients; why not a library or
  * the JDK's server: see the pom). It has
- * three endpoints and none that changes anything: {@code /} (the page, with {@code /live.js} and
+ * four endpoints and none that changes anything: {@code /} (the page, with {@code /live.js} and
  * {@code /live.css}: hand-written, no library, nothing fetched from elsewhere), {@code /events} (Server-Sent
- * Events) and {@code /status} (a JSON snapshot of every tile; {@code ?log=NAME} for one). Only GET and HEAD are
- * answered.
+ * Events), {@code /status} (a JSON snapshot of every tile; {@code ?log=NAME} for one) and {@code /metrics} (the
+ * same for Prometheus, see {@link Metrics}). Only GET and HEAD are answered.
  *
  * <p>Bound to loopback (the default), it also answers only requests addressed to a loopback name, so that a web
  * page elsewhere cannot read it through DNS rebinding. Bound elsewhere it answers anyone who can reach it, which
@@ -99,13 +99,15 @@ public final class LiveServer implements AutoCloseable {
             board.stream().serve(x);
         } else if ("/status".equals(path)) {
             x.send(200, "application/json", JSON.writeValueAsBytes(board.status(query(x.uri(), "log"))));
+        } else if ("/metrics".equals(path)) {
+            x.send(200, Metrics.CONTENT_TYPE, board.metrics().scrape());
         } else if (FILES.containsKey(path)) {
             String name = FILES.get(path);
             x.answerHeader("Content-Security-Policy", POLICY);
             x.send(200, TYPES.get(name.substring(name.lastIndexOf('.') + 1)),
                     name.equals("index.html") ? page() : files.get(name));
         } else {
-            x.send(404, TEXT, "not found: the live view has /, /events and /status\n");
+            x.send(404, TEXT, "not found: the live view has /, /events, /status and /metrics\n");
         }
     }
 

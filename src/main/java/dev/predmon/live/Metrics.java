@@ -1,0 +1,161 @@
+package dev.predmon.live;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.monitor.MonitorEvent;
+import io.prometheus.metrics.core.metrics.Counter;
+import io.prometheus.metrics.core.metrics.GaugeWithCallback;
+import io.prometheus.metrics.expositionformats.PrometheusTextFormatWriter;
+import io.prometheus.metrics.model.registry.PrometheusRegistry;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
+
+/**
+ * {@code /metrics}: what the live view shows, for Prometheus, in its text format, through the official Prometheus
+ * Java client. Per log and per property (labels {@code log}, {@code robot}, {@code property}):
+ * <ul>
+ *   <li>{@code predmon_state{state=...}}: 1 for the tile's state, 0 for each other one (a state set);</li>
+ *   <li>{@code predmon_stale}: 1 while the log is STALE;</li>
+ *   <li>{@code predmon_violation_probability}: the latest forecast's probability (0 to 1);</li>
+ *   <li>{@code predmon_time_to_violation_seconds}, or {@code predmon_time_to_violation_ticks} for a log counted in
+ *       ticks: the latest forecast's time left, while a violation is in sight;</li>
+ *   <li>{@code predmon_value}: the last reading of the property's value;</li>
+ *   <li>{@code predmon_warnings_total}, {@code predmon_violations_total}: counted since watch started, over every
+ *       run and rotation of the log.</li>
+ * </ul>
+ * The gauges are read from the tiles at each scrape, as {@code /status} gives them, so that {@code /metrics} never
+ * says other than the page; the counters count the events as they come. A gauge with nothing to say (no forecast
+ * yet, no reading) is left out rather than given a made-up value.
+ */
+final class Metrics {
+
+    /** What {@link #scrape()} answers: the Prometheus text format, version 0.0.4. */
+    static final String CONTENT_TYPE = PrometheusTextFormatWriter.CONTENT_TYPE;
+
+    private static final PrometheusTextFormatWriter WRITER = PrometheusTextFormatWriter.create();
+    private static final String[] LABELS = {"log", "robot", "property"};
+
+    private final PrometheusRegistry registry = new PrometheusRegistry();
+    private final Supplier<ObjectNode> status;
+    private final String property;
+    private final Counter warnings;
+    private final Counter violations;
+    /** The tiles of the scrape under way, as {@code /status} gives them; read by the gauges' callbacks. */
+    private List<JsonNode> tiles = List.of();
+
+    /**
+     * @param status   the board's {@code /status} of every log
+     * @param property the property's name, the {@code property} label ("" where the abstraction has none)
+     */
+    Metrics(Supplier<ObjectNode> status, String property) {
+        this.status = status;
+        this.property = property;
+        List<String> states = new ArrayList<>();
+        for (TileState s : TileState.values()) {
+            states.add(s.id());
+        }
+        gauge("predmon_state", "The log's state as the live view shows it: 1 for the current one, 0 for the others "
+                + "(" + String.join(", ", states) + ")", cb -> forEachTile(t -> {
+                    Set<String> all = new LinkedHashSet<>(states);
+                    String now = t.get("state").asText();
+                    all.add(now);
+                    for (String s : all) {
+                        cb.call(s.equals(now) ? 1 : 0, labels(t, s));
+                    }
+                }), "state");
+        gauge("predmon_stale", "1 while the log has not grown for the stale time in the middle of a run", cb ->
+                forEachTile(t -> cb.call(t.get("stale").asBoolean() ? 1 : 0, labels(t))));
+        gauge("predmon_violation_probability", "The latest forecast's probability that the run violates the property "
+                + "(0 to 1)", cb -> forEachTile(t -> {
+                    JsonNode f = t.get("forecast");
+                    if (number(f, "probability")) {
+                        cb.call(f.get("probability").asDouble(), labels(t));
+                    }
+                }));
+        for (String unit : List.of("seconds", "ticks")) {
+            gauge("predmon_time_to_violation_" + unit, "The latest forecast's expected time to the violation, in "
+                    + unit + (unit.equals("ticks") ? " of the behaviour tree (logs without time stamps)" : "")
+                    + "; absent while no violation is in sight", cb -> forEachTile(t -> {
+                        JsonNode f = t.get("forecast");
+                        String u = f != null && f.hasNonNull("unit") ? f.get("unit").asText() : t.get("unit").asText();
+                        if (number(f, "timeToViolation") && (u.equals("s") ? "seconds" : u).equals(unit)) {
+                            cb.call(f.get("timeToViolation").asDouble(), labels(t));
+                        }
+                    }));
+        }
+        gauge("predmon_value", "The last reading of the property's value", cb -> forEachTile(t -> {
+                    if (number(t, "battery")) {
+                        cb.call(t.get("battery").asDouble(), labels(t));
+                    }
+                }));
+        warnings = (Counter) Counter.builder().name("predmon_warnings_total").labelNames(LABELS)
+                .help("Warnings raised since watch started, over every run of the log").withoutExemplars()
+                .register(registry);
+        violations = (Counter) Counter.builder().name("predmon_violations_total").labelNames(LABELS)
+                .help("Violations of the property since watch started, over every run of the log").withoutExemplars()
+                .register(registry);
+    }
+
+    private void gauge(String name, String help, Consumer<GaugeWithCallback.Callback> callback, String... more) {
+        String[] labels = new String[LABELS.length + more.length];
+        System.arraycopy(LABELS, 0, labels, 0, LABELS.length);
+        System.arraycopy(more, 0, labels, LABELS.length, more.length);
+        GaugeWithCallback.builder().name(name).help(help).labelNames(labels).callback(callback).register(registry);
+    }
+
+    private void forEachTile(Consumer<JsonNode> each) {
+        tiles.forEach(each);
+    }
+
+    private String[] labels(JsonNode tile, String... more) {
+        String[] values = new String[LABELS.length + more.length];
+        values[0] = tile.get("log").asText();
+        values[1] = tile.get("name").asText();
+        values[2] = property;
+        System.arraycopy(more, 0, values, LABELS.length, more.length);
+        return values;
+    }
+
+    private static boolean number(JsonNode o, String field) {
+        return o != null && o.hasNonNull(field) && o.get(field).isNumber() && Double.isFinite(o.get(field).asDouble());
+    }
+
+    /** A tile was made: its counters start at 0, so that an alert on their increase sees the first warning. */
+    void added(Tile tile) {
+        warnings.initLabelValues(tile.log(), tile.name(), property);
+        violations.initLabelValues(tile.log(), tile.name(), property);
+    }
+
+    /** An event of {@code tile}'s log. */
+    void event(Tile tile, MonitorEvent e) {
+        if (e instanceof MonitorEvent.Warning) {
+            warnings.labelValues(tile.log(), tile.name(), property).inc();
+        } else if (e instanceof MonitorEvent.Violation) {
+            violations.labelValues(tile.log(), tile.name(), property).inc();
+        }
+    }
+
+    /** The text {@code /metrics} answers now. */
+    synchronized byte[] scrape() {
+        List<JsonNode> now = new ArrayList<>();
+        status.get().get("logs").forEach(now::add);
+        tiles = now;
+        try {
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            WRITER.write(out, registry.scrape());
+            return out.toByteArray();
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot happen: writing to memory", e);
+        } finally {
+            tiles = List.of();
+        }
+    }
+}
