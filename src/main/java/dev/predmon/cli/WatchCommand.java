@@ -77,6 +77,9 @@ final class WatchCommand implements Callable<Integer> {
     @Mixin
     LiveViewOptions liveView;
 
+    @Mixin
+    ConfigOption config;
+
     private PrintWriter out;
     private PrintWriter err;
 
@@ -84,6 +87,7 @@ final class WatchCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         out = spec.commandLine().getOut();
         err = spec.commandLine().getErr();
+        config.complete();
         ModelSet set = input.models();
         Abstraction abstraction = input.abstraction();
         LogSources sources = new LogSources(input.logs);
