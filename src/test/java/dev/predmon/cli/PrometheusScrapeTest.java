@@ -70,6 +70,25 @@ class PrometheusScrapeTest {
         return answer.get("data").get("result");
     }
 
+    /**
+     * Prometheus's own lint of metric names, types, units and help ({@code promtool check metrics}) finds nothing in
+     * {@code /metrics}, where promtool is installed beside prometheus (Debian's package has both).
+     */
+    private void lint(Path promtool, URI live) throws Exception {
+        if (!Files.isExecutable(promtool)) {
+            return;
+        }
+        byte[] text = http.send(HttpRequest.newBuilder(live.resolve("/metrics")).build(),
+                HttpResponse.BodyHandlers.ofByteArray()).body();
+        Path file = Files.write(dir.resolve("metrics.txt"), text);
+        Process check = new ProcessBuilder(promtool.toString(), "check", "metrics").redirectInput(file.toFile())
+                .redirectErrorStream(true).start();
+        String said = new String(check.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(check.waitFor(30, TimeUnit.SECONDS));
+        assertEquals(0, check.exitValue(), "promtool check metrics: " + said);
+        assertEquals("", said.strip(), "promtool check metrics");
+    }
+
     @Test
     @Timeout(120)
     void prometheusScrapesTheProbabilityOfAWarnedRun() throws Exception {
@@ -135,6 +154,7 @@ class PrometheusScrapeTest {
                     .asDouble());
             JsonNode target = get(prometheus.resolve("/api/v1/targets")).get("data").get("activeTargets").get(0);
             assertEquals("up", target.get("health").asText(), "no scrape error: " + target);
+            lint(binary.get().resolveSibling("promtool"), live);
         } finally {
             if (server != null) {
                 server.destroy();
