@@ -2,10 +2,15 @@ package dev.predmon.cli;
 
 import org.junit.jupiter.api.Assumptions;
 
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -19,6 +24,23 @@ record Child(int code, String out, String err) {
                 "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(args));
         return command;
+    }
+
+    /** {@code p}'s standard output, line by line as it comes, read by a thread of its own until {@code p} ends. */
+    static List<String> stdoutLines(Process p) {
+        List<String> out = new CopyOnWriteArrayList<>();
+        Thread reader = new Thread(() -> {
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+                for (String line = r.readLine(); line != null; line = r.readLine()) {
+                    out.add(line);
+                }
+            } catch (IOException e) {
+                // the child is gone
+            }
+        }, "child-stdout");
+        reader.setDaemon(true);
+        reader.start();
+        return out;
     }
 
     /** Runs {@code predmon ARGS} in {@code cwd} to its end. */

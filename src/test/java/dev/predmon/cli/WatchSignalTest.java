@@ -9,14 +9,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -45,18 +41,7 @@ class WatchSignalTest {
 
         static Watch start(String... args) throws IOException {
             Process p = new ProcessBuilder(Child.command(args)).redirectError(ProcessBuilder.Redirect.DISCARD).start();
-            List<String> out = new CopyOnWriteArrayList<>();
-            Thread reader = new Thread(() -> {
-                try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
-                    for (String line = r.readLine(); line != null; line = r.readLine()) {
-                        out.add(line);
-                    }
-                } catch (IOException e) {
-                    // the child is gone
-                }
-            }, "watch-stdout");
-            reader.setDaemon(true);
-            reader.start();
+            List<String> out = Child.stdoutLines(p);
             return new Watch(p, out);
         }
 
