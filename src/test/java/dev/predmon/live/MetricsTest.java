@@ -21,6 +21,7 @@ import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -140,6 +141,16 @@ class MetricsTest {
         Map<String, Double> s = samples(b);
         assertEquals(412.0, s.get(series("predmon_time_to_violation_ticks", "console.txt", "console")));
         assertFalse(s.keySet().stream().anyMatch(k -> k.startsWith("predmon_time_to_violation_seconds{")));
+    }
+
+    /** An abstraction without a property: the state and the counters, the property empty (to Prometheus: none). */
+    @Test
+    void withoutAPropertyTheLogStillHasItsState() {
+        Board b = new Board(models.models(), Optional.empty(), Duration.ofSeconds(10), now::get);
+        b.tile("r.log");
+        String text = new String(b.metrics().scrape(), StandardCharsets.UTF_8);
+        assertTrue(text.contains("predmon_state{log=\"r.log\",property=\"\",robot=\"r\",state=\"waiting\"} 1.0"), text);
+        assertTrue(text.contains("predmon_warnings_total{log=\"r.log\",property=\"\",robot=\"r\"} 0.0"), text);
     }
 
     /** Label values are escaped as the format says, so that no log name can forge a sample. */
