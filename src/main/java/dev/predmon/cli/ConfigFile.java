@@ -113,7 +113,8 @@ final class ConfigFile implements IDefaultValueProvider {
             byte[] bytes = Files.readAllBytes(file);
             String text = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
                     .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes)).toString();
-            return text.lines().toList();
+            // a byte-order mark, as some editors write one, is no part of the first name
+            return (text.startsWith("\uFEFF") ? text.substring(1) : text).lines().toList();
         } catch (CharacterCodingException e) {
             throw unreadable(spec, new BadInputException(file + ": not UTF-8 text: not a settings file", e));
         } catch (IOException e) {

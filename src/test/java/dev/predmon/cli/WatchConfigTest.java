@@ -37,8 +37,8 @@ class WatchConfigTest {
 
     @Test
     void everySettingComesFromTheFileAsFromTheCommandLine() throws Exception {
-        Path conf = config("# a comment, then a blank line", "", "log = " + depleted, "  models=" + MODELS + "  ",
-                "no-follow = true", "json = TRUE", "rule = match");
+        Path conf = config("\uFEFF# an editor's byte-order mark, a comment, then a blank line", "",
+                "log = " + depleted, "  models=" + MODELS + "  ", "no-follow = true", "json = TRUE", "rule = match");
         Cli fromFile = Cli.run("watch", "--config", conf.toString());
         Cli fromFlags = Cli.run("watch", "--log", depleted.toString(), "--models", MODELS.toString(), "--no-follow",
                 "--json", "--rule", "match");
