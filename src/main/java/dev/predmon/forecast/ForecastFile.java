@@ -1,12 +1,15 @@
 package dev.predmon.forecast;
 
+import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.abstraction.file.LocatedJson;
 
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
@@ -27,10 +30,21 @@ public final class ForecastFile {
     private ForecastFile() {
     }
 
+    /** The key of the learn id: what ties the file to the index and DOT files it was learned with. */
+    private static final String LEARN_ID = "learnId";
+
     /** The JSON text of {@code m}, ending with a newline. */
     public static String write(ForecastModel m) {
+        return write(m, null);
+    }
+
+    /** The JSON text of {@code m} with the learn id of the models it was learned with (none when null). */
+    public static String write(ForecastModel m, String learnId) {
         ObjectNode root = JSON.createObjectNode();
         root.put("format", m.format());
+        if (learnId != null) {
+            root.put(LEARN_ID, learnId);
+        }
         root.put("unit", m.unit());
         number(root, "limit", m.limit());
         root.put("runs", m.runs());
@@ -71,21 +85,60 @@ public final class ForecastFile {
     }
 
     /**
-     * Reads what {@link #write} wrote.
+     * Reads what {@link #write} wrote, whatever its learn id.
      *
      * @throws IllegalArgumentException with what is wrong, when the text is not such a file
      */
     public static ForecastModel read(String text) {
+        return read(parse(text));
+    }
+
+    /**
+     * Reads what {@link #write} wrote for the models of {@code learnId}.
+     *
+     * @throws IllegalArgumentException with what is wrong, when the text is not such a file or was learned with
+     *                                  other models
+     */
+    public static ForecastModel read(String text, String learnId) {
+        JsonNode root = parse(text);
+        JsonNode id = root.get(LEARN_ID);
+        if (id == null || !id.isTextual()) {
+            throw new IllegalArgumentException("it has no learn id, so it cannot be tied to the models beside it");
+        }
+        if (!id.textValue().equals(learnId)) {
+            throw new IllegalArgumentException("learned with other models than the index lists (learn id "
+                    + abbreviated(id.textValue()) + ", the index's " + abbreviated(learnId)
+                    + "); the directory mixes files of different learns");
+        }
+        return read(root);
+    }
+
+    private static String abbreviated(String id) {
+        return id.length() > 19 ? id.substring(0, 19) + "..." : id;
+    }
+
+    /**
+     * The JSON object of {@code text}, read with the limits of every predmon file ({@link LocatedJson}): a file
+     * nested too deep or holding a number or string far too long is one line, not a crash.
+     */
+    private static JsonNode parse(String text) {
         JsonNode root;
         try {
-            root = JSON.readTree(text);
+            root = LocatedJson.parse(text).root();
         } catch (JsonProcessingException e) {
-            throw new IllegalArgumentException("line " + e.getLocation().getLineNr() + ": not JSON: "
+            JsonLocation l = e.getLocation();
+            throw new IllegalArgumentException((l == null ? "" : "line " + l.getLineNr() + ": ") + "not JSON: "
                     + e.getOriginalMessage());
+        } catch (IOException e) {
+            throw new IllegalArgumentException("not JSON: " + e.getMessage());
         }
         if (root == null || !root.isObject()) {
             throw new IllegalArgumentException("expected a JSON object");
         }
+        return root;
+    }
+
+    private static ForecastModel read(JsonNode root) {
         int format = integer(root, "format");
         if (format != ForecastModel.FORMAT) {
             throw new IllegalArgumentException("format " + format + ", expected " + ForecastModel.FORMAT);
@@ -110,9 +163,15 @@ public final class ForecastFile {
                     throw new IllegalArgumentException("states/" + machine.getKey() + ": '" + e.getKey()
                             + "' is not a state number");
                 }
-                table.put(state, new StateStats(integer(n, "runs"), integer(n, "violated"), tv[0], tv[1], tv[2],
-                        number(n, "toEnd"), number(n, "drift"), number(n, "driftSpread"), integer(n, "driftRuns"),
-                        lows(n)));
+                String at = "states/" + machine.getKey() + "/" + e.getKey();
+                int runs = count(n, "runs", at);
+                int violated = count(n, "violated", at);
+                if (violated > runs) {
+                    throw new IllegalArgumentException("'" + at + "': " + violated + " violated of " + runs
+                            + " runs");
+                }
+                table.put(state, new StateStats(runs, violated, tv[0], tv[1], tv[2], number(n, "toEnd"),
+                        number(n, "drift"), number(n, "driftSpread"), count(n, "driftRuns", at), lows(n)));
             }
             states.put(machine.getKey(), table);
         }
@@ -129,10 +188,20 @@ public final class ForecastFile {
             if (Double.isNaN(intercept)) {
                 throw new IllegalArgumentException("'calibration/intercept': expected a number");
             }
-            calibration = new Calibration(slope, intercept, integer(c, "runs"));
+            calibration = new Calibration(slope, intercept, count(c, "runs", "calibration"));
+        }
+        int runs = count(root, "runs", null);
+        int violating = count(root, "violating", null);
+        if (violating > runs) {
+            throw new IllegalArgumentException("'violating': " + violating + " of " + runs + " runs");
+        }
+        double threshold = number(root, "threshold");
+        if (!(threshold >= 0 && threshold <= 1)) {
+            throw new IllegalArgumentException("'threshold': " + root.get("threshold")
+                    + " is not a probability (from 0 to 1)");
         }
         return new ForecastModel(format, required(root, "unit").asText(), number(root, "limit"),
-                integer(root, "runs"), integer(root, "violating"), lows(root), number(root, "threshold"),
+                runs, violating, lows(root), threshold,
                 required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
                 starts, calibration);
     }
@@ -178,6 +247,16 @@ public final class ForecastFile {
             throw new IllegalArgumentException("'" + key + "': expected a whole number");
         }
         return v.intValue();
+    }
+
+    /** A count: a whole number, 0 or more; {@code at} says where, null at the top. */
+    private static int count(JsonNode n, String key, String at) {
+        int v = integer(n, key);
+        if (v < 0) {
+            throw new IllegalArgumentException("'" + (at == null ? "" : at + "/") + key + "': " + v
+                    + ", expected 0 or more");
+        }
+        return v;
     }
 
     private static double number(JsonNode n, String key) {

@@ -2,6 +2,7 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.model.ModelIndex;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -17,8 +18,8 @@ import java.util.stream.Stream;
  */
 public final class ScenarioLayout {
 
-    /** Scenario names become file names and symbols in reports: keep them plain. */
-    private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_][A-Za-z0-9_.-]*");
+    /** Scenario names become file names and symbols in reports: keep them plain (reading models checks the same). */
+    private static final Pattern NAME = ModelIndex.SCENARIO_NAME;
 
     private ScenarioLayout() {
     }

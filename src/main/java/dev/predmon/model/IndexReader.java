@@ -65,7 +65,7 @@ final class IndexReader {
     }
 
     private ModelIndex index(JsonNode n, String at) throws BadInputException {
-        keys(n, at, "format", "abstraction", "alphabet", "scenarios", "forecast");
+        keys(n, at, "format", "abstraction", "alphabet", "scenarios", "forecast", "learnId");
         JsonNode scenarios = array(n, at, "scenarios");
         List<ModelIndex.Scenario> list = null;
         if (scenarios != null) {
@@ -77,7 +77,7 @@ final class IndexReader {
         JsonNode abstraction = n.get("abstraction");
         return new ModelIndex(integer(n, at, "format"), abstraction == null || abstraction.isNull() ? null
                 : abstraction(abstraction, at + "/abstraction"), strings(n, at, "alphabet"), list,
-                n.hasNonNull("forecast") ? string(n, at, "forecast") : null);
+                n.hasNonNull("forecast") ? string(n, at, "forecast") : null, string(n, at, "learnId"));
     }
 
     private ModelIndex.AbstractionInfo abstraction(JsonNode n, String at) throws BadInputException {

@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.regex.Pattern;
 
 /**
  * The contents of {@code models/index.json}: what was learned, from what, with which abstraction.
@@ -16,17 +17,37 @@ import java.util.TreeMap;
  * @param scenarios   the scenarios, sorted by name
  * @param forecast    the file of the forecast's statistics ({@code forecast.json}), or null in a directory learned
  *                    before forecasts were (it loads; the forecast is then off until the next learn)
+ * @param learnId     what ties the directory's files together, written by {@code learn} (a hash of the abstraction's
+ *                    fingerprint and the DOT files, also written in {@code forecast.json}); null until written
  */
 public record ModelIndex(int format, AbstractionInfo abstraction, List<String> alphabet, List<Scenario> scenarios,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) String forecast) {
+                         @JsonInclude(JsonInclude.Include.NON_NULL) String forecast,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) String learnId) {
 
     /** An index without a forecast. */
     public ModelIndex(int format, AbstractionInfo abstraction, List<String> alphabet, List<Scenario> scenarios) {
-        this(format, abstraction, alphabet, scenarios, null);
+        this(format, abstraction, alphabet, scenarios, null, null);
+    }
+
+    /** An index as learned, before it is written (the learn id is set by {@link ModelStore#write}). */
+    public ModelIndex(int format, AbstractionInfo abstraction, List<String> alphabet, List<Scenario> scenarios,
+                      String forecast) {
+        this(format, abstraction, alphabet, scenarios, forecast, null);
+    }
+
+    /** This index with the given forecast file and learn id. */
+    ModelIndex with(String forecastFile, String id) {
+        return new ModelIndex(format, abstraction, alphabet, scenarios, forecastFile, id);
     }
 
     /** Current index format. */
     public static final int FORMAT = 1;
+
+    /**
+     * How learn names a scenario (it becomes a file name, a symbol in reports and a hook's environment): letters,
+     * digits, {@code _}, {@code -} and {@code .}, not starting with {@code -} or {@code .}.
+     */
+    public static final Pattern SCENARIO_NAME = Pattern.compile("[A-Za-z0-9_][A-Za-z0-9_.-]*");
 
     /**
      * The abstraction, embedded so that a model directory is self-describing.

@@ -13,6 +13,7 @@ import net.automatalib.serialization.dot.DOTParsers;
 import net.automatalib.util.automaton.copy.AutomatonCopyMethod;
 import net.automatalib.util.automaton.copy.AutomatonLowLevelCopy;
 
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
@@ -23,6 +24,7 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.function.Consumer;
 import java.util.regex.Pattern;
 
 /**
@@ -47,13 +49,18 @@ final class ModelReader {
         this.outputs = MealyAlphabet.outputs(abstraction);
     }
 
-    /** Reads the model directory {@code base} ({@code dir} as the user named it) against {@code abstraction}. */
-    static ModelSet read(Path dir, Path base, Abstraction abstraction) throws BadInputException {
+    /**
+     * Reads the model directory {@code base} ({@code dir} as the user named it) against {@code abstraction};
+     * {@code step} is told {@code index} once the index is read.
+     */
+    static ModelSet read(Path dir, Path base, Abstraction abstraction, Consumer<String> step)
+            throws BadInputException {
         Path indexFile = base.resolve(ModelStore.INDEX);
         if (!Files.isDirectory(base)) {
             throw new BadInputException(dir + ": no model directory; run 'predmon learn' first");
         }
         ModelIndex index = IndexReader.read(indexFile);
+        step.accept("index");
         if (index.format() != ModelIndex.FORMAT || index.abstraction() == null || index.scenarios() == null
                 || index.alphabet() == null || !complete(index.scenarios())) {
             throw new BadInputException(indexFile + ": not a predmon model index of format " + ModelIndex.FORMAT);
@@ -69,15 +76,28 @@ final class ModelReader {
             throw new BadInputException(indexFile + ": its alphabet does not match the abstraction's inputs");
         }
         reader.checkEntries(index.scenarios());
+        if (index.learnId() == null) {
+            throw new BadInputException(indexFile + ": has no learn id to tie its files together (it was written by an "
+                    + "earlier predmon); run 'predmon learn' again");
+        }
+        LearnId learnId = new LearnId(index.abstraction().fingerprint());
         List<LearnedModel> models = new ArrayList<>();
         for (ModelIndex.Scenario s : index.scenarios()) {
             for (ModelIndex.Model m : s.models()) {
                 String id = m.file().substring(0, m.file().length() - ".dot".length());
                 models.add(new LearnedModel(id, s.name(), s.faulty(), reader.readDot(base.resolve(m.file()),
-                        m.states()), reader.alphabet));
+                        m.states(), learnId), reader.alphabet));
             }
         }
-        return new ModelSet(base, index, List.copyOf(models), reader.forecast(base, index));
+        if (!learnId.value().equals(index.learnId())) {
+            throw new BadInputException(indexFile + ": its DOT files are not the ones it was written with (they are "
+                    + "of another learn); the directory mixes files of different learns: relearn");
+        }
+        ForecastModel forecast = reader.forecast(base, index);
+        if (forecast != null) {
+            ForecastCheck.check(base.resolve(ForecastFile.NAME), indexFile, forecast, models, abstraction);
+        }
+        return new ModelSet(base, index, List.copyOf(models), forecast);
     }
 
     /** The forecast the index lists, or null when it lists none (a directory learned before forecasts were). */
@@ -92,7 +112,7 @@ final class ModelReader {
         }
         Path file = base.resolve(index.forecast());
         try {
-            return ForecastFile.read(Files.readString(file, StandardCharsets.UTF_8));
+            return ForecastFile.read(Files.readString(file, StandardCharsets.UTF_8), index.learnId());
         } catch (NoSuchFileException e) {
             throw new BadInputException(file + ": missing (listed in " + indexFile.getFileName()
                     + "); run 'predmon learn' again");
@@ -124,6 +144,12 @@ final class ModelReader {
         Set<String> names = new HashSet<>();
         Set<String> files = new HashSet<>();
         for (ModelIndex.Scenario s : scenarios) {
+            if (!ModelIndex.SCENARIO_NAME.matcher(s.name()).matches()) {
+                // learn names scenarios so; any other name (a control character, a bidirectional override) would
+                // reach a terminal, a hook's environment and the live page as it is
+                throw new BadInputException(indexFile + ": scenario name '" + s.name() + "' is not one learn "
+                        + "writes (letters, digits, '_', '-' and '.'); relearn");
+            }
             if (!names.add(s.name())) {
                 throw new BadInputException(indexFile + ": scenario '" + s.name() + "' is listed twice; "
                         + "each scenario has one entry: relearn");
@@ -145,10 +171,12 @@ final class ModelReader {
     }
 
     /** Parses one DOT file into a machine over the full alphabet, checked against its entry in the index. */
-    private CompactMealy<String, String> readDot(Path file, int states) throws BadInputException {
+    private CompactMealy<String, String> readDot(Path file, int states, LearnId learnId) throws BadInputException {
         InputModelData<String, CompactMealy<String, String>> data;
-        try (InputStream in = Files.newInputStream(file)) {
-            data = parse(file, in, alphabet);
+        try {
+            byte[] bytes = Files.readAllBytes(file);
+            learnId.add(file.getFileName().toString(), bytes);
+            data = parse(file, new ByteArrayInputStream(bytes), alphabet);
         } catch (NoSuchFileException e) {
             throw new BadInputException(file + ": missing (listed in " + indexFile.getFileName() + ")");
         } catch (IOException e) {

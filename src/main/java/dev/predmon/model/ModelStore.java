@@ -19,10 +19,12 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.function.Consumer;
 
@@ -103,7 +105,7 @@ public final class ModelStore {
      */
     public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson)
             throws IOException, BadInputException {
-        return write(dir, index, dots, abstractionJson, step -> { });
+        return write(dir, index.with(null, learnId(index, dots)), dots, abstractionJson, step -> { });
     }
 
     /** As above, with the forecast's statistics, written as {@value ForecastFile#NAME} and listed in the index. */
@@ -116,11 +118,21 @@ public final class ModelStore {
     public static List<String> write(Path dir, ModelIndex index, Map<String, String> dots, String abstractionJson,
                                      ForecastModel forecast, Consumer<String> step)
             throws IOException, BadInputException {
+        String id = learnId(index, dots);
         Map<String, String> files = new LinkedHashMap<>(dots);
-        files.put(ForecastFile.NAME, ForecastFile.write(forecast));
-        ModelIndex listed = new ModelIndex(index.format(), index.abstraction(), index.alphabet(), index.scenarios(),
-                ForecastFile.NAME);
-        return write(dir, listed, files, abstractionJson, step);
+        files.put(ForecastFile.NAME, ForecastFile.write(forecast, id));
+        return write(dir, index.with(ForecastFile.NAME, id), files, abstractionJson, step);
+    }
+
+    /** The id that ties {@code index}, its DOT files and the forecast together ({@link LearnId}). */
+    private static String learnId(ModelIndex index, Map<String, String> dots) {
+        LearnId id = new LearnId(index.abstraction() == null ? null : index.abstraction().fingerprint());
+        for (ModelIndex.Scenario s : index.scenarios()) {
+            for (ModelIndex.Model m : s.models()) {
+                id.add(m.file(), dots.getOrDefault(m.file(), "").getBytes(StandardCharsets.UTF_8));
+            }
+        }
+        return id.value();
     }
 
     /**
@@ -222,9 +234,49 @@ public final class ModelStore {
     /**
      * Reads a model directory and checks it against the abstraction in use, and its index against its DOT files
      * ({@link ModelReader}).
+     *
+     * <p>A learn may replace the directory while it is read. Each file is read by its path, so a read that
+     * straddles the replacement would take the index of one learn and DOT files of the other. Each read therefore
+     * notes which directory it started in and, if that is no longer the directory there when it ends, is done again
+     * (the learn id already refuses most mixtures; this makes the set read always the old one or the new one).
      */
     public static ModelSet read(Path dir, Abstraction abstraction) throws BadInputException {
-        return ModelReader.read(dir, modelsAt(dir), abstraction);
+        return read(dir, abstraction, step -> { });
+    }
+
+    /** As above; {@code step} is told {@code index} once the index is read, so that a test can replace the models then. */
+    static ModelSet read(Path dir, Abstraction abstraction, Consumer<String> step) throws BadInputException {
+        for (int attempt = 1; ; attempt++) {
+            Path base = modelsAt(dir);
+            Object before = identity(base);
+            boolean last = attempt >= READ_ATTEMPTS;
+            try {
+                ModelSet set = ModelReader.read(dir, base, abstraction, step);
+                if (last || Objects.equals(before, identity(base))) {
+                    return set;
+                }
+            } catch (BadInputException e) {
+                if (last || before == null || Objects.equals(before, identity(base))) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    /**
+     * Reads of a directory that a learn replaces while it is read, before the last read's answer is given: each
+     * learn replaces it once, so only learns that follow each other within a read's time can take them all.
+     */
+    private static final int READ_ATTEMPTS = 20;
+
+    /** Which directory {@code dir} is now (its file key, an inode), or null when there is none. */
+    private static Object identity(Path dir) {
+        try {
+            BasicFileAttributes a = Files.readAttributes(dir, BasicFileAttributes.class);
+            return a.fileKey() != null ? a.fileKey() : a.creationTime();
+        } catch (IOException e) {
+            return null;
+        }
     }
 
     /**
