@@ -252,11 +252,11 @@ public final class ModelStore {
             boolean last = attempt >= READ_ATTEMPTS;
             try {
                 ModelSet set = ModelReader.read(dir, base, abstraction, step);
-                if (last || Objects.equals(before, identity(base))) {
+                if (last || unchanged(dir, base, before)) {
                     return set;
                 }
             } catch (BadInputException e) {
-                if (last || before == null || Objects.equals(before, identity(base))) {
+                if (last || before == null || unchanged(dir, base, before)) {
                     throw e;
                 }
             }
@@ -268,6 +268,15 @@ public final class ModelStore {
      * learn replaces it once, so only learns that follow each other within a read's time can take them all.
      */
     private static final int READ_ATTEMPTS = 20;
+
+    /**
+     * Whether the models of {@code dir} are still in {@code base}, the same directory as before: learn moves whole
+     * directories and changes none in place, except that it empties previous models set aside before it removes
+     * them, once the new ones are in {@code dir}.
+     */
+    private static boolean unchanged(Path dir, Path base, Object before) {
+        return Objects.equals(before, identity(base)) && modelsAt(dir).equals(base);
+    }
 
     /** Which directory {@code dir} is now (its file key, an inode), or null when there is none. */
     private static Object identity(Path dir) {

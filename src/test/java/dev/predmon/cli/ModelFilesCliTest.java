@@ -22,7 +22,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * Model directories that cannot be trusted, read by a command that judges a log: an index and DOT files that
  * contradict each other, an index with no model, and JSON far deeper or larger than any predmon file. Each is
  * exit 3 with one line naming the file and what is wrong, never a verdict about the robot and never an internal
- * error.
+ * error. {@link ModelPartsCliTest} has the forecast's file and the learn id that ties the parts together.
  */
 class ModelFilesCliTest {
 
@@ -36,22 +36,34 @@ class ModelFilesCliTest {
     /** A copy of the shipped models, to be broken one way per test. */
     @BeforeEach
     void copyShippedModels() throws IOException {
-        models = Files.createDirectories(tmp.resolve("models"));
+        models = copyOfShippedModels(tmp);
+    }
+
+    /** A copy of the shipped models in {@code tmp}/models. */
+    static Path copyOfShippedModels(Path tmp) throws IOException {
+        Path models = Files.createDirectories(tmp.resolve("models"));
         try (Stream<Path> s = Files.list(Path.of("models"))) {
             for (Path p : s.toList()) {
                 Files.copy(p, models.resolve(p.getFileName()));
             }
         }
+        return models;
     }
 
     /** classify of a nominal run: exit 3 and one line naming {@code file} (and its line) and saying {@code what}. */
     private void refused(Path file, String what) {
+        refused(models, file, what);
+    }
+
+    /** As above, for the models in {@code models}; the line is returned. */
+    static String refused(Path models, Path file, String what) {
         Cli r = Cli.run("classify", "--models", models.toString(), "--log", LOG.toString());
         assertEquals(ExitCodes.BAD_INPUT, r.code(), r.out() + r.err());
         List<String> lines = r.err().strip().lines().toList();
         assertEquals(1, lines.size(), r.err());
         assertTrue(lines.get(0).startsWith("predmon: " + file + ":") && lines.get(0).contains(what), r.err());
         assertEquals("", r.out(), "no verdict");
+        return lines.get(0);
     }
 
     private ObjectNode index() throws IOException {

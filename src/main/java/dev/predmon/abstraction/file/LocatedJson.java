@@ -119,6 +119,8 @@ public final class LocatedJson {
             reason = "nested more than " + MAX_DEPTH + " levels deep";
         } else if (m.startsWith("String value length")) {
             reason = "a string longer than " + MAX_STRING + " characters";
+        } else if (m.startsWith("Number value length")) {
+            reason = "a number longer than " + StreamReadConstraints.DEFAULT_MAX_NUM_LEN + " digits";
         } else if (m.startsWith("Document length")) {
             reason = "longer than " + MAX_BYTES + " bytes";
         } else {
