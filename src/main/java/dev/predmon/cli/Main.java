@@ -11,7 +11,18 @@ public final class Main {
     }
 
     public static void main(String[] args) {
-        System.exit(commandLine(args).execute(args));
+        // A Java Error (out of memory, a stack overflow) is no Exception, so picocli passes it by the error handler:
+        // on the main thread it would end the JVM with a stack trace and exit 1, the code of a warning; on another
+        // thread (a follower, the live server) it would end that thread alone and leave the command half alive.
+        FatalErrors fatal = new FatalErrors(System.err, List.of(args).contains("--verbose"));
+        Thread.setDefaultUncaughtExceptionHandler(fatal);
+        int code;
+        try {
+            code = commandLine(args).execute(args);
+        } catch (Error e) {
+            code = fatal.report(e);
+        }
+        System.exit(code);
     }
 
     /** The configured command line with every subcommand: used by in-process tests. */

@@ -211,9 +211,10 @@ public final class SimulateCommand implements Callable<Integer> {
                 continue;
             }
             SimRun run = Simulator.run(s, k, options);
-            AtomicFiles.replace(log, w -> LogWriter.write(run, options, w));
             if (truths) {
-                TruthWriter.writeTruth(run.truth(), TruthWriter.sidecarOf(log));
+                writeWithTruth(log, w -> LogWriter.write(run, options, w), TruthWriter.toJson(run.truth()) + "\n");
+            } else {
+                AtomicFiles.replace(log, w -> LogWriter.write(run, options, w));
             }
         }
         TruthWriter.writeScenario(s, outDir);
@@ -234,15 +235,22 @@ public final class SimulateCommand implements Callable<Integer> {
 
     private static void writeDayLog(List<SimRun> day, SimOptions options, Path log) throws IOException {
         StringBuilder truths = new StringBuilder("[");
-        AtomicFiles.replace(log, w -> {
-            for (SimRun run : day) {
-                LogWriter.write(run, options, w);
-            }
-        });
         for (SimRun run : day) {
             truths.append(truths.length() > 1 ? ",\n" : "\n").append(TruthWriter.toJson(run.truth()));
         }
-        AtomicFiles.replace(TruthWriter.sidecarOf(log), truths.append("\n]\n").toString());
+        writeWithTruth(log, w -> {
+            for (SimRun run : day) {
+                LogWriter.write(run, options, w);
+            }
+        }, truths.append("\n]\n").toString());
+    }
+
+    /**
+     * A log and its truth sidecar, as a pair: both written in full before either replaces its previous file, so a
+     * failure leaves both as they were, never a new truth beside the previous log.
+     */
+    private static void writeWithTruth(Path log, AtomicFiles.Body body, String truth) throws IOException {
+        AtomicFiles.replaceBoth(log, body, TruthWriter.sidecarOf(log), w -> w.write(truth));
     }
 
     private void writeOne(Scenario s, SimOptions options) throws IOException {
@@ -257,11 +265,12 @@ public final class SimulateCommand implements Callable<Integer> {
         if (parent != null) {
             Files.createDirectories(parent);
         }
-        TruthWriter.writeTruth(run.truth(), TruthWriter.sidecarOf(out));
         if (!realtime) {
-            AtomicFiles.replace(out, w -> LogWriter.write(run, options, w));
+            writeWithTruth(out, w -> LogWriter.write(run, options, w), TruthWriter.toJson(run.truth()) + "\n");
             return;
         }
+        // The truth first: the log grows in place while a monitor tails it, and its truth is known from the start.
+        TruthWriter.writeTruth(run.truth(), TruthWriter.sidecarOf(out));
         // A live monitor tails this file, so it is written in place as the run goes, not renamed in at the end.
         Writer opened = Files.newBufferedWriter(out, StandardCharsets.UTF_8); // a failure here names the file
         try (Writer w = opened) {

@@ -60,6 +60,90 @@ public final class AtomicFiles {
      * @throws FileSystemException naming {@code file} when anything fails; the previous file is then unchanged
      */
     public static void replace(Path file, Body body) throws IOException {
+        Staged staged = stage(file, body, "the previous file is unchanged");
+        try {
+            staged.moveIn();
+        } catch (IOException e) {
+            throw staged.failed(e, "the previous file is unchanged");
+        }
+    }
+
+    /**
+     * Replaces {@code first} and then {@code second} (a log and its sidecar), each completely or not at all, as
+     * nearly as a pair as files allow: both are written and forced before either is renamed into place, so a full
+     * disk, a file-size limit or any other failure to write leaves both previous files as they were. Only a process
+     * killed between the two renames, microseconds apart, leaves the new {@code first} beside the previous
+     * {@code second}.
+     *
+     * @throws FileSystemException naming the file that failed, saying what the user still has
+     */
+    public static void replaceBoth(Path first, Body firstBody, Path second, Body secondBody) throws IOException {
+        String bothKept = "the previous " + first.getFileName() + " and " + second.getFileName() + " are unchanged";
+        Staged a = stage(first, firstBody, bothKept);
+        Staged b;
+        try {
+            b = stage(second, secondBody, bothKept);
+        } catch (IOException | RuntimeException e) {
+            a.discard();
+            throw e;
+        }
+        try {
+            a.moveIn();
+        } catch (IOException e) {
+            b.discard();
+            throw a.failed(e, bothKept);
+        }
+        try {
+            b.moveIn();
+        } catch (IOException e) {
+            throw b.failed(e, first.getFileName() + " is new, " + second.getFileName() + " is the previous one");
+        }
+    }
+
+    /** A file written in full to its hidden temporary name, not yet renamed over its target. */
+    private static final class Staged {
+        private final Path shown;
+        private final Path target;
+        private final boolean existed;
+        private Path temp;
+
+        Staged(Path shown, Path target, boolean existed, Path temp) {
+            this.shown = shown;
+            this.target = target;
+            this.existed = existed;
+            this.temp = temp;
+        }
+
+        /** Renames the temporary file over the target and forces the directory. */
+        void moveIn() throws IOException {
+            Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            temp = null;
+            forceDirectory(target.getParent());
+        }
+
+        /** Removes the temporary file, if it is still there. */
+        void discard() throws IOException {
+            if (temp != null) {
+                Files.deleteIfExists(temp);
+                temp = null;
+            }
+        }
+
+        /** Discards, and the one-line failure naming the file ({@code kept} when the target existed). */
+        FileSystemException failed(IOException e, String kept) throws IOException {
+            discard();
+            return notWritten(shown, e, existed ? kept : "no partial file was left");
+        }
+    }
+
+    /**
+     * Writes what {@code body} writes to a hidden temporary file beside {@code file}, checked and forced, with the
+     * permissions of the file it will replace.
+     *
+     * @throws FileSystemException naming {@code file} when anything fails, with {@code kept} when it existed;
+     *                             nothing is left behind
+     */
+    private static Staged stage(Path file, Body body, String kept) throws IOException {
         Path target = Files.exists(file) ? file.toRealPath() : file.toAbsolutePath();
         Path dir = target.getParent();
         removeAbandoned(dir, target.getFileName().toString());
@@ -71,15 +155,13 @@ public final class AtomicFiles {
             if (existed) {
                 copyPermissions(target, temp);
             }
-            Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            temp = null;
-            forceDirectory(dir);
+            return new Staged(file, target, existed, temp);
         } catch (IOException | RuntimeException e) {
             if (temp != null) {
                 Files.deleteIfExists(temp);
             }
             if (e instanceof IOException io) {
-                throw notWritten(file, io, existed ? "the previous file is unchanged" : "no partial file was left");
+                throw notWritten(file, io, existed ? kept : "no partial file was left");
             }
             throw e;
         }

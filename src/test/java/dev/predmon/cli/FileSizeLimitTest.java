@@ -112,6 +112,33 @@ class FileSizeLimitTest {
         assertEquals(Map.of("direct-1.log", "yesterday's run\n"), snapshot(dir));
     }
 
+    /**
+     * A log and its truth sidecar are replaced as a pair: when the log does not fit, the previous truth stays beside
+     * the previous log (a new truth was written first, beside the old log), and the line says so.
+     */
+    @Test
+    void aSimulatedLogAndItsTruthAreReplacedAsAPair() throws Exception {
+        Path log = Files.writeString(tmp.resolve("run.log"), "yesterday's run\n");
+        Path truth = Files.writeString(tmp.resolve("run.log.truth.json"), "{\"seed\": 7}\n");
+        Child r = Child.runWithFileSizeLimit(tmp, 16, "simulate", "--scenario", "direct", "--out", "run.log");
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.out() + r.err());
+        assertEquals("predmon: run.log: not written (file too large); the previous run.log and run.log.truth.json "
+                + "are unchanged", r.err().strip());
+        assertEquals("yesterday's run\n", Files.readString(log));
+        assertEquals("{\"seed\": 7}\n", Files.readString(truth));
+        assertEquals(List.of("run.log", "run.log.truth.json"), names(tmp), "no temporary file is left");
+
+        Child day = Child.runWithFileSizeLimit(tmp, 16, "simulate", "--scenario", "direct,depleted", "--runs", "4",
+                "--out", "run.log");
+        assertEquals(ExitCodes.BAD_INPUT, day.code(), day.out() + day.err());
+        assertEquals("{\"seed\": 7}\n", Files.readString(truth));
+        assertEquals(List.of("run.log", "run.log.truth.json"), names(tmp), "no temporary file is left");
+
+        Child fits = Child.run(tmp, "simulate", "--scenario", "direct", "--out", "run.log");
+        assertEquals(0, fits.code(), fits.err());
+        assertTrue(Files.readString(truth).contains("\"scenario\" : \"direct\""), Files.readString(truth));
+    }
+
     /** A live log is written in place (a monitor tails it): when it stops, the line names it and says so. */
     @Test
     void aLiveSimulatedLogThatDoesNotFitIsNamed() throws Exception {

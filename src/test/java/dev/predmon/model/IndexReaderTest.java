@@ -132,7 +132,7 @@ class IndexReaderTest {
                 "3: not a predmon model index: scenarios[0].faulty: expected true or false",
                 "{\"format\": null}", "1: not a predmon model index: format: expected a whole number",
                 "{\"format\": 1, \"colour\": 2}", "1: not a predmon model index: colour: unknown key 'colour' "
-                        + "(allowed: abstraction, alphabet, forecast, format, scenarios)",
+                        + "(allowed: abstraction, alphabet, forecast, format, learnId, scenarios)",
                 "{\"format\": 1, \"alphabet\": [\"a\",\n 3]}", "2: not a predmon model index: alphabet[1]: expected a string",
                 "{\"format\": 1, \"abstraction\": {\"hysteresis\": {\"a\": \"x\"}}}",
                 "1: not a predmon model index: abstraction.hysteresis.a: expected a number",
