@@ -77,18 +77,29 @@ final class Exchange implements AutoCloseable {
         } catch (URISyntaxException e) {
             return new Exchange(connection, null, null, Map.of());
         }
+        // Only a path (origin form): an absolute URI (http://evil.com/status) or a path with an authority
+        // (//evil.com/status) names another host than the Host header the loopback check reads.
+        if (!request[1].startsWith("/") || uri.getRawAuthority() != null) {
+            return new Exchange(connection, null, null, Map.of());
+        }
         Map<String, String> headers = new HashMap<>();
         for (int i = 1; i < lines.length; i++) {
             int colon = lines[i].indexOf(':');
             if (colon > 0) {
-                headers.putIfAbsent(lines[i].substring(0, colon).strip().toLowerCase(Locale.ROOT),
-                        lines[i].substring(colon + 1).strip());
+                String name = lines[i].substring(0, colon).strip().toLowerCase(Locale.ROOT);
+                if (headers.putIfAbsent(name, lines[i].substring(colon + 1).strip()) != null && name.equals("host")) {
+                    // two Host headers: which one a proxy or the browser meant is anyone's guess (HTTP says 400)
+                    return new Exchange(connection, null, null, Map.of());
+                }
             }
         }
         return new Exchange(connection, request[0], uri, headers);
     }
 
-    /** Whether the head was no HTTP/1 request (it is answered 400). */
+    /**
+     * Whether the head was no HTTP/1 request for this server (it is answered 400): no request line of three parts,
+     * a target that is not a path, or two {@code Host} headers.
+     */
     boolean malformed() {
         return method == null;
     }

@@ -52,6 +52,30 @@ class LiveServerTest {
         }
     }
 
+    /**
+     * The loopback check reads the Host header: a second Host header, or a target that names its own host, would
+     * get past it (the first Host was taken, and an absolute URI was answered as its path). Both are 400.
+     */
+    @Test
+    void twoHostHeadersAndTargetsWithAHostGet400() throws Exception {
+        Board board = new Board(List.of(), Optional.empty(), Duration.ofSeconds(10), System::currentTimeMillis);
+        try (LiveServer server = LiveServer.start(HttpAddress.parse("0"), board)) {
+            String host = "Host: 127.0.0.1:" + server.url().getPort() + "\r\n";
+            for (String request : List.of(
+                    "GET /status HTTP/1.1\r\n" + host + "Host: evil.com\r\n\r\n",
+                    "GET /status HTTP/1.1\r\nHost: evil.com\r\n" + host + "\r\n",
+                    "GET /status HTTP/1.1\r\n" + host + "HOST: 127.0.0.1\r\n\r\n",
+                    "GET http://evil.com/status HTTP/1.1\r\n" + host + "\r\n",
+                    "GET http://127.0.0.1:" + server.url().getPort() + "/status HTTP/1.1\r\n" + host + "\r\n",
+                    "GET //evil.com/status HTTP/1.1\r\n" + host + "\r\n",
+                    "GET * HTTP/1.1\r\n" + host + "\r\n")) {
+                String answer = ask(server.url(), request);
+                assertTrue(answer.startsWith("HTTP/1.1 400 "), request + " got " + answer);
+            }
+            assertTrue(ask(server.url(), "GET /status?log=a HTTP/1.1\r\n" + host + "\r\n").startsWith("HTTP/1.1 200 "));
+        }
+    }
+
     /** A head of blank lines alone is no request: it gets a 400, and the server goes on answering. */
     @Test
     void blankLinesAloneGet400AndTheServerStaysUp() throws Exception {
