@@ -16,9 +16,12 @@ public final class Main {
         // thread (a follower, the live server) it would end that thread alone and leave the command half alive.
         FatalErrors fatal = new FatalErrors(System.err, List.of(args).contains("--verbose"));
         Thread.setDefaultUncaughtExceptionHandler(fatal);
+        Stdout out = Stdout.open();
+        CommandLine cl = commandLine(args);
+        cl.setOut(out);
         int code;
         try {
-            code = commandLine(args).execute(args);
+            code = out.settle(cl.execute(args), cl.getErr());
         } catch (Error e) {
             code = fatal.report(e);
         }

@@ -88,6 +88,11 @@ final class WatchCommand implements Callable<Integer> {
         out = spec.commandLine().getOut();
         err = spec.commandLine().getErr();
         config.complete();
+        if (out instanceof Stdout stdout) {
+            // the reader of standard output is gone (a broken pipe) or it cannot be written: stop as on a signal
+            Thread watching = Thread.currentThread();
+            stdout.onFailure(watching::interrupt);
+        }
         ModelSet set = input.models();
         Abstraction abstraction = input.abstraction();
         LogSources sources = new LogSources(input.logs);
