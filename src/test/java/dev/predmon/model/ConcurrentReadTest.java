@@ -97,17 +97,9 @@ class ConcurrentReadTest {
     void aLearnThatReplacesTheModelsAfterTheIndexWasRead() throws Exception {
         Path dir = tmp.resolve("models");
         all.writeTo(dir);
-        AtomicInteger replaced = new AtomicInteger();
-        ModelSet set = ModelStore.read(dir, A, step -> {
-            if (step.equals("index") && replaced.getAndIncrement() == 0) {
-                try {
-                    withoutDirect.writeTo(dir);
-                } catch (IOException | BadInputException e) {
-                    throw new IllegalStateException(e);
-                }
-            }
-        });
-        assertEquals(2, replaced.get(), "read twice");
+        AtomicInteger reads = new AtomicInteger();
+        ModelSet set = readReplacedAfterTheIndex(dir, withoutDirect, reads);
+        assertEquals(2, reads.get(), "read twice");
         assertTrue(whole(set));
         assertEquals(3, set.models().size(), "the new models");
     }
@@ -117,18 +109,22 @@ class ConcurrentReadTest {
     void aLearnThatAddsAMachineAfterTheIndexWasRead() throws Exception {
         Path dir = tmp.resolve("models");
         withoutDirect.writeTo(dir);
-        AtomicInteger replaced = new AtomicInteger();
-        ModelSet set = ModelStore.read(dir, A, step -> {
-            if (step.equals("index") && replaced.getAndIncrement() == 0) {
+        ModelSet set = readReplacedAfterTheIndex(dir, all, new AtomicInteger());
+        assertTrue(whole(set));
+        assertEquals(4, set.models().size(), "the new models");
+    }
+
+    /** Reads {@code dir}, replacing it with {@code next} once the first read has its index; counts the reads. */
+    private static ModelSet readReplacedAfterTheIndex(Path dir, Written next, AtomicInteger reads) throws Exception {
+        return ModelStore.read(dir, A, step -> {
+            if (step.equals("index") && reads.getAndIncrement() == 0) {
                 try {
-                    all.writeTo(dir);
+                    next.writeTo(dir);
                 } catch (IOException | BadInputException e) {
                     throw new IllegalStateException(e);
                 }
             }
         });
-        assertTrue(whole(set));
-        assertEquals(4, set.models().size(), "the new models");
     }
 
     /**
