@@ -52,11 +52,42 @@ final class NoveltyOptions {
                     + "from the seed. Default: 5.")
     String gap;
 
+    @Option(names = "--never-arrives", paramLabel = "TICKS|LOW..HIGH",
+            description = "The way to the tour location is blocked for good: the robot stops short, the navigation "
+                    + "keeps answering getStatus with 1 (RUNNING), and the log ends TICKS ticks later (drawn per run "
+                    + "when a range). Depleted runs never get there and are not stuck.")
+    String neverArrives;
+
+    @Option(names = "--grasp", description = "The robot grasps an object at the tour location (ArmService closeHand "
+            + "and hasGrasped, one attempt per tick); the grasp holds within 1 to 4 attempts.")
+    boolean grasp;
+
+    @Option(names = "--grasp-failures", paramLabel = "N|LOW..HIGH",
+            description = "A grasp (implies --grasp) that fails N times before it holds (drawn per run when a "
+                    + "range): hasGrasped answers 0 and the tree retries, as the real robot did dozens of times.")
+    String graspFailures;
+
+    @Option(names = "--late-turn", paramLabel = "TICKS|LOW..HIGH",
+            description = "The tree turns to the charging station TICKS ticks after the first battery reading below "
+                    + "30 (drawn per run when a range) instead of at the early warning.")
+    String lateTurn;
+
+    @Option(names = "--tick-period", paramLabel = "SECONDS|LOW..HIGH",
+            description = "Seconds between two ticks of the tree (drawn per run when a range) instead of the period "
+                    + "drawn with the physical parameters (0.2 to 1 s); the real robot ticks about once a second.")
+    String tickPeriod;
+
     /** The novelties asked for; {@link Novelties#NONE} when none is. */
     Novelties novelties() {
         return new Novelties(aborts, AbortOn.fromId(abortOn), parse("--stuck", stuck),
                 parse("--slowdown", slowdown), parse("--drain-factor", drainFactor), newLocation, noTicks,
-                gap == null ? null : parse("--gap", gap));
+                gap == null ? null : parse("--gap", gap), optional("--never-arrives", neverArrives),
+                grasp || graspFailures != null, optional("--grasp-failures", graspFailures),
+                optional("--late-turn", lateTurn), optional("--tick-period", tickPeriod));
+    }
+
+    private static Span optional(String option, String text) {
+        return text == null ? null : parse(option, text);
     }
 
     private static Span parse(String option, String text) {

@@ -4,6 +4,7 @@ import dev.predmon.BadInputException;
 import dev.predmon.files.AtomicFiles;
 import dev.predmon.simulate.Day;
 import dev.predmon.simulate.LogWriter;
+import dev.predmon.simulate.PropertyLimits;
 import dev.predmon.simulate.RealtimeWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
@@ -114,6 +115,15 @@ public final class SimulateCommand implements Callable<Integer> {
                     + "the tree reacts to the noisy reading, as a real one would. Default: ${DEFAULT-VALUE}.")
     double noise;
 
+    @Option(names = "--navigation-deadline", defaultValue = "300", paramLabel = "TICKS",
+            description = "The truth's navigation-in-time: ticks a navigation has to reach its destination. "
+                    + "Default: ${DEFAULT-VALUE}.")
+    int navigationDeadline;
+
+    @Option(names = "--grasp-attempts", defaultValue = "5", paramLabel = "K",
+            description = "The truth's grasp-in-time: closeHand attempts a grasp has to hold. Default: ${DEFAULT-VALUE}.")
+    int graspAttempts;
+
     @Override
     public Integer call() throws IOException, BadInputException {
         Scenario s;
@@ -126,7 +136,8 @@ public final class SimulateCommand implements Callable<Integer> {
             }
             s = day.get(0);
             options = new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise,
-                    novelty.novelties());
+                    novelty.novelties(), PropertyLimits.DEFAULT.withNavigationTicks(navigationDeadline)
+                    .withGraspAttempts(graspAttempts));
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage(), e);
         }

@@ -26,11 +26,24 @@ final class BehaviorTree {
      * @param destination  the tour location of {@code IsAtDestination} and {@code GoToDestination}
      */
     static Node build(Components c, Recorder r, double earlyWarning, boolean goToEchoes, String destination) {
+        return build(c, r, earlyWarning, goToEchoes, destination, null, null);
+    }
+
+    /**
+     * The tree of the reference document, with the novelties that change the tree itself.
+     *
+     * @param lateTurn the battery condition of a tree that turns late, or null for the usual one
+     * @param arm      the arm that grasps an object at the tour location (the tree then fetches it once there), or
+     *                 null for the case study's tree, which only goes there
+     */
+    static Node build(Components c, Recorder r, double earlyWarning, boolean goToEchoes, String destination,
+                      LateTurn lateTurn, Arm arm) {
         Node batteryLevel = new Condition("BatteryLevel", r, () -> {
             double level = c.level();
             r.call("/BatteryReaderBatteryLevelClient", "/BatteryComponent", "BatteryReader", "level", "",
                     LogWriter.formatDouble(level));
-            return level > earlyWarning;
+            r.ledger().note(Ledger.Kind.READING, r.lastReply(), null, level);
+            return lateTurn == null ? level > earlyWarning : lateTurn.batteryLevel(level, earlyWarning, c.tick());
         });
         Node notCharging = new Condition("BatteryNotCharging", r, () -> r.call(
                 "/BatteryReaderBatteryNotChargingClient", "/BatteryComponent", "BatteryReader", "charging_status",
@@ -39,11 +52,16 @@ final class BehaviorTree {
         Node goToStation = new GoTo("GoToChargingStation", Components.CHARGING_STATION, c, r, goToEchoes);
         Node atDestination = isAt("IsAtDestination", destination, c, r);
         Node goToDestination = new GoTo("GoToDestination", destination, c, r, goToEchoes);
-        return Reactive.sequence(
-                Reactive.fallback(
-                        Reactive.sequence(batteryLevel, notCharging),
-                        Reactive.sequence(Reactive.fallback(atStation, goToStation), new Wait())),
-                Reactive.fallback(atDestination, goToDestination));
+        Node battery = Reactive.fallback(
+                Reactive.sequence(batteryLevel, notCharging),
+                Reactive.sequence(Reactive.fallback(atStation, goToStation), new Wait()));
+        if (arm == null) {
+            return Reactive.sequence(battery, Reactive.fallback(atDestination, goToDestination));
+        }
+        Node isFetched = new Condition("IsFetched", r, () -> r.call("/ArmServiceIsFetchedClient", Arm.PORT,
+                Arm.PROTOCOL, "hasGrasped", "", arm.hasGrasped() ? "1" : "0").equals("1"));
+        return Reactive.sequence(battery, Reactive.fallback(atDestination, goToDestination),
+                Reactive.fallback(isFetched, new Fetch(arm, r)));
     }
 
     private static Node isAt(String skill, String location, Components c, Recorder r) {
@@ -199,10 +217,12 @@ final class BehaviorTree {
                 c.goTo(location);
                 r.call(client, "/GoToComponent", "GoTo", "goTo", location, echoes ? "" : location,
                         echoes ? location : "");
+                r.ledger().note(Ledger.Kind.GO_TO, r.lastCommand(), location, 0);
                 s = Status.RUNNING;
             } else {
                 int code = c.getStatus(location);
                 r.call(client, "/GoToComponent", "GoTo", "getStatus", location, Integer.toString(code));
+                r.ledger().note(Ledger.Kind.STATUS, r.lastReply(), location, code);
                 s = code == Components.SUCCESS ? Status.SUCCESS
                         : code == Components.ABORT ? Status.FAILURE : Status.RUNNING;
             }
@@ -215,6 +235,45 @@ final class BehaviorTree {
             r.call(skillPort(skill, "client"), skillPort(skill, "server"), "Skill_request", "send_stop", "", "");
             c.halt(location);
             r.call(client, "/GoToComponent", "GoTo", "halt", location, "");
+            r.ledger().note(Ledger.Kind.HALT, r.lastCommand(), location, 0);
+        }
+    }
+
+    /**
+     * The fetch skill of the R1 fetch-and-carry tree: on its first tick {@code preGrasp} and {@code extractHand}, then
+     * one attempt per tick ({@code openHand}, {@code closeHand}, {@code hasGrasped}) until the hand holds the object.
+     */
+    static final class Fetch extends Node {
+        private static final String CLIENT = "/ArmServiceFetchClient";
+        private final Arm arm;
+        private final Recorder r;
+
+        Fetch(Arm arm, Recorder r) {
+            this.arm = arm;
+            this.r = r;
+        }
+
+        @Override
+        Status onTick(Status previous) {
+            if (previous != Status.RUNNING) {
+                r.call(skillPort("Fetch", "client"), skillPort("Fetch", "server"), "Skill_request", "send_start", "",
+                        "");
+                r.call(CLIENT, Arm.PORT, Arm.PROTOCOL, "preGrasp", "", Arm.OK);
+                r.call(CLIENT, Arm.PORT, Arm.PROTOCOL, "extractHand", "", Arm.OK);
+            }
+            r.call(CLIENT, Arm.PORT, Arm.PROTOCOL, "openHand", "", Arm.OK);
+            boolean held = arm.closeHand();
+            r.call(CLIENT, Arm.PORT, Arm.PROTOCOL, "closeHand", "", Arm.OK);
+            r.call(CLIENT, Arm.PORT, Arm.PROTOCOL, "hasGrasped", "", held ? "1" : "0");
+            r.ledger().note(Ledger.Kind.GRASP, r.lastReply(), null, held ? 1 : 0);
+            Status s = held ? Status.SUCCESS : Status.RUNNING;
+            ack(r, "Fetch", s);
+            return s;
+        }
+
+        @Override
+        void onHalt() {
+            r.call(skillPort("Fetch", "client"), skillPort("Fetch", "server"), "Skill_request", "send_stop", "", "");
         }
     }
 }

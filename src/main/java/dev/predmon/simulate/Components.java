@@ -34,6 +34,10 @@ final class Components {
     private final SplittableRandom sensor;
     /** Null without blocked paths, so that a default run takes the very same steps. */
     private final BlockedPaths blocked;
+    /** Null unless the way to the tour location is lost for good. */
+    private final LostWay lost;
+    private final Ledger ledger;
+    private int tick;
 
     private double time;
     private double level;
@@ -62,11 +66,22 @@ final class Components {
      */
     Components(SimParameters p, SplittableRandom noise, double sensorNoise, SplittableRandom sensor,
                String destination, BlockedPaths blocked) {
+        this(p, noise, sensorNoise, sensor, destination, blocked, null, new Ledger());
+    }
+
+    /**
+     * @param lost   the way to the tour location lost for good, or null
+     * @param ledger where arrivals are noted
+     */
+    Components(SimParameters p, SplittableRandom noise, double sensorNoise, SplittableRandom sensor,
+               String destination, BlockedPaths blocked, LostWay lost, Ledger ledger) {
         this.p = p;
         this.noise = noise;
         this.sensorNoise = sensorNoise;
         this.sensor = sensor;
         this.blocked = blocked;
+        this.lost = lost;
+        this.ledger = ledger;
         this.locations = Map.of(destination, p.kitchen(), CHARGING_STATION, p.chargingStation(), "start",
                 Point.ORIGIN);
         this.stopDelayTicks = noise.nextInt(1, 4);
@@ -77,7 +92,12 @@ final class Components {
     /** Moves the world on by {@code dt} seconds: motion, drain, charge and the battery sensor. */
     void advance(double dt) {
         time += dt;
-        if (status == RUNNING) {
+        tick++;
+        if (status == RUNNING && lost != null && lost.stuck()) {
+            // Waiting for good at the blocked point: the navigation runs on, the robot stands.
+            lost.waited();
+            level -= p.idleDrainRate() * dt;
+        } else if (status == RUNNING) {
             if (blocked != null && blocked.stuck()) {
                 // Stuck at a blocked point: no progress, the same drain, until the navigation gives up.
                 if (blocked.waitOut(dt, time)) {
@@ -123,9 +143,13 @@ final class Components {
         if (blocked != null) {
             step = blocked.step(step, time);
         }
+        if (lost != null) {
+            step = lost.step(step, time);
+        }
         if (step >= remaining) {
             position = goal;
             status = SUCCESS;
+            ledger.arrived(target, tick);
             if (CHARGING_STATION.equals(target) && level < 100.0) {
                 charging = true;
             }
@@ -163,6 +187,9 @@ final class Components {
         status = level > 0.0 ? RUNNING : ABORT;
         // The tree's retry after a blocked path is the same trip to the station, not a second one.
         boolean retry = blocked != null && blocked.start(destination, position.distance(locations.get(destination)));
+        if (lost != null) {
+            lost.start(destination, position.distance(locations.get(destination)));
+        }
         if (CHARGING_STATION.equals(destination) && !retry) {
             goToStationCount++;
         }
@@ -181,6 +208,9 @@ final class Components {
             if (blocked != null) {
                 blocked.stop();
             }
+            if (lost != null) {
+                lost.stop();
+            }
         }
     }
 
@@ -192,6 +222,11 @@ final class Components {
     /** How often the robot was sent to the charging station. */
     int goToStationCount() {
         return goToStationCount;
+    }
+
+    /** The tick of the tree the world is in: how often it {@link #advance advanced}. */
+    int tick() {
+        return tick;
     }
 
     /** Whether the robot has stopped because the battery ran out. */

@@ -30,27 +30,32 @@ public final class Day {
         SplittableRandom gaps = novelties.gap() == null ? null : new SplittableRandom(seed ^ 0x6761707321L);
         List<SimRun> day = new ArrayList<>();
         long end = Long.MIN_VALUE;
+        long lines = 0;
         for (int k = 0; k < runs; k++) {
             SimRun run = Simulator.run(scenarios.get(k % scenarios.size()), seed + k, options);
             long first = Simulator.firstPrinted(run.events(), novelties.noTicks()).timeMicros();
             long pause = gaps == null ? PAUSE_MICROS : Math.round(novelties.gap().draw(gaps) * 1e6);
             long shift = end == Long.MIN_VALUE ? 0 : Math.max(0, end + pause - first);
             Double gap = end == Long.MIN_VALUE ? null : (first + shift - end) / 1e6;
-            SimRun shifted = shift(run, shift, gap);
+            SimRun shifted = shift(run, shift, gap, lines);
             day.add(shifted);
             end = shifted.events().get(shifted.events().size() - 1).timeMicros();
+            lines += (long) LogWriter.printOrder(run, options).size() * LogWriter.linesPerRecord(options);
         }
         return List.copyOf(day);
     }
 
     /** The run with every event {@code micros} later. */
     static SimRun shift(SimRun run, long micros) {
-        return shift(run, micros, run.truth().novelties() == null ? null : run.truth().novelties().gapBefore());
+        return shift(run, micros, run.truth().novelties() == null ? null : run.truth().novelties().gapBefore(), 0);
     }
 
-    /** The run with every event {@code micros} later, {@code gap} seconds after the previous run of its log. */
-    private static SimRun shift(SimRun run, long micros, Double gap) {
-        if (micros == 0 && (run.truth().novelties() == null || gap == null)) {
+    /**
+     * The run with every event {@code micros} later, {@code gap} seconds after the previous run of its log, its
+     * records {@code lines} lines further down.
+     */
+    private static SimRun shift(SimRun run, long micros, Double gap, long lines) {
+        if (micros == 0 && lines == 0 && (run.truth().novelties() == null || gap == null)) {
             return run;
         }
         List<SimEvent> events = new ArrayList<>(run.events().size());
@@ -58,6 +63,6 @@ public final class Day {
             events.add(new SimEvent(e.timeMicros() + micros, e.kind(), e.from(), e.to(), e.protocol(), e.command(),
                     e.argument(), e.reply()));
         }
-        return new SimRun(run.scenario(), run.seed(), run.options(), events, run.truth().shifted(micros / 1e6, gap));
+        return new SimRun(run.scenario(), run.seed(), run.options(), events, run.truth().shifted(micros / 1e6, gap, lines));
     }
 }

@@ -61,14 +61,19 @@ public final class LogWriter {
      * {@link Novelties#noTicks()} asks for a log without them.
      */
     public static List<SimEvent> printOrder(SimRun run, SimOptions options) {
-        List<SimEvent> order = new ArrayList<>(run.events());
+        return printOrder(run.events(), run.seed(), options);
+    }
+
+    /** {@link #printOrder(SimRun, SimOptions)} of the events of a run simulated from {@code seed}. */
+    static List<SimEvent> printOrder(List<SimEvent> events, long seed, SimOptions options) {
+        List<SimEvent> order = new ArrayList<>(events);
         if (options.novelties().noTicks()) {
             order.removeIf(e -> e.kind() == RecordKind.TICK);
         }
         if (options.lateReplies() <= 0) {
             return order;
         }
-        Random random = new Random(run.seed() * 31 + 0x1A7E);
+        Random random = new Random(seed * 31 + 0x1A7E);
         // By identity: each event of the list moves once at most, whatever the other events hold.
         IdentityHashMap<SimEvent, Boolean> moved = new IdentityHashMap<>();
         for (int i = 0; i < order.size(); i++) {
@@ -86,6 +91,35 @@ public final class LogWriter {
             }
         }
         return order;
+    }
+
+    /** Lines one record takes in the log: seven, and the raw-bottle line before them if printed. */
+    static int linesPerRecord(SimOptions options) {
+        return options.rawLines() ? 8 : 7;
+    }
+
+    /**
+     * The line of each event's record in the log printed from {@code events} alone (1-based, the line of its DEBUG
+     * header); an event left out of the log (a Tick record without ticks) gets the line of the next event printed,
+     * or the line after the log's last when none follows.
+     */
+    static long[] headerLines(List<SimEvent> events, long seed, SimOptions options) {
+        List<SimEvent> order = printOrder(events, seed, options);
+        IdentityHashMap<SimEvent, Integer> position = new IdentityHashMap<>();
+        for (int i = 0; i < order.size(); i++) {
+            position.put(order.get(i), i);
+        }
+        int per = linesPerRecord(options);
+        long[] lines = new long[events.size()];
+        long next = (long) order.size() * per + 1;
+        for (int i = events.size() - 1; i >= 0; i--) {
+            Integer at = position.get(events.get(i));
+            if (at != null) {
+                next = (long) at * per + per - 6;
+            }
+            lines[i] = next;
+        }
+        return lines;
     }
 
     private static boolean sameConnectionCommand(SimEvent reply, SimEvent next) {

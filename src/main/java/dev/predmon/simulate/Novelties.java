@@ -6,9 +6,9 @@ import java.util.SplittableRandom;
 import java.util.regex.Pattern;
 
 /**
- * What a real robot does that the default simulated runs never show: a navigation that aborts on a blocked path, a
- * slower robot or a faster-draining battery, a tour location no model has seen, and logs that hold several runs
- * without Tick records. {@link #NONE} leaves every run and every log exactly as without it.
+ * What a real robot does that the default simulated runs never show: a navigation that aborts on a blocked path or
+ * never arrives, a grasp that keeps failing, a late turn to the charger, a slower robot or a faster-draining battery,
+ * another tick rate, a tour location no model has seen, and logs that hold several runs without Tick records. {@link #NONE} leaves every run and every log exactly as without it.
  *
  * <p>Every run still tells its scenario's story: a {@code recharge} run that was stuck on its way to the charging
  * station still arrives there at the scenario's margin, a {@code depleted} run still runs out before it. When a
@@ -24,9 +24,19 @@ import java.util.regex.Pattern;
  * @param newLocation the tour destination's name instead of {@code kitchen}, or null
  * @param noTicks     the log leaves out the Tick records
  * @param gap         seconds of silence between two runs of one log, drawn per gap; null for the default 5 s
+ * @param neverArrives ticks the log goes on after the robot got stuck for good on its way to the tour location
+ *                    (the navigation answers RUNNING until the capture stops), drawn per run; null for none
+ * @param grasp       whether the robot grasps an object at the tour location (closeHand, hasGrasped)
+ * @param graspFailures failed grasp attempts before the one that succeeds, drawn per run; null for a grasp that
+ *                    succeeds within 1 to 4 attempts, as in the recordings (implies {@code grasp})
+ * @param lateTurn    ticks the tree waits, after the first battery reading below the charger level, before it
+ *                    turns to the charging station, drawn per run; null for a tree that turns at the early warning
+ * @param tickPeriod  seconds between two ticks of the tree, drawn per run; null for the period drawn with the
+ *                    other physical parameters (0.2 to 1 s)
  */
 public record Novelties(int aborts, AbortOn abortOn, Span stuck, Span slowdown, Span drainFactor, String newLocation,
-                        boolean noTicks, Span gap) {
+                        boolean noTicks, Span gap, Span neverArrives, boolean grasp, Span graspFailures,
+                        Span lateTurn, Span tickPeriod) {
 
     /** The navigations that a blocked path can abort. */
     public enum AbortOn {
@@ -58,7 +68,7 @@ public record Novelties(int aborts, AbortOn abortOn, Span stuck, Span slowdown, 
 
     /** No novelty: the runs and logs of the thesis's scenarios. */
     public static final Novelties NONE = new Novelties(0, AbortOn.ANY, DEFAULT_STUCK, Span.ONE, Span.ONE, null,
-            false, null);
+            false, null, null, false, null, null, null);
 
     /** More aborts than this cannot fit in a run's hour; a typo is more likely. */
     static final int MAX_ABORTS = 10;
@@ -81,15 +91,35 @@ public record Novelties(int aborts, AbortOn abortOn, Span stuck, Span slowdown, 
         if (gap != null) {
             gap.check("gap between runs (seconds)", 0.0, 3600.0);
         }
+        if (neverArrives != null) {
+            neverArrives.check("ticks stuck for good", 1.0, 3000.0);
+        }
+        if (graspFailures != null) {
+            graspFailures.check("failed grasp attempts", 0.0, 500.0);
+            grasp = true;
+        }
+        if (lateTurn != null) {
+            lateTurn.check("ticks of the late turn", 0.0, 1000.0);
+        }
+        if (tickPeriod != null) {
+            tickPeriod.check("tick period (seconds)", 0.05, 5.0);
+        }
         if (newLocation != null && (!LOCATION_NAME.matcher(newLocation).matches() || TAKEN.contains(newLocation))) {
             throw new IllegalArgumentException("the new location must be a name of letters, digits and '_' other "
                     + "than " + String.join(", ", TAKEN.stream().sorted().toList()) + ", got '" + newLocation + "'");
         }
     }
 
+    /** The novelties of before the grasp, the late turn and the lost navigation: none of these. */
+    public Novelties(int aborts, AbortOn abortOn, Span stuck, Span slowdown, Span drainFactor, String newLocation,
+                     boolean noTicks, Span gap) {
+        this(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, noTicks, gap, null, false, null, null, null);
+    }
+
     /** Whether the simulated events differ from a default run's (not only their printing). */
     public boolean changesRuns() {
-        return aborts > 0 || !slowdown.isOne() || !drainFactor.isOne() || newLocation != null;
+        return aborts > 0 || !slowdown.isOne() || !drainFactor.isOne() || newLocation != null || neverArrives != null
+                || grasp || lateTurn != null || tickPeriod != null;
     }
 
     /** Whether any novelty is asked for: the truth then says what happened. */
@@ -108,27 +138,57 @@ public record Novelties(int aborts, AbortOn abortOn, Span stuck, Span slowdown, 
     }
 
     public Novelties withAborts(int value, AbortOn on) {
-        return new Novelties(value, on, stuck, slowdown, drainFactor, newLocation, noTicks, gap);
+        return new Novelties(value, on, stuck, slowdown, drainFactor, newLocation, noTicks, gap, neverArrives, grasp,
+                graspFailures, lateTurn, tickPeriod);
     }
 
     public Novelties withStuck(Span value) {
-        return new Novelties(aborts, abortOn, value, slowdown, drainFactor, newLocation, noTicks, gap);
+        return new Novelties(aborts, abortOn, value, slowdown, drainFactor, newLocation, noTicks, gap, neverArrives,
+                grasp, graspFailures, lateTurn, tickPeriod);
     }
 
     public Novelties withSlowdown(Span value) {
-        return new Novelties(aborts, abortOn, stuck, value, drainFactor, newLocation, noTicks, gap);
+        return new Novelties(aborts, abortOn, stuck, value, drainFactor, newLocation, noTicks, gap, neverArrives, grasp,
+                graspFailures, lateTurn, tickPeriod);
     }
 
     public Novelties withDrainFactor(Span value) {
-        return new Novelties(aborts, abortOn, stuck, slowdown, value, newLocation, noTicks, gap);
+        return new Novelties(aborts, abortOn, stuck, slowdown, value, newLocation, noTicks, gap, neverArrives, grasp,
+                graspFailures, lateTurn, tickPeriod);
     }
 
     public Novelties withNewLocation(String value) {
-        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, value, noTicks, gap);
+        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, value, noTicks, gap, neverArrives, grasp,
+                graspFailures, lateTurn, tickPeriod);
     }
 
     public Novelties withNoTicks(boolean value) {
-        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, value, gap);
+        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, value, gap, neverArrives,
+                grasp, graspFailures, lateTurn, tickPeriod);
+    }
+
+    /** The robot gets stuck for good on its way to the tour location; the log ends {@code ticks} later. */
+    public Novelties withNeverArrives(Span ticks) {
+        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, noTicks, gap, ticks, grasp,
+                graspFailures, lateTurn, tickPeriod);
+    }
+
+    /** A grasp at the tour location, {@code failures} failed attempts before it succeeds (null: 0 to 3). */
+    public Novelties withGrasp(boolean value, Span failures) {
+        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, noTicks, gap, neverArrives,
+                value, failures, lateTurn, tickPeriod);
+    }
+
+    /** The tree turns to the charging station {@code ticks} after the first reading below the charger level. */
+    public Novelties withLateTurn(Span ticks) {
+        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, noTicks, gap, neverArrives,
+                grasp, graspFailures, ticks, tickPeriod);
+    }
+
+    /** Ticks of the tree {@code seconds} apart instead of the period drawn with the physical parameters. */
+    public Novelties withTickPeriod(Span seconds) {
+        return new Novelties(aborts, abortOn, stuck, slowdown, drainFactor, newLocation, noTicks, gap, neverArrives,
+                grasp, graspFailures, lateTurn, seconds);
     }
 
     /**

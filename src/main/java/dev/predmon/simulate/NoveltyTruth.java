@@ -1,5 +1,6 @@
 package dev.predmon.simulate;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
 import dev.predmon.parse.RecordKind;
 
 import java.util.ArrayList;
@@ -18,12 +19,26 @@ import java.util.List;
  * @param slowdown    the factor the robot's sampled speed was divided by (2: half as fast)
  * @param drainFactor the factor the battery's sampled drain was multiplied by (2: twice as fast)
  * @param aborts      the blocked-path aborts, in order
+ * @param stuckForGood log time when the robot stopped for good on its way to the tour location, or null (the
+ *                    JSON then leaves it out, as the three fields after it)
+ * @param graspAttempts the {@code closeHand} attempts of the grasp at the tour location, or null without a grasp
+ * @param lateTurnTicks ticks the tree waited, after the first reading below the charger level, before it turned to
+ *                    the charging station, or null when it did not turn late
  */
 public record NoveltyTruth(double startTime, Double gapBefore, boolean ticks, String destination, double slowdown,
-                           double drainFactor, List<Abort> aborts) {
+                           double drainFactor, List<Abort> aborts,
+                           @JsonInclude(JsonInclude.Include.NON_NULL) Double stuckForGood,
+                           @JsonInclude(JsonInclude.Include.NON_NULL) Integer graspAttempts,
+                           @JsonInclude(JsonInclude.Include.NON_NULL) Integer lateTurnTicks) {
 
     public NoveltyTruth {
         aborts = List.copyOf(aborts);
+    }
+
+    /** The facts of the novelties that existed before the lost navigation, the grasp and the late turn. */
+    public NoveltyTruth(double startTime, Double gapBefore, boolean ticks, String destination, double slowdown,
+                        double drainFactor, List<Abort> aborts) {
+        this(startTime, gapBefore, ticks, destination, slowdown, drainFactor, aborts, null, null, null);
     }
 
     /**
@@ -47,7 +62,8 @@ public record NoveltyTruth(double startTime, Double gapBefore, boolean ticks, St
     /** The same facts for the run shifted {@code seconds} later in its log, {@code gapBefore} after the previous. */
     NoveltyTruth shifted(double seconds, Double gap) {
         return new NoveltyTruth(startTime + seconds, gap, ticks, destination, slowdown, drainFactor,
-                aborts.stream().map(a -> a.shifted(seconds)).toList());
+                aborts.stream().map(a -> a.shifted(seconds)).toList(),
+                stuckForGood == null ? null : stuckForGood + seconds, graspAttempts, lateTurnTicks);
     }
 
     /**

@@ -17,16 +17,24 @@ final class Recorder {
     static final String MONITOR_PORT = "/monitor";
 
     private final List<SimEvent> events = new ArrayList<>();
+    private final Ledger ledger;
     private final SplittableRandom jitter;
     private long cursor;
 
     Recorder(SplittableRandom jitter) {
+        this(jitter, new Ledger());
+    }
+
+    /** @param ledger where the ticks are noted, and the tree notes what it does */
+    Recorder(SplittableRandom jitter, Ledger ledger) {
         this.jitter = jitter;
+        this.ledger = ledger;
     }
 
     /** Records the tick numbered {@code index} at {@code timeMicros} and moves the clock past it. */
     void tick(long timeMicros, int index) {
         cursor = Math.max(cursor, timeMicros);
+        ledger.tick(index, events.size());
         events.add(new SimEvent(cursor, RecordKind.TICK, TICK_PORT, MONITOR_PORT, "", "tick",
                 Integer.toString(index), ""));
         cursor += jitter.nextLong(80, 600);
@@ -54,5 +62,20 @@ final class Recorder {
 
     List<SimEvent> events() {
         return events;
+    }
+
+    /** What happened so far, as the tree and the components noted it. */
+    Ledger ledger() {
+        return ledger;
+    }
+
+    /** Index of the last reply recorded: the one of the last {@link #call}. */
+    int lastReply() {
+        return events.size() - 1;
+    }
+
+    /** Index of the last command recorded: the one of the last {@link #call}. */
+    int lastCommand() {
+        return events.size() - 2;
     }
 }

@@ -93,10 +93,21 @@ record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Doubl
 
     /** Whether these facts are the story of {@code scenario} (see {@link Scenario}). */
     boolean tell(Scenario scenario, double earlyWarning) {
+        return tell(scenario, earlyWarning, true, rechargeMinLevel(earlyWarning));
+    }
+
+    /**
+     * Whether these facts are the story of {@code scenario} as the novelties tell it.
+     *
+     * @param arrives       whether a nominal run reaches the tour location (not when its way there is lost for good)
+     * @param rechargeFloor the lowest level a {@code recharge} run may read
+     */
+    boolean tell(Scenario scenario, double earlyWarning, boolean arrives, double rechargeFloor) {
         return switch (scenario) {
-            case DIRECT -> kitchenTime != null && goToStationCount == 0 && minLevel > earlyWarning;
+            case DIRECT -> (kitchenTime != null) == arrives && goToStationCount == 0 && minLevel > earlyWarning;
             case RECHARGE -> turnTime != null && goToStationCount == 1 && stationTime != null && chargedFull
-                    && kitchenTime != null && kitchenTime > stationTime && minLevel >= rechargeMinLevel(earlyWarning);
+                    && (arrives ? kitchenTime != null && kitchenTime > stationTime : kitchenTime == null)
+                    && minLevel >= rechargeFloor;
             case DEPLETED -> turnTime != null && turnLevel >= SAFETY_BOUND && goToStationCount >= 1
                     && stationTime == null && kitchenTime == null && violationTime != null && emptied;
         };

@@ -16,9 +16,10 @@ package dev.predmon.simulate;
  * @param crlf         end lines with {@code \r\n} instead of {@code \n}
  * @param noise        standard deviation of the battery sensor's Gaussian noise, percentage points
  * @param novelties    what a real robot does that default runs never show ({@link Novelties#NONE}: nothing)
+ * @param limits       the limits of the properties the truth judges ({@link PropertyLimits#DEFAULT} when null)
  */
 public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, double lateReplies, boolean vocab,
-                         boolean spaces, boolean crlf, double noise, Novelties novelties) {
+                         boolean spaces, boolean crlf, double noise, Novelties novelties, PropertyLimits limits) {
 
     /** The thesis's final Early Warning (Section 5.2). */
     public static final double DEFAULT_EARLY_WARNING = 50.0;
@@ -37,6 +38,15 @@ public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, d
         if (novelties == null) {
             novelties = Novelties.NONE;
         }
+        if (limits == null) {
+            limits = PropertyLimits.DEFAULT;
+        }
+    }
+
+    /** Options whose truth judges the properties by the default limits. */
+    public SimOptions(double earlyWarning, boolean epoch, boolean rawLines, double lateReplies, boolean vocab,
+                      boolean spaces, boolean crlf, double noise, Novelties novelties) {
+        this(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise, novelties, null);
     }
 
     /** Options without novelties. */
@@ -57,31 +67,31 @@ public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, d
     }
 
     public SimOptions withEarlyWarning(double value) {
-        return new SimOptions(value, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise, novelties);
+        return new SimOptions(value, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise, novelties, limits);
     }
 
     public SimOptions withEpoch(boolean value) {
-        return new SimOptions(earlyWarning, value, rawLines, lateReplies, vocab, spaces, crlf, noise, novelties);
+        return new SimOptions(earlyWarning, value, rawLines, lateReplies, vocab, spaces, crlf, noise, novelties, limits);
     }
 
     public SimOptions withRawLines(boolean value) {
-        return new SimOptions(earlyWarning, epoch, value, lateReplies, vocab, spaces, crlf, noise, novelties);
+        return new SimOptions(earlyWarning, epoch, value, lateReplies, vocab, spaces, crlf, noise, novelties, limits);
     }
 
     public SimOptions withLateReplies(double value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, value, vocab, spaces, crlf, noise, novelties);
+        return new SimOptions(earlyWarning, epoch, rawLines, value, vocab, spaces, crlf, noise, novelties, limits);
     }
 
     public SimOptions withVocab(boolean value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, value, spaces, crlf, noise, novelties);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, value, spaces, crlf, noise, novelties, limits);
     }
 
     public SimOptions withSpaces(boolean value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, value, crlf, noise, novelties);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, value, crlf, noise, novelties, limits);
     }
 
     public SimOptions withCrlf(boolean value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, value, noise, novelties);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, value, noise, novelties, limits);
     }
 
     /**
@@ -89,11 +99,16 @@ public record SimOptions(double earlyWarning, boolean epoch, boolean rawLines, d
      * not monotone. The tree reacts to the noisy reading, as a real one would.
      */
     public SimOptions withNoise(double value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, value, novelties);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, value, novelties, limits);
     }
 
     /** The same options with these novelties (see {@link Novelties}). */
     public SimOptions withNovelties(Novelties value) {
-        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise, value);
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise, value, limits);
+    }
+
+    /** The same options with these property limits (see {@link PropertyLimits}). */
+    public SimOptions withLimits(PropertyLimits value) {
+        return new SimOptions(earlyWarning, epoch, rawLines, lateReplies, vocab, spaces, crlf, noise, novelties, value);
     }
 }

@@ -35,6 +35,19 @@ public record SimParameters(int attempt, double tickPeriod, double speed, double
                 chargingStation, goToEchoesDestination, startTime, tailTicks);
     }
 
+    /** The same run with ticks of the tree {@code seconds} apart (the sensor keeps its period). */
+    SimParameters withTickPeriod(double seconds) {
+        return new SimParameters(attempt, seconds, speed, drainRate, idleDrainRate, drainNoise, chargeRate, sensorPeriod,
+                startLevel, tolerance, kitchen, chargingStation, goToEchoesDestination, startTime, tailTicks);
+    }
+
+    /** The same run in a world with the tour location and the charging station elsewhere. */
+    SimParameters relaid(Point tourLocation, Point station) {
+        return new SimParameters(attempt, tickPeriod, speed, drainRate, idleDrainRate, drainNoise, chargeRate,
+                sensorPeriod, startLevel, tolerance, tourLocation, station, goToEchoesDestination, startTime,
+                tailTicks);
+    }
+
     /** A 2D position in metres. */
     public record Point(double x, double y) {
         public static final Point ORIGIN = new Point(0, 0);

@@ -5,7 +5,9 @@ import dev.predmon.simulate.BehaviorTree.Node;
 import dev.predmon.simulate.BehaviorTree.Status;
 import dev.predmon.simulate.SimParameters.Point;
 
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.SplittableRandom;
 
 /**
@@ -71,32 +73,60 @@ public final class Simulator {
                 p = p.slowed(slowdown, drainFactor);
             }
             BlockedPaths blocked = novelties.aborts() > 0 ? new BlockedPaths(novelties, novel.split()) : null;
-            List<SimEvent> events = simulate(scenario, p, options, startMicros, noise,
-                    new SplittableRandom(seed * 0x5DEECE66DL + attempt), blocked);
-            if (events == null) {
+            if (novelties.tickPeriod() != null) {
+                p = p.withTickPeriod(novelties.tickPeriod().draw(novel));
+            }
+            Mishaps m = Mishaps.draw(novelties, options.limits(), novel, blocked);
+            if (m.lateTurn() != null && scenario == Scenario.RECHARGE) {
+                p = m.lateTurn().relaidForRecharge(p, novel);
+                if (p == null) {
+                    continue;
+                }
+            }
+            Recorder recorded = simulate(scenario, p, options, startMicros, noise,
+                    new SplittableRandom(seed * 0x5DEECE66DL + attempt), m);
+            if (recorded == null) {
                 continue;
             }
+            List<SimEvent> events = recorded.events();
             RunFacts f = RunFacts.of(events, options.earlyWarning(), novelties.destination());
-            if (!f.tell(scenario, options.earlyWarning())) {
+            if (!f.tell(scenario, options.earlyWarning(), m.arrives(scenario), m.rechargeFloor(options.earlyWarning()))
+                    || !m.kept(scenario)) {
                 continue;
             }
             NoveltyTruth happened = null;
+            double t0 = startMicros / 1e6;
             if (novelties.any()) {
                 List<NoveltyTruth.Abort> aborts = blocked == null ? List.of()
-                        : NoveltyTruth.aborts(events, blocked.happened(), startMicros / 1e6);
+                        : NoveltyTruth.aborts(events, blocked.happened(), t0);
                 if (blocked != null && (aborts.size() != blocked.happened().size()
                         || aborts.size() != novelties.abortsIn(scenario))) {
                     continue;
                 }
                 happened = new NoveltyTruth(firstPrinted(events, novelties.noTicks()).time(), null,
-                        !novelties.noTicks(), novelties.destination(), slowdown, drainFactor, aborts);
+                        !novelties.noTicks(), novelties.destination(), slowdown, drainFactor, aborts,
+                        m.stuckForGood(t0), m.graspAttempts(), m.lateTurnTicks());
             }
             Truth truth = new Truth(scenario, scenario.faulty(), seed, p, f.violationTime(), f.violationLevel(),
-                    f.turnTime(), f.turnLevel(), f.stationLevel(), f.endTime(), f.timeline(), happened);
+                    f.turnTime(), f.turnLevel(), f.stationLevel(), f.endTime(), f.timeline(), happened,
+                    properties(recorded, seed, options));
             return new SimRun(scenario, seed, options, events, truth);
         }
         throw new IllegalStateException("no sample of " + MAX_ATTEMPTS + " tells the " + scenario.id()
                 + " story with early warning " + options.earlyWarning() + " (seed " + seed + ")");
+    }
+
+    /** Each property's verdict on the recorded run, at the lines of the log as {@code options} print it. */
+    private static Map<String, PropertyTruth> properties(Recorder recorded, long seed, SimOptions options) {
+        Map<String, PropertyJudge.Violation> first = PropertyJudge.judge(recorded.ledger(), options.limits());
+        long[] lines = LogWriter.headerLines(recorded.events(), seed, options);
+        Map<String, PropertyTruth> verdicts = new LinkedHashMap<>();
+        for (String id : PropertyJudge.IDS) {
+            PropertyJudge.Violation v = first.get(id);
+            verdicts.put(id, v == null ? PropertyTruth.HOLDS
+                    : new PropertyTruth(true, lines[v.event()], v.tick(), recorded.events().get(v.event()).time()));
+        }
+        return verdicts;
     }
 
     /** The first event a log prints: the first tick, or the first message when ticks are left out. */
@@ -157,10 +187,10 @@ public final class Simulator {
     }
 
     /** Cheap early rejection; {@link RunFacts#tell} remains the judge of a finished run. */
-    private static boolean storyBroken(Scenario scenario, Components c, double ew) {
+    private static boolean storyBroken(Scenario scenario, Components c, double rechargeFloor) {
         return switch (scenario) {
             case DIRECT -> c.goToStationCount() > 0;
-            case RECHARGE -> c.goToStationCount() > 1 || c.level() < RunFacts.rechargeMinLevel(ew);
+            case RECHARGE -> c.goToStationCount() > 1 || c.level() < rechargeFloor;
             case DEPLETED -> c.isAtLocation(Components.CHARGING_STATION);
         };
     }
@@ -170,16 +200,21 @@ public final class Simulator {
     }
 
     /**
-     * Ticks the tree until it succeeds or the robot stops on an empty battery; null past the time cap or as soon
-     * as the run can no longer tell the story (which keeps rejected samples cheap).
+     * Ticks the tree until it succeeds, the robot stops on an empty battery or the capture of a robot stuck for good
+     * stops; null past the time cap or as soon as the run can no longer tell the story (which keeps rejected samples
+     * cheap).
      */
-    private static List<SimEvent> simulate(Scenario scenario, SimParameters p, SimOptions options, long startMicros,
-                                           SplittableRandom noise, SplittableRandom sensor, BlockedPaths blocked) {
+    private static Recorder simulate(Scenario scenario, SimParameters p, SimOptions options, long startMicros,
+                                     SplittableRandom noise, SplittableRandom sensor, Mishaps m) {
         double ew = options.earlyWarning();
         String destination = options.novelties().destination();
-        Components c = new Components(p, noise.split(), options.noise(), sensor, destination, blocked);
-        Recorder r = new Recorder(noise.split());
-        Node root = BehaviorTree.build(c, r, ew, p.goToEchoesDestination(), destination);
+        Ledger ledger = new Ledger();
+        // The components split the noise stream first and the recorder second, as they always did.
+        Components c = new Components(p, noise.split(), options.noise(), sensor, destination, m.blocked(), m.lost(),
+                ledger);
+        Recorder r = new Recorder(noise.split(), ledger);
+        Node root = BehaviorTree.build(c, r, ew, p.goToEchoesDestination(), destination, m.lateTurn(), m.arm());
+        double floor = m.rechargeFloor(ew);
         int remaining = -1;
         for (int k = 0; k * p.tickPeriod() <= TIME_CAP; k++) {
             if (k > 0) {
@@ -187,12 +222,15 @@ public final class Simulator {
             }
             r.tick(startMicros + Math.round(k * p.tickPeriod() * 1e6), k);
             Status s = root.tick();
-            if (storyBroken(scenario, c, ew)) {
+            if (storyBroken(scenario, c, floor)) {
                 return null;
+            }
+            if (m.lost() != null && m.lost().captureOver()) {
+                return r;
             }
             if (remaining > 0) {
                 if (--remaining == 0) {
-                    return r.events();
+                    return r;
                 }
             } else if (s == Status.SUCCESS || c.stoppedEmpty()) {
                 remaining = p.tailTicks();
