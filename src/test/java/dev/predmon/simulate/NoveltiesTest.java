@@ -228,7 +228,8 @@ class NoveltiesTest {
 
     /**
      * The default logs and truths of seeds 1..4 and of a three-scenario day, digested: simulate wrote exactly these
-     * bytes before novelties existed, and must go on doing so.
+     * bytes before novelties existed, and must go on doing so. The truth's {@code properties}, its last field, came
+     * later: it is left out of the digest ({@link PropertyTruthTest} checks it).
      */
     @Test
     void withoutNoveltiesTheLogsAndTruthsAreByteForByteThoseOfBefore() throws Exception {
@@ -238,17 +239,24 @@ class NoveltiesTest {
             for (long seed = 1; seed <= 4; seed++) {
                 SimRun run = Simulator.run(s, seed, o);
                 sha.update(LogWriter.toText(run, o).getBytes(StandardCharsets.UTF_8));
-                sha.update((TruthWriter.toJson(run.truth()) + "\n").getBytes(StandardCharsets.UTF_8));
+                sha.update((withoutProperties(TruthWriter.toJson(run.truth())) + "\n").getBytes(StandardCharsets.UTF_8));
             }
         }
         List<SimRun> day = Day.simulate(List.of(Scenario.DIRECT, Scenario.DEPLETED, Scenario.RECHARGE), 3, 5, o);
         StringBuilder truths = new StringBuilder("[");
         for (SimRun run : day) {
             sha.update(LogWriter.toText(run, o).getBytes(StandardCharsets.UTF_8));
-            truths.append(truths.length() > 1 ? ",\n" : "\n").append(TruthWriter.toJson(run.truth()));
+            truths.append(truths.length() > 1 ? ",\n" : "\n").append(withoutProperties(TruthWriter.toJson(run.truth())));
         }
         sha.update(truths.append("\n]\n").toString().getBytes(StandardCharsets.UTF_8));
         assertEquals("8056aa8150846ec51d9fe3131af9fa38b6d9967f89a97d539f371e82030e3096",
                 HexFormat.of().formatHex(sha.digest()));
+    }
+
+    /** A truth's JSON without its last field, {@code properties}. */
+    private static String withoutProperties(String json) {
+        String cut = json.replaceFirst("(?s),\\s*\"properties\" : \\{.*}\\s*}$", "\n}");
+        assertFalse(cut.equals(json), "the truth ends with its properties");
+        return cut;
     }
 }
