@@ -40,9 +40,11 @@ import java.util.concurrent.Callable;
                 + "and write the YARP monitor log of a run of the chosen scenario.",
                 "Scenarios: direct (nominal), recharge (nominal, recharges on the way), depleted (faulty: "
                         + "the battery falls below 20%% before the charging station).",
-                "Novelties a real robot shows and default runs do not (blocked paths that abort, a slower robot, a "
-                        + "new place, several runs per log without Tick records) keep each run's scenario and are "
-                        + "told in the truth sidecar; docs/simulate.md describes them."})
+                "Novelties a real robot shows and default runs do not (blocked paths that abort, a navigation that "
+                        + "never arrives, a grasp that keeps failing, a late turn to the charger, a slower robot, "
+                        + "another tick rate, a new place, several runs per log without Tick records) keep each "
+                        + "run's scenario and are told in the truth sidecar, which also says which properties each "
+                        + "run violated and where; docs/simulate.md describes them."})
 public final class SimulateCommand implements Callable<Integer> {
 
     @Spec
@@ -165,8 +167,8 @@ public final class SimulateCommand implements Callable<Integer> {
             // No run of this scenario can tell its story with these options (an impossible --early-warning, or
             // novelties that leave a nominal run no way to stay nominal).
             String hint = options.novelties().changesRuns() ? ": with these novelties no run keeps the scenario's "
-                    + "outcome; fewer --aborts, a shorter --stuck or a smaller --slowdown or --drain-factor leave room"
-                    : "";
+                    + "outcome; fewer --aborts, a shorter --stuck or --late-turn or a smaller --slowdown or "
+                    + "--drain-factor leave room" : "";
             throw new ParameterException(spec.commandLine(), e.getMessage() + hint, e);
         }
         return ExitCodes.OK;
