@@ -32,9 +32,7 @@ final class BlockedPaths {
     private final List<Blockage> happened = new ArrayList<>();
     private int left;
     private String target;
-    /** Distance along the current navigation where the path is blocked; NaN when it is not. */
-    private double blockAt = Double.NaN;
-    private double travelled;
+    private final BlockPoint block = new BlockPoint();
     /** Seconds the robot still stays stuck; NaN while it is not stuck. */
     private double stuckLeft = Double.NaN;
     private double stuckFrom;
@@ -56,9 +54,8 @@ final class BlockedPaths {
         boolean retry = location.equals(aborted);
         aborted = null;
         target = location;
-        travelled = 0;
         stuckLeft = Double.NaN;
-        blockAt = left > 0 && mayBlock(location) ? length * random.nextDouble(0.1, 0.9) : Double.NaN;
+        block.start(left > 0 && mayBlock(location) ? length * random.nextDouble(0.1, 0.9) : Double.NaN);
         return retry;
     }
 
@@ -75,15 +72,12 @@ final class BlockedPaths {
      * the blocked point, where it becomes {@link #stuck()}.
      */
     double step(double step, double time) {
-        if (Double.isNaN(blockAt) || travelled + step < blockAt) {
-            travelled += step;
-            return step;
+        boolean stops = block.reaches(step);
+        double allowed = block.take(step);
+        if (stops) {
+            stuckLeft = novelties.stuck().draw(random);
+            stuckFrom = time;
         }
-        double allowed = blockAt - travelled;
-        travelled = blockAt;
-        blockAt = Double.NaN;
-        stuckLeft = novelties.stuck().draw(random);
-        stuckFrom = time;
         return allowed;
     }
 
@@ -112,7 +106,7 @@ final class BlockedPaths {
     /** The navigation stops for another reason (halt, empty battery): a pending blockage is forgotten. */
     void stop() {
         stuckLeft = Double.NaN;
-        blockAt = Double.NaN;
+        block.clear();
     }
 
     /** The aborts so far, in order. */

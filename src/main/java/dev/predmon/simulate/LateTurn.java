@@ -49,15 +49,11 @@ final class LateTurn {
         }
         double heading = Math.atan2(p.kitchen().y(), p.kitchen().x());
         double toLate = (p.startLevel() - lateLevel) / perMetre;
-        Point turn = polar(Point.ORIGIN, toLate, heading);
-        Point kitchen = polar(Point.ORIGIN, toLate + r.nextDouble(0.03, 0.5) * 100.0 / perMetre, heading);
+        Point turn = Simulator.polar(Point.ORIGIN, toLate, heading);
+        Point kitchen = Simulator.polar(Point.ORIGIN, toLate + r.nextDouble(0.03, 0.5) * 100.0 / perMetre, heading);
         double arrival = r.nextDouble(lowest, lateLevel - 1.0);
-        Point station = polar(turn, (lateLevel - arrival) / perMetre, heading + r.nextDouble(-Math.PI, Math.PI));
+        Point station = Simulator.polar(turn, (lateLevel - arrival) / perMetre, heading + r.nextDouble(-Math.PI, Math.PI));
         return p.relaid(kitchen, station);
-    }
-
-    private static Point polar(Point from, double distance, double angle) {
-        return new Point(from.x() + distance * Math.cos(angle), from.y() + distance * Math.sin(angle));
     }
 
     /** Ticks the tree waits after the first reading below the charger level. */

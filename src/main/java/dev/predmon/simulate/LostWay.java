@@ -13,8 +13,7 @@ final class LostWay {
     private final String destination;
     private final int ticks;
     private final SplittableRandom random;
-    private double blockAt = Double.NaN;
-    private double travelled;
+    private final BlockPoint block = new BlockPoint();
     private int stuckTicks = -1;
     private double stuckFrom = Double.NaN;
 
@@ -27,22 +26,16 @@ final class LostWay {
 
     /** A navigation towards {@code location}, {@code length} metres away, begins. */
     void start(String location, double length) {
-        travelled = 0;
-        blockAt = !stuck() && location.equals(destination) ? length * random.nextDouble(0.1, 0.9) : Double.NaN;
+        block.start(!stuck() && location.equals(destination) ? length * random.nextDouble(0.1, 0.9) : Double.NaN);
     }
 
     /** How far the robot gets of a {@code step} at simulated time {@code time}: up to the blocked point. */
     double step(double step, double time) {
-        if (Double.isNaN(blockAt) || travelled + step < blockAt) {
-            travelled += step;
-            return step;
+        if (block.reaches(step)) {
+            stuckTicks = 0;
+            stuckFrom = time;
         }
-        double allowed = blockAt - travelled;
-        travelled = blockAt;
-        blockAt = Double.NaN;
-        stuckTicks = 0;
-        stuckFrom = time;
-        return allowed;
+        return block.take(step);
     }
 
     /** Whether the robot waits at the blocked point. */
@@ -67,7 +60,7 @@ final class LostWay {
 
     /** The navigation is halted: the robot no longer heads for the blocked point, or waits at it. */
     void stop() {
-        blockAt = Double.NaN;
+        block.clear();
         stuckTicks = -1;
     }
 }

@@ -195,7 +195,8 @@ public final class Simulator {
         };
     }
 
-    private static Point polar(Point from, double distance, double angle) {
+    /** The point {@code distance} metres from {@code from} in the direction {@code angle} (radians). */
+    static Point polar(Point from, double distance, double angle) {
         return new Point(from.x() + distance * Math.cos(angle), from.y() + distance * Math.sin(angle));
     }
 
