@@ -37,14 +37,17 @@ final class LateTurn {
     /**
      * The world of a {@code recharge} run laid out again for this late turn: the tour location further away on the
      * same heading, and the charging station within reach of where the robot turns late, so that it still arrives
-     * above the safety bound. Null when a turn this late leaves no room: the level at the turn would be too low.
+     * above the safety bound. Null when a turn this late leaves no room: the level at the turn would be too low, or
+     * the way to it would take the robot more than 80% of the navigation deadline {@code navigationTicks} (a late
+     * turn is to break the destination rule, not the navigation's deadline as well).
      */
-    SimParameters relaidForRecharge(SimParameters p, SplittableRandom r) {
+    SimParameters relaidForRecharge(SimParameters p, int navigationTicks, SplittableRandom r) {
         double perMetre = p.drainRate() / p.speed();
         double lateLevel = chargerLevel - (delay + 1) * p.tickPeriod() * p.drainRate()
                 - p.sensorPeriod() * p.drainRate();
         double lowest = RunFacts.SAFETY_BOUND + 2.0;
-        if (lateLevel - 1.0 <= lowest || lateLevel >= p.startLevel()) {
+        double ticksToTurn = (p.startLevel() - lateLevel) / p.drainRate() / p.tickPeriod();
+        if (lateLevel - 1.0 <= lowest || lateLevel >= p.startLevel() || ticksToTurn > 0.8 * navigationTicks) {
             return null;
         }
         double heading = Math.atan2(p.kitchen().y(), p.kitchen().x());

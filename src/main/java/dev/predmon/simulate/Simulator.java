@@ -78,7 +78,7 @@ public final class Simulator {
             }
             Mishaps m = Mishaps.draw(novelties, options.limits(), novel, blocked);
             if (m.lateTurn() != null && scenario == Scenario.RECHARGE) {
-                p = m.lateTurn().relaidForRecharge(p, novel);
+                p = m.lateTurn().relaidForRecharge(p, options.limits().navigationTicks(), novel);
                 if (p == null) {
                     continue;
                 }
