@@ -140,6 +140,9 @@ class NoveltyViolationsTest {
                 assertEquals(run.truth().novelties().lateTurnTicks(), late, id);
                 assertTrue(late >= 15 && late <= 30, id + ": " + late);
                 assertEquals(s.faulty(), verdict(run, PropertyJudge.BATTERY).violated(), id + ": the scenario stays");
+                if (!s.faulty()) {
+                    assertFalse(verdict(run, PropertyJudge.NAVIGATION_IN_TIME).violated(), id + ": only the turn is late");
+                }
             }
         }
     }
