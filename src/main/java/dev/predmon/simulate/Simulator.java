@@ -31,6 +31,9 @@ import java.util.SplittableRandom;
  * the same as before they existed. A slowdown or drain factor is applied after the geometry was placed (the world
  * stays, the robot changes), and a sample whose novelty breaks the story, or whose aborts the tree never saw, is
  * rejected like any other: every run keeps its scenario's outcome, and the truth says what the novelties did.
+ *
+ * <p>The tree and the components note what they do in a {@link Ledger}; {@link PropertyJudge} judges the truth's
+ * properties from it, at the lines of the log as the run's options print it.
  */
 public final class Simulator {
 
