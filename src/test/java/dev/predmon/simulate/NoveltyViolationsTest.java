@@ -71,6 +71,14 @@ class NoveltyViolationsTest {
                 assertFalse(verdict(run, PropertyJudge.CHARGER_IN_TIME).violated(), id);
             }
         }
+        // Without Tick records the deadline's line is that of the first message of its tick.
+        SimOptions noTicks = with(o.novelties().withNoTicks(true));
+        SimRun quiet = Simulator.run(Scenario.DIRECT, 2, noTicks);
+        PropertyTruth v = verdict(quiet, PropertyJudge.NAVIGATION_IN_TIME);
+        ReadBack log = ReadBack.write(dir.resolve("quiet.log"), noTicks, quiet);
+        LogRecord first = log.at(v.line());
+        assertTrue(first.time() > v.time() && first.time() - v.time() < 0.01, first + " right after " + v.time());
+        assertTrue(log.before(v.line()).stream().allMatch(r -> r.time() < v.time()));
         // A depleted run never reaches its way to the tour location's end: it runs out of battery as always.
         SimRun depleted = Simulator.run(Scenario.DEPLETED, 1, o);
         assertTrue(depleted.truth().faulty() && verdict(depleted, PropertyJudge.BATTERY).violated());
