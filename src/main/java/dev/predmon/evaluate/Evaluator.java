@@ -186,7 +186,7 @@ public final class Evaluator {
             learnedSpecs.add(s);
         }
         ForecastModel forecast = ForecastTraining.train(learnedSpecs, traces, LearnedModels.machines(learned), alphabet,
-                ForecastTraining.limit(tuned), confirm);
+                ForecastTraining.limit(tuned), ForecastTraining.property(tuned), confirm);
         return LearnedModels.modelSet(learned, tuned, forecast);
     }
 

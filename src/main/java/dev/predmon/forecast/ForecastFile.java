@@ -58,6 +58,7 @@ public final class ForecastFile {
             c.put("intercept", m.calibration().intercept());
             c.put("runs", m.calibration().runs());
         }
+        writeScorecards(root, m.scorecards());
         ArrayNode starts = root.putArray("startInputs");
         m.startInputs().forEach(starts::add);
         lows(root, m.lows());
@@ -203,7 +204,58 @@ public final class ForecastFile {
         return new ForecastModel(format, required(root, "unit").asText(), number(root, "limit"),
                 runs, violating, lows(root), threshold,
                 required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
-                starts, calibration);
+                starts, calibration, readScorecards(root));
+    }
+
+    /** The optional {@code scorecards} list: one object per property, written only when there is one. */
+    private static void writeScorecards(ObjectNode root, List<Scorecard> cards) {
+        if (cards.isEmpty()) {
+            return;
+        }
+        ArrayNode a = root.putArray("scorecards");
+        for (Scorecard c : cards) {
+            ObjectNode n = a.addObject();
+            n.put("property", c.property());
+            n.put("folds", c.folds());
+            n.put("runs", c.runs());
+            n.put("violating", c.violating());
+            n.put("warned", c.warned());
+            n.put("falseAlarms", c.falseAlarms());
+            number(n, "medianLead", c.medianLead());
+            n.put("unit", c.unit());
+            number(n, "brier", c.brier());
+            number(n, "baseBrier", c.baseBrier());
+        }
+    }
+
+    private static List<Scorecard> readScorecards(JsonNode root) {
+        JsonNode a = root.get("scorecards");
+        if (a == null) {
+            return List.of();
+        }
+        if (!a.isArray()) {
+            throw new IllegalArgumentException("'scorecards': expected an array");
+        }
+        List<Scorecard> cards = new ArrayList<>();
+        for (JsonNode n : a) {
+            if (!n.isObject()) {
+                throw new IllegalArgumentException("'scorecards': expected an array of objects");
+            }
+            Scorecard c = new Scorecard(required(n, "property").asText(), integer(n, "folds"), integer(n, "runs"),
+                    integer(n, "violating"), integer(n, "warned"), integer(n, "falseAlarms"), number(n, "medianLead"),
+                    required(n, "unit").asText(), number(n, "brier"), number(n, "baseBrier"));
+            if (c.runs() < 0 || c.violating() < 0 || c.violating() > c.runs() || c.warned() < 0
+                    || c.warned() > c.violating() || c.falseAlarms() < 0 || c.falseAlarms() > c.held()) {
+                throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected 0 <= warned <= "
+                        + "violating <= runs and 0 <= falseAlarms <= runs - violating");
+            }
+            if (!(c.brier() >= 0 && c.brier() <= 1) || !(c.baseBrier() >= 0 && c.baseBrier() <= 1)) {
+                throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected Brier scores "
+                        + "between 0 and 1");
+            }
+            cards.add(c);
+        }
+        return cards;
     }
 
     private static void lows(ObjectNode n, Lows lows) {

@@ -23,11 +23,12 @@ import java.util.Map;
  * @param calibration the map from the per-state tables' estimate to the probability reported, fitted on the same
  *                    held-out runs as the threshold ({@link Calibration#IDENTITY} when none was fitted); the
  *                    threshold is on the calibrated scale
+ * @param scorecards  how well the forecast did in that cross-validation, per property (empty when it did not run)
  */
 public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
                             double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
-                            Calibration calibration) {
+                            Calibration calibration, List<Scorecard> scorecards) {
 
     /** Current format. */
     public static final int FORMAT = 1;
@@ -39,6 +40,15 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         lows = lows.smoothed(PRIOR_RUNS, baseRate(runs, violating));
         states = Map.copyOf(states);
         startInputs = List.copyOf(startInputs);
+        scorecards = List.copyOf(scorecards);
+    }
+
+    /** A model without a scorecard. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold,
+                         String thresholdNote, boolean validated, Map<String, Map<Integer, StateStats>> states,
+                         List<String> startInputs, Calibration calibration) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, List.of());
     }
 
     /** A model whose probabilities are reported as the tables estimate them. */
@@ -101,13 +111,19 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs, calibration);
+                startInputs, calibration, scorecards);
     }
 
     /** This model with another calibration (the threshold is left as it is). */
     public ForecastModel withCalibration(Calibration c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, c);
+                states, startInputs, c, scorecards);
+    }
+
+    /** This model with {@code cards} as its scorecards. */
+    public ForecastModel withScorecards(List<Scorecard> cards) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, cards);
     }
 
     @Override
@@ -116,7 +132,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && Double.compare(limit, m.limit) == 0 && runs == m.runs && violating == m.violating
                 && lows.equals(m.lows)
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
-                && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration);
+                && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration)
+                && scorecards.equals(m.scorecards);
     }
 
     @Override

@@ -64,7 +64,8 @@ public final class Learning {
             learned.add(l);
         }
         ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
-                MealyAlphabet.inputs(abstraction), ForecastTraining.limit(tuned), tuned.confirm());
+                MealyAlphabet.inputs(abstraction), ForecastTraining.limit(tuned), ForecastTraining.property(tuned),
+                tuned.confirm());
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
                 LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(), forecast, step);
         return new Result(List.copyOf(learned), notes, forecast);

@@ -1,0 +1,76 @@
+package dev.predmon.forecast;
+
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * How good the forecast of one property was on runs the judging models did not see: the cross-validation that
+ * chooses the warning threshold, with every held-out run forecast by the machines and statistics learned without it,
+ * then judged by the forecast rule with a calibration and a threshold chosen from the other folds' runs. Stored with
+ * the models ({@code forecast.json}), so that whoever watches with them can tell how far to trust them.
+ *
+ * @param property    the property's name, as the abstraction gives it
+ * @param folds       folds of the cross-validation
+ * @param runs        held-out runs judged
+ * @param violating   of them, the runs that violated the property
+ * @param warned      violating runs warned before their violation
+ * @param falseAlarms runs that held but were warned
+ * @param medianLead  the median time from the warning to the violation over the warned runs, in {@code unit}; NaN
+ *                    when no run was warned
+ * @param unit        what the times count: {@code s} or {@code ticks}
+ * @param brier       the Brier score of the calibrated forecast (each run weighs the same, its forecasts sharing one
+ *                    unit of weight; 0 is perfect)
+ * @param baseBrier   the same for always saying the training runs' share of violations
+ */
+public record Scorecard(String property, int folds, int runs, int violating, int warned, int falseAlarms,
+                        double medianLead, String unit, double brier, double baseBrier) {
+
+    /** The runs that held. */
+    public int held() {
+        return runs - violating;
+    }
+
+    /** Whether the forecast scores better than the base rate: it knows more than how often runs violate. */
+    public boolean skill() {
+        return brier < baseBrier;
+    }
+
+    /** The median of {@code leads} (NaN when empty). */
+    public static double median(List<Double> leads) {
+        if (leads.isEmpty()) {
+            return Double.NaN;
+        }
+        double[] sorted = leads.stream().mapToDouble(Double::doubleValue).sorted().toArray();
+        int mid = sorted.length / 2;
+        return sorted.length % 2 == 1 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+    }
+
+    /** The scorecard in two lines, as {@code learn} and {@code watch} print it. */
+    public List<String> lines() {
+        String first = String.format(Locale.ROOT, "scorecard of '%s' (%d-fold cross-validation on %d runs): warned "
+                + "%d of %d violations, %d false alarm(s) in %d safe runs, %s", property, folds, runs, warned,
+                violating, falseAlarms, held(), leadWords());
+        String second = String.format(Locale.ROOT, "  Brier score %.3f vs %.3f for the base rate: %s", brier,
+                baseBrier, skill() ? "the forecast knows more than how often runs violate"
+                        : "the forecast has no skill on these models (it does no better than the base rate)");
+        return List.of(first, second);
+    }
+
+    /**
+     * One sentence for the live page: "these models warned 2 of 11 violations in cross-validation, 1 false alarm in
+     * 32 safe runs; Brier 0.193 vs base rate 0.191".
+     */
+    public String summary() {
+        return String.format(Locale.ROOT, "these models warned %d of %d violations in cross-validation, %d false "
+                + "alarm(s) in %d safe runs; Brier %.3f vs base rate %.3f", warned, violating, falseAlarms, held(),
+                brier, baseBrier);
+    }
+
+    private String leadWords() {
+        if (Double.isNaN(medianLead)) {
+            return "no lead";
+        }
+        return "ticks".equals(unit) ? String.format(Locale.ROOT, "median lead %.0f ticks", medianLead)
+                : String.format(Locale.ROOT, "median lead %.1f s", medianLead);
+    }
+}
