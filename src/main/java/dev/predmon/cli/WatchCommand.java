@@ -116,6 +116,9 @@ final class WatchCommand implements Callable<Integer> {
         if (set.forecast() == null) {
             err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " was learned without a forecast; warnings follow the match "
                     + "rule. Run 'predmon learn' again to add it");
+        } else {
+            // How far to trust the models, once, before anything they say.
+            set.forecast().scorecards().forEach(c -> c.lines().forEach(l -> err.println("predmon: " + l)));
         }
         Board board = liveView.board(set, abstraction, several, sources.described());
         try (LiveServer server = liveView.start(err, board);

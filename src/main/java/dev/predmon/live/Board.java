@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.forecast.Scorecard;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
@@ -30,6 +31,7 @@ public final class Board {
 
     private final List<LearnedModel> models;
     private final Optional<SafetyRule> safety;
+    private final List<Scorecard> scorecards;
     private final long staleMillis;
     private final LongSupplier clock;
     private final RobotNames names;
@@ -40,7 +42,8 @@ public final class Board {
 
     /** @param staleAfter a log that has not grown for this long is marked STALE (or its run ended, see Tile) */
     public Board(ModelSet models, Abstraction abstraction, Duration staleAfter, RobotNames names) {
-        this(models.models(), abstraction.safety(), staleAfter, System::currentTimeMillis, names);
+        this(models.models(), abstraction.safety(), staleAfter, System::currentTimeMillis, names,
+                models.forecast() == null ? List.of() : models.forecast().scorecards());
     }
 
     Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock) {
@@ -49,8 +52,14 @@ public final class Board {
 
     Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock,
           RobotNames names) {
+        this(models, safety, staleAfter, clock, names, List.of());
+    }
+
+    Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock,
+          RobotNames names, List<Scorecard> scorecards) {
         this.models = List.copyOf(models);
         this.safety = safety;
+        this.scorecards = List.copyOf(scorecards);
         this.staleMillis = staleAfter.toMillis();
         this.clock = clock;
         this.names = names;
@@ -87,8 +96,10 @@ public final class Board {
     }
 
     /**
-     * {@code /status}: {@code {"staleAfter": seconds, "watching": [...], "logs": [tile, ...]}}, every tile worst
-     * first, or only {@code log}'s ({@code "logs"} is then empty for a log not watched).
+     * {@code /status}: {@code {"staleAfter": seconds, "watching": [...], "scorecards": [...], "logs": [tile, ...]}},
+     * every tile worst first, or only {@code log}'s ({@code "logs"} is then empty for a log not watched). The
+     * scorecards are the models' own ({@link Scorecard}), one per property, each with its {@code summary} in words and
+     * whether the forecast has {@code skill}.
      */
     public ObjectNode status(String log) {
         List<Tile> all;
@@ -108,6 +119,22 @@ public final class Board {
         o.put("staleAfter", staleMillis / 1000.0);
         ArrayNode w = o.putArray("watching");
         watching.forEach(w::add);
+        ArrayNode cards = o.putArray("scorecards");
+        for (Scorecard c : scorecards) {
+            ObjectNode n = cards.addObject();
+            n.put("property", c.property());
+            n.put("folds", c.folds());
+            n.put("runs", c.runs());
+            n.put("violating", c.violating());
+            n.put("warned", c.warned());
+            n.put("falseAlarms", c.falseAlarms());
+            TileJson.number(n, "medianLead", c.medianLead());
+            n.put("unit", c.unit());
+            TileJson.number(n, "brier", c.brier());
+            TileJson.number(n, "baseBrier", c.baseBrier());
+            n.put("skill", c.skill());
+            n.put("summary", c.summary());
+        }
         ArrayNode logs = o.putArray("logs");
         snapshots.forEach(logs::add);
         return o;

@@ -12,6 +12,7 @@ const nodes = new Map(); // log -> its element on the page
 const open = new Map(); // a tile section ('models') -> whether it is open, for every tile alike
 let view = new URLSearchParams(location.search).get('view') === 'compact' ? 'compact' : 'tiles';
 let watching = [];
+let scorecards = []; // the models' own, from /status: one per property
 const pending = new Set();
 let flushTimer = null;
 
@@ -45,6 +46,8 @@ const ui = {
     show();
   },
   isOpen: (key) => open.get(key) === true,
+  // Where the models' forecast did no better than the base rate in cross-validation, its probability is no headline.
+  noSkill: (t) => scorecards.some(c => c.property === t.property && !c.skill),
   setOpen: (key, isOpen) => open.set(key, isOpen),
 };
 
@@ -194,9 +197,21 @@ document.getElementById('view').addEventListener('click', () => setView(view ===
 let requests = 0;
 const answered = new Map(); // log -> the number of the request whose answer it shows
 
+/** The models' scorecards, in one line under the header. */
+function showScorecards() {
+  const p = document.getElementById('scorecard');
+  p.hidden = scorecards.length === 0;
+  p.dataset.skill = String(scorecards.every(c => c.skill));
+  p.replaceChildren(...scorecards.flatMap((c, i) => [i > 0 ? ' \u00b7 ' : '',
+    el('b', null, (scorecards.length > 1 ? c.property + ': ' : '') + c.summary),
+    c.skill ? '' : ' \u2014 the forecast has no skill on these models']));
+}
+
 function apply(s, full, request) {
   document.getElementById('stale-after').textContent = s.staleAfter + ' s';
   watching = s.watching || [];
+  scorecards = s.scorecards || [];
+  showScorecards();
   const seen = new Set();
   for (const t of s.logs) {
     seen.add(t.log);

@@ -65,11 +65,18 @@ function actionLine(t) {
   return p;
 }
 
-function forecastLine(t) {
+function forecastLine(t, ui) {
   const f = t.forecast;
   if (!f || t.state === 'ended' || t.state === 'violation') return null;
   const p = el('div', 'forecast');
   p.title = f.explanation || '';
+  if (ui.noSkill(t)) {
+    // no headline: the number would look like knowledge the models showed they lack
+    p.append(el('span', 'noskill', 'the forecast has no skill on these models'),
+      el('small', 'basis', 'it did no better than the base rate in cross-validation; it says '
+        + chance(f.probability) + ', ' + whenWords(f)));
+    return p;
+  }
   p.append(el('span', 'chance', chance(f.probability)), el('span', 'when', ' chance of a violation, ' + whenWords(f)),
     el('small', 'basis', basisWords(f)));
   return p;
@@ -112,7 +119,7 @@ export function renderTile(tile, t, ui) {
       + pct(t.violation.battery, t.threshold);
   }
   const parts = [head, status];
-  for (const p of [actionLine(t), forecastLine(t), whyLine(t)]) if (p) parts.push(p);
+  for (const p of [actionLine(t), forecastLine(t, ui), whyLine(t)]) if (p) parts.push(p);
   parts.push(lead);
   if (t.history.length > 0) {
     const h = el('p', 'history');
@@ -156,8 +163,8 @@ export function renderTile(tile, t, ui) {
 }
 
 /** The second line of a compact row: the state and what matters most about it. */
-function rowWords(t) {
-  const f = t.forecast;
+function rowWords(t, ui) {
+  const f = ui.noSkill(t) ? null : t.forecast; // a forecast without skill is no headline here either
   const state = STATE_WORDS[t.state] || t.state;
   switch (t.state) {
     case 'violation':
@@ -182,7 +189,7 @@ export function renderRow(row, t, ui) {
   name.title = t.log;
   const line1 = el('div', 'line1');
   line1.append(name, ...badges(t, true), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
-  const line2 = el('div', 'line2', rowWords(t));
+  const line2 = el('div', 'line2', rowWords(t, ui));
   line2.title = verdict(t) + (forecastWords(t.forecast) ? '\n' + forecastWords(t.forecast) : '');
   const text = el('div', 'text');
   text.append(line1, line2);
