@@ -116,9 +116,6 @@ final class WatchCommand implements Callable<Integer> {
         if (set.forecast() == null) {
             err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " was learned without a forecast; warnings follow the match "
                     + "rule. Run 'predmon learn' again to add it");
-        } else {
-            // How far to trust the models, once, before anything they say.
-            set.forecast().scorecards().forEach(c -> c.lines().forEach(l -> err.println("predmon: " + l)));
         }
         Board board = liveView.board(set, abstraction, several, sources.described());
         try (LiveServer server = liveView.start(err, board);
@@ -126,6 +123,10 @@ final class WatchCommand implements Callable<Integer> {
                      noFollow, hookOptions.open(err), board, abstraction, p -> !sources.named(p));
              Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), warnBy,
                      outputs)) {
+            if (set.forecast() != null) {
+                // How far to trust the models, once, before anything they say (and after what can refuse to start).
+                set.forecast().scorecards().forEach(c -> c.lines().forEach(l -> err.println("predmon: " + l)));
+            }
             sources.find().forEach(fleet::add);
             String stop = "end-of-file";
             if (noFollow) {

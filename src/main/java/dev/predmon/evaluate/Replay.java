@@ -60,20 +60,32 @@ public final class Replay {
         int[] problems = {0};
         PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, rule, events::add);
         Map<Integer, List<Double>> probabilities = new HashMap<>();
+        Map<Integer, List<Double>> times = new HashMap<>();
         Set<Integer> violated = new HashSet<>();
+        // Forecasts are made while the monitor takes a record: each gets that record's time once it is taken.
+        List<List<Double>> untimed = new ArrayList<>();
+        double[] lastTime = {0};
         monitor.onEveryForecast((f, run) -> {
             trail.forecast(run, monitor.pairs(), f);
             if (!violated.contains(run) && f.basis() != Forecast.Basis.VIOLATED) {
                 probabilities.computeIfAbsent(run, r -> new ArrayList<>()).add(f.probability());
+                List<Double> ts = times.computeIfAbsent(run, r -> new ArrayList<>());
+                ts.add(Double.NaN);
+                untimed.add(ts);
             } else {
                 violated.add(run);
             }
         });
         Approach approach = new Approach(abstraction.safety().orElse(null), monitor,
                 models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
-        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> problems[0]++, approach::record)) {
+        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> problems[0]++, r -> {
+            lastTime[0] = r.time();
+            timed(untimed, r.time());
+            approach.record(r);
+        })) {
             watcher.drain();
         }
+        timed(untimed, lastTime[0]); // what the end of the input flushed
         List<RunOutcome> runs = monitor.runs();
         List<RunResult> results = new ArrayList<>();
         for (RunOutcome o : runs) {
@@ -108,9 +120,20 @@ public final class Replay {
                     models.forecast() == null ? null : new RunResult.ForecastTrace(
                             List.copyOf(probabilities.getOrDefault(o.run(), List.of())), o.forecast(),
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
-                            models.forecast().threshold(), approach.belowFloor(o.run()))));
+                            models.forecast().threshold(), approach.belowFloor(o.run()),
+                            times.getOrDefault(o.run(), List.of()))));
         }
         return results;
+    }
+
+    /** Gives the forecasts that wait for their time {@code time}. */
+    private static void timed(List<List<Double>> untimed, double time) {
+        for (List<Double> ts : untimed) {
+            for (int i = ts.size() - 1; i >= 0 && Double.isNaN(ts.get(i)); i--) {
+                ts.set(i, time);
+            }
+        }
+        untimed.clear();
     }
 
     /**

@@ -69,14 +69,31 @@ public record RunResult(String scenario, boolean faulty, String log, int fold, V
      *                      lowest value a safe training run read that began a stretch below it lasting to the
      *                      violation, or in a run that held the first such reading; null when none, or when the
      *                      training runs had no safe run with a reading
+     * @param times         the log time at which each of {@code probabilities} was made (the time of the record that
+     *                      made it), same length; empty where not known
      */
     public record ForecastTrace(List<Double> probabilities, Forecast last, Forecast atWarning, double baseRate,
-                                double threshold, Double valueRule) {
+                                double threshold, Double valueRule, List<Double> times) {
 
-        /** A trace without the baseline's time. */
+        public ForecastTrace {
+            probabilities = List.copyOf(probabilities);
+            times = List.copyOf(times);
+            if (!times.isEmpty() && times.size() != probabilities.size()) {
+                throw new IllegalArgumentException(times.size() + " times for " + probabilities.size()
+                        + " probabilities");
+            }
+        }
+
+        /** A trace without the times of its forecasts. */
+        public ForecastTrace(List<Double> probabilities, Forecast last, Forecast atWarning, double baseRate,
+                             double threshold, Double valueRule) {
+            this(probabilities, last, atWarning, baseRate, threshold, valueRule, List.of());
+        }
+
+        /** A trace without the baseline's time and without the times of its forecasts. */
         public ForecastTrace(List<Double> probabilities, Forecast last, Forecast atWarning, double baseRate,
                              double threshold) {
-            this(probabilities, last, atWarning, baseRate, threshold, null);
+            this(probabilities, last, atWarning, baseRate, threshold, null, List.of());
         }
 
         /** The highest probability before the violation, 0 without a pair. */

@@ -16,6 +16,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 
@@ -59,7 +60,7 @@ public final class HtmlReport {
     /** The report's text. */
     public static String html(Evaluation e, Abstraction abstraction) throws IOException {
         List<RunView> runs = new ArrayList<>();
-        for (RunResult r : e.runs()) {
+        for (RunResult r : firstWhatWentWrong(e.runs())) {
             runs.add(RunView.of(runs.size() + 1, r));
         }
         SafetyRule rule = abstraction.safety().orElse(null);
@@ -87,13 +88,32 @@ public final class HtmlReport {
         for (String n : e.notes()) {
             h.append("<p>Note: ").append(Svg.esc(n)).append("</p>\n");
         }
-        h.append("<h2 id=runs>Runs</h2>\n");
+        h.append("<h2 id=runs>Runs</h2>\n<p>Violations missed first, then false alarms, then runs no model "
+                + "matched, then the rest.</p>\n");
         RunTable.html(h, runs, plotted);
         leads(h, e);
         plots(h, runs, plotted, abstraction, rule);
         ModelSection.html(h, e);
         h.append("</body></html>\n");
         return h.toString();
+    }
+
+    /**
+     * The runs in the order a reader looks for them: the violations missed (late warnings included), then the false
+     * alarms, then the runs no model matched, then the rest; each group in the evaluation's order.
+     */
+    static List<RunResult> firstWhatWentWrong(List<RunResult> runs) {
+        List<RunResult> sorted = new ArrayList<>(runs);
+        sorted.sort(Comparator.comparingInt(HtmlReport::rank)); // stable: each group keeps its order
+        return sorted;
+    }
+
+    private static int rank(RunResult r) {
+        return switch (r.verdict()) {
+            case MISSED, WARNED_LATE -> 0;
+            case FALSE_ALARM -> 1;
+            default -> r.noMatch() && !r.verdict().warned() ? 2 : 3;
+        };
     }
 
     private static void summary(StringBuilder h, Evaluation e) {
@@ -158,7 +178,9 @@ public final class HtmlReport {
         h.append("<p>").append(Svg.esc(rule.name())).append(": the watched value over time from the start of the run; "
                 + "orange dashed line: the warning; red line: the violation; shaded between them: the lead; brown "
                 + "dotted line: from there no model matched; grey dashed: the bound ").append(fmt(rule.below()))
-                .append(". The number before each plot leads back to its row in the table.</p>\n<div class=plots>\n");
+                .append("; purple, on the scale at the right: the forecast's probability of a violation as the run "
+                        + "went, and dotted across, the threshold at which it warns. The number before each plot leads "
+                        + "back to its row in the table.</p>\n<div class=plots>\n");
         for (RunView v : runs.subList(0, plotted)) {
             Timeline t = Timeline.ofRun(v.result().log(), abstraction, rule, MAX_POINTS);
             RunResult r = v.result();

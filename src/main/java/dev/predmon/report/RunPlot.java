@@ -11,7 +11,9 @@ import java.util.TreeSet;
 /**
  * One run's watched value (the battery level) over time from the start of the run, as a small SVG: the bound
  * dashed, the warning (dashed), the violation (solid) and the point where no model matched any more (dotted) as
- * vertical lines, the lead between warning and violation shaded.
+ * vertical lines, the lead between warning and violation shaded. Where the run has a forecast, its probability of a
+ * violation over the same time, as a step line on a scale of its own on the right (0 to 1), with the warning
+ * threshold dotted across.
  *
  * <p>Each line's label has a row of its own above the plot, so that no two labels overlap however close their
  * lines, and is written on the side of its line that has room. The curve is thinned to what the plot can show:
@@ -24,6 +26,8 @@ final class RunPlot {
     static final int WIDTH = 560;
     static final int HEIGHT = 254;
     private static final int RIGHT = 14;
+    /** Room right of the plot for the probability's scale, when there is one. */
+    private static final int RIGHT_WITH_P = 44;
     private static final int TOP = 46;
     private static final double ROW = 13;
     private static final double TOLERANCE = 0.5;
@@ -49,24 +53,35 @@ final class RunPlot {
         for (Double m : new Double[] {warning, violation, noMatch}) {
             end = m == null ? end : Math.max(end, m);
         }
+        RunResult.ForecastTrace f = r.forecast();
+        boolean p = f != null && !f.times().isEmpty();
+        int right = p ? RIGHT_WITH_P : RIGHT;
+        if (p) {
+            for (double time : f.times()) {
+                end = Math.max(end, time - start);
+            }
+        }
         boolean ticks = t.clock() == Clock.TICKS;
-        Axis x = Axis.covering(0, end, 10, ticks, Axis.LEFT, WIDTH - RIGHT);
+        Axis x = Axis.covering(0, end, 10, ticks, Axis.LEFT, WIDTH - right);
         Axis y = Axis.covering(min, max, 5, false, HEIGHT - Axis.BOTTOM, TOP);
         StringBuilder s = new StringBuilder(4096);
         s.append("<svg class=\"plot\" width=\"").append(WIDTH).append("\" height=\"").append(HEIGHT)
                 .append("\" viewBox=\"0 0 ").append(WIDTH).append(' ').append(HEIGHT).append("\">");
-        grid(s, x, y);
+        grid(s, x, y, right);
         if (warning != null && violation != null && warning < violation) {
             s.append("<rect class=\"lead\" x=\"").append(Svg.num(x.px(warning))).append("\" y=\"").append(TOP)
                     .append("\" width=\"").append(Svg.num(x.px(violation) - x.px(warning))).append("\" height=\"")
                     .append(HEIGHT - TOP - Axis.BOTTOM).append("\"/>");
         }
         s.append("<path class=\"bound\" d=\"M").append(Axis.LEFT).append(' ').append(Svg.num(y.px(rule.below())))
-                .append('H').append(WIDTH - RIGHT).append("\"/>");
+                .append('H').append(WIDTH - right).append("\"/>");
+        if (p) {
+            probability(s, f, start, x);
+        }
         if (t.times().length > 0) {
             s.append("<path class=\"val\" d=\"").append(path(t, start, x, y)).append("\"/>");
         } else {
-            s.append(Svg.text("empty", (Axis.LEFT + WIDTH - RIGHT) / 2.0, (TOP + HEIGHT - Axis.BOTTOM) / 2.0,
+            s.append(Svg.text("empty", (Axis.LEFT + WIDTH - right) / 2.0, (TOP + HEIGHT - Axis.BOTTOM) / 2.0,
                     "no reading of " + rule.command() + " in this run"));
         }
         marker(s, x, warning, "warn", 0, "warning " + v.duration(warning));
@@ -76,15 +91,54 @@ final class RunPlot {
         return s.append("</svg>").toString();
     }
 
-    private static void grid(StringBuilder s, Axis x, Axis y) {
+    private static void grid(StringBuilder s, Axis x, Axis y, int right) {
         s.append("<path class=\"grid\" d=\"");
         for (double tick : x.ticks()) {
             s.append('M').append(Svg.num(x.px(tick))).append(' ').append(TOP).append('V').append(HEIGHT - Axis.BOTTOM);
         }
         for (double tick : y.ticks()) {
-            s.append('M').append(Axis.LEFT).append(' ').append(Svg.num(y.px(tick))).append('H').append(WIDTH - RIGHT);
+            s.append('M').append(Axis.LEFT).append(' ').append(Svg.num(y.px(tick))).append('H').append(WIDTH - right);
         }
         s.append("\"/>");
+    }
+
+    /** The pixel height of probability {@code p} on the right-hand scale. */
+    private static double py(double p) {
+        return HEIGHT - Axis.BOTTOM - p * (HEIGHT - Axis.BOTTOM - TOP);
+    }
+
+    /**
+     * The forecast's probability over the run as a step line (each forecast holds until the next), the threshold
+     * dotted across, and the scale on the right: 0, 0.5 and 1, titled.
+     */
+    private static void probability(StringBuilder s, RunResult.ForecastTrace f, double start, Axis x) {
+        double edge = x.to();
+        if (f.threshold() >= 0 && f.threshold() <= 1) {
+            s.append("<path class=\"pthr\" d=\"M").append(Axis.LEFT).append(' ').append(Svg.num(py(f.threshold())))
+                    .append('H').append(Svg.num(edge)).append("\"/>");
+        }
+        List<double[]> steps = new ArrayList<>();
+        for (int i = 0; i < f.times().size(); i++) {
+            double px = x.px(f.times().get(i) - start);
+            double level = py(f.probabilities().get(i));
+            if (!steps.isEmpty()) {
+                steps.add(new double[] {px, steps.get(steps.size() - 1)[1]});
+            }
+            steps.add(new double[] {px, level});
+        }
+        List<double[]> kept = simplified(steps);
+        StringBuilder d = new StringBuilder(kept.size() * 10);
+        for (int i = 0; i < kept.size(); i++) {
+            d.append(i == 0 ? 'M' : 'L').append(Svg.num(kept.get(i)[0])).append(' ').append(Svg.num(kept.get(i)[1]));
+        }
+        s.append("<path class=\"prob\" d=\"").append(d).append("\"/>");
+        s.append("<path class=\"axis\" d=\"M").append(Svg.num(edge)).append(' ').append(TOP).append('V')
+                .append(HEIGHT - Axis.BOTTOM).append("\"/>");
+        for (double tick : new double[] {0, 0.5, 1}) {
+            s.append(Svg.text("tp", edge + 5, py(tick) + 3.5, tick == 0.5 ? "0.5" : tick == 0 ? "0" : "1"));
+        }
+        s.append("<text class=\"yp\" transform=\"translate(").append(WIDTH - 6).append(' ')
+                .append(Svg.num((TOP + HEIGHT - Axis.BOTTOM) / 2.0)).append(") rotate(90)\">P(violation)</text>");
     }
 
     /**

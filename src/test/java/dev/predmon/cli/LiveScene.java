@@ -34,8 +34,20 @@ final class LiveScene implements AutoCloseable {
     final LiveServer server;
 
     LiveScene(Path modelsDir, Duration staleAfter, RobotNames names, List<String> watching) throws Exception {
-        abstraction = AbstractionFiles.load(ModelStore.storedAbstraction(modelsDir).orElseThrow());
-        models = ModelStore.read(modelsDir, abstraction);
+        this(AbstractionFiles.load(ModelStore.storedAbstraction(modelsDir).orElseThrow()), modelsDir, staleAfter,
+                names, watching);
+    }
+
+    private LiveScene(Abstraction abstraction, Path modelsDir, Duration staleAfter, RobotNames names,
+                      List<String> watching) throws Exception {
+        this(ModelStore.read(modelsDir, abstraction), abstraction, staleAfter, names, watching);
+    }
+
+    /** A scene of models as given (read from a directory, then changed by the test). */
+    LiveScene(ModelSet models, Abstraction abstraction, Duration staleAfter, RobotNames names, List<String> watching)
+            throws Exception {
+        this.abstraction = abstraction;
+        this.models = models;
         board = new Board(models, abstraction, staleAfter, names);
         board.watching(watching);
         server = LiveServer.start(HttpAddress.parse("0"), board);
