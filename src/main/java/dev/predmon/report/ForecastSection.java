@@ -36,7 +36,7 @@ final class ForecastSection {
                 + "did violate. Every run weighs the same, however many forecasts it had.</p>\n");
         double[] chosen = e.runs().stream().filter(r -> r.forecast() != null)
                 .mapToDouble(r -> r.forecast().threshold()).filter(t -> t >= 0 && t <= 1).sorted().toArray();
-        h.append("<h3 id=sweep>Threshold sweep</h3>\n")
+        h.append("<h3 id=sweep>Threshold sweep</h3>\n<div class=sweepbox>")
                 .append(SweepChart.svg(s.sweep(), chosen.length == 0 ? Double.NaN : chosen[0],
                         chosen.length == 0 ? Double.NaN : chosen[chosen.length - 1])).append('\n');
         h.append("<table><tr><th>threshold</th><th>violating runs warned</th><th>false alarms</th></tr>\n");
@@ -44,7 +44,7 @@ final class ForecastSection {
             h.append(String.format(Locale.ROOT, "<tr><td>%.1f</td><td>%d of %d</td><td>%d of %d</td></tr>\n",
                     p.threshold(), p.warned(), p.violating(), p.falseAlarms(), p.held()));
         }
-        h.append("</table>\n<p>Threshold sweep: a run counts as warned when its forecast reaches the threshold before "
+        h.append("</table></div>\n<p>Threshold sweep: a run counts as warned when its forecast reaches the threshold before "
                 + "any violation. Only the probability counts here: the warning rule's other clauses (the matching, a "
                 + "value below every safe run) are left out, so the runs these clauses warn are not counted.</p>\n");
     }

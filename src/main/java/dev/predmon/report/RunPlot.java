@@ -137,7 +137,8 @@ final class RunPlot {
         for (double tick : new double[] {0, 0.5, 1}) {
             s.append(Svg.text("tp", edge + 5, py(tick) + 3.5, tick == 0.5 ? "0.5" : tick == 0 ? "0" : "1"));
         }
-        s.append("<text class=\"yp\" transform=\"translate(").append(WIDTH - 6).append(' ')
+        // rotated a quarter turn clockwise, the letters stand to the right of this line: it keeps them inside
+        s.append("<text class=\"yp\" transform=\"translate(").append(WIDTH - 15).append(' ')
                 .append(Svg.num((TOP + HEIGHT - Axis.BOTTOM) / 2.0)).append(") rotate(90)\">P(violation)</text>");
     }
 

@@ -3,6 +3,7 @@ package dev.predmon.report;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.Evaluator;
+import dev.predmon.evaluate.ForecastScore;
 import dev.predmon.evaluate.Progress;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.forecast.Forecast;
@@ -116,6 +117,66 @@ class HtmlReportTest {
         RunTable.html(h, List.of(RunView.of(1, r), RunView.of(2, warned), RunView.of(3, quiet)), 0);
         List<String> cells = all("<td class=forecast>([^<]*)</td>", h.toString());
         assertEquals(List.of(RunView.NONE, "82%, in 12.5 s", "max 40%"), cells);
+    }
+
+    /** Each forecast of a replayed run has the time it was made at: within the run, in order, before any violation. */
+    @Test
+    void everyForecastHasItsTimeAndEveryPlotDrawsTheProbability() {
+        int withForecast = 0;
+        for (RunResult r : hundred.runs()) {
+            RunResult.ForecastTrace f = r.forecast();
+            assertEquals(f.probabilities().size(), f.times().size(), r.log());
+            double before = r.start();
+            for (double t : f.times()) {
+                assertTrue(t >= before, r.log() + ": " + f.times());
+                assertTrue(r.violationTime() == null || t <= r.violationTime(), r.log() + ": after the violation");
+                before = t;
+            }
+            withForecast += f.times().isEmpty() ? 0 : 1;
+        }
+        assertTrue(withForecast > 90, withForecast + " runs with a forecast");
+        assertEquals(withForecast, all("<path class=\"prob\"", html).size(), "the probability in every such plot");
+        assertEquals(withForecast, all("<path class=\"pthr\"", html).size(), "and its threshold");
+        assertTrue(html.contains("P(violation)</text>"));
+    }
+
+    /** The sweep is drawn: a line each for the violations warned and the false alarms, a point per threshold. */
+    @Test
+    void theThresholdSweepIsAChart() {
+        String chart = all("(<svg class=\"plot sweep\".*?</svg>)", html).get(0);
+        String recall = all("<path class=\"recall\" d=\"([^\"]*)\"", chart).get(0);
+        String alarms = all("<path class=\"alarms\" d=\"([^\"]*)\"", chart).get(0);
+        int points = hundred.forecast().sweep().size();
+        assertEquals(points, all("[ML]", recall).size(), recall);
+        assertEquals(points, all("[ML]", alarms).size(), alarms);
+        // every simulated depleted run is warned at 0.1; the y of 100% is the top of the plot
+        ForecastScore.Point low = hundred.forecast().sweep().get(0);
+        assertEquals(low.violating(), low.warned(), low.toString());
+        assertTrue(recall.startsWith("M" + Svg.num(50 + 0.1 * (SweepChart.WIDTH - 16 - 50)) + " 46"), recall);
+        assertTrue(chart.contains("threshold chosen") || chart.contains("thresholds chosen"), chart);
+        assertTrue(html.contains("<td>0.9</td>"), "the numbers stay beside the chart");
+    }
+
+    /** Missed violations, then false alarms, then runs no model matched, then the rest, each in the order given. */
+    @Test
+    void theRunsThatWentWrongComeFirst() {
+        List<RunResult> given = JudgedRuns.oneOfEach();
+        List<RunResult> sorted = HtmlReport.firstWhatWentWrong(given);
+        StringBuilder h = new StringBuilder();
+        List<RunView> views = new ArrayList<>();
+        for (RunResult r : sorted) {
+            views.add(RunView.of(views.size() + 1, r));
+        }
+        RunTable.html(h, views, 0);
+        assertEquals(List.of("warned too late", "violated without warning", "false alarm", "no model matches",
+                "warned ahead", "held"), all("<td class=\"l v\">([^<]*)", h.toString()));
+        // the hundred simulated runs: whatever went wrong is at the top of the page's table
+        List<String> verdicts = all("<td class=\"l v\">([^<]*)", html);
+        int firstFine = verdicts.indexOf("warned ahead");
+        for (int i = firstFine; i < verdicts.size(); i++) {
+            assertFalse(Set.of("violated without warning", "warned too late", "false alarm").contains(verdicts.get(i)),
+                    i + ": " + verdicts);
+        }
     }
 
     private static RunResult withForecast(RunResult r, RunResult.ForecastTrace f) {

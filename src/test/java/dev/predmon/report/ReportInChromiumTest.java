@@ -7,6 +7,7 @@ import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.Evaluator;
 import dev.predmon.evaluate.Progress;
+import dev.predmon.evaluate.Verdict;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
@@ -96,7 +97,8 @@ class ReportInChromiumTest {
             drawings += folded.hidden() > 0 ? 2 : 1;
             machineTexts += texts(folded) + (folded.hidden() > 0 ? texts(MachineGraph.full(model)) : 0);
         }
-        int charts = e.runs().size() + (e.runs().stream().anyMatch(r -> r.lead() != null) ? 1 : 0);
+        int charts = e.runs().size() + (e.runs().stream().anyMatch(r -> r.lead() != null) ? 1 : 0)
+                + (withShipped.forecast() != null ? 1 : 0); // the threshold sweep
         assertEquals(drawings + charts, m.svgs(), "every chart and machine drawing rendered");
         assertTrue(m.texts() > machineTexts, m.texts() + " texts measured, the machines alone have " + machineTexts);
     }
@@ -169,6 +171,39 @@ class ReportInChromiumTest {
         assertTrue(Math.abs(clicked.get("top").asDouble()) < 2, "the plot is at the top of the window: " + clicked);
         assertTrue(clicked.get("framed").asBoolean(), clicked.toString());
         assertTrue(clicked.get("label").asText().startsWith("no model matches from "), clicked.toString());
+    }
+
+    /**
+     * The report of the shipped sample logs as a reader sees it: each run's plot draws the forecast's probability
+     * beside the value, and the threshold sweep is a chart whose two lines are drawn. Saves the sweep with the first
+     * plots to {@code target/report-forecast.png} (the picture in {@code docs/report.png}) and the first plots to
+     * {@code target/report-plots.png} ({@code docs/report-plots.png}).
+     */
+    @Test
+    void theForecastIsDrawnBesideTheValueAndTheSweepAsAChart() throws Exception {
+        assumeChromium();
+        Abstraction a = AbstractionFiles.defaults();
+        Evaluation e = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(Path.of("sample-logs"), a), 5);
+        HeadlessChromium.Page page = open("forecast.html", HtmlReport.html(e, a));
+        JsonNode drawn = JSON.readTree(page.eval("JSON.stringify({plots: document.querySelectorAll('svg.plot:not(.sweep)"
+                + ":not(.hist)').length, probs: [...document.querySelectorAll('svg.plot path.prob')]"
+                + ".filter(p => p.getTotalLength() > 0 && p.getBoundingClientRect().width > 0).length,"
+                + " recall: document.querySelector('svg.sweep path.recall').getTotalLength(),"
+                + " alarms: document.querySelector('svg.sweep path.alarms').getTotalLength(),"
+                + " firstVerdict: document.querySelector('table.runs tbody td.v').firstChild.textContent})"));
+        assertEquals(e.runs().size(), drawn.get("plots").asInt(), drawn.toString());
+        long forecast = e.runs().stream().filter(r -> r.forecast().times().stream().distinct().count() > 1).count();
+        assertTrue(forecast > e.runs().size() / 2, forecast + " runs with a forecast");
+        assertEquals(forecast, drawn.get("probs").asLong(), "a probability drawn in every plot that has one: " + drawn);
+        assertTrue(drawn.get("recall").asDouble() > 100 && drawn.get("alarms").asDouble() > 100, drawn.toString());
+        boolean wrong = e.runs().stream().anyMatch(r -> r.verdict() == Verdict.FALSE_ALARM
+                || r.verdict() == Verdict.MISSED || r.verdict() == Verdict.WARNED_LATE);
+        assertTrue(!wrong || Set.of("false alarm", "violated without warning", "warned too late")
+                .contains(drawn.get("firstVerdict").asText()), "what went wrong comes first: " + drawn);
+        page.eval("(() => { document.getElementById('sweep').scrollIntoView(); return ''; })()");
+        page.screenshot(Path.of("target", "report-forecast.png"));
+        page.eval("(() => { document.querySelector('.plots').scrollIntoView(); return ''; })()");
+        page.screenshot(Path.of("target", "report-plots.png"));
     }
 
     @Test

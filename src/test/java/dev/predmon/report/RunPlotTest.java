@@ -119,6 +119,47 @@ class RunPlotTest {
         }
     }
 
+    /** The forecast's probability on its own scale at the right: steps at the times of the forecasts, the threshold. */
+    @Test
+    void theForecastsProbabilityIsDrawnOnItsOwnScale() {
+        Timeline t = new Timeline(0, new double[] {0, 10, 20, 30, 40}, new double[] {90, 70, 40, 19, 5}, Clock.SECONDS);
+        RunView plain = run(0, 20.0, 30.0, null, Clock.SECONDS);
+        RunResult r = plain.result();
+        RunResult.ForecastTrace f = new RunResult.ForecastTrace(List.of(0.2, 0.2, 0.9), null, null, 0.25, 0.6,
+                List.of(0.0, 10.0, 20.0));
+        RunView withP = RunView.of(1, new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(),
+                r.warningTime(), r.warningLine(), r.warningScenarios(), r.batteryAtWarning(), r.violationTime(),
+                r.lead(), r.noMatch(), r.noMatchTime(), r.records(), r.pairs(), r.problems(), r.eliminations(),
+                r.safetyObserved(), r.unit(), r.sudden(), r.start(), r.nearBound(), r.beforeViolation(), f));
+        assertFalse(RunPlot.svg(plain, t, RULE).contains("class=\"prob\""), "no forecast, no probability");
+        String svg = RunPlot.svg(withP, t, RULE);
+        double bottom = RunPlot.HEIGHT - Axis.BOTTOM;
+        double top = 46;
+        Matcher prob = Pattern.compile("<path class=\"prob\" d=\"([^\"]*)\"").matcher(svg);
+        assertTrue(prob.find(), svg);
+        List<Double> ys = new ArrayList<>();
+        Matcher point = Pattern.compile("[ML]([-0-9.]+) ([-0-9.]+)").matcher(prob.group(1));
+        while (point.find()) {
+            ys.add(Double.parseDouble(point.group(2)));
+        }
+        double at02 = bottom - 0.2 * (bottom - top);
+        double at09 = bottom - 0.9 * (bottom - top);
+        assertEquals(at02, ys.get(0), 0.01, "it starts at 0.2: " + prob.group(1));
+        assertEquals(at09, ys.get(ys.size() - 1), 0.01, "and ends at 0.9: " + prob.group(1));
+        List<Double> step = List.of(at02, at02, at09).stream().map(y -> Double.parseDouble(Svg.num(y))).toList();
+        assertEquals(step, ys, "a step: 0.2 until the third forecast, then 0.9");
+        assertTrue(svg.contains("<path class=\"pthr\" d=\"M50 " + Svg.num(bottom - 0.6 * (bottom - top)) + "H"), svg);
+        List<Drawn> texts = texts(svg);
+        assertEquals(List.of("0", "0.5", "1"), texts.stream().filter(d -> d.cls().equals("tp")).map(Drawn::text).toList());
+        for (int i = 0; i < texts.size(); i++) {
+            Drawn a = texts.get(i);
+            assertTrue(a.x() + a.w() <= RunPlot.WIDTH, a + " inside the plot");
+            for (Drawn b : texts.subList(i + 1, texts.size())) {
+                assertFalse(a.overlaps(b), a + " overlaps " + b);
+            }
+        }
+    }
+
     @Test
     void aLongRunIsThinnedToWhatThePlotCanShow() {
         int n = 20_000;

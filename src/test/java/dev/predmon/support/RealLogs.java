@@ -18,7 +18,8 @@ import java.util.regex.Pattern;
  */
 public final class RealLogs {
 
-    public static final Path DIR = Path.of("..", "shared", "real-logs");
+    /** {@code ../shared/real-logs}, or where {@code -Dpredmon.real-logs=DIR} says (from a worktree elsewhere). */
+    public static final Path DIR = Path.of(System.getProperty("predmon.real-logs", "../shared/real-logs"));
 
     /**
      * One row of the README's table.
