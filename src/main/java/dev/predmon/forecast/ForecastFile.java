@@ -213,19 +213,23 @@ public final class ForecastFile {
             return;
         }
         ArrayNode a = root.putArray("scorecards");
-        for (Scorecard c : cards) {
-            ObjectNode n = a.addObject();
-            n.put("property", c.property());
-            n.put("folds", c.folds());
-            n.put("runs", c.runs());
-            n.put("violating", c.violating());
-            n.put("warned", c.warned());
-            n.put("falseAlarms", c.falseAlarms());
-            number(n, "medianLead", c.medianLead());
-            n.put("unit", c.unit());
-            number(n, "brier", c.brier());
-            number(n, "baseBrier", c.baseBrier());
-        }
+        cards.forEach(c -> a.add(scorecard(c)));
+    }
+
+    /** One scorecard as {@code forecast.json} holds it (and {@code /status} shows it). */
+    public static ObjectNode scorecard(Scorecard c) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("property", c.property());
+        n.put("folds", c.folds());
+        n.put("runs", c.runs());
+        n.put("violating", c.violating());
+        n.put("warned", c.warned());
+        n.put("falseAlarms", c.falseAlarms());
+        number(n, "medianLead", c.medianLead());
+        n.put("unit", c.unit());
+        number(n, "brier", c.brier());
+        number(n, "baseBrier", c.baseBrier());
+        return n;
     }
 
     private static List<Scorecard> readScorecards(JsonNode root) {

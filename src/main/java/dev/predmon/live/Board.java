@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
@@ -121,19 +122,10 @@ public final class Board {
         watching.forEach(w::add);
         ArrayNode cards = o.putArray("scorecards");
         for (Scorecard c : scorecards) {
-            ObjectNode n = cards.addObject();
-            n.put("property", c.property());
-            n.put("folds", c.folds());
-            n.put("runs", c.runs());
-            n.put("violating", c.violating());
-            n.put("warned", c.warned());
-            n.put("falseAlarms", c.falseAlarms());
-            TileJson.number(n, "medianLead", c.medianLead());
-            n.put("unit", c.unit());
-            TileJson.number(n, "brier", c.brier());
-            TileJson.number(n, "baseBrier", c.baseBrier());
+            ObjectNode n = ForecastFile.scorecard(c);
             n.put("skill", c.skill());
             n.put("summary", c.summary());
+            cards.add(n);
         }
         ArrayNode logs = o.putArray("logs");
         snapshots.forEach(logs::add);

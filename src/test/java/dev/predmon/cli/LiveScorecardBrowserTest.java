@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.forecast.Scorecard;
@@ -59,6 +60,15 @@ class LiveScorecardBrowserTest {
         }
     }
 
+    private static Abstraction abstraction() throws Exception {
+        return AbstractionFiles.load(ModelStore.storedAbstraction(ForecastModels.get()).orElseThrow());
+    }
+
+    /** Models learned from the sample logs, with their scorecard. */
+    private static ModelSet models() throws Exception {
+        return ModelStore.read(ForecastModels.get(), abstraction());
+    }
+
     /** A robot part way through a recharge run: OK, with a forecast. */
     private Path robot() throws Exception {
         String recharge = FleetWatchTest.run(Scenario.RECHARGE, 9002);
@@ -103,7 +113,7 @@ class LiveScorecardBrowserTest {
                     assertTrue(System.nanoTime() < deadline, "timed out waiting for the compact row");
                     Thread.sleep(50);
                 }
-                ((com.fasterxml.jackson.databind.node.ObjectNode) shown).put("row",
+                ((ObjectNode) shown).put("row",
                         tab.eval("document.querySelector('.row .line2').textContent"));
                 return shown;
             } finally {
@@ -115,12 +125,10 @@ class LiveScorecardBrowserTest {
     @Test
     @Timeout(180)
     void theScorecardIsUnderTheHeaderAndAForecastWithSkillIsTheHeadline() throws Exception {
-        Path dirOfModels = ForecastModels.get();
-        Abstraction abstraction = AbstractionFiles.load(ModelStore.storedAbstraction(dirOfModels).orElseThrow());
-        ModelSet models = ModelStore.read(dirOfModels, abstraction);
+        ModelSet models = models();
         Scorecard c = models.forecast().scorecards().get(0);
         assertTrue(c.skill(), "the sample logs' models know more than the base rate: " + c);
-        JsonNode shown = page(models, abstraction, "live-skill.png");
+        JsonNode shown = page(models, abstraction(), "live-skill.png");
         assertFalse(shown.get("cardHidden").asBoolean());
         assertTrue(shown.get("card").asText().startsWith("these models warned " + c.warned() + " of " + c.violating()
                 + " violations in cross-validation"), shown.toString());
@@ -133,15 +141,13 @@ class LiveScorecardBrowserTest {
     @Test
     @Timeout(180)
     void whereTheForecastHasNoSkillThePageSaysSoAndShowsNoHeadlineProbability() throws Exception {
-        Path dirOfModels = ForecastModels.get();
-        Abstraction abstraction = AbstractionFiles.load(ModelStore.storedAbstraction(dirOfModels).orElseThrow());
-        ModelSet read = ModelStore.read(dirOfModels, abstraction);
+        ModelSet read = models();
         Scorecard c = read.forecast().scorecards().get(0);
         // the same models, scored as the 43 real recordings score theirs: no better than the base rate
         Scorecard noSkill = new Scorecard(c.property(), 5, 43, 11, 2, 1, 61, "ticks", 0.200, 0.196);
         ModelSet models = new ModelSet(read.dir(), read.index(), read.models(),
                 read.forecast().withScorecards(List.of(noSkill)));
-        JsonNode shown = page(models, abstraction, "live-no-skill.png");
+        JsonNode shown = page(models, abstraction(), "live-no-skill.png");
         assertTrue(shown.get("card").asText().contains("these models warned 2 of 11 violations in cross-validation, "
                 + "1 false alarm(s) in 32 safe runs; Brier 0.200 vs base rate 0.196"), shown.toString());
         assertTrue(shown.get("card").asText().contains("the forecast has no skill on these models"),

@@ -49,6 +49,7 @@ class ReportInChromiumTest {
     @TempDir
     static Path dir;
     static HeadlessChromium browser;
+    private static Evaluation sample;
 
     @BeforeAll
     static void start() throws Exception {
@@ -68,6 +69,15 @@ class ReportInChromiumTest {
     private static void assumeChromium() {
         assumeTrue(browser != null, "no Chromium found (apt-get install chromium, or -Dpredmon.chromium=PATH), so the "
                 + "report is not rendered; MachineLayoutTest and HtmlReportTest still check the layouts and the page");
+    }
+
+    /** The shipped sample logs, evaluated by 5-fold cross-validation (once for the tests that show them). */
+    private static synchronized Evaluation sample() throws Exception {
+        if (sample == null) {
+            Abstraction a = AbstractionFiles.defaults();
+            sample = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(Path.of("sample-logs"), a), 5);
+        }
+        return sample;
     }
 
     private static HeadlessChromium.Page open(String name, String html) throws Exception {
@@ -129,14 +139,13 @@ class ReportInChromiumTest {
      * The report of the shipped sample logs (every verdict but a late warning and a miss happens there): one row
      * per run, every row's link brings its run's plot to the top of the window, the plot links back to the row,
      * and verdicts read in words. Saves what the window shows of the table, from just before the first run no
-     * model matched, to {@code target/report-runs.png} (the picture in {@code docs/report.png}).
+     * model matched, to {@code target/report-runs.png}.
      */
     @Test
     void everyRunIsOneClickFromItsRowToItsPlotAndBack() throws Exception {
         assumeChromium();
-        Abstraction a = AbstractionFiles.defaults();
-        Evaluation e = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(Path.of("sample-logs"), a), 5);
-        HeadlessChromium.Page page = open("sample.html", HtmlReport.html(e, a));
+        Evaluation e = sample();
+        HeadlessChromium.Page page = open("sample.html", HtmlReport.html(e, AbstractionFiles.defaults()));
 
         JsonNode rows = JSON.readTree(page.eval("JSON.stringify([...document.querySelectorAll('table.runs tbody tr')]"
                 + ".map(r => ({id: r.id, href: r.querySelector('a').getAttribute('href'),"
@@ -182,9 +191,8 @@ class ReportInChromiumTest {
     @Test
     void theForecastIsDrawnBesideTheValueAndTheSweepAsAChart() throws Exception {
         assumeChromium();
-        Abstraction a = AbstractionFiles.defaults();
-        Evaluation e = new Evaluator(a, 0, Progress.NONE).crossValidate(ScenarioLayout.scan(Path.of("sample-logs"), a), 5);
-        HeadlessChromium.Page page = open("forecast.html", HtmlReport.html(e, a));
+        Evaluation e = sample();
+        HeadlessChromium.Page page = open("forecast.html", HtmlReport.html(e, AbstractionFiles.defaults()));
         JsonNode drawn = JSON.readTree(page.eval("JSON.stringify({plots: document.querySelectorAll('svg.plot:not(.sweep)"
                 + ":not(.hist)').length, probs: [...document.querySelectorAll('svg.plot path.prob')]"
                 + ".filter(p => p.getTotalLength() > 0 && p.getBoundingClientRect().width > 0).length,"
