@@ -144,12 +144,12 @@ class LiveScorecardBrowserTest {
         ModelSet read = models();
         Scorecard c = read.forecast().scorecards().get(0);
         // the same models, scored as the 43 real recordings score theirs: no better than the base rate
-        Scorecard noSkill = new Scorecard(c.property(), 5, 43, 11, 2, 1, 61, "ticks", 0.200, 0.196);
+        Scorecard noSkill = new Scorecard(c.property(), 5, 43, 11, 2, 1, 61, "ticks", 0.201, 0.196);
         ModelSet models = new ModelSet(read.dir(), read.index(), read.models(),
                 read.forecast().withScorecards(List.of(noSkill)));
         JsonNode shown = page(models, abstraction(), "live-no-skill.png");
         assertTrue(shown.get("card").asText().contains("these models warned 2 of 11 violations in cross-validation, "
-                + "1 false alarm(s) in 32 safe runs; Brier 0.200 vs base rate 0.196"), shown.toString());
+                + "1 false alarm(s) in 32 safe runs; Brier 0.201 vs base rate 0.196"), shown.toString());
         assertTrue(shown.get("card").asText().contains("the forecast has no skill on these models"),
                 shown.toString());
         assertFalse(shown.get("headline").asBoolean(), "no probability as the headline: " + shown);

@@ -13,7 +13,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /** The scorecard's words and its place in {@code forecast.json}: stored, read back, optional, checked. */
 class ScorecardTest {
 
-    /** As measured on 43 real recordings: 2 of 11 violations warned, and a Brier score above the base rate's. */
+    /** Like the scorecard of the 43 real recordings: 2 of 11 violations warned, a Brier score above the base rate's. */
     private static final Scorecard NO_SKILL = new Scorecard("battery level >= 20%", 5, 43, 11, 2, 1, 61, "ticks",
             0.2004, 0.1961);
     private static final Scorecard SKILL = new Scorecard("battery level >= 20%", 5, 30, 10, 10, 1, 8.5, "s", 0.188,

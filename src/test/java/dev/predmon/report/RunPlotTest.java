@@ -125,7 +125,7 @@ class RunPlotTest {
         Timeline t = new Timeline(0, new double[] {0, 10, 20, 30, 40}, new double[] {90, 70, 40, 19, 5}, Clock.SECONDS);
         RunView plain = run(0, 20.0, 30.0, null, Clock.SECONDS);
         RunResult r = plain.result();
-        RunResult.ForecastTrace f = new RunResult.ForecastTrace(List.of(0.2, 0.2, 0.9), null, null, 0.25, 0.6,
+        RunResult.ForecastTrace f = new RunResult.ForecastTrace(List.of(0.2, 0.2, 0.9), null, null, 0.25, 0.6, null,
                 List.of(0.0, 10.0, 20.0));
         RunView withP = RunView.of(1, new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(),
                 r.warningTime(), r.warningLine(), r.warningScenarios(), r.batteryAtWarning(), r.violationTime(),
