@@ -27,7 +27,9 @@ import java.util.concurrent.Callable;
                         + "(<scenario>-<k>.dot). Writes <models>/*.dot, <models>/index.json and "
                         + "<models>/abstraction.json atomically.",
                 "--models must be new, empty or a model directory learn wrote, and apart from --logs: anything "
-                        + "else is refused (exit 3) and left untouched."})
+                        + "else is refused (exit 3) and left untouched.",
+                "Ends with the models' scorecard, per property: the violations warned and the false alarms in "
+                        + "cross-validation, the median lead, and the Brier score against the base rate's."})
 final class LearnCommand implements Callable<Integer> {
 
     @Spec
