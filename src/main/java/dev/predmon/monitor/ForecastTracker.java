@@ -82,6 +82,11 @@ final class ForecastTracker {
         told = null;
     }
 
+    /** The lowest value a training run that held went to (NaN without one). */
+    double safeFloor() {
+        return forecaster.stats().lows().safeFloor();
+    }
+
     /** The run recovered: the forecast starts over from the states it is in ({@link Forecaster#recovered}). */
     void startOver() {
         forecaster.recovered();
