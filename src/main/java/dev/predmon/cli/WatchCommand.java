@@ -118,6 +118,9 @@ final class WatchCommand implements Callable<Integer> {
                     + "rule. Run 'predmon learn' again to add it");
         }
         Board board = liveView.board(set, abstraction, several, sources.described());
+        if (board != null) {
+            board.warnsAt(warnBy, set);
+        }
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
                      noFollow, hookOptions.open(err), board, abstraction, p -> !sources.named(p));
@@ -135,6 +138,9 @@ final class WatchCommand implements Callable<Integer> {
                     stop = signals.received() != null ? signals.received() : "interrupted";
                 }
                 Thread.interrupted(); // stopped: the summaries are written in full
+                if (outputs.notALog().isPresent()) {
+                    return ExitCodes.BAD_INPUT; // said on stderr when it was found
+                }
             }
             List<Integer> codes = new ArrayList<>();
             boolean anyJudged = fleet.logs().stream().anyMatch(l -> whyNoVerdict(outputs.evidence(l)).isEmpty());
