@@ -159,10 +159,9 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             if (o.firstLineNanos == 0 && log.watcher().lines() > 0) {
                 o.firstLineNanos = System.nanoTime();
             }
-            if (besideTheLogs(log) && several) {
-                return; // a file beside the logs of a directory: said at the stop, and only if no log was judged
-            }
-            if (!notALog(log, o)) {
+            // A file beside the logs of a directory that is not a log is said once it is known; what else is missing
+            // in it is said at the stop, and only if no log was judged.
+            if (!notALog(log, o) && !besideTheLogs(log)) {
                 Evidence evidence = evidence(log);
                 Optional<String> notice = evidence.earlyNotice();
                 notice.ifPresent(n -> noVerdict(log, o, n));
@@ -175,7 +174,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     @Override
     public void pulse() {
         outlets.forEach((log, o) -> {
-            if (!noFollow && !o.settled && o.firstLineNanos != 0 && !(besideTheLogs(log) && several)) {
+            if (!noFollow && !o.settled && o.firstLineNanos != 0) {
                 notALog(log, o);
             }
         });
