@@ -155,10 +155,9 @@ final class EventPrinter implements Consumer<MonitorEvent> {
                     r.reason());
         }
         if (e instanceof MonitorEvent.UnderWay u) {
-            return u.underWay() ? String.format(Locale.ROOT, "%s line %d: the recommended action is under way (%s)",
-                    at(u.time(), u.clock()), u.line(), u.by()) : verbose ? String.format(Locale.ROOT,
-                    "%s line %d: the recommended action is no longer under way (%s)", at(u.time(), u.clock()),
-                    u.line(), u.by()) : null;
+            return verbose ? String.format(Locale.ROOT, "%s line %d: the recommended action is %s (%s)",
+                    at(u.time(), u.clock()), u.line(), u.underWay() ? "under way" : "no longer under way", u.by())
+                    : null;
         }
         if (e instanceof MonitorEvent.RunStarted r) {
             warning = null;
