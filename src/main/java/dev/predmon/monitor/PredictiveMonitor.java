@@ -198,7 +198,7 @@ public final class PredictiveMonitor implements PipelineListener {
                         + ForecastWords.fixed(v, 2)), f, forecast.clause(f));
             }
         } else if (forecast == null) {
-            alarm.reading(record, v, null, false, run);
+            alarm.reading(record, v, null, false, run); // models without a forecast: recovered by the action alone
         }
     }
 

@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.parse.ParseProblem;
 
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.LongSupplier;
@@ -90,8 +91,8 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
             return Optional.empty();
         }
         return Optional.of(log + ": not a monitor log? no YARP monitor record in " + (n < NOT_A_LOG_LINES
-                ? "its " + n + (n == 1 ? " line" : " lines") + " of " + Math.max(1, millis / 1000) + " s"
-                : "the first " + n + " lines") + " (the monitor prints 'Command intercepted:' and 'Reply intercepted:'"
+                ? n + (n == 1 ? " line" : " lines") + " over " + String.format(Locale.ROOT, "%.1f", millis / 1000.0)
+                + " s" : "the first " + n + " lines") + " (the monitor prints 'Command intercepted:' and 'Reply intercepted:'"
                 + " records; see docs/logs.md)" + (firstProblem == null ? ""
                 : "; first problem: line " + firstProblem.line() + ": " + firstProblem.message()));
     }
