@@ -187,6 +187,15 @@ class LiveAlarmsBrowserTest {
             assertTrue(words4.contains("no such file yet"), words4);
             assertFalse(words4.contains("log grew"), words4);
             screenshot(page, "live-alarms.png");
+
+            page.eval("document.getElementById('view').click(), 'ok'");
+            waitFor(page, "document.querySelectorAll('#tiles.compact .row').length === 4", "the compact view", 30);
+            String row1 = text(page, t1);
+            assertTrue(row1.contains("OK, recovered t=80.00 s") && row1.contains("P 0.21, warning at"), row1);
+            String row2 = text(page, t2);
+            assertTrue(row2.contains("under way since t=36.00 s"), row2);
+            assertFalse(row2.contains("send the robot"), "no action to do while it is under way: " + row2);
+            screenshot(page, "live-alarms-compact.png");
         }
     }
 
