@@ -39,7 +39,8 @@ import java.util.concurrent.TimeUnit;
                         + "own monitor; each event then names its log.",
                 "Ctrl-C (SIGINT), SIGTERM or SIGHUP stops it: it prints the end summary and exits as below.",
                 "Exit 1 when a warning was raised, 5 when no model matches the run any more, 0 otherwise; 3 when "
-                        + "the log held nothing to judge (with --no-follow, at the end of the file)."})
+                        + "the log held nothing to judge (with --no-follow, at the end of the file; while following "
+                        + "one log, at once when it is not a monitor log)."})
 final class WatchCommand implements Callable<Integer> {
 
     @Spec
