@@ -4,6 +4,8 @@ import dev.predmon.parse.Decimals;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 
+import java.util.List;
+
 /**
  * The built-in safety monitor's property: a numeric reply on one channel must not fall below a bound
  * (default: {@code level} replies from {@code /BatteryComponent} to {@code /BatteryReaderBatteryLevelClient}
@@ -17,13 +19,24 @@ import dev.predmon.parse.RecordKind;
  * @param below    the property is violated by the first value strictly below this
  * @param action   what an operator should do when the property is predicted to fail or fails, in words (e.g.
  *                 {@code send the robot to the charging station}), or null when the abstraction gives none
+ * @param underWay the messages that say the action is under way (empty when the abstraction names none)
  */
 public record SafetyRule(String name, String protocol, String command, String from, String to, double below,
-                         String action) {
+                         String action, List<UnderWay> underWay) {
+
+    public SafetyRule {
+        underWay = underWay == null ? List.of() : List.copyOf(underWay);
+    }
 
     /** A property without a recommended action. */
     public SafetyRule(String name, String protocol, String command, String from, String to, double below) {
-        this(name, protocol, command, from, to, below, null);
+        this(name, protocol, command, from, to, below, null, List.of());
+    }
+
+    /** A property with a recommended action, but no message that says it is under way. */
+    public SafetyRule(String name, String protocol, String command, String from, String to, double below,
+                      String action) {
+        this(name, protocol, command, from, to, below, action, List.of());
     }
 
     /** The watched numeric value carried by {@code r}, or NaN when {@code r} is not a watched reply. */

@@ -66,7 +66,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         if (e instanceof MonitorEvent.Warning w) {
             o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(),
                     w.scenarios().isEmpty() ? null : w.scenarios().get(0), w.scenarios(), w.battery(), w.pairs(),
-                    w.rule().id(), w.reason(), ForecastJson.of(w.forecast()));
+                    w.rule().id(), w.clause().id(), w.reason(), ForecastJson.of(w.forecast()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             o = new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
                     ForecastJson.of(f.forecast()));
@@ -82,6 +82,11 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             o = new RunJson("run", r.run(), r.time(), r.clock().unit(), r.line());
         } else if (e instanceof MonitorEvent.Restarted r) {
             o = new RestartedJson("restarted", r.reason());
+        } else if (e instanceof MonitorEvent.Recovered r) {
+            o = new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(), r.value(),
+                    r.reason());
+        } else if (e instanceof MonitorEvent.UnderWay u) {
+            o = new UnderWayJson("under-way", u.time(), u.clock().unit(), u.line(), u.run(), u.by(), u.underWay());
         } else {
             throw new IllegalArgumentException("not printed as a JSON event: " + e);
         }
@@ -89,8 +94,15 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     }
 
     record WarningJson(String event, double time, String unit, long line, int run, String scenario,
-                       List<String> scenarios, Double battery, long pairs, String rule, String reason,
+                       List<String> scenarios, Double battery, long pairs, String rule, String clause, String reason,
                        ForecastJson forecast) {
+    }
+
+    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, double battery,
+                         String reason) {
+    }
+
+    record UnderWayJson(String event, double time, String unit, long line, int run, String by, boolean underWay) {
     }
 
     record ForecastEventJson(String event, double time, String unit, long line, int run, ForecastJson forecast) {
@@ -137,6 +149,15 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         if (e instanceof MonitorEvent.NoMatch n) {
             return String.format(Locale.ROOT, "%s line %d: no learned scenario matches this run any more",
                     at(n.time(), n.clock()), n.line());
+        }
+        if (e instanceof MonitorEvent.Recovered r) {
+            return String.format(Locale.ROOT, "%s line %d: RECOVERED: %s", at(r.time(), r.clock()), r.line(),
+                    r.reason());
+        }
+        if (e instanceof MonitorEvent.UnderWay u) {
+            return verbose ? String.format(Locale.ROOT, "%s line %d: the recommended action is %s (%s)",
+                    at(u.time(), u.clock()), u.line(), u.underWay() ? "under way" : "no longer under way", u.by())
+                    : null;
         }
         if (e instanceof MonitorEvent.RunStarted r) {
             warning = null;

@@ -39,7 +39,8 @@ import java.util.concurrent.TimeUnit;
                         + "own monitor; each event then names its log.",
                 "Ctrl-C (SIGINT), SIGTERM or SIGHUP stops it: it prints the end summary and exits as below.",
                 "Exit 1 when a warning was raised, 5 when no model matches the run any more, 0 otherwise; 3 when "
-                        + "the log held nothing to judge (with --no-follow, at the end of the file)."})
+                        + "the log held nothing to judge (with --no-follow, at the end of the file; while following "
+                        + "one log, at once when it is not a monitor log)."})
 final class WatchCommand implements Callable<Integer> {
 
     @Spec
@@ -118,6 +119,9 @@ final class WatchCommand implements Callable<Integer> {
                     + "rule. Run 'predmon learn' again to add it");
         }
         Board board = liveView.board(set, abstraction, several, sources.described());
+        if (board != null) {
+            board.warnsAt(warnBy, set);
+        }
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
                      noFollow, hookOptions.open(err), board, abstraction, p -> !sources.named(p));
@@ -139,6 +143,9 @@ final class WatchCommand implements Callable<Integer> {
                     stop = signals.received() != null ? signals.received() : "interrupted";
                 }
                 Thread.interrupted(); // stopped: the summaries are written in full
+                if (outputs.notALog().isPresent()) {
+                    return ExitCodes.BAD_INPUT; // said on stderr when it was found
+                }
             }
             List<Integer> codes = new ArrayList<>();
             boolean anyJudged = fleet.logs().stream().anyMatch(l -> whyNoVerdict(outputs.evidence(l)).isEmpty());

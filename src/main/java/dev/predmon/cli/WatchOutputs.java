@@ -48,6 +48,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private final CommandHooks hooks;
     private final Board board;
     private String lastRescanFailure;
+    private String notALog;
 
     /** Where one log's events go, and what is known of its evidence so far. */
     private static final class Outlet {
@@ -58,6 +59,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         ParseProblem firstProblem;
         /** Something recognisable arrived, or the notice that nothing did was given. */
         boolean settled;
+        /** When the log's first line was read ({@link System#nanoTime()}), 0 before. */
+        long firstLineNanos;
         /** The runs that began where the log was truncated or replaced, with which of the two. */
         final Map<Integer, String> restarts = new HashMap<>();
         /** The commands of unmapped messages said at their first sighting. */
@@ -153,17 +156,62 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             board.grew(o.tile);
         }
         if (!noFollow && !o.settled) {
-            Evidence evidence = evidence(log);
-            if (besideTheLogs(log)) {
-                return; // a file beside the logs of a directory: said at the stop, and only if no log was judged
+            if (o.firstLineNanos == 0 && log.watcher().lines() > 0) {
+                o.firstLineNanos = System.nanoTime();
             }
-            Optional<String> notice = evidence.earlyNotice();
-            notice.ifPresent(n -> {
-                err.println("predmon: " + Terminal.line(n));
-                err.flush();
-            });
-            o.settled = notice.isPresent() || evidence.recognised();
+            // A file beside the logs of a directory that is not a log is said once it is known; what else is missing
+            // in it is said at the stop, and only if no log was judged.
+            if (!notALog(log, o) && !besideTheLogs(log)) {
+                Evidence evidence = evidence(log);
+                Optional<String> notice = evidence.earlyNotice();
+                notice.ifPresent(n -> noVerdict(log, o, n));
+                o.settled = notice.isPresent() || evidence.recognised();
+            }
         }
+    }
+
+    /** About once a second: a file that had lines for a while and no monitor record is not a monitor log. */
+    @Override
+    public void pulse() {
+        outlets.forEach((log, o) -> {
+            if (!noFollow && !o.settled && o.firstLineNanos != 0) {
+                notALog(log, o);
+            }
+        });
+    }
+
+    /**
+     * Whether {@code log} is not a monitor log ({@link Evidence#notALog}): said once on stderr and on its tile; a
+     * single log's watch then stops, to exit 3 ({@link #notALog()}).
+     */
+    private boolean notALog(WatchedLog log, Outlet o) {
+        long millis = o.firstLineNanos == 0 ? 0 : (System.nanoTime() - o.firstLineNanos) / 1_000_000;
+        Optional<String> not = evidence(log).notALog(millis);
+        if (not.isEmpty()) {
+            return false;
+        }
+        noVerdict(log, o, not.get());
+        o.settled = true;
+        if (!several) {
+            notALog = not.get();
+            Thread.currentThread().interrupt(); // watch stops here: see WatchCommand
+        }
+        return true;
+    }
+
+    /** Says once on stderr why {@code log} gets no verdict, and shows it on its tile. */
+    private void noVerdict(WatchedLog log, Outlet o, String why) {
+        err.println("predmon: " + Terminal.line(why));
+        err.flush();
+        if (o.tile != null) {
+            String path = log.path().toString();
+            o.tile.noVerdict(why.startsWith(path + ": ") ? why.substring(path.length() + 2) : why);
+        }
+    }
+
+    /** Why a single log being followed was found not to be a monitor log, if it was: watch stops and exits 3. */
+    Optional<String> notALog() {
+        return Optional.ofNullable(notALog);
     }
 
     @Override

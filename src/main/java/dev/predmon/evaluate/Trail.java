@@ -44,7 +44,7 @@ public final class Trail {
 
     void warning(int run, MonitorEvent.Warning w) {
         if (keeps && w != null) {
-            warnings.put(run, w);
+            warnings.putIfAbsent(run, w); // the run's first warning: a later one follows a recovery
         }
     }
 

@@ -74,6 +74,15 @@ public final class Forecaster {
         violated = false;
     }
 
+    /**
+     * The run recovered (the property holds again, or the alarm's cause ended): the forecast starts over in the states
+     * the run is in, no longer violated, its drift measured afresh from the next readings.
+     */
+    public void recovered() {
+        readings = 0;
+        violated = false;
+    }
+
     /** The learned statistics. */
     public ForecastModel stats() {
         return stats;

@@ -9,10 +9,16 @@ import dev.predmon.forecast.Scorecard;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.WarningRule;
 
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -28,7 +34,8 @@ import static dev.predmon.live.TileJson.JSON;
 public final class Board {
 
     /** The order of {@code /status} and of the page: worst first (see {@link TileState}), then by robot. */
-    private static final List<String> ORDER = List.of("violation", "warning", "unknown", "ok", "waiting", "ended");
+    private static final List<String> ORDER = List.of("violation", "warning", "unknown", "no-verdict", "ok", "waiting",
+            "ended");
 
     private final List<LearnedModel> models;
     private final Optional<SafetyRule> safety;
@@ -40,11 +47,21 @@ public final class Board {
     private final EventStream stream = new EventStream();
     private final Metrics metrics;
     private volatile List<String> watching = List.of();
+    private volatile Double warnsAt;
 
     /** @param staleAfter a log that has not grown for this long is marked STALE (or its run ended, see Tile) */
     public Board(ModelSet models, Abstraction abstraction, Duration staleAfter, RobotNames names) {
         this(models.models(), abstraction.safety(), staleAfter, System::currentTimeMillis, names,
                 models.forecast() == null ? List.of() : models.forecast().scorecards());
+        warnsAt(PredictiveMonitor.defaultRule(models), models);
+    }
+
+    /**
+     * The monitors warn by {@code rule}: with the forecast rule, a tile below the threshold says how far it is from a
+     * warning ({@code P 0.23, warning at 0.86}).
+     */
+    public void warnsAt(WarningRule rule, ModelSet models) {
+        warnsAt = rule == WarningRule.FORECAST && models.forecast() != null ? models.forecast().threshold() : null;
     }
 
     Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock) {
@@ -110,9 +127,11 @@ public final class Board {
         }
         long now = clock.getAsLong();
         String action = safety.map(SafetyRule::action).orElse(null);
+        Map<Tile, String> shown = shownNames();
         List<ObjectNode> snapshots = new ArrayList<>();
         for (Tile t : all) {
-            snapshots.add(t.snapshot(now, staleMillis, action));
+            String name = shown.getOrDefault(t, t.name());
+            snapshots.add(t.snapshot(now, staleMillis, new Tile.Shown(name, action, warnsAt, !t.empty() || exists(t))));
         }
         snapshots.sort(Comparator.comparingInt(Board::rank).thenComparing(s -> s.get("name").asText())
                 .thenComparing(s -> s.get("log").asText()));
@@ -130,6 +149,26 @@ public final class Board {
         ArrayNode logs = o.putArray("logs");
         snapshots.forEach(logs::add);
         return o;
+    }
+
+    /** Every tile's robot name as shown: by default without the part the names of all logs share. */
+    private synchronized Map<Tile, String> shownNames() {
+        List<Tile> every = new ArrayList<>(tiles.values());
+        List<String> shown = names.shown(every.stream().map(Tile::name).toList());
+        Map<Tile, String> byTile = new HashMap<>();
+        for (int i = 0; i < every.size(); i++) {
+            byTile.put(every.get(i), shown.get(i));
+        }
+        return byTile;
+    }
+
+    /** Whether a log's file exists (asked only of logs that never had a record). */
+    private static boolean exists(Tile t) {
+        try {
+            return Files.exists(Path.of(t.log()));
+        } catch (InvalidPathException e) {
+            return false;
+        }
     }
 
     /** Where a tile sorts: by its state, a log quiet mid-run with the unknown ones (nobody knows what it does now). */

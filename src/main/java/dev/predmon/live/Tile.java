@@ -37,7 +37,6 @@ public final class Tile {
     static final int PLOT_POINTS = 240;
     static final int LAST_EVENTS = 12;
     static final int EARLIER_RUNS = 20;
-    static final int HISTORY = 8;
 
     private final String log;
     private final String name;
@@ -47,15 +46,12 @@ public final class Tile {
     private int run;
     private long runLine = 1;
     private long runRecords;
-    private MonitorEvent.Warning warning;
-    private JsonNode warningJson;
-    private MonitorEvent.Violation violation;
+    private final RunAlarm alarm = new RunAlarm();
+    private String noVerdict;
     private boolean noMatch;
     private long noMatchLine;
     private Forecast forecast;
     private JsonNode forecastJson;
-    private boolean recovered;
-    private final Deque<ObjectNode> history = new ArrayDeque<>();
     private final RunRest rest = new RunRest();
     private final Map<String, String> eliminated = new LinkedHashMap<>();
     private final BatterySeries battery = new BatterySeries(PLOT_POINTS);
@@ -96,16 +92,13 @@ public final class Tile {
         if (lastEvents.size() > LAST_EVENTS) {
             lastEvents.removeFirst();
         }
-        if (e instanceof MonitorEvent.Warning w) {
-            warning = w;
-            warningJson = node;
-            note(TileJson.moment("warning", w.time(), w.line(), w.battery() == null ? Double.NaN : w.battery()));
-            if (w.forecast() != null) {
+        if (alarm.event(e, node)) {
+            if (e instanceof MonitorEvent.Warning w && w.forecast() != null) {
                 setForecast(w.forecast(), node);
+            } else if (e instanceof MonitorEvent.Recovered) {
+                forecast = null; // the forecast starts over
+                forecastJson = null;
             }
-        } else if (e instanceof MonitorEvent.Violation v) {
-            violation = v;
-            note(TileJson.moment("violation", v.time(), v.line(), v.value()));
         } else if (e instanceof MonitorEvent.Eliminated x) {
             eliminated.put(x.model(), "line " + x.line() + ": " + x.reason());
         } else if (e instanceof MonitorEvent.NoMatch n) {
@@ -139,26 +132,23 @@ public final class Tile {
         forecastJson = TileJson.forecastOf(event);
     }
 
-    private void note(ObjectNode moment) {
-        history.addLast(moment);
-        if (history.size() > HISTORY) {
-            history.removeFirst();
-        }
+    /**
+     * The models cannot judge this log ({@code why}, with the fix: not a monitor log, or an abstraction that does not
+     * fit it): the tile shows no verdict and no forecast, whatever the monitor says.
+     */
+    public synchronized void noVerdict(String why) {
+        noVerdict = why;
     }
 
     private void startRun(int number, long first) {
         run = number;
         runLine = first;
         runRecords = 0;
-        warning = null;
-        warningJson = null;
-        violation = null;
+        alarm.reset();
         noMatch = false;
         noMatchLine = 0;
         forecast = null;
         forecastJson = null;
-        recovered = false;
-        history.clear();
         rest.reset();
         eliminated.clear();
         battery.clear();
@@ -175,11 +165,6 @@ public final class Tile {
             double v = safety.get().valueOf(r);
             if (!Double.isNaN(v)) {
                 battery.add(r.time(), v);
-                // After a violation the property may hold again (the robot recharged): the tile says so, and when.
-                if (violation != null && recovered == safety.get().violatedBy(v)) {
-                    recovered = !recovered;
-                    note(TileJson.moment(recovered ? "recovered" : "violated again", r.time(), r.line(), v));
-                }
             }
         }
     }
@@ -190,25 +175,29 @@ public final class Tile {
     }
 
     /**
-     * The state: a violation while the property is violated; the run ended once its log went quiet with the tree at
-     * rest; a warning; unknown where no model matches or the run does something no model does; ok once there is data
-     * (a reading of the property; any record where there is no property); else waiting.
+     * The state: no verdict where the models cannot judge the log; a violation while the property is violated; the
+     * run ended once its log went quiet with the tree at rest; a warning while one is up; ok once the run recovered;
+     * unknown where no model matches or the run does something no model does; ok once there is data (a reading of
+     * the property; any record where there is no property); else waiting.
      *
      * @param quiet whether the log has not grown for the stale time
      */
     synchronized TileState state(boolean quiet) {
         boolean data = safety.isPresent() ? !battery.isEmpty() : runRecords > 0;
-        if (violation != null && !recovered) {
+        if (noVerdict != null) {
+            return TileState.NO_VERDICT;
+        }
+        if (alarm.violatedNow()) {
             return TileState.VIOLATION;
         }
         if (quiet && runRecords > 0 && rest.atRest()) {
             return TileState.ENDED;
         }
-        if (warning != null && violation == null) {
+        if (alarm.warnedNow()) {
             return TileState.WARNING;
         }
-        if (violation != null) {
-            return TileState.OK; // it holds again; the violation stays in the history
+        if (alarm.recovered()) {
+            return TileState.OK; // its alarm is over; the warning and the violation stay in the history
         }
         if (noMatch || (forecast != null && (forecast.novel() || forecast.basis() == Forecast.Basis.VALUE_ONLY))) {
             return TileState.UNKNOWN;
@@ -216,13 +205,26 @@ public final class Tile {
         return data ? TileState.OK : TileState.WAITING;
     }
 
+    /**
+     * What the board knows of a tile beyond its log: the robot's name as shown (the part of the name all logs share
+     * dropped), the property's recommended action, the probability at which the forecast warns (null when it does
+     * not), and whether the log's file exists.
+     */
+    record Shown(String name, String action, Double warnsAt, boolean exists) {
+    }
+
+    /** Whether the log has had no record since the start (so that whether its file exists is worth asking). */
+    synchronized boolean empty() {
+        return records == 0;
+    }
+
     /** The tile as {@code /status} gives it; {@code stale} when the log has not grown for {@code staleMillis}. */
-    public synchronized ObjectNode snapshot(long nowMillis, long staleMillis, String action) {
+    public synchronized ObjectNode snapshot(long nowMillis, long staleMillis, Shown shown) {
         long quiet = Math.max(0, nowMillis - grewAtMillis);
         TileState state = state(quiet >= staleMillis);
         ObjectNode o = JSON.createObjectNode();
         o.put("log", log);
-        o.put("name", name);
+        o.put("name", shown.name());
         o.put("state", state.id());
         o.put("light", state.light());
         // Quiet mid-run is STALE (a logger or robot that stopped); quiet at rest is a run that ended, and a log that
@@ -235,16 +237,21 @@ public final class Tile {
         o.put("line", line);
         o.put("unit", clock.unit());
         o.put("property", safety.map(SafetyRule::name).orElse(null));
-        o.put("action", action);
+        o.put("action", shown.action());
+        o.put("exists", shown.exists());
+        o.put("noVerdict", noVerdict);
         if (safety.isPresent()) {
             o.put("threshold", safety.get().below());
         }
         number(o, "battery", battery.last());
-        o.set("forecast", forecastJson);
-        o.set("warning", warning == null ? null : TileJson.warning(warning, warningJson));
-        o.set("violation", violation == null ? null : TileJson.violation(violation));
-        o.put("recovered", violation != null && recovered);
-        number(o, "lead", warning != null && violation != null ? violation.time() - warning.time() : Double.NaN);
+        // Models that do not fit the log make no forecast worth showing.
+        o.set("forecast", noVerdict == null ? forecastJson : null);
+        if (shown.warnsAt() == null) {
+            o.putNull("warnsAt");
+        } else {
+            o.put("warnsAt", shown.warnsAt());
+        }
+        alarm.snapshot(o);
         o.put("noMatch", noMatch);
         if (noMatch) {
             o.put("noMatchLine", noMatchLine);
@@ -252,8 +259,6 @@ public final class Tile {
         o.put("treeAtRest", rest.known() ? rest.atRest() : null);
         ArrayNode running = o.putArray("running");
         rest.running().forEach(running::add);
-        ArrayNode moments = o.putArray("history");
-        history.forEach(moments::add);
         o.set("models", TileJson.models(models, eliminated));
         ArrayNode points = o.putArray("series");
         for (double[] p : battery.points()) {
@@ -272,11 +277,8 @@ public final class Tile {
         ObjectNode o = JSON.createObjectNode();
         o.put("run", run);
         o.put("line", runLine);
-        o.put("warning", warning != null);
-        o.put("violation", violation != null);
-        number(o, "lead", warning != null && violation != null ? violation.time() - warning.time() : Double.NaN);
+        alarm.verdict(o);
         o.put("noMatch", noMatch);
-        o.put("recovered", violation != null && recovered);
         // A run that another followed is over: its light is what it came to.
         TileState state = state(false);
         o.put("state", state.id());

@@ -20,8 +20,8 @@ final class TileJson {
     }
 
     /**
-     * The warning: when, where, the battery, the faulty scenarios left (none for a forecast-rule warning), the rule,
-     * its reason in an operator's words, and the forecast at the warning as the event's JSON gave it (or null).
+     * The warning: when, where, the battery, the faulty scenarios left (none for a forecast-rule warning), the rule and
+     * the clause that warned, its reason in an operator's words, and the forecast at the warning as the event's JSON gave it (or null).
      */
     static ObjectNode warning(MonitorEvent.Warning w, JsonNode event) {
         ObjectNode o = JSON.createObjectNode();
@@ -33,6 +33,7 @@ final class TileJson {
         ArrayNode s = o.putArray("scenarios");
         w.scenarios().forEach(s::add);
         o.put("rule", w.rule().id());
+        o.put("clause", w.clause().id());
         o.put("reason", w.reason());
         o.set("forecast", forecastOf(event));
         return o;

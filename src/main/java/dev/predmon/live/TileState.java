@@ -12,6 +12,8 @@ enum TileState {
     WARNING("warning", "yellow"),
     /** No learned model matches the run, or it does something no model does: neither safe nor faulty is known. */
     UNKNOWN("unknown", "blue"),
+    /** The models cannot judge the log: not a monitor log, or an abstraction that does not fit it. */
+    NO_VERDICT("no-verdict", "purple"),
     /** The property holds and the models predict no violation (or it holds again after one). */
     OK("ok", "green"),
     /** No data yet. */

@@ -32,6 +32,8 @@ public final class Fleet implements AutoCloseable {
     static final long RESCAN_NANOS = 1_000_000_000L;
     /** Every log polled, notified or not, and the rescan when everything is watched: the backstop. */
     static final long SAFETY_NANOS = 2_000_000_000L;
+    /** How often the listener hears a {@link Listener#pulse()}. */
+    static final long PULSE_NANOS = 500_000_000L;
     /** A file created in a watched directory asks for a rescan, which waits this long after the last one. */
     static final long RESCAN_SOON_NANOS = 50_000_000L;
 
@@ -55,6 +57,10 @@ public final class Fleet implements AutoCloseable {
 
         /** A poll found {@code log} grown (or truncated or replaced). */
         default void grew(WatchedLog log) {
+        }
+
+        /** While following, twice a second, whether or not any log changed. */
+        default void pulse() {
         }
 
         /** Looking for new logs under a directory or glob failed; the fleet goes on and looks again later. */
@@ -171,8 +177,13 @@ public final class Fleet implements AutoCloseable {
             long lastScan = now;
             long nextCheck = now + RESCAN_NANOS;
             long nextSafety = now + safetyNanos;
+            long nextPulse = now + PULSE_NANOS;
             while (!Thread.currentThread().isInterrupted()) {
                 now = System.nanoTime();
+                if (now - nextPulse >= 0) {
+                    listener.pulse();
+                    nextPulse = now + PULSE_NANOS;
+                }
                 long scanPeriod = w.allWatched() ? safetyNanos : RESCAN_NANOS;
                 if (growing && (now - lastScan >= scanPeriod
                         || (w.rescanWanted() && now - lastScan >= RESCAN_SOON_NANOS))) {
@@ -190,7 +201,7 @@ public final class Fleet implements AutoCloseable {
                     }
                     nextSafety = now + safetyNanos;
                 }
-                long until = Math.min(nextCheck, nextSafety);
+                long until = Math.min(Math.min(nextCheck, nextSafety), nextPulse);
                 if (growing) {
                     until = Math.min(until, lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
                 }

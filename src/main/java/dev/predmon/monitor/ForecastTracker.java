@@ -14,6 +14,8 @@ import dev.predmon.model.ModelSet;
  */
 final class ForecastTracker {
 
+    /** How a warning of the forecast's probability says so. */
+    static final String REACHES = "reaches the warning threshold ";
     /** A change of the probability at least this large is reported. */
     static final double STEP = 0.05;
     /** A relative change of the time to violation at least this large is reported. */
@@ -52,7 +54,7 @@ final class ForecastTracker {
      */
     String reason(Forecast f, String where) {
         String why = f.probability() >= threshold()
-                ? "reaches the warning threshold " + ForecastWords.fixed(threshold(), 2)
+                ? REACHES + ForecastWords.fixed(threshold(), 2)
                 : "beyond what the training runs that held did, with the value below the lowest they went to";
         return ForecastWords.probability(f) + " " + why + "; " + ForecastWords.time(f) + "; "
                 + ForecastWords.evidence(f) + "; " + where;
@@ -78,6 +80,22 @@ final class ForecastTracker {
         forecaster.reset();
         last = null;
         told = null;
+    }
+
+    /** The lowest value a training run that held went to (NaN without one). */
+    double safeFloor() {
+        return forecaster.stats().lows().safeFloor();
+    }
+
+    /** The run recovered: the forecast starts over from the states it is in ({@link Forecaster#recovered}). */
+    void startOver() {
+        forecaster.recovered();
+        told = null;
+    }
+
+    /** The clause of the forecast rule that warns on {@code f} (only asked when {@link #warns} does). */
+    MonitorEvent.Clause clause(Forecast f) {
+        return f.probability() >= threshold() ? MonitorEvent.Clause.FORECAST : MonitorEvent.Clause.NOVELTY;
     }
 
     /** Forecasts after one pair; returns the forecast when it is news, else null. */

@@ -4,6 +4,7 @@ import dev.predmon.forecast.Forecast;
 import dev.predmon.parse.Clock;
 
 import java.util.List;
+import java.util.Locale;
 
 /**
  * What the predictive monitor reports, in log order. Times are the log's own: seconds where it has time stamps, else
@@ -11,7 +12,22 @@ import java.util.List;
  */
 public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.Violation, MonitorEvent.Eliminated,
         MonitorEvent.NoMatch, MonitorEvent.Restarted, MonitorEvent.RunStarted, MonitorEvent.Unmapped,
-        MonitorEvent.ForecastChanged {
+        MonitorEvent.ForecastChanged, MonitorEvent.Recovered, MonitorEvent.UnderWay {
+
+    /** Which clause of the warning rule warned. */
+    enum Clause {
+        /** The forecast's probability reached the warning threshold. */
+        FORECAST,
+        /** The thesis's matching: the run can only be one of the faulty scenarios. */
+        MATCHING,
+        /** The run does something no safe training run did, with its value below every safe run's lowest. */
+        NOVELTY;
+
+        /** As in JSON: {@code forecast}, {@code matching}, {@code novelty}. */
+        public String id() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
 
     /**
      * The run is predicted to violate the property: by the forecast rule, its probability reached the learned
@@ -27,9 +43,18 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param rule      the rule that warned
      * @param forecast  the forecast at the warning, or null without one (models learned without forecasts)
      * @param reason    why, in an operator's words
+     * @param clause    which clause of the rule warned
      */
     record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run,
-                   WarningRule rule, Forecast forecast, String reason) implements MonitorEvent {
+                   WarningRule rule, Forecast forecast, String reason, Clause clause) implements MonitorEvent {
+
+        /** A warning whose clause its rule and reason tell (the match rule's, or the forecast rule's own words). */
+        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+                       int run, WarningRule rule, Forecast forecast, String reason) {
+            this(time, line, scenarios, battery, pairs, clock, run, rule, forecast, reason,
+                    rule == WarningRule.MATCH || reason.startsWith(ONLY_FAULTY) ? Clause.MATCHING
+                            : reason.contains(ForecastTracker.REACHES) ? Clause.FORECAST : Clause.NOVELTY);
+        }
 
         /** A warning of the match rule without a forecast. */
         public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
@@ -39,9 +64,45 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
 
         /** The match rule's reason, in an operator's words: the run can only be one of the faulty {@code scenarios}. */
         static String onlyFaulty(List<String> scenarios) {
-            return "the run can only be faulty scenario " + String.join(", ", scenarios)
+            return ONLY_FAULTY + String.join(", ", scenarios)
                     + " (every nominal model eliminated)";
         }
+    }
+
+    /** How the match rule's reason begins. */
+    String ONLY_FAULTY = "the run can only be faulty scenario ";
+
+    /**
+     * A warning, or a violation, ended because its cause ended: the property holds again, the forecast no longer
+     * warns and the value rose above where it warned, or the action recovered the run. The alarm is gone; the
+     * forecast starts over, and a later warning or violation of the run is reported again.
+     *
+     * @param time   time of the reading that ended it
+     * @param line   its line
+     * @param cause  {@code property} (the property holds again after its violation), {@code forecast} or
+     *               {@code action}
+     * @param value  the property's value there
+     * @param reason why, in an operator's words
+     * @param clock  what {@code time} counts
+     * @param run    the run of the log
+     */
+    record Recovered(double time, long line, String cause, double value, String reason, Clock clock, int run)
+            implements MonitorEvent {
+    }
+
+    /**
+     * The safety property's recommended action started to be under way (the abstraction's {@code underWay}
+     * messages: the robot already does what an operator would tell it to), or stopped being so.
+     *
+     * @param time     time of the record
+     * @param line     its line
+     * @param by       the message, in a few words ({@code goTo charging_station})
+     * @param underWay true when it started, false when it stopped
+     * @param clock    what {@code time} counts
+     * @param run      the run of the log
+     */
+    record UnderWay(double time, long line, String by, boolean underWay, Clock clock, int run)
+            implements MonitorEvent {
     }
 
     /**

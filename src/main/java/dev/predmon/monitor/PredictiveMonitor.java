@@ -33,15 +33,12 @@ import java.util.function.ObjIntConsumer;
  * {@link WarningRule#FORECAST} rule the monitor warns when that probability reaches the threshold learned with the
  * models; the thesis's rule below stays available as {@link WarningRule#MATCH}.
  *
- * <p>The match rule's warning ({@link MatchRule}): every nominal scenario is eliminated while a faulty one still
- * matches, and a faulty model has matched {@code confirm} more pairs since ({@code confirm = 0} is Algorithm 8; the
- * abstraction sets the default, {@link Abstraction#confirm()}).
+ * The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
+ * {@code confirm} more pairs ({@link Abstraction#confirm()}). Per record the work and the state are constant.
  *
- * <p>Per record the work and the state are constant (one step per model): it never re-reads the log, unlike the thesis.
- *
- * <p>The built-in safety monitor (the property of the abstraction file, by default {@code level < 20.0} on the
- * BatteryReader channel) runs alongside on the raw records and reports the first violation, so that the lead
- * of the warning over the violation can be seen.
+ * <p>The built-in safety monitor (the abstraction's property, by default {@code level < 20.0} on the BatteryReader
+ * channel) runs alongside on the raw records and reports the violation, so that the lead of the warning can be seen;
+ * the {@link Alarm} says when a warning or a violation is over.
  */
 public final class PredictiveMonitor implements PipelineListener {
 
@@ -65,6 +62,7 @@ public final class PredictiveMonitor implements PipelineListener {
     private final LogTotals before = new LogTotals();
     private final WarningRule rule;
     private final ForecastTracker forecast;
+    private final Alarm alarm;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
 
     /** As below, confirming as the abstraction says ({@link Abstraction#confirm()}). */
@@ -72,11 +70,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this(models, abstraction, threshold, abstraction.confirm(), events);
     }
 
-    /**
-     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
-     * @param confirm   pairs a faulty model must match after the last nominal model is eliminated before the warning
-     * @param events    receives every event, in log order
-     */
+    /** As below, warning by {@link #defaultRule}. */
     public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, int confirm,
                              Consumer<MonitorEvent> events) {
         this(models, abstraction, threshold, confirm, defaultRule(models), events);
@@ -99,6 +93,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.matching = new Matching(models.models(), threshold, confirm);
         this.safety = abstraction.safety();
         this.events = events;
+        this.alarm = new Alarm(safety.orElse(null), forecast, events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
@@ -136,10 +131,7 @@ public final class PredictiveMonitor implements PipelineListener {
         events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
     }
 
-    /**
-     * The rule used when none is asked for: the forecast's when the models carry one whose threshold held-out runs
-     * chose, else the thesis's (too few training runs to know where to warn).
-     */
+    /** The rule used when none is asked for: the forecast's when held-out runs chose its threshold, else the thesis's. */
     public static WarningRule defaultRule(ModelSet models) {
         return models.forecast() != null && models.forecast().validated() ? WarningRule.FORECAST : WarningRule.MATCH;
     }
@@ -153,6 +145,7 @@ public final class PredictiveMonitor implements PipelineListener {
         noMatch = false;
         battery = null;
         pairs = 0;
+        alarm.reset();
         if (forecast != null) {
             forecast.reset();
         }
@@ -176,31 +169,36 @@ public final class PredictiveMonitor implements PipelineListener {
         return finished.summary(current());
     }
 
+    /** A record: the action under way; a reading's violation, recovery, forecast and warning ({@link Alarm}). */
     @Override
     public void record(LogRecord record) {
         clock = record.clock();
-        if (safety.isEmpty()) {
-            return;
-        }
-        double v = safety.get().valueOf(record);
+        alarm.record(record, run);
+        double v = safety.isEmpty() ? Double.NaN : safety.get().valueOf(record);
         if (Double.isNaN(v)) {
             return;
         }
         Double before = battery;
         battery = v;
-        if (violation == null && safety.get().violatedBy(v)) {
-            violation = new MonitorEvent.Violation(record.time(), record.line(), safety.get().name(), v, before,
-                    record.clock(), run);
-            firstViolation = firstViolation == null ? violation : firstViolation;
-            events.accept(violation);
+        if (!alarm.violated() && safety.get().violatedBy(v)) {
+            MonitorEvent.Violation now = new MonitorEvent.Violation(record.time(), record.line(), safety.get().name(),
+                    v, before, record.clock(), run);
+            violation = violation == null ? now : violation;
+            firstViolation = firstViolation == null ? now : firstViolation;
+            alarm.violatedNow();
+            events.accept(now);
         }
+        alarm.holdsAgain(record, v, run);
         if (forecast != null && (before == null || before != v)) {
             Forecast f = told(forecast.reading(record.time(), v), record);
-            if (warning == null && violation == null && rule == WarningRule.FORECAST
-                    && forecast.warns(f, !matching.nominalAlive())) {
+            boolean warns = rule == WarningRule.FORECAST && forecast.warns(f, !matching.nominalAlive());
+            alarm.reading(record, v, f, warns, run);
+            if (warns && !alarm.violated() && alarm.mayWarn(forecast.clause(f))) {
                 warn(record, matching.faultyAlive(), forecast.reason(f, "at the new reading "
-                        + ForecastWords.fixed(v, 2)), f);
+                        + ForecastWords.fixed(v, 2)), f, forecast.clause(f));
             }
+        } else if (forecast == null) {
+            alarm.reading(record, v, null, false, run); // models without a forecast: recovered by the action alone
         }
     }
 
@@ -214,11 +212,14 @@ public final class PredictiveMonitor implements PipelineListener {
         return f;
     }
 
-    private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f) {
-        warning = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, battery, pairs, trigger.clock(),
-                run, rule, f, reason);
-        firstWarning = firstWarning == null ? warning : firstWarning;
-        events.accept(warning);
+    private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f,
+                      MonitorEvent.Clause clause) {
+        MonitorEvent.Warning w = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, battery, pairs,
+                trigger.clock(), run, rule, f, reason, clause);
+        warning = warning == null ? w : warning; // the run's outcome keeps its first warning
+        firstWarning = firstWarning == null ? w : firstWarning;
+        alarm.warned(w);
+        events.accept(w);
     }
 
     @Override
@@ -244,16 +245,19 @@ public final class PredictiveMonitor implements PipelineListener {
         }
         Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
-        if (warning == null && (rule == WarningRule.MATCH || violation == null)) {
+        if (alarm.quiet() && (rule == WarningRule.MATCH || !alarm.violated())) {
             String reason = null;
-            if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f, step))) {
+            MonitorEvent.Clause clause = MonitorEvent.Clause.MATCHING;
+            if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f, step))
+                    && alarm.mayWarn(clause)) {
                 reason = MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
                         + (f == null ? "" : "; " + ForecastWords.line(f));
             } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f, !step.nominalAlive())) {
                 reason = forecast.reason(f, "after " + pair.input() + " -> " + pair.output());
+                clause = forecast.clause(f);
             }
             if (reason != null) {
-                warn(trigger, step.faultyAlive(), reason, f);
+                warn(trigger, step.faultyAlive(), reason, f, clause);
             }
         }
         if (!noMatch && step.noMatch()) {
@@ -315,10 +319,7 @@ public final class PredictiveMonitor implements PipelineListener {
         return run;
     }
 
-    /**
-     * Whether, in some run since the start, a point came where no model, nominal or faulty, matched it any
-     * more.
-     */
+    /** Whether, in some run since the start, a point came where no model, nominal or faulty, matched it any more. */
     public boolean noMatch() {
         return noMatch || finished.noMatch();
     }

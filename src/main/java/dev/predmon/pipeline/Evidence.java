@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.parse.ParseProblem;
 
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.LongSupplier;
@@ -28,8 +29,12 @@ import java.util.function.LongSupplier;
 public record Evidence(Path log, LongSupplier lines, long records, long interfaceRecords, long pairs,
                        Map<String, Long> unmapped, Abstraction abstraction, ParseProblem firstProblem) {
 
-    /** While following, nothing recognisable in this many lines (or records) is said once. */
+    /** While following, nothing recognisable in this many records is said once. */
     public static final long FIRST = 200;
+    /** While following, a file with no monitor record in this many lines is not a monitor log. */
+    public static final long NOT_A_LOG_LINES = 1000;
+    /** ... nor one that has had lines for this long without a monitor record. */
+    public static final long NOT_A_LOG_MILLIS = 2500;
     /** The lines of a record (header and six fields), in every layout but the oldest, which has fewer. */
     static final int RECORD_LINES = 7;
 
@@ -76,15 +81,29 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
     }
 
     /**
-     * While following: after the first {@value #FIRST} lines without a record, or the first {@value #FIRST}
-     * records without an interface message the abstraction maps or of a log it does not fit, the line to say once;
+     * While following, {@code millis} after its first line: a file whose first {@value #NOT_A_LOG_LINES} lines, or
+     * lines for {@value #NOT_A_LOG_MILLIS} ms, held no monitor record is not a monitor log: the line that says so;
      * else empty.
+     */
+    public Optional<String> notALog(long millis) {
+        long n = records > 0 ? 0 : lines.getAsLong();
+        if (n == 0 || (n < NOT_A_LOG_LINES && millis < NOT_A_LOG_MILLIS)) {
+            return Optional.empty();
+        }
+        return Optional.of(log + ": not a monitor log? no YARP monitor record in " + (n < NOT_A_LOG_LINES
+                ? n + (n == 1 ? " line" : " lines") + " over " + String.format(Locale.ROOT, "%.1f", millis / 1000.0)
+                + " s" : "the first " + n + " lines") + " (the monitor prints 'Command intercepted:' and 'Reply intercepted:'"
+                + " records; see docs/logs.md)" + (firstProblem == null ? ""
+                : "; first problem: line " + firstProblem.line() + ": " + firstProblem.message()));
+    }
+
+    /**
+     * While following: after the first {@value #FIRST} records without an interface message the abstraction maps,
+     * or of a log it does not fit, the line to say once; else empty ({@link #notALog} says when there is no record).
      */
     public Optional<String> earlyNotice() {
         if (records == 0) {
-            long n = lines.getAsLong();
-            return n < FIRST ? Optional.empty() : Optional.of(log + ": no YARP monitor record in the first " + n
-                    + " lines; is this a monitor log? (still watching)");
+            return Optional.empty();
         }
         if (records >= FIRST && mapped() == 0) {
             return Optional.of(log + ": " + nothingMapped("in the first " + records + " records")

@@ -81,7 +81,8 @@ function node(t) {
   n.dataset.run = String(t.run);
   n.dataset.ack = String(ui.acked(t));
   // Drawn again only when something shown changed (the quiet time counts in whole seconds).
-  const sig = JSON.stringify([t, ui.acked(t), Math.floor(t.quietSeconds)], (k, v) => k === 'quietSeconds' ? 0 : v);
+  const sig = JSON.stringify([t, ui.acked(t), ui.single, Math.floor(t.quietSeconds)],
+    (k, v) => k === 'quietSeconds' ? 0 : v);
   if (n.sig !== sig) {
     n.sig = sig;
     if (view === 'compact') renderRow(n, t, ui); else renderTile(n, t, ui);
@@ -91,12 +92,13 @@ function node(t) {
 
 function show() {
   const all = [...logs.values()].sort(compare);
+  ui.single = all.length === 1;
   const order = all.map(node);
   // Moved only when the order changed, so that a tile being read does not jump on every refresh.
   if (order.length !== tilesEl.children.length || order.some((n, i) => tilesEl.children[i] !== n)) {
     tilesEl.replaceChildren(...order);
   }
-  tilesEl.className = view;
+  tilesEl.className = view + (all.length === 1 ? ' single' : '');
   document.body.dataset.view = view;
   emptyEl.hidden = all.length > 0;
   if (all.length === 0) {

@@ -1,8 +1,8 @@
 // predmon live view: a tile (the full view) and a row (the compact view) of one robot. Text from logs goes into the
 // page through textContent only.
 'use strict';
-import {GLYPHS, STATE_WORDS, at, basisWords, chance, earlierText, eventText, forecastWords, momentText, num, pct,
-  shortSpan, verdict, whenWords} from './words.js';
+import {GLYPHS, STATE_WORDS, at, basisWords, chance, distanceWords, earlierText, eventText, forecastWords, momentText,
+  num, pct, recoveryWords, shortSpan, verdict, whenWords} from './words.js';
 import {plot} from './plot.js';
 
 export function el(tag, cls, text) {
@@ -13,7 +13,7 @@ export function el(tag, cls, text) {
 }
 
 /** States that ask for someone's attention: they can be acknowledged, and a warning or violation alerts. */
-export const NEEDS_ATTENTION = new Set(['violation', 'warning', 'unknown']);
+export const NEEDS_ATTENTION = new Set(['violation', 'warning', 'unknown', 'no-verdict']);
 
 function light(t, small) {
   const l = el('span', 'light ' + t.light + (small ? ' small' : ''), GLYPHS[t.state] || '');
@@ -57,17 +57,27 @@ function badges(t, compact) {
   return out;
 }
 
-/** What to do, when something is to be done. */
+/** What to do, when something is to be done: or that the robot already does it. */
 function actionLine(t) {
   if (!t.action || (t.state !== 'warning' && t.state !== 'violation')) return null;
+  if (t.underWay) {
+    const p = el('p', 'action under-way');
+    p.append(el('b', null, 'Under way since ' + at(t.underWay.since, t.unit) + ': '), t.action);
+    p.title = 'the robot already does it: ' + t.underWay.by + ' (line ' + t.underWay.line + ')';
+    return p;
+  }
   const p = el('p', 'action');
   p.append(el('b', null, 'Do now: '), t.action);
   return p;
 }
 
+/**
+ * The forecast: in a warning, the chance of a violation and when; below the threshold, how far the run is from a
+ * warning, with no countdown to a violation that is not expected.
+ */
 function forecastLine(t, ui) {
   const f = t.forecast;
-  if (!f || t.state === 'ended' || t.state === 'violation') return null;
+  if (!f || t.state === 'ended' || t.state === 'violation' || t.state === 'no-verdict') return null;
   const p = el('div', 'forecast');
   p.title = f.explanation || '';
   if (ui.noSkill(t)) {
@@ -77,9 +87,20 @@ function forecastLine(t, ui) {
         + chance(f.probability) + ', ' + whenWords(f)));
     return p;
   }
-  p.append(el('span', 'chance', chance(f.probability)), el('span', 'when', ' chance of a violation, ' + whenWords(f)),
-    el('small', 'basis', basisWords(f)));
+  const distance = t.state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+  if (distance) {
+    p.append(el('span', 'chance distance', distance), el('small', 'basis', basisWords(f)));
+  } else {
+    p.append(el('span', 'chance', chance(f.probability)), el('span', 'when', ' chance of a violation, '
+      + whenWords(f)), el('small', 'basis', basisWords(f)));
+  }
   return p;
+}
+
+/** How the run recovered from its last alarm. */
+function recoveryLine(t) {
+  if (t.state !== 'ok' || !t.recovered) return null;
+  return el('p', 'recovery', recoveryWords(t));
 }
 
 /** Why the monitor warned, in its words (which rule, what the forecast rests on). */
@@ -119,8 +140,8 @@ export function renderTile(tile, t, ui) {
       + pct(t.violation.battery, t.threshold);
   }
   const parts = [head, status];
-  for (const p of [actionLine(t), forecastLine(t, ui), whyLine(t)]) if (p) parts.push(p);
-  parts.push(lead);
+  for (const p of [actionLine(t), forecastLine(t, ui), whyLine(t), recoveryLine(t)]) if (p) parts.push(p);
+  if (t.state !== 'no-verdict') parts.push(lead);
   if (t.history.length > 0) {
     const h = el('p', 'history');
     h.append(el('b', null, 'this run: '), t.history.map(m => momentText(m, t)).join(' \u2192 '));
@@ -157,9 +178,19 @@ export function renderTile(tile, t, ui) {
     runs.append(el('h3', null, 'earlier runs'), ul);
     parts.push(runs);
   }
-  parts.push(el('footer', null, t.log + ' \u00b7 ' + t.records + ' records, line ' + t.line + ' \u00b7 log grew '
-    + num(t.quietSeconds, 1) + ' s ago'));
-  tile.replaceChildren(...parts);
+  parts.push(el('footer', null, t.log + ' \u00b7 ' + (t.exists === false ? 'no such file yet'
+    : t.records + ' records, line ' + t.line + ' \u00b7 log grew ' + num(t.quietSeconds, 1) + ' s ago')));
+  if (ui.single) {
+    // One robot alone uses the screen: its words beside a large plot.
+    const plotEl = parts.find(p => p.tagName === 'svg');
+    const words = el('div', 'single-words');
+    words.append(...parts.filter(p => p !== head && p !== plotEl));
+    const body = el('div', 'single-body');
+    body.append(words, plotEl);
+    tile.replaceChildren(head, body);
+  } else {
+    tile.replaceChildren(...parts);
+  }
 }
 
 /** The second line of a compact row: the state and what matters most about it. */
@@ -168,19 +199,27 @@ function rowWords(t, ui) {
   const state = STATE_WORDS[t.state] || t.state;
   switch (t.state) {
     case 'violation':
-      return state + ' since ' + at(t.violation.time, t.unit) + (t.action ? ' \u2192 ' + t.action : '');
+      return state + ' since ' + at(t.violation.time, t.unit) + todo(t);
     case 'warning':
       return state + (f ? ' ' + chance(f.probability) + (f.timeToViolation === null ? ''
-        : ' ~' + shortSpan(f.timeToViolation, f.unit)) : '') + (t.action ? ' \u2192 ' + t.action : '');
+        : ' ~' + shortSpan(f.timeToViolation, f.unit)) : '') + todo(t);
+    case 'no-verdict':
+      return state + ' \u00b7 ' + t.noVerdict;
     case 'unknown':
       return state + (t.noMatch ? ' \u00b7 no model matches' : ' \u00b7 new behaviour')
         + (f ? ' \u00b7 ' + chance(f.probability) : '');
     case 'ok':
-      return (t.recovered ? 'OK again after a violation' : state) + (f ? ' \u00b7 ' + chance(f.probability)
-        + (f.timeToViolation === null ? '' : ' in ~' + shortSpan(f.timeToViolation, f.unit)) : '');
+      return (t.recovered ? 'OK, recovered ' + at(t.recovery.time, t.unit) : state)
+        + (f ? ' \u00b7 ' + (distanceWords(f, t.warnsAt) || chance(f.probability)) : '');
     default:
-      return t.state === 'ended' ? state : 'waiting for data';
+      return t.state === 'ended' ? state : t.exists === false ? 'no such file yet' : 'waiting for data';
   }
+}
+
+/** What to do, or that it is under way, after an arrow. */
+function todo(t) {
+  if (!t.action) return '';
+  return t.underWay ? ' \u2192 under way since ' + at(t.underWay.since, t.unit) : ' \u2192 ' + t.action;
 }
 
 /** The compact row of {@code t}: one light per property, the robot, its value and the state in a few words. */

@@ -2,12 +2,12 @@
 'use strict';
 
 /** The states worst first, as the page sorts them, with their names on the page. */
-export const STATES = ['violation', 'warning', 'unknown', 'ok', 'waiting', 'ended'];
-export const STATE_WORDS = {violation: 'VIOLATION', warning: 'WARNING', unknown: 'UNKNOWN', ok: 'OK',
-  waiting: 'WAITING', ended: 'RUN ENDED'};
+export const STATES = ['violation', 'warning', 'unknown', 'no-verdict', 'ok', 'waiting', 'ended'];
+export const STATE_WORDS = {violation: 'VIOLATION', warning: 'WARNING', unknown: 'UNKNOWN', 'no-verdict': 'NO VERDICT',
+  ok: 'OK', waiting: 'WAITING', ended: 'RUN ENDED'};
 /** A glyph on each light, so that the state does not rest on colour alone. */
-export const GLYPHS = {violation: '\u2715', warning: '!', unknown: '?', ok: '\u2713', waiting: '\u2026',
-  ended: '\u25A0'};
+export const GLYPHS = {violation: '\u2715', warning: '!', unknown: '?', 'no-verdict': '\u2298', ok: '\u2713',
+  waiting: '\u2026', ended: '\u25A0'};
 
 const missing = (x) => x === null || x === undefined || Number.isNaN(x);
 
@@ -87,6 +87,34 @@ export function forecastWords(f) {
   return chance(f.probability) + ' chance of a violation, ' + whenWords(f);
 }
 
+/** How far a run below the warning threshold is from a warning: "P 0.23, warning at 0.86". */
+export function distanceWords(f, warnsAt) {
+  if (!f || missing(warnsAt) || f.basis === 'violated') return null;
+  return 'P ' + num(f.probability, 2) + ', warning at ' + num(warnsAt, 2);
+}
+
+/** Which clause of the rule warned, in a headline. */
+function warningWords(t) {
+  const w = t.warning;
+  switch (w.clause) {
+    case 'matching':
+      return 'WARNING: the run can only be faulty' + (w.scenarios.length ? ' scenario ' + w.scenarios.join(', ') : '')
+        + ' (the matching)';
+    case 'novelty':
+      return 'WARNING: new behaviour, below every safe run (the value is lower than any training run that held went)';
+    default:
+      return 'WARNING: the forecast predicts a violation' + (w.forecast && !missing(t.warnsAt)
+        ? ' (P ' + num(w.forecast.probability, 2) + ', warning at ' + num(t.warnsAt, 2) + ')' : '');
+  }
+}
+
+/** The recovery in words: "recovered at tick 154: ...". */
+export function recoveryWords(t) {
+  const r = t.recovery;
+  if (!r) return null;
+  return 'recovered ' + at(r.time, t.unit) + ' (' + pct(r.battery, t.threshold) + '): ' + r.reason;
+}
+
 /** The state in a sentence: what holds now, and why. */
 export function verdict(t) {
   const thr = t.threshold;
@@ -95,21 +123,24 @@ export function verdict(t) {
       return 'VIOLATED since ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
         + (t.warning ? ', predicted ' + span(t.lead, t.unit) + ' ahead' : ', not predicted');
     case 'warning':
-      // a forecast-rule warning names the faulty scenarios still matching, not a run that can only be faulty
-      return 'WARNING: a violation is predicted' + (t.warning.rule === 'match' && t.warning.scenarios.length
-        ? ' (the run can only be faulty scenario ' + t.warning.scenarios.join(', ') + ')' : ' by the forecast');
+      return warningWords(t);
     case 'unknown':
       return 'UNKNOWN: ' + unknownWhy(t);
+    case 'no-verdict':
+      return 'NO VERDICT: ' + t.noVerdict;
     case 'ok':
       if (t.recovered) {
-        return 'holds again (' + pct(t.battery, thr) + '); violated at ' + at(t.violation.time, t.unit)
-          + ' (' + pct(t.violation.battery, thr) + ')';
+        return 'RECOVERED: ' + (t.recovery.cause === 'property' ? 'the property holds again (' + pct(t.battery, thr)
+          + '); violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
+          : 'the warning\u2019s cause ended ' + at(t.recovery.time, t.unit) + ' (' + pct(t.recovery.battery, thr)
+            + ')' + (t.recovery.cause === 'action' ? ', by the action' : ''));
       }
       return 'OK: the property holds and no warning is raised';
     case 'ended':
       return 'Run ended: ' + runOutcome(t);
     default:
-      return t.records === 0 ? 'waiting for the log' : 'waiting for a reading of the property';
+      return t.records > 0 ? 'waiting for a reading of the property'
+        : t.exists === false ? 'waiting for the log: no such file yet' : 'waiting for the log\u2019s first record';
   }
 }
 
@@ -154,6 +185,10 @@ export function eventText(e, t) {
       return where + 'run ' + e.run + ' begins: every model starts over';
     case 'restarted':
       return 'log ' + e.reason + ': monitoring starts over';
+    case 'recovered':
+      return where + 'RECOVERED: ' + e.reason;
+    case 'under-way':
+      return where + (e.underWay ? 'the action is under way (' : 'the action is no longer under way (') + e.by + ')';
     default:
       return where + e.event;
   }
@@ -161,7 +196,7 @@ export function eventText(e, t) {
 
 /** This run's moments: "warned t=27.91 s (32.10%)". */
 export function momentText(m, t) {
-  const words = {warning: 'warned', violation: 'violated', recovered: 'holds again', 'violated again': 'violated again'};
+  const words = {warning: 'warned', violation: 'violated', recovered: 'recovered', 'violated again': 'violated again'};
   return (words[m.what] || m.what) + ' ' + at(m.time, t.unit) + ' (' + pct(m.battery, t.threshold) + ')';
 }
 

@@ -189,7 +189,8 @@ public class AbstractionTest {
     void safetyNameAndFingerprint() throws AbstractionException {
         assertEquals(new SafetyRule("battery level >= 20% (thesis 3.3.1)", "BatteryReader", "level",
                 "/BatteryComponent", "/BatteryReaderBatteryLevelClient", 20.0,
-                "send the robot to the charging station"), A.safety().orElseThrow());
+                "send the robot to the charging station", List.of(new UnderWay(null, "GoTo", "goTo", "charging_station"),
+                new UnderWay("GoToChargingStation", null, null, null))), A.safety().orElseThrow());
         assertEquals("thesis-tables-4.1-4.2-bands-5.2", A.name());
         assertTrue(A.fingerprint().matches("[0-9a-f]{64}"));
         // Same content in another key order and layout: same canonical form and fingerprint.

@@ -52,7 +52,8 @@ class DemoAndShippedDataTest {
     @Test
     void shippedModelsCarryTheirAbstraction() throws Exception {
         String text = Files.readString(MODELS.resolve("abstraction.json"))
-                .replace("\"action\":\"send the robot to the charging station\",", "");
+                .replace("\"action\":\"send the robot to the charging station\",", "")
+                .replaceAll(",\"underWay\":\\[[^\\]]*]", "");
         String sha = HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256")
                 .digest(text.getBytes(StandardCharsets.UTF_8)));
         assertTrue(Files.readString(MODELS.resolve("index.json")).contains("\"fingerprint\" : \"" + sha + "\""));

@@ -187,16 +187,56 @@ class TileStateTest {
         t.record(level(2, 19.95));
         assertEquals("violation", state(b, "r.log"));
         t.record(level(30, 96.7));
+        assertEquals("violation", state(b, "r.log"), "the monitor decides when it holds again, not the tile");
+        b.event(t, new MonitorEvent.Recovered(30, 40, "property", 96.7, "the property holds again", Clock.SECONDS, 0),
+                "{\"event\":\"recovered\"}");
         JsonNode s = snap(b, "r.log");
         assertEquals("ok", s.get("state").asText(), "it holds again");
         assertTrue(s.get("recovered").asBoolean());
+        assertEquals("property", s.get("recovery").get("cause").asText());
         assertEquals(19.95, s.get("violation").get("battery").asDouble(), "the violation stays");
         assertEquals(List.of("violation", "recovered"), moments(s));
         assertEquals(96.7, s.get("history").get(1).get("battery").asDouble());
         t.record(level(40, 12));
+        b.event(t, new MonitorEvent.Violation(40, 50, "battery", 12, 96.7, Clock.SECONDS, 0), "{\"event\":\"violation\"}");
         s = snap(b, "r.log");
         assertEquals("violation", s.get("state").asText());
         assertEquals(List.of("violation", "recovered", "violated again"), moments(s));
+    }
+
+    @Test
+    void aWarningWhoseCauseEndedIsGoneItsTimeStaysAndUnderWaySaysSince() {
+        Board b = board();
+        Tile t = b.tile("r.log");
+        t.record(level(1, 40));
+        b.event(t, new MonitorEvent.UnderWay(5, 30, "skill GoToChargingStation", true, Clock.SECONDS, 0),
+                "{\"event\":\"under-way\"}");
+        b.event(t, new MonitorEvent.Warning(6, 35, List.of(), 29.6, 3, Clock.SECONDS, 0), "{\"event\":\"warning\"}");
+        JsonNode s = snap(b, "r.log");
+        assertEquals("warning", s.get("state").asText());
+        assertEquals(5.0, s.get("underWay").get("since").asDouble());
+        assertEquals("matching", s.get("warning").get("clause").asText());
+        b.event(t, new MonitorEvent.Recovered(9, 60, "action", 45, "recovered by the action", Clock.SECONDS, 0),
+                "{\"event\":\"recovered\"}");
+        s = snap(b, "r.log");
+        assertEquals("ok", s.get("state").asText(), "no warning state after the recovery");
+        assertEquals(List.of("warning", "recovered"), moments(s), "the warning's time stays in this run");
+        assertEquals(6.0, s.get("history").get(0).get("time").asDouble());
+    }
+
+    @Test
+    void modelsThatDoNotFitShowNoVerdictAndNoForecastAndAMissingLogSaysSo() {
+        Board b = board();
+        Tile t = b.tile("r.log");
+        t.record(level(1, 40));
+        t.noVerdict("the abstraction does not fit this log; learn with --abstraction scope-fetch");
+        JsonNode s = snap(b, "r.log");
+        assertEquals("no-verdict", s.get("state").asText());
+        assertTrue(s.get("noVerdict").asText().contains("--abstraction scope-fetch"));
+        assertTrue(s.get("forecast").isNull());
+        b.tile("/nowhere/robot.log");
+        assertFalse(snap(b, "/nowhere/robot.log").get("exists").asBoolean());
+        assertTrue(snap(b, "r.log").get("exists").asBoolean(), "a log with records exists");
     }
 
     @Test

@@ -137,11 +137,11 @@ public final class AbstractionFiles {
             throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
         }
         String canonical = SpecWriter.canonical(spec);
-        // The recommended action is advice to operators: it changes no trace, so models stay valid when it does.
-        String fingerprint = sha256(spec.safety() == null || spec.safety().action() == null
-                ? canonical : SpecWriter.canonical(spec.withoutAction()));
-        String action = spec.safety() == null || spec.safety().action() != null ? null : builtinAction(fingerprint);
-        return new Abstraction(spec.definition(action), canonical, fingerprint);
+        // The recommended action, and what says it is under way, are advice to operators: they change no trace, so
+        // models stay valid when they do.
+        String fingerprint = sha256(spec.hasAdvice() ? SpecWriter.canonical(spec.withoutAdvice()) : canonical);
+        SafetyRule advice = spec.safety() == null ? null : builtinAdvice(fingerprint);
+        return new Abstraction(spec.definition(advice), canonical, fingerprint);
     }
 
     private static String at(String pointer) {
@@ -162,24 +162,29 @@ public final class AbstractionFiles {
     }
 
     /**
-     * The recommended action of the built-in abstraction with this fingerprint, or null. An abstraction file that is
-     * a built-in but for its action (the {@code models/abstraction.json} of models learned before actions existed)
-     * thus gets the built-in's.
+     * The safety property of the built-in abstraction with this fingerprint, for its advice (the recommended action
+     * and what says it is under way), or null. An abstraction file that is a built-in but for its advice (the
+     * {@code models/abstraction.json} of models learned before the advice existed) thus gets the built-in's.
      */
+    static SafetyRule builtinAdvice(String fingerprint) {
+        Map<String, SafetyRule> advice = BuiltinAdvice.BY_FINGERPRINT;
+        return advice == null ? null : advice.get(fingerprint); // null while the built-ins themselves are read
+    }
+
+    /** The recommended action of the built-in abstraction with this fingerprint, or null. */
     static String builtinAction(String fingerprint) {
-        Map<String, String> actions = BuiltinActions.BY_FINGERPRINT;
-        return actions == null ? null : actions.get(fingerprint); // null while the built-ins themselves are read
+        SafetyRule advice = builtinAdvice(fingerprint);
+        return advice == null ? null : advice.action();
     }
 
     /** Read on first use: most runs of predmon never need it. */
-    private static final class BuiltinActions {
-        static final Map<String, String> BY_FINGERPRINT = read();
+    private static final class BuiltinAdvice {
+        static final Map<String, SafetyRule> BY_FINGERPRINT = read();
 
-        private static Map<String, String> read() {
-            Map<String, String> byFingerprint = new HashMap<>();
+        private static Map<String, SafetyRule> read() {
+            Map<String, SafetyRule> byFingerprint = new HashMap<>();
             for (String name : BUILTIN.keySet()) {
-                builtin(name).ifPresent(a -> a.safety().map(SafetyRule::action)
-                        .ifPresent(action -> byFingerprint.put(a.fingerprint(), action)));
+                builtin(name).ifPresent(a -> a.safety().ifPresent(s -> byFingerprint.put(a.fingerprint(), s)));
             }
             return Map.copyOf(byFingerprint);
         }

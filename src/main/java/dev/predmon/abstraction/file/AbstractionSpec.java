@@ -7,6 +7,7 @@ import dev.predmon.abstraction.Band;
 import dev.predmon.abstraction.Definition;
 import dev.predmon.abstraction.RunRule;
 import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.abstraction.UnderWay;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -34,18 +35,23 @@ import java.util.Map;
 record AbstractionSpec(String name, String description, List<DropSpec> drop, Map<String, String> locations,
                        List<RuleSpec> rules, SafetySpec safety, WarningSpec warning, RunsSpec runs) {
 
-    /** This spec without the safety property's action (see {@link SafetySpec#withoutAction()}). */
-    AbstractionSpec withoutAction() {
+    /** This spec without the safety property's advice (see {@link SafetySpec#withoutAdvice()}). */
+    AbstractionSpec withoutAdvice() {
         return new AbstractionSpec(name, description, drop, locations, rules,
-                safety == null ? null : safety.withoutAction(), warning, runs);
+                safety == null ? null : safety.withoutAdvice(), warning, runs);
+    }
+
+    /** Whether the safety property gives advice (an action, or what says it is under way). */
+    boolean hasAdvice() {
+        return safety != null && (safety.action() != null || safety.underWay() != null);
     }
 
     /**
      * What this validated spec defines, with the defaults of absent keys.
      *
-     * @param action the safety property's action when the spec gives none, or null
+     * @param advice the property whose action and under-way messages are taken where the spec gives none, or null
      */
-    Definition definition(String action) {
+    Definition definition(SafetyRule advice) {
         List<Definition.Drop> drops = new ArrayList<>();
         for (DropSpec d : drop == null ? List.<DropSpec>of() : drop) {
             drops.add(new Definition.Drop(d.kind(), d.from(), d.to(), d.protocol(), d.command()));
@@ -62,7 +68,9 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
         }
         SafetyRule property = safety == null ? null : new SafetyRule(safety.name(), safety.protocol(),
                 safety.command(), safety.from() == null ? "" : safety.from(), safety.to() == null ? "" : safety.to(),
-                safety.below(), safety.action() != null ? safety.action() : action);
+                safety.below(), safety.action() != null || advice == null ? safety.action() : advice.action(),
+                safety.underWay() != null ? safety.underWay().stream().map(UnderWaySpec::underWay).toList()
+                        : advice == null ? List.of() : advice.underWay());
         RunRule runRule = runs == null ? RunRule.DEFAULT : new RunRule(runs.tickRestart() == null || runs.tickRestart(),
                 runs.silence() == null ? RunRule.DEFAULT_SILENCE : runs.silence());
         int confirm = warning == null || warning.confirm() == null ? 0 : warning.confirm();
@@ -132,16 +140,29 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
     }
 
     /**
-     * See {@link SafetyRule}; {@code from}, {@code to} and {@code action} (what an operator should do when the property
-     * is predicted to fail or fails, e.g. {@code send the robot to the charging station}) are optional.
+     * See {@link SafetyRule}; {@code from}, {@code to}, {@code action} (what an operator should do when the property
+     * is predicted to fail or fails, e.g. {@code send the robot to the charging station}) and {@code underWay} (the
+     * messages that say the robot already does it) are optional.
      */
     @JsonInclude(JsonInclude.Include.NON_NULL)
     record SafetySpec(String name, String protocol, String command, String from, String to, Double below,
-                      String action) {
+                      String action, List<UnderWaySpec> underWay) {
 
-        /** This property without its action: what the fingerprint hashes (advice does not change a trace). */
-        SafetySpec withoutAction() {
-            return new SafetySpec(name, protocol, command, from, to, below, null);
+        /** This property without its advice: what the fingerprint hashes (advice does not change a trace). */
+        SafetySpec withoutAdvice() {
+            return new SafetySpec(name, protocol, command, from, to, below, null, null);
+        }
+    }
+
+    /**
+     * A message that says the action is under way (see {@link UnderWay}): {@code skill} alone, or {@code command}
+     * with an optional {@code protocol} and {@code argument}.
+     */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record UnderWaySpec(String skill, String protocol, String command, String argument) {
+
+        UnderWay underWay() {
+            return new UnderWay(skill, protocol, command, argument);
         }
     }
 }

@@ -262,6 +262,21 @@ final class AbstractionValidator {
             throw new Invalid("/safety/action", "'action' must say in one line of at most " + MAX_ACTION
                     + " characters what an operator should do, e.g. \"send the robot to the charging station\"");
         }
+        if (s.underWay() == null) {
+            return;
+        }
+        for (int i = 0; i < s.underWay().size(); i++) {
+            AbstractionSpec.UnderWaySpec u = s.underWay().get(i);
+            String at = "/safety/underWay/" + i;
+            // A skill alone, or a command (with its protocol and argument if need be): never both, never neither.
+            if (u == null || (u.skill() == null) == (u.command() == null)
+                    || (u.skill() != null && (u.protocol() != null || u.argument() != null))
+                    || (u.skill() != null && u.skill().isBlank()) || (u.command() != null && u.command().isBlank())) {
+                throw new Invalid(at, "expected {\"skill\": NAME} (the tree starts that skill) or {\"command\": NAME}"
+                        + " with an optional \"protocol\" and \"argument\" (a component is called so), e.g. "
+                        + "{\"protocol\": \"GoTo\", \"command\": \"goTo\", \"argument\": \"charging_station\"}");
+            }
+        }
     }
 
     /**

@@ -7,6 +7,7 @@ import dev.predmon.abstraction.file.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.file.AbstractionSpec.RuleSpec;
 import dev.predmon.abstraction.file.AbstractionSpec.RunsSpec;
 import dev.predmon.abstraction.file.AbstractionSpec.SafetySpec;
+import dev.predmon.abstraction.file.AbstractionSpec.UnderWaySpec;
 import dev.predmon.abstraction.file.AbstractionSpec.WarningSpec;
 import dev.predmon.abstraction.file.AbstractionValidator.Invalid;
 
@@ -42,8 +43,8 @@ final class SpecBinder {
      * object per type: a dozen lambdas cost milliseconds to bootstrap at every start.)
      */
     private enum Type {
-        STRING, NUMBER, INTEGER, BOOLEAN, LOCATIONS, DROP, RULE, REPLY, RANGE, SAFETY, WARNING, RUNS,
-        STRINGS(STRING), DROPS(DROP), RULES(RULE), REPLIES(REPLY);
+        STRING, NUMBER, INTEGER, BOOLEAN, LOCATIONS, DROP, RULE, REPLY, RANGE, SAFETY, WARNING, RUNS, UNDER_WAY,
+        STRINGS(STRING), DROPS(DROP), RULES(RULE), REPLIES(REPLY), UNDER_WAYS(UNDER_WAY);
 
         /** For a list, the type of its elements. */
         final Type element;
@@ -72,7 +73,10 @@ final class SpecBinder {
     private static final Map<String, Type> RANGE = Map.of("above", Type.NUMBER, "atLeast", Type.NUMBER,
             "below", Type.NUMBER, "atMost", Type.NUMBER);
     private static final Map<String, Type> SAFETY = Map.of("name", Type.STRING, "protocol", Type.STRING,
-            "command", Type.STRING, "from", Type.STRING, "to", Type.STRING, "below", Type.NUMBER, "action", Type.STRING);
+            "command", Type.STRING, "from", Type.STRING, "to", Type.STRING, "below", Type.NUMBER, "action", Type.STRING,
+            "underWay", Type.UNDER_WAYS);
+    private static final Map<String, Type> UNDER_WAY = Map.of("skill", Type.STRING, "protocol", Type.STRING,
+            "command", Type.STRING, "argument", Type.STRING);
     private static final Map<String, Type> WARNING = Map.of("confirm", Type.INTEGER, "description", Type.STRING);
     private static final Map<String, Type> RUNS = Map.of("tickRestart", Type.BOOLEAN, "silence", Type.NUMBER,
             "description", Type.STRING);
@@ -116,7 +120,14 @@ final class SpecBinder {
     private static SafetySpec safety(JsonNode node, String at) throws Invalid {
         Map<String, Object> f = fields(node, at, SAFETY);
         return new SafetySpec((String) f.get("name"), (String) f.get("protocol"), (String) f.get("command"),
-                (String) f.get("from"), (String) f.get("to"), (Double) f.get("below"), (String) f.get("action"));
+                (String) f.get("from"), (String) f.get("to"), (Double) f.get("below"), (String) f.get("action"),
+                cast(f.get("underWay")));
+    }
+
+    private static UnderWaySpec underWay(JsonNode node, String at) throws Invalid {
+        Map<String, Object> f = fields(node, at, UNDER_WAY);
+        return new UnderWaySpec((String) f.get("skill"), (String) f.get("protocol"), (String) f.get("command"),
+                (String) f.get("argument"));
     }
 
     private static WarningSpec warning(JsonNode node, String at) throws Invalid {
@@ -147,7 +158,8 @@ final class SpecBinder {
             case SAFETY -> safety(node, at);
             case WARNING -> warning(node, at);
             case RUNS -> runs(node, at);
-            case STRINGS, DROPS, RULES, REPLIES -> list(type.element, node, at);
+            case UNDER_WAY -> underWay(node, at);
+            case STRINGS, DROPS, RULES, REPLIES, UNDER_WAYS -> list(type.element, node, at);
         };
     }
 

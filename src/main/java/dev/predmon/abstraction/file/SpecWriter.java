@@ -8,6 +8,7 @@ import dev.predmon.abstraction.file.AbstractionSpec.ReplySpec;
 import dev.predmon.abstraction.file.AbstractionSpec.RuleSpec;
 import dev.predmon.abstraction.file.AbstractionSpec.RunsSpec;
 import dev.predmon.abstraction.file.AbstractionSpec.SafetySpec;
+import dev.predmon.abstraction.file.AbstractionSpec.UnderWaySpec;
 import dev.predmon.abstraction.file.AbstractionSpec.WarningSpec;
 
 import java.io.IOException;
@@ -170,6 +171,22 @@ final class SpecWriter {
         string(g, "name", s.name());
         string(g, "protocol", s.protocol());
         string(g, "to", s.to());
+        if (s.underWay() != null) {
+            g.writeArrayFieldStart("underWay");
+            for (UnderWaySpec u : s.underWay()) {
+                if (u == null) {
+                    g.writeNull();
+                    continue;
+                }
+                g.writeStartObject();
+                string(g, "argument", u.argument());
+                string(g, "command", u.command());
+                string(g, "protocol", u.protocol());
+                string(g, "skill", u.skill());
+                g.writeEndObject();
+            }
+            g.writeEndArray();
+        }
         g.writeEndObject();
     }
 
