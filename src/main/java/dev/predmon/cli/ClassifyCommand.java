@@ -3,6 +3,8 @@ package dev.predmon.cli;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunTiming;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -11,14 +13,17 @@ import picocli.CommandLine.Spec;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.OptionalInt;
 import java.util.concurrent.Callable;
 
 /** {@code predmon classify}: Algorithm 7 on a complete log. */
 @Command(name = "classify", mixinStandardHelpOptions = true,
         description = {"Classify a complete log against every model (thesis Algorithm 7): discrepancies per model, "
-                + "models that could not take the trace, the best match and whether it is faulty.",
-                "Exit 1 when the best match is a faulty scenario, 5 when no model matches, 0 otherwise; 3 when the "
-                        + "log holds nothing to judge."})
+                + "the models eliminated (an input they cannot take, or more discrepancies than --threshold), the "
+                + "best match and whether it is faulty.",
+                "Exit 6 when the property is violated before the run could only be faulty, else 1 when the "
+                        + "best match is a faulty scenario, 5 when no model matches, 0 otherwise; 3 when the log holds "
+                        + "nothing to judge."})
 final class ClassifyCommand implements Callable<Integer> {
 
     @Spec
@@ -34,20 +39,27 @@ final class ClassifyCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         // A log of several runs (the tick counter started again) is classified run by run.
         List<MealyTrace> runs = in.trace().judgedRuns();
+        List<LogTrace.Run> inFull = in.trace().judgedRunsInFull();
         List<Result> results = new ArrayList<>();
         List<Integer> codes = new ArrayList<>();
-        for (MealyTrace run : runs) {
+        for (int i = 0; i < runs.size(); i++) {
+            MealyTrace run = runs.get(i);
             Classifier.Result r = Classifier.classify(set, run, input.threshold());
-            codes.add(ExitCodes.of(r.best().isEmpty(), r.faulty()));
+            boolean violated = i < inFull.size() && inFull.get(i).violated();
+            boolean unwarned = violated && !before(r.onlyFaultyFrom(), inFull.get(i).timing());
+            codes.add(ExitCodes.of(unwarned, r.best().isEmpty(), r.faulty()));
             if (input.json) {
                 List<Score> scores = r.scores().stream().map(s -> new Score(s.model().id(), s.model().scenario(),
-                        s.model().faulty(), s.deleted(), s.discrepancies(),
+                        s.model().faulty(), s.eliminated(), s.discrepancies(),
                         s.failure() == null ? null : s.failure().describe())).toList();
                 results.add(new Result(run.source(), run.pairs(), scores,
                         r.best().map(s -> s.model().id()).orElse(null),
-                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty()));
+                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty(), violated));
             } else {
                 print(out, r, run);
+                if (unwarned) {
+                    out.println("the property is violated before the run could only be faulty: no warning would have come before it");
+                }
             }
         }
         if (input.json) {
@@ -57,12 +69,20 @@ final class ClassifyCommand implements Callable<Integer> {
         return ExitCodes.ofRuns(codes.stream().mapToInt(Integer::intValue));
     }
 
+    /**
+     * Whether the run could only be faulty from a pair that came strictly before the violation: what watch's matching
+     * would have warned in time.
+     */
+    private static boolean before(OptionalInt pair, RunTiming timing) {
+        return pair.isPresent() && pair.getAsInt() < timing.times().length
+                && timing.times()[pair.getAsInt()] < timing.violationTime();
+    }
+
     private void print(PrintWriter out, Classifier.Result r, MealyTrace run) {
         out.println(Terminal.line(run.source()) + ": " + run.pairs() + " compacted pairs");
         for (Classifier.Score s : r.scores()) {
             out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
-                    s.deleted() ? "deleted: " + s.failure().describe()
-                            : s.discrepancies() + " discrepancies" + (s.failure() == null ? "" : "; first: " + s.failure().describe()));
+                    VerifyCommand.fate(s.failure(), s.discrepancies(), s.eliminated()));
         }
         out.println(r.best().map(s -> "best match: " + s.model().scenario() + " (" + s.model().id() + ", "
                 + s.discrepancies() + " discrepancies)" + (s.model().faulty() ? ": FAULTY" : ""))
@@ -75,10 +95,12 @@ final class ClassifyCommand implements Callable<Integer> {
     }
 
     /** One model's score in {@code --json}. */
-    record Score(String model, String scenario, boolean faulty, boolean deleted, int discrepancies, String reason) {
+    record Score(String model, String scenario, boolean faulty, boolean eliminated, int discrepancies,
+                 String reason) {
     }
 
     /** The {@code --json} document. */
-    record Result(String log, int pairs, List<Score> models, String best, String scenario, boolean faulty) {
+    record Result(String log, int pairs, List<Score> models, String best, String scenario, boolean faulty,
+                  boolean violated) {
     }
 }

@@ -48,7 +48,8 @@ final class EvaluateCommand implements Callable<Integer> {
         @Option(names = "--test", paramLabel = "DIR", description = "Test logs, same layout as --logs.")
         Path test;
 
-        @Option(names = "--folds", paramLabel = "K", description = "Cross-validation folds (default: 5).")
+        @Option(names = "--folds", paramLabel = "K", description = "Cross-validation folds (default: 5); as many as the logs or more: "
+                + "leave-one-out.")
         Integer folds;
     }
 

@@ -20,8 +20,9 @@ import java.util.concurrent.Callable;
 @Command(name = "explain", mixinStandardHelpOptions = true,
         description = {"Explain a run: its abstract trace pair by pair and, for each model, where it stopped "
                 + "matching and why (the reply it expected versus the one seen), then what 'watch' concluded.",
-                "Exit as watch --no-follow would on this log: 1 when it warns, 5 when no model matches the run, 0 "
-                        + "otherwise; 3 when the log holds nothing to judge."})
+                "Exit as watch --no-follow would on this log: 6 when the property is violated with no warning "
+                        + "before it, else 1 when it warns, 5 when no model matches the run, 0 otherwise; 3 when the "
+                        + "log holds nothing to judge."})
 final class ExplainCommand implements Callable<Integer> {
 
     @Spec
@@ -52,7 +53,14 @@ final class ExplainCommand implements Callable<Integer> {
             }
         }
         out.flush();
-        return ExitCodes.ofRuns(runs.stream().mapToInt(x -> ExitCodes.of(x.run().noMatch(), x.run().warningTime() != null)));
+        return ExitCodes.ofRuns(runs.stream().mapToInt(x -> code(x.run())));
+    }
+
+    /** The run's exit code as watch gives it: a violation is unwarned when no warning came strictly before it. */
+    private static int code(RunResult r) {
+        boolean unwarned = r.violationTime() != null
+                && (r.warningTime() == null || !(r.warningTime() < r.violationTime()));
+        return ExitCodes.of(unwarned, r.noMatch(), r.warningTime() != null);
     }
 
     private static void print(PrintWriter out, Explanation x) {
@@ -74,7 +82,7 @@ final class ExplainCommand implements Callable<Integer> {
         out.println("models:");
         for (Explanation.ModelFate f : x.models()) {
             out.printf(Locale.ROOT, "  %-16s %-8s %s%n", f.model(), f.faulty() ? "faulty" : "nominal",
-                    f.matched() ? f.reason() : "stopped at pair " + f.stoppedAt() + ": " + f.reason());
+                    f.matched() ? f.reason() : "eliminated at pair " + f.stoppedAt() + ": " + f.reason());
         }
         out.println();
         var r = x.run();

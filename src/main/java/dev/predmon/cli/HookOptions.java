@@ -17,8 +17,10 @@ final class HookOptions {
 
     @Option(names = "--on-warning", paramLabel = "CMD",
             description = "Run CMD with /bin/sh -c for each warning: the event's JSON on its standard input, its main "
-                    + "fields in PREDMON_* environment variables (see the README). Never blocks the monitor; a failing "
-                    + "or slow command is reported on stderr and not run again.")
+                    + "fields in PREDMON_* environment variables (see docs/watch.md). Only for what happens after "
+                    + "watch started: warnings in what the logs already held go to the verdict and the page, not to "
+                    + "CMD (with --no-follow the whole file counts). Never blocks the monitor; a failing or slow "
+                    + "command is reported on stderr and not run again.")
     String onWarning;
 
     @Option(names = "--on-violation", paramLabel = "CMD",

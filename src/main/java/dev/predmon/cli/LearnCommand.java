@@ -22,7 +22,10 @@ import java.util.concurrent.Callable;
 @Command(name = "learn", mixinStandardHelpOptions = true,
         description = {"Learn one Mealy machine per scenario from logs with LearnLib's BlueFringeRPNIMealy.",
                 "--logs holds one directory per scenario with its *.log files and a scenario.json "
-                        + "{\"faulty\": true|false, \"description\": \"...\"}. Runs of a scenario that disagree "
+                        + "{\"faulty\": true|false, \"description\": \"...\"}, or is a folder of recordings not "
+                        + "sorted into scenarios: every *.log and *.txt file in it and its subfolders is a log, and the "
+                        + "abstraction's safety monitor labels each run (scenarios 'violating' and 'safe'). Runs of a "
+                        + "scenario that disagree "
                         + "after the same inputs are split into conflict-free groups, one machine each "
                         + "(<scenario>-<k>.dot). Writes <models>/*.dot, <models>/index.json and "
                         + "<models>/abstraction.json atomically.",

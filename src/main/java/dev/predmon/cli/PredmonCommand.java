@@ -9,6 +9,7 @@ import picocli.CommandLine.Spec;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.Callable;
 
 /**
  * The top command. Its subcommands are {@link #SUBCOMMANDS}, added by {@link Main} rather than listed in the
@@ -17,10 +18,11 @@ import java.util.Optional;
  */
 @Command(name = "predmon", mixinStandardHelpOptions = true, version = "predmon 0.1.0",
         description = "Predictive runtime monitoring of robots: learns one Mealy machine per scenario from YARP "
-                + "monitor logs and warns while a robot runs as soon as the run can only be a faulty scenario.",
+                + "monitor logs, and the odds of a violation from each state; while a robot runs it forecasts the "
+                + "violation of the safety property and warns before it.",
         footer = {"", "Exit codes: 0 ok / no warning, 1 warning raised (verify: mismatch), 2 usage, 3 bad input, "
-                + "4 internal error."})
-public final class PredmonCommand implements Runnable {
+                + "4 internal error, 5 no model matches the run, 6 property violated with no warning before it."})
+public final class PredmonCommand implements Callable<Integer> {
 
     /**
      * The subcommands, in the order usage lists them: the one list of them. Their names are those of their own
@@ -51,8 +53,10 @@ public final class PredmonCommand implements Runnable {
         return Optional.empty();
     }
 
+    /** {@code predmon} without a subcommand: a usage error, so the usage goes to stderr with exit 2. */
     @Override
-    public void run() {
-        spec.commandLine().usage(spec.commandLine().getOut());
+    public Integer call() {
+        spec.commandLine().usage(spec.commandLine().getErr());
+        return ExitCodes.USAGE;
     }
 }

@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.matching.ModelTracker;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
@@ -20,10 +21,11 @@ import java.util.concurrent.Callable;
 
 /** {@code predmon verify}: Algorithm 6, does a scenario's model reproduce a log? */
 @Command(name = "verify", mixinStandardHelpOptions = true,
-        description = {"Run a log's trace through the models of one scenario (thesis Algorithm 6) and report the "
-                + "thesis's case: 1 matches; 2 outputs differ (first position and both symbols); "
-                + "3 an input the model cannot take (position and symbol).",
-                "Exit 0 when some machine of the scenario matches (case 1, or case 2 within --threshold), 1 "
+        description = {"Run a log's trace through the models of one scenario (thesis Algorithm 6) and report for each "
+                + "machine whether it matches, where its outputs differ (first position and both symbols), or where "
+                + "it is eliminated: an input it cannot take (position and symbol), or more output differences than "
+                + "--threshold.",
+                "Exit 0 when some machine of the scenario matches (outputs differing at most --threshold times), 1 "
                         + "otherwise; 3 when the log holds nothing to judge."})
 final class VerifyCommand implements Callable<Integer> {
 
@@ -60,7 +62,7 @@ final class VerifyCommand implements Callable<Integer> {
                         || (v.verdict() == Verification.Verdict.OUTPUTS_DIFFER && v.discrepancies() <= input.threshold());
                 matched |= matches;
                 machines.add(new Machine(m.id(), thesisCase(v.verdict()), matches, v.steps(), v.discrepancies(),
-                        describe(v)));
+                        describe(v, input.threshold())));
             }
             all &= matched;
             results.add(new Result(mealy.source(), scenario, mealy.pairs(), mealy.length(), machines, matched));
@@ -94,13 +96,28 @@ final class VerifyCommand implements Callable<Integer> {
         };
     }
 
-    static String describe(Verification v) {
-        return switch (v.verdict()) {
-            case MATCHES -> "case 1, matches (" + v.steps() + " steps)";
-            case OUTPUTS_DIFFER -> "case 2, outputs differ " + v.discrepancies() + " time(s); first: "
-                    + v.failure().describe();
-            case INPUT_UNDEFINED -> "case 3, " + v.failure().describe();
-        };
+    /** One machine's verdict in the words watch, explain and classify use. */
+    static String describe(Verification v, int threshold) {
+        return v.verdict() == Verification.Verdict.MATCHES ? "matches (" + v.steps() + " steps)"
+                : fate(v.failure(), v.discrepancies(), v.verdict() == Verification.Verdict.INPUT_UNDEFINED
+                || v.discrepancies() > threshold);
+    }
+
+    /**
+     * What became of a model that did not match a trace exactly, in the words every command uses: eliminated with its
+     * reason, or matching with its discrepancies.
+     *
+     * @param failure       the input it could not take, or its first difference; null when it had none
+     * @param discrepancies outputs that differed over the steps it walked
+     * @param eliminated    it could not take an input, or its outputs differed more often than the threshold allows
+     */
+    static String fate(ModelTracker.Failure failure, int discrepancies, boolean eliminated) {
+        if (failure == null) {
+            return discrepancies + " discrepancies";
+        }
+        String differ = "outputs differ " + discrepancies + " time(s); first: " + failure.describe();
+        return eliminated ? "eliminated: " + (failure.expected() == null ? failure.describe() : differ)
+                : "matches within --threshold, " + differ;
     }
 
     /**

@@ -33,14 +33,19 @@ import java.util.concurrent.TimeUnit;
 /** {@code predmon watch}: the predictive monitor on a live log. */
 @Command(name = "watch", mixinStandardHelpOptions = true,
         description = {"Follow a log as 'tail -F' does (growth, truncation, replacement; waits for a file that does "
-                + "not exist yet) and warn as soon as every nominal model is eliminated while a faulty one still "
-                + "matches. The built-in safety monitor reports the property's violation alongside.",
+                + "not exist yet), forecast after every pair the probability that the run violates the property and "
+                + "the time left, and warn when it reaches the threshold learned with the models, when the run can "
+                + "only be a faulty scenario, or when it is beyond every safe training run (--rule forecast, the "
+                + "default for models learned with a forecast). --rule match warns as the thesis does: as soon as "
+                + "every nominal model is eliminated while a faulty one still matches. The built-in safety monitor "
+                + "reports the property's violation alongside.",
                 "Several logs (--log repeated, a directory or a glob) are watched in one process, each with its "
                         + "own monitor; each event then names its log.",
                 "Ctrl-C (SIGINT), SIGTERM or SIGHUP stops it: it prints the end summary and exits as below.",
-                "Exit 1 when a warning was raised, 5 when no model matches the run any more, 0 otherwise; 3 when "
-                        + "the log held nothing to judge (with --no-follow, at the end of the file; while following "
-                        + "one log, at once when it is not a monitor log)."})
+                "Exit 6 when the property was violated with no warning before it, else 1 when a warning was raised, "
+                        + "5 when no model matches the run any more, 0 otherwise; 3 when the log held nothing to "
+                        + "judge (with --no-follow, at the end of the file; while following one log, at once when it "
+                        + "is not a monitor log)."})
 final class WatchCommand implements Callable<Integer> {
 
     @Spec
@@ -187,7 +192,7 @@ final class WatchCommand implements Callable<Integer> {
                 codes.add(code);
             }
             err.flush();
-            return codes.size() == 1 ? codes.get(0) : fleetCode(codes);
+            return codes.size() == 1 ? codes.get(0) : ExitCodes.ofLogs(codes);
         }
     }
 
@@ -203,19 +208,6 @@ final class WatchCommand implements Callable<Integer> {
     /** Why a log gets no verdict: {@link #refusal}, or models that do not fit it; empty when it gets one. */
     private Optional<String> whyNoVerdict(Evidence evidence) {
         return refusal(evidence).or(evidence::misfit);
-    }
-
-    /**
-     * The exit code of several logs: a warning in any log is the fleet's warning, else a log no model matched, else
-     * a log judged quietly; only when no log held anything to judge is it bad input.
-     */
-    private static int fleetCode(List<Integer> codes) {
-        for (int c : new int[] {ExitCodes.WARNING, ExitCodes.NO_MATCH, ExitCodes.OK}) {
-            if (codes.contains(c)) {
-                return c;
-            }
-        }
-        return ExitCodes.BAD_INPUT;
     }
 
     /**
@@ -273,7 +265,8 @@ final class WatchCommand implements Callable<Integer> {
             }
         }
         out.flush();
-        return all.runs() == 1 ? ExitCodes.of(all.noMatch(), m.warning().isPresent()) : ExitCodes.ofRuns(all);
+        return all.runs() == 1 ? ExitCodes.of(all.unwarnedViolation(), all.noMatch(), m.warning().isPresent())
+                : ExitCodes.ofRuns(all);
     }
 
     /** One run's verdict in the {@code end} event. */

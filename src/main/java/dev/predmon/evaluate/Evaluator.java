@@ -88,11 +88,13 @@ public final class Evaluator {
     /** K-fold cross-validation over the logs of {@code specs}. */
     public Evaluation crossValidate(List<ScenarioSpec> specs, int k) throws BadInputException {
         Map<Path, Integer> fold = Folds.assign(specs, k);
-        Counter c = new Counter(count(specs) * 2 + k + 1);
+        int used = Folds.used(fold);
+        Counter c = new Counter(count(specs) * 2 + used + 1);
         List<String> notes = new ArrayList<>();
+        Folds.instead(fold, k).ifPresent(notes::add);
         Map<Path, LogTrace> samples = readSamples(specs, notes, c);
         List<RunResult> runs = new ArrayList<>();
-        for (int f = 0; f < k; f++) {
+        for (int f = 0; f < used; f++) {
             int current = f;
             ModelSet models = learn(specs, samples, log -> fold.get(log) != current, notes, "fold " + f + ": ");
             c.step("fold " + f + ": learned " + models.models().size() + " model(s)");
@@ -108,7 +110,7 @@ public final class Evaluator {
         ModelSet all = learn(specs, samples, log -> true, new ArrayList<>(), "");
         c.step("learned the models shown, on every log");
         runs.sort(Comparator.comparing(RunResult::scenario).thenComparing(RunResult::log));
-        return result("cross-validation", k, specs, runs, notes, all);
+        return result("cross-validation", used, specs, runs, notes, all);
     }
 
     private Evaluation result(String mode, int k, List<ScenarioSpec> judged, List<RunResult> runs, List<String> notes,

@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.matching.ModelTracker;
+import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
@@ -9,10 +10,12 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalInt;
 
 /**
  * Algorithm 7 of the thesis (MatchTraces), off-line: every model runs the whole trace; a model that cannot take
- * some input is deleted; the others get their discrepancy count; the best match is the model with the fewest
+ * some input, or whose outputs differ more often than the threshold allows, is eliminated (as {@code watch} eliminates
+ * it; the thesis deletes it); every model gets its discrepancy count; the best match is the model with the fewest
  * discrepancies within the threshold, except that a nominal model within the threshold is preferred to any faulty
  * one: a nominal scenario that still explains the run is no evidence of a fault. So the verdict is the one
  * {@code watch} reaches at the end of the same log: faulty exactly when every nominal model is out and a faulty one
@@ -24,11 +27,12 @@ public final class Classifier {
      * One model's score.
      *
      * @param model         the model
-     * @param deleted       it could not take some input (the thesis's KeyError)
+     * @param eliminated    it could not take some input (the thesis's KeyError), or its outputs differed more often
+     *                      than the threshold allows
      * @param discrepancies outputs that differed (over the steps it walked)
      * @param failure       the input it could not take, or its first difference, or null
      */
-    public record Score(LearnedModel model, boolean deleted, int discrepancies, ModelTracker.Failure failure) {
+    public record Score(LearnedModel model, boolean eliminated, int discrepancies, ModelTracker.Failure failure) {
     }
 
     /**
@@ -47,6 +51,31 @@ public final class Classifier {
         public boolean faulty() {
             return best.map(s -> s.model().faulty()).orElse(false);
         }
+
+        /**
+         * The pair after which the run could only be faulty, as {@code watch}'s matching would have warned there:
+         * every nominal model eliminated, the last of them at that pair, while a faulty one still matched. Empty
+         * when a nominal model matches to the end, or no faulty one outlived the nominal ones.
+         */
+        public OptionalInt onlyFaultyFrom() {
+            int lastNominal = -1;
+            for (Score s : scores) {
+                if (!s.model().faulty()) {
+                    if (!s.eliminated()) {
+                        return OptionalInt.empty();
+                    }
+                    lastNominal = Math.max(lastNominal, pair(s));
+                }
+            }
+            int last = lastNominal;
+            boolean outlived = scores.stream().anyMatch(s -> s.model().faulty() && (!s.eliminated() || pair(s) > last));
+            return outlived && last >= 0 ? OptionalInt.of(last) : OptionalInt.empty();
+        }
+
+        /** The pair at which an eliminated model's failure came. */
+        private static int pair(Score s) {
+            return s.failure() == null ? Integer.MAX_VALUE : MealyMapping.pairOfStep(s.failure().step());
+        }
     }
 
     private Classifier() {
@@ -57,12 +86,12 @@ public final class Classifier {
         List<Score> scores = new ArrayList<>();
         for (LearnedModel m : models.models()) {
             Verification v = Verification.of(m, trace);
-            boolean deleted = v.verdict() == Verification.Verdict.INPUT_UNDEFINED;
-            scores.add(new Score(m, deleted, v.discrepancies(), v.failure()));
+            boolean eliminated = v.verdict() == Verification.Verdict.INPUT_UNDEFINED || v.discrepancies() > threshold;
+            scores.add(new Score(m, eliminated, v.discrepancies(), v.failure()));
         }
         // A nominal model that still matches is not evidence of a fault, even with more discrepancies: prefer it.
         Optional<Score> best = scores.stream()
-                .filter(s -> !s.deleted() && s.discrepancies() <= threshold)
+                .filter(s -> !s.eliminated())
                 .min(Comparator.comparing((Score s) -> s.model().faulty()).thenComparingInt(Score::discrepancies));
         return new Result(List.copyOf(scores), best);
     }

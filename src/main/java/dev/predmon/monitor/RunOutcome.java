@@ -26,6 +26,14 @@ public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, 
         this(run, firstLine, warning, violation, noMatch, pairs, safetyObserved, null);
     }
 
+    /**
+     * Whether the property was violated with no warning strictly before it: the run was missed (a warning at or
+     * after the violation predicts nothing, as {@code evaluate} counts it).
+     */
+    public boolean unwarnedViolation() {
+        return violation != null && (warning == null || !(warning.time() < violation.time()));
+    }
+
     /** Violation time minus warning time when both happened, in the log's unit. */
     public Optional<Double> lead() {
         return warning != null && violation != null ? Optional.of(violation.time() - warning.time()) : Optional.empty();

@@ -12,7 +12,10 @@ import java.util.Optional;
  * @param safetyObserved whether one of them had a value of the safety property
  * @param warnedMatching whether one of them was warned while some model still matched it
  * @param firstWarned    the first run warned, if one was
+ * @param unwarnedViolation whether one of them violated the property with no warning before it
+ *                          ({@link RunOutcome#unwarnedViolation})
  */
 public record RunsSummary(int runs, int dropped, long pairs, boolean noMatch, boolean safetyObserved,
-                          boolean warnedMatching, Optional<RunOutcome> firstWarned) {
+                          boolean warnedMatching, Optional<RunOutcome> firstWarned,
+                          boolean unwarnedViolation) {
 }

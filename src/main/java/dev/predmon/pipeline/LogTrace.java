@@ -73,6 +73,14 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
         return runs.size() > 1 ? samples(RunLabel.ALL) : List.of(mealy());
     }
 
+    /**
+     * The runs behind {@link #judgedRuns}, in the same order: whether each violated the property, and when each pair
+     * and the violation came.
+     */
+    public List<Run> judgedRunsInFull() {
+        return runs.size() > 1 ? runs.stream().filter(r -> !r.pairs().isEmpty()).toList() : runs;
+    }
+
     /** How a run of a log is named in reports: the file, with {@code #k} when the log holds several runs. */
     public static String name(Path log, int run, int runs) {
         return runs > 1 ? log + "#" + run : log.toString();

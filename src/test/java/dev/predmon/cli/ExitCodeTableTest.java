@@ -85,6 +85,26 @@ class ExitCodeTableTest {
         judged(log, ExitCodes.NO_MATCH);
     }
 
+    /**
+     * The battery falls from 43 to 15 between two readings on the way to the station: the property is violated and
+     * no warning came before it. watch, classify and explain say 6, not 0 as for a run that held.
+     */
+    @Test
+    void row6ViolatedWithoutAWarning() throws Exception {
+        Path log = log("sudden.log", suddenDrop());
+        Cli watch = Cli.run("watch", "--no-follow", "--log", log.toString(), "--models", models.toString());
+        assertTrue(watch.out().contains("VIOLATION") && watch.out().contains("no warning came before it"),
+                watch.out());
+        judged(log, ExitCodes.UNWARNED_VIOLATION);
+    }
+
+    /** A run that starts as both scenarios do and whose battery then reads 15, below the property's 20. */
+    static Records suddenDrop() {
+        return new Records().at(0).level(80).charging(false).isAt("kitchen", false).goTo("kitchen")
+                .status("kitchen", 1).at(10).level(70).at(20).level(48).isAt("charging_station", false)
+                .halt("kitchen").goTo("charging_station").status("charging_station", 1).at(30).level(15);
+    }
+
     @Test
     void row2UsageForEveryCommand() {
         for (String command : List.of("learn", "watch", "verify", "classify", "explain", "simulate", "evaluate",
@@ -133,7 +153,7 @@ class ExitCodeTableTest {
 
     @Test
     void theCodesAreTheDocumentedNumbers() {
-        assertEquals(List.of(0, 1, 2, 3, 4, 5), List.of(ExitCodes.OK, ExitCodes.WARNING, ExitCodes.USAGE,
-                ExitCodes.BAD_INPUT, ExitCodes.INTERNAL, ExitCodes.NO_MATCH));
+        assertEquals(List.of(0, 1, 2, 3, 4, 5, 6), List.of(ExitCodes.OK, ExitCodes.WARNING, ExitCodes.USAGE,
+                ExitCodes.BAD_INPUT, ExitCodes.INTERNAL, ExitCodes.NO_MATCH, ExitCodes.UNWARNED_VIOLATION));
     }
 }
