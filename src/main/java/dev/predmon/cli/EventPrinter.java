@@ -64,9 +64,9 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     static String toJson(MonitorEvent e, String log) {
         Object o;
         if (e instanceof MonitorEvent.Warning w) {
-            o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(),
-                    w.scenarios().isEmpty() ? null : w.scenarios().get(0), w.scenarios(), w.battery(), w.pairs(),
-                    w.rule().id(), w.clause().id(), w.reason(), ForecastJson.of(w.forecast()));
+            o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.property(), w.scenario(),
+                    w.scenarios(), w.battery(), w.pairs(), w.rule().id(), w.clause().id(), w.reason(),
+                    ForecastJson.of(w.forecast()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             o = new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
                     ForecastJson.of(f.forecast()));
@@ -93,9 +93,9 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         return log == null ? Json.line(o) : Json.line(Json.tagged(o, log));
     }
 
-    record WarningJson(String event, double time, String unit, long line, int run, String scenario,
-                       List<String> scenarios, Double battery, long pairs, String rule, String clause, String reason,
-                       ForecastJson forecast) {
+    record WarningJson(String event, double time, String unit, long line, int run, String property,
+                       String scenario, List<String> scenarios, Double battery, long pairs, String rule, String clause,
+                       String reason, ForecastJson forecast) {
     }
 
     record RecoveredJson(String event, double time, String unit, long line, int run, String cause, double battery,

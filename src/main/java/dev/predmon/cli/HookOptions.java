@@ -40,12 +40,18 @@ final class HookOptions {
         timeoutSeconds = seconds;
     }
 
-    /** The hooks, reporting on {@code err}; null when neither command is given. */
-    CommandHooks open(PrintWriter err) {
+    /**
+     * The hooks, reporting on {@code err}; null when neither command is given.
+     *
+     * @param bound the property's bound, below which it is violated (NaN when there is none): values below it are
+     *              rounded down in the hooks' environment, as on the page
+     */
+    CommandHooks open(PrintWriter err, double bound) {
         if (onWarning == null && onViolation == null) {
             return null;
         }
-        return new CommandHooks(onWarning, onViolation, Duration.ofMillis(Math.round(timeoutSeconds * 1000)), line -> {
+        return new CommandHooks(onWarning, onViolation, Duration.ofMillis(Math.round(timeoutSeconds * 1000)), bound,
+                line -> {
             err.println("predmon: " + line);
             err.flush();
         });

@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
@@ -129,7 +130,7 @@ final class WatchCommand implements Callable<Integer> {
         }
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
-                     noFollow, hookOptions.open(err), board, abstraction, p -> !sources.named(p));
+                     noFollow, hookOptions.open(err, bound(abstraction)), board, abstraction, p -> !sources.named(p));
              Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), warnBy,
                      outputs)) {
             if (set.forecast() != null) {
@@ -194,6 +195,11 @@ final class WatchCommand implements Callable<Integer> {
             err.flush();
             return codes.size() == 1 ? codes.get(0) : ExitCodes.ofLogs(codes);
         }
+    }
+
+    /** The bound below which the abstraction's property is violated, NaN without a property. */
+    private static double bound(Abstraction abstraction) {
+        return abstraction.safety().map(SafetyRule::below).orElse(Double.NaN);
     }
 
     /**

@@ -49,6 +49,11 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private final Board board;
     private String lastRescanFailure;
     private String notALog;
+    /**
+     * Whether events are news, to be sent to the hooks: with {@code --no-follow} always (the file is judged as a
+     * whole), while following only once the logs' history has been read ({@link #caughtUp}).
+     */
+    private boolean live;
 
     /** Where one log's events go, and what is known of its evidence so far. */
     private static final class Outlet {
@@ -91,6 +96,13 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         this.board = board;
         this.abstraction = abstraction;
         this.found = found;
+        this.live = noFollow;
+    }
+
+    /** The history of the logs is read: from now on warnings and violations run the hooks. */
+    @Override
+    public void caughtUp() {
+        live = true;
     }
 
     @Override
@@ -110,7 +122,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
             o.restarts.put(log.monitor().run(), r.reason()); // the monitor has begun the run that follows it
         }
         o.printer.accept(e);
-        boolean hook = hooks != null && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
+        boolean hook = hooks != null && live
+                && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
         if (hook || o.tile != null) {
             String tagged = EventPrinter.toJson(e, log.name());
             if (o.tile != null) {

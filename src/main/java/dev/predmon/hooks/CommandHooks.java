@@ -37,6 +37,7 @@ public final class CommandHooks implements AutoCloseable {
     private final String onViolation;
     private final Duration timeout;
     private final Consumer<String> report;
+    private final double bound;
     private final ThreadPoolExecutor pool;
 
     /**
@@ -46,6 +47,14 @@ public final class CommandHooks implements AutoCloseable {
      * @param report      receives one line per failure (watch prints it on stderr); called from the hooks' threads
      */
     public CommandHooks(String onWarning, String onViolation, Duration timeout, Consumer<String> report) {
+        this(onWarning, onViolation, timeout, Double.NaN, report);
+    }
+
+    /**
+     * As above, for a property violated below {@code bound}: values below it are rounded down in the environment, as
+     * the page shows them ({@link HookEnvironment}).
+     */
+    public CommandHooks(String onWarning, String onViolation, Duration timeout, double bound, Consumer<String> report) {
         if (timeout.isNegative() || timeout.isZero()) {
             throw new IllegalArgumentException("the hook timeout must be positive, got " + timeout);
         }
@@ -53,6 +62,7 @@ public final class CommandHooks implements AutoCloseable {
         this.onViolation = onViolation;
         this.timeout = timeout;
         this.report = report;
+        this.bound = bound;
         AtomicInteger n = new AtomicInteger();
         this.pool = new ThreadPoolExecutor(THREADS, THREADS, 30, TimeUnit.SECONDS, new ArrayBlockingQueue<>(QUEUE),
                 r -> {
@@ -70,7 +80,7 @@ public final class CommandHooks implements AutoCloseable {
         if (command == null) {
             return;
         }
-        Run run = new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event), json);
+        Run run = new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound), json);
         try {
             pool.execute(run);
         } catch (RejectedExecutionException full) {

@@ -1,14 +1,18 @@
 package dev.predmon.hooks;
 
+import dev.predmon.forecast.Forecast;
 import dev.predmon.monitor.MonitorEvent;
 
+import java.math.BigDecimal;
+import java.math.RoundingMode;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
  * The environment variables a hook command gets: an event's main fields, so that a one-line shell command can use
- * them without parsing JSON ({@code echo "warning $PREDMON_SCENARIO $PREDMON_BATTERY" | yarp write ...}). Numbers
- * are written as in the JSON; a value the event does not have (no battery reading yet) is the empty string.
+ * them without parsing JSON ({@code echo "warning $PREDMON_SCENARIO $PREDMON_VALUE" | yarp write ...}). Numbers are
+ * rounded as the live page shows them (the JSON on standard input keeps every digit); a value the event does not
+ * have (no reading yet, no forecast) is the empty string.
  */
 public final class HookEnvironment {
 
@@ -17,40 +21,72 @@ public final class HookEnvironment {
 
     /**
      * PREDMON_EVENT ({@code warning} or {@code violation}), PREDMON_LOG, PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
-     * ({@code s} or {@code ticks}), PREDMON_LINE, PREDMON_BATTERY; for a warning PREDMON_SCENARIO (the first faulty
-     * scenario still matching) and PREDMON_SCENARIOS (all, comma-separated); for a violation PREDMON_PROPERTY and
-     * PREDMON_BEFORE (the reading before the violating one).
+     * ({@code s} or {@code ticks}), PREDMON_LINE, PREDMON_PROPERTY (the property's name), PREDMON_VALUE (its last
+     * value, two decimals) and PREDMON_BATTERY (the same, the older name); for a warning PREDMON_SCENARIO (the faulty
+     * scenario the run is most like), PREDMON_SCENARIOS (the faulty scenarios still matching, comma-separated),
+     * PREDMON_PROBABILITY (two decimals) and PREDMON_TIME_TO_VIOLATION (in PREDMON_UNIT, as the page rounds it); for
+     * a violation PREDMON_BEFORE (the value before the violating one).
      *
+     * @param bound the property's bound, below which it is violated (NaN when not known): a value below it is rounded
+     *              down, as on the page, so that a violating 19.995 never reads as the bound itself
      * @throws IllegalArgumentException for events that run no hook
      */
-    public static Map<String, String> of(String log, MonitorEvent event) {
+    public static Map<String, String> of(String log, MonitorEvent event, double bound) {
         Map<String, String> env = new LinkedHashMap<>();
         if (event instanceof MonitorEvent.Warning w) {
-            put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.battery());
-            env.put("PREDMON_SCENARIO", w.scenarios().isEmpty() ? "" : w.scenarios().get(0));
+            put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.property(), value(w.battery(), bound));
+            env.put("PREDMON_SCENARIO", w.scenario() == null ? "" : w.scenario());
             env.put("PREDMON_SCENARIOS", String.join(",", w.scenarios()));
+            Forecast f = w.forecast();
+            env.put("PREDMON_PROBABILITY", f == null ? "" : fixed(f.probability(), 2, RoundingMode.HALF_UP));
+            env.put("PREDMON_TIME_TO_VIOLATION", f == null || f.timeToViolation() == null ? ""
+                    : span(f.timeToViolation(), w.clock().unit()));
         } else if (event instanceof MonitorEvent.Violation v) {
-            put(env, "violation", log, v.run(), v.time(), v.clock().unit(), v.line(), v.value());
-            env.put("PREDMON_PROPERTY", v.property());
-            env.put("PREDMON_BEFORE", text(v.before()));
+            put(env, "violation", log, v.run(), v.time(), v.clock().unit(), v.line(), v.property(),
+                    value(v.value(), bound));
+            env.put("PREDMON_BEFORE", value(v.before(), bound));
         } else {
             throw new IllegalArgumentException("no hook runs for " + event);
         }
         return env;
     }
 
+    /** As above, for a property whose bound is not known. */
+    public static Map<String, String> of(String log, MonitorEvent event) {
+        return of(log, event, Double.NaN);
+    }
+
     private static void put(Map<String, String> env, String kind, String log, int run, double time, String unit,
-                            long line, Double battery) {
+                            long line, String property, String value) {
         env.put("PREDMON_EVENT", kind);
         env.put("PREDMON_LOG", log);
         env.put("PREDMON_RUN", Integer.toString(run));
         env.put("PREDMON_TIME", Double.toString(time));
         env.put("PREDMON_UNIT", unit);
         env.put("PREDMON_LINE", Long.toString(line));
-        env.put("PREDMON_BATTERY", text(battery));
+        env.put("PREDMON_PROPERTY", property == null ? "" : property);
+        env.put("PREDMON_VALUE", value);
+        env.put("PREDMON_BATTERY", value); // the older name of PREDMON_VALUE, kept for existing hook commands
     }
 
-    private static String text(Double d) {
-        return d == null ? "" : Double.toString(d);
+    /** A value of the property with two decimals; below the bound rounded down, as the page shows it. */
+    static String value(Double v, double bound) {
+        if (v == null || !Double.isFinite(v)) {
+            return "";
+        }
+        return fixed(v, 2, v < bound ? RoundingMode.FLOOR : RoundingMode.HALF_UP);
+    }
+
+    /** A duration as the page shows it: whole ticks; seconds with 0, 1 or 2 decimals as it is long or short. */
+    static String span(double d, String unit) {
+        if (!Double.isFinite(d)) {
+            return "";
+        }
+        int digits = unit.equals("ticks") || Math.abs(d) >= 100 ? 0 : Math.abs(d) >= 10 ? 1 : 2;
+        return fixed(d, digits, RoundingMode.HALF_UP);
+    }
+
+    private static String fixed(double x, int digits, RoundingMode mode) {
+        return BigDecimal.valueOf(x).setScale(digits, mode).toPlainString();
     }
 }

@@ -74,6 +74,13 @@ public final class Fleet implements AutoCloseable {
          */
         default void unnotified(Path dir, String why, long pauseNanos) {
         }
+
+        /**
+         * Following has begun, and every log watched from the start has been read as far as it went then: what it
+         * held is history, and every event from now on is news (a warning to send to the robot).
+         */
+        default void caughtUp() {
+        }
     }
 
     /** How each log's monitor matches: the same for every log. */
@@ -170,6 +177,8 @@ public final class Fleet implements AutoCloseable {
         try (Wakeups w = new Wakeups(watch, pauseNanos, (dir, why) -> listener.unnotified(dir, why, pauseNanos))) {
             wakeups = w;
             logs.values().forEach(w::add);
+            poll(); // the logs as they are as following begins: their history
+            listener.caughtUp();
             if (growing) {
                 rescan(sources); // also watches the directories in which new logs may appear
             }

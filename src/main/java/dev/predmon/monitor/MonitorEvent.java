@@ -44,9 +44,20 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param forecast  the forecast at the warning, or null without one (models learned without forecasts)
      * @param reason    why, in an operator's words
      * @param clause    which clause of the rule warned
+     * @param scenario  the faulty scenario the run is most like: the first still matching, else the one whose
+     *                  machine matched the run longest, or null when no faulty machine ever matched it
+     * @param property  the name of the property whose violation is predicted, or null when the abstraction has none
      */
     record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run,
-                   WarningRule rule, Forecast forecast, String reason, Clause clause) implements MonitorEvent {
+                   WarningRule rule, Forecast forecast, String reason, Clause clause, String scenario,
+                   String property) implements MonitorEvent {
+
+        /** A warning whose scenario is the first still matching, for a property not named. */
+        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+                       int run, WarningRule rule, Forecast forecast, String reason, Clause clause) {
+            this(time, line, scenarios, battery, pairs, clock, run, rule, forecast, reason, clause,
+                    scenarios.isEmpty() ? null : scenarios.get(0), null);
+        }
 
         /** A warning whose clause its rule and reason tell (the match rule's, or the forecast rule's own words). */
         public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,

@@ -4,9 +4,14 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.sun.net.httpserver.HttpServer;
+import dev.predmon.simulate.Day;
+import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
+import dev.predmon.simulate.SimOptions;
+import dev.predmon.simulate.SimRun;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.File;
@@ -15,14 +20,17 @@ import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -137,8 +145,62 @@ class WatchHooksTest {
                 "--on-warning", "PATH='" + bin + "':$PATH; " + recipe);
         JsonNode warning = event(w, "warning");
         assertEquals("write ... /robot/predmon:i", Files.readString(dir.resolve("args")).strip());
-        assertEquals("warning depleted " + warning.get("battery").asDouble() + " " + warning.get("time").asDouble(),
-                Files.readString(dir.resolve("bottle")).strip());
+        assertEquals("warning depleted " + String.format(Locale.ROOT, "%.2f", warning.get("battery").asDouble()) + " "
+                + warning.get("time").asDouble(), Files.readString(dir.resolve("bottle")).strip());
+    }
+
+    /**
+     * watch restarted on a robot's log that already holds a finished faulty run (and a nominal one): the history goes
+     * to the verdict, not to the robot. The next run, written after the start, warns and violates: one call each.
+     */
+    @Test
+    @Timeout(60)
+    void aRestartSendsNothingOfTheLogsHistoryAndEachLiveEventOnce() throws Exception {
+        SimOptions o = SimOptions.defaults();
+        List<SimRun> day = Day.simulate(List.of(Scenario.DEPLETED, Scenario.DIRECT, Scenario.DEPLETED), 51, 3, o);
+        Path robot = Files.writeString(dir.resolve("robot.log"),
+                LogWriter.toText(day.get(0), o) + LogWriter.toText(day.get(1), o));
+        Path calls = dir.resolve("calls");
+        Cli.Running watch = Cli.start("watch", "--log", robot.toString(), "--models", MODELS.toString(), "--json",
+                "--on-warning", "echo warning $PREDMON_RUN >> '" + calls + "'",
+                "--on-violation", "echo violation $PREDMON_RUN >> '" + calls + "'");
+        awaitOutput(watch, "\"run\":1,\"time\""); // the history is read: run 0's warning, violation, then run 1
+        assertTrue(watch.out().toString().contains("\"event\":\"warning\""), "the history's warning is shown");
+        Thread.sleep(1000); // time for a hook command, were one started
+        assertFalse(Files.exists(calls), "no hook for the history: " + (Files.exists(calls) ? Files.readString(calls)
+                : ""));
+        Files.writeString(robot, LogWriter.toText(day.get(2), o), StandardOpenOption.APPEND);
+        awaitOutput(watch, "\"event\":\"violation\",\"time\":" + "", 2);
+        long deadline = System.currentTimeMillis() + 10_000;
+        while (System.currentTimeMillis() < deadline
+                && (!Files.exists(calls) || Files.readAllLines(calls).size() < 2)) {
+            Thread.sleep(20);
+        }
+        Thread.sleep(300);
+        watch.stop();
+        assertEquals(List.of("warning 2", "violation 2"), Files.readAllLines(calls), watch.out().toString());
+        assertEquals(ExitCodes.WARNING, watch.code().get(), watch.err().toString());
+    }
+
+    /** Waits until {@code text} occurs at least {@code times} times in what {@code watch} printed. */
+    private static void awaitOutput(Cli.Running watch, String text, int times) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + 20_000;
+        while (System.currentTimeMillis() < deadline && count(watch.out().toString(), text) < times) {
+            Thread.sleep(20);
+        }
+        assertTrue(count(watch.out().toString(), text) >= times, text + " in " + watch.out());
+    }
+
+    private static void awaitOutput(Cli.Running watch, String text) throws InterruptedException {
+        awaitOutput(watch, text, 1);
+    }
+
+    private static int count(String s, String part) {
+        int n = 0;
+        for (int at = s.indexOf(part); at >= 0; at = s.indexOf(part, at + 1)) {
+            n++;
+        }
+        return n;
     }
 
     private static boolean onPath(String program) {

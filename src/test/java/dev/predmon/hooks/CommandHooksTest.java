@@ -1,6 +1,8 @@
 package dev.predmon.hooks;
 
+import dev.predmon.forecast.Forecast;
 import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.Clock;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -51,17 +53,68 @@ class CommandHooksTest {
             h.event("robot-1.log", WARNING, JSON);
         }
         assertEquals(JSON + "\n", Files.readString(dir.resolve("in.json")));
+        assertEquals(Map.of("PREDMON_EVENT", "warning", "PREDMON_LOG", "robot-1.log", "PREDMON_RUN", "1",
+                "PREDMON_TIME", "29.581942", "PREDMON_UNIT", "s", "PREDMON_LINE", "7127", "PREDMON_PROPERTY", "",
+                "PREDMON_VALUE", "27.83", "PREDMON_BATTERY", "27.83", "PREDMON_SCENARIO", "depleted"),
+                Map.copyOf(without(env("env"), "PREDMON_SCENARIOS", "PREDMON_PROBABILITY",
+                        "PREDMON_TIME_TO_VIOLATION")));
+        assertEquals("depleted,late", env("env").get("PREDMON_SCENARIOS"));
+        assertEquals("", env("env").get("PREDMON_PROBABILITY"), "a warning of the match rule has no forecast");
+        assertEquals(List.of(), reports);
+    }
+
+    /**
+     * A forecast warning on a run no faulty machine still matches: the property's name, the probability and the time
+     * left, values rounded as the page shows them, and the faulty scenario the run matched longest.
+     */
+    @Test
+    void aForecastWarningGivesItsPropertyProbabilityTimeAndScenarioRounded() throws Exception {
+        Forecast f = new Forecast(0.96223, 4.98123, 4.78, 5.45, Forecast.Basis.RESYNCHRONISED, 4000L, 10, 10,
+                29.635000000003867, -2.43, "s");
+        MonitorEvent.Warning w = new MonitorEvent.Warning(27.906633, 6763, List.of(), 29.635000000003867, 12,
+                Clock.SECONDS, 0, WarningRule.FORECAST, f, "P(violation) 0.96 reaches the warning threshold",
+                MonitorEvent.Clause.FORECAST, "depleted", "battery level >= 20%");
+        MonitorEvent.Violation v = new MonitorEvent.Violation(34.6, 8219, "battery level >= 20%", 19.996, 20.004,
+                Clock.SECONDS, 0);
+        try (CommandHooks h = new CommandHooks("env > '" + dir.resolve("warning") + "'",
+                "env > '" + dir.resolve("violation") + "'", Duration.ofSeconds(10), 20.0, reports::add)) {
+            h.event("robot-1.log", w, JSON);
+            Thread.sleep(300);
+            h.event("robot-1.log", v, JSON);
+        }
+        Map<String, String> warning = env("warning");
+        assertEquals("battery level >= 20%", warning.get("PREDMON_PROPERTY"));
+        assertEquals("0.96", warning.get("PREDMON_PROBABILITY"));
+        assertEquals("4.98", warning.get("PREDMON_TIME_TO_VIOLATION"));
+        assertEquals("29.64", warning.get("PREDMON_VALUE"));
+        assertEquals("29.64", warning.get("PREDMON_BATTERY"), "the older name stays");
+        assertEquals("depleted", warning.get("PREDMON_SCENARIO"));
+        assertEquals("", warning.get("PREDMON_SCENARIOS"), "no faulty machine still matches");
+        Map<String, String> violation = env("violation");
+        assertEquals("19.99", violation.get("PREDMON_VALUE"), "a violating value never reads as the bound");
+        assertEquals("20.00", violation.get("PREDMON_BEFORE"));
+        assertEquals("battery level >= 20%", violation.get("PREDMON_PROPERTY"));
+        assertEquals(List.of(), reports);
+    }
+
+    /** The PREDMON_* variables a command wrote with {@code env > NAME}. */
+    private Map<String, String> env(String name) throws Exception {
         Map<String, String> env = new HashMap<>();
-        for (String line : Files.readAllLines(dir.resolve("env"))) {
+        for (String line : Files.readAllLines(dir.resolve(name))) {
             int eq = line.indexOf('=');
             if (line.startsWith("PREDMON_") && eq > 0) {
                 env.put(line.substring(0, eq), line.substring(eq + 1));
             }
         }
-        assertEquals(Map.of("PREDMON_EVENT", "warning", "PREDMON_LOG", "robot-1.log", "PREDMON_RUN", "1",
-                "PREDMON_TIME", "29.581942", "PREDMON_UNIT", "s", "PREDMON_LINE", "7127", "PREDMON_BATTERY", "27.83",
-                "PREDMON_SCENARIO", "depleted", "PREDMON_SCENARIOS", "depleted,late"), env);
-        assertEquals(List.of(), reports);
+        return env;
+    }
+
+    private static Map<String, String> without(Map<String, String> env, String... keys) {
+        Map<String, String> rest = new HashMap<>(env);
+        for (String k : keys) {
+            rest.remove(k);
+        }
+        return rest;
     }
 
     @Test
