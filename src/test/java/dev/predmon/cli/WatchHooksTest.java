@@ -140,7 +140,7 @@ class WatchHooksTest {
         Path yarp = Files.writeString(bin.resolve("yarp"), "#!/bin/sh\necho \"$@\" > '" + dir.resolve("args")
                 + "'\ncat > '" + dir.resolve("bottle") + "'\n");
         Files.setPosixFilePermissions(yarp, PosixFilePermissions.fromString("rwxr-xr-x"));
-        String recipe = "echo \"warning $PREDMON_SCENARIO $PREDMON_BATTERY $PREDMON_TIME\" | yarp write ... /robot/predmon:i";
+        String recipe = "echo \"warning $PREDMON_SCENARIO $PREDMON_VALUE $PREDMON_TIME\" | yarp write ... /robot/predmon:i";
         Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow", "--json",
                 "--on-warning", "PATH='" + bin + "':$PATH; " + recipe);
         JsonNode warning = event(w, "warning");
