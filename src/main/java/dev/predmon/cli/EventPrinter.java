@@ -1,18 +1,20 @@
 package dev.predmon.cli;
 
+import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.Clock;
 
 import java.io.PrintWriter;
+import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
 
 /**
  * Prints monitor events as they happen: one readable line each, or with {@code --json} one JSON object per
- * line ({@code {"event":"warning","time":...,"scenario":...,"battery":...}}), flushed at once so a pipe sees
- * each warning immediately.
+ * line ({@code {"event":"warning","time":...,"scenario":...,"battery":...,"wallTime":...}}), flushed at once so a
+ * pipe sees each warning immediately.
  */
 final class EventPrinter implements Consumer<MonitorEvent> {
 
@@ -20,39 +22,71 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     private final boolean json;
     private final boolean verbose;
     private final String log;
+    private final boolean timestamps;
     private MonitorEvent.Warning warning;
 
     /** @param eliminations also print each model's elimination (JSON always does) */
     EventPrinter(PrintWriter out, boolean json, boolean eliminations) {
-        this(out, json, eliminations, null);
+        this(out, json, eliminations, null, false);
     }
 
     /**
      * For one log of several: each event says which ({@code "log"} in JSON, a {@code log: } prefix in text).
      *
-     * @param log the log's name, or null when only one log is watched
+     * @param log        the log's name, or null when only one log is watched
+     * @param timestamps start each text line with the wall-clock time
      */
-    EventPrinter(PrintWriter out, boolean json, boolean eliminations, String log) {
+    EventPrinter(PrintWriter out, boolean json, boolean eliminations, String log, boolean timestamps) {
         this.out = out;
         this.json = json;
         this.verbose = eliminations;
         this.log = log;
+        this.timestamps = timestamps;
     }
 
     @Override
     public void accept(MonitorEvent e) {
+        accept(e, Instant.now());
+    }
+
+    /** Prints {@code e}, which happened at wall-clock time {@code at}. */
+    void accept(MonitorEvent e, Instant at) {
         if (e instanceof MonitorEvent.Unmapped) {
             return; // the caller reports these with the parse problems
         }
         if (json) {
-            out.println(toJson(e, log));
+            out.println(toJson(e, log, at));
         } else {
             String text = toText(e);
             if (text != null) {
-                out.println(Terminal.line(log == null ? text : log + ": " + text));
+                out.println(Terminal.line(line(text, at)));
             }
         }
         out.flush();
+    }
+
+    /**
+     * Every {@code --heartbeat}: the log's line, run and latest forecast, as a text line or a {@code heartbeat} event.
+     *
+     * @param line     lines of the file being read
+     * @param forecast the run's latest forecast, or null before any
+     * @param present  whether the file exists
+     */
+    void heartbeat(long line, int run, long records, Forecast forecast, boolean present, Instant at) {
+        if (json) {
+            HeartbeatJson o = new HeartbeatJson("heartbeat", present, line, run, records, ForecastJson.of(forecast));
+            out.println(Json.line(Json.stamped(o, log, at)));
+        } else {
+            out.println(Terminal.line(line("heartbeat: " + (!present && records == 0 ? "waiting for the file"
+                    : "line " + line + ", run " + run + ", " + records + " records; " + (forecast == null
+                    ? "no forecast yet" : "forecast: " + ForecastWords.line(forecast))), at)));
+        }
+        out.flush();
+    }
+
+    /** A text line as printed: the wall-clock time with {@code --timestamps}, then the log's name in a fleet. */
+    String line(String text, Instant at) {
+        return (timestamps ? Json.wallTime(at) + " " : "") + (log == null ? text : log + ": " + text);
     }
 
     /** The JSON object of an event ({@link MonitorEvent.Unmapped} is not one: it goes to stderr with the problems). */
@@ -62,6 +96,14 @@ final class EventPrinter implements Consumer<MonitorEvent> {
 
     /** The JSON object of an event of {@code log} ({@code "log"} right after {@code "event"}), or untagged if null. */
     static String toJson(MonitorEvent e, String log) {
+        return toJson(e, log, Instant.now());
+    }
+
+    /**
+     * The JSON object of an event of {@code log} ({@code "log"} right after {@code "event"}, or untagged if null),
+     * written at wall-clock time {@code at} ({@code "wallTime"}, last).
+     */
+    static String toJson(MonitorEvent e, String log, Instant at) {
         Object o;
         if (e instanceof MonitorEvent.Warning w) {
             o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.property(), w.scenario(),
@@ -90,7 +132,10 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         } else {
             throw new IllegalArgumentException("not printed as a JSON event: " + e);
         }
-        return log == null ? Json.line(o) : Json.line(Json.tagged(o, log));
+        return Json.line(Json.stamped(o, log, at));
+    }
+
+    record HeartbeatJson(String event, boolean present, long line, int run, long records, ForecastJson forecast) {
     }
 
     record WarningJson(String event, double time, String unit, long line, int run, String property,

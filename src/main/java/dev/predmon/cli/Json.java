@@ -6,7 +6,11 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.ObjectWriter;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
 import java.util.Iterator;
+import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -17,6 +21,8 @@ import java.util.Map;
 final class Json {
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
+    private static final DateTimeFormatter WALL_TIME = DateTimeFormatter.ofPattern("uuuu-MM-dd'T'HH:mm:ss.SSS'Z'",
+            Locale.ROOT).withZone(ZoneOffset.UTC);
     private static final ObjectWriter LINE = MAPPER.writer();
     private static final ObjectWriter DOCUMENT = MAPPER.writerWithDefaultPrettyPrinter();
 
@@ -48,6 +54,21 @@ final class Json {
             }
         }
         return tagged;
+    }
+
+    /**
+     * {@code value} as a JSON object, with {@code "log": log} right after {@code "event"} unless {@code log} is null,
+     * and {@code "wallTime"} last: when it was written, in UTC ({@link #wallTime}).
+     */
+    static Object stamped(Object value, String log, Instant at) {
+        ObjectNode node = log == null ? MAPPER.valueToTree(value) : (ObjectNode) tagged(value, log);
+        node.put("wallTime", wallTime(at));
+        return node;
+    }
+
+    /** A wall-clock time as events carry it: ISO 8601 in UTC to the millisecond, {@code 2026-11-25T17:40:01.123Z}. */
+    static String wallTime(Instant at) {
+        return WALL_TIME.format(at);
     }
 
     private static String write(ObjectWriter writer, Object value) {

@@ -24,6 +24,7 @@ import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
 import java.nio.file.Files;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -82,6 +83,9 @@ final class WatchCommand implements Callable<Integer> {
     HookOptions hookOptions;
 
     @Mixin
+    FollowOptions follow;
+
+    @Mixin
     LiveViewOptions liveView;
 
     @Mixin
@@ -116,6 +120,10 @@ final class WatchCommand implements Callable<Integer> {
         if (noFollow && liveView.http != null) {
             throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
         }
+        if (noFollow && follow.heartbeatNanos() > 0) {
+            throw new ParameterException(spec.commandLine(), "--heartbeat says that logs are followed: not with "
+                    + "--no-follow");
+        }
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " has no faulty scenario, so no warning can ever be raised");
         }
@@ -130,7 +138,8 @@ final class WatchCommand implements Callable<Integer> {
         }
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
-                     noFollow, hookOptions.open(err, bound(abstraction)), board, abstraction, p -> !sources.named(p));
+                     noFollow, hookOptions.open(err, bound(abstraction)), board, abstraction, p -> !sources.named(p),
+                     follow.timestamps, follow.heartbeatNanos());
              Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), warnBy,
                      outputs)) {
             if (set.forecast() != null) {
@@ -237,7 +246,7 @@ final class WatchCommand implements Callable<Integer> {
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), all.noMatch(), perRun,
                     all.runs(), all.dropped(), unmapped, m.rule().id(),
                     ForecastJson.of(runs.get(runs.size() - 1).forecast()));
-            out.println(Json.line(several ? Json.tagged(end, log.name()) : end));
+            out.println(Json.line(Json.stamped(end, several ? log.name() : null, Instant.now())));
         } else {
             if (all.dropped() > 0) {
                 out.println("(the first " + all.dropped() + " of " + all.runs() + " runs are counted, not listed)");
@@ -260,7 +269,8 @@ final class WatchCommand implements Callable<Integer> {
                     + (all.noMatch() ? ", no model matches the run" : "")
                     + (m.violation().isPresent() ? ", property violated"
                     : all.safetyObserved() ? ", property held" : ", property not observed");
-            out.println("end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
+            out.println((follow.timestamps ? Json.wallTime(Instant.now()) + " " : "")
+                    + "end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
                     + stop + ")") + ": " + m.records() + " records, " + (all.runs() > 1 ? all.runs() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
             RunOutcome last = runs.get(runs.size() - 1);

@@ -17,9 +17,12 @@ import dev.predmon.pipeline.UnmappedMessages;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.math.BigDecimal;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -44,7 +47,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private final boolean noFollow;
     private final Abstraction abstraction;
     private final Predicate<Path> found;
-    private final Map<WatchedLog, Outlet> outlets = new HashMap<>();
+    private final Map<WatchedLog, Outlet> outlets = new LinkedHashMap<>();
     private final CommandHooks hooks;
     private final Board board;
     private String lastRescanFailure;
@@ -54,6 +57,10 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
      * whole), while following only once the logs' history has been read ({@link #caughtUp}).
      */
     private boolean live;
+    private final boolean timestamps;
+    private final long heartbeatNanos;
+    /** Whether following has begun, so that the next {@link #beat} is a heartbeat. */
+    private boolean beating;
 
     /** Where one log's events go, and what is known of its evidence so far. */
     private static final class Outlet {
@@ -70,6 +77,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         final Map<Integer, String> restarts = new HashMap<>();
         /** The commands of unmapped messages said at their first sighting. */
         final Set<String> commandsSeen = new HashSet<>();
+        /** Whether the line that the file is followed was given. */
+        boolean announced;
 
         Outlet(EventPrinter printer, Tile tile) {
             this.printer = printer;
@@ -86,6 +95,18 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
      */
     WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
                  CommandHooks hooks, Board board, Abstraction abstraction, Predicate<Path> found) {
+        this(out, err, json, eliminations, several, noFollow, hooks, board, abstraction, found, false, 0);
+    }
+
+    /**
+     * As above, and
+     *
+     * @param timestamps     start every text line of events with the wall-clock time
+     * @param heartbeatNanos the pause between two heartbeat lines while following; 0 for none
+     */
+    WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
+                 CommandHooks hooks, Board board, Abstraction abstraction, Predicate<Path> found, boolean timestamps,
+                 long heartbeatNanos) {
         this.out = out;
         this.err = err;
         this.json = json;
@@ -97,6 +118,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         this.abstraction = abstraction;
         this.found = found;
         this.live = noFollow;
+        this.timestamps = timestamps;
+        this.heartbeatNanos = heartbeatNanos;
     }
 
     /** The history of the logs is read: from now on warnings and violations run the hooks. */
@@ -107,8 +130,40 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
 
     @Override
     public void added(WatchedLog log) {
-        outlets.put(log, new Outlet(new EventPrinter(out, json, eliminations, several ? log.name() : null),
-                board == null ? null : board.tile(log.name())));
+        Outlet o = new Outlet(new EventPrinter(out, json, eliminations, several ? log.name() : null, timestamps),
+                board == null ? null : board.tile(log.name()));
+        outlets.put(log, o);
+        // A log named alone is said at once; of those found in a directory or by a glob, only the ones that appear
+        // while watching, once they hold a record (not every file of the directory at the start, not notes beside).
+        o.announced = noFollow || (found.test(log.path()) && !live);
+        if (!o.announced && !found.test(log.path()) && Files.exists(log.path())) {
+            announce(o, "following " + log.name());
+        }
+    }
+
+    /** Says on stderr, once per log, that its file is found and followed. */
+    private void announce(Outlet o, String what) {
+        o.announced = true;
+        err.println(Terminal.line("predmon: " + what));
+        err.flush();
+    }
+
+    /** Every {@code --heartbeat} while following: each log's line, run and latest forecast on stdout. */
+    @Override
+    public long beat() {
+        if (heartbeatNanos <= 0) {
+            return Long.MAX_VALUE;
+        }
+        if (beating) {
+            Instant at = Instant.now();
+            outlets.forEach((log, o) -> {
+                PredictiveMonitor m = log.monitor();
+                o.printer.heartbeat(log.watcher().lines(), m.run(), m.records(), m.forecast().orElse(null),
+                        Files.exists(log.path()), at);
+            });
+        }
+        beating = true;
+        return heartbeatNanos;
     }
 
     @Override
@@ -121,11 +176,12 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         if (e instanceof MonitorEvent.Restarted r) {
             o.restarts.put(log.monitor().run(), r.reason()); // the monitor has begun the run that follows it
         }
-        o.printer.accept(e);
+        Instant at = Instant.now();
+        o.printer.accept(e, at);
         boolean hook = hooks != null && live
                 && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
         if (hook || o.tile != null) {
-            String tagged = EventPrinter.toJson(e, log.name());
+            String tagged = EventPrinter.toJson(e, log.name(), at);
             if (o.tile != null) {
                 board.event(o.tile, e, tagged);
             }
@@ -167,6 +223,9 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         Outlet o = outlets.get(log);
         if (o.tile != null) {
             board.grew(o.tile);
+        }
+        if (!o.announced && (!found.test(log.path()) || log.monitor().records() > 0)) {
+            announce(o, log.name() + " appeared; following it");
         }
         if (!noFollow && !o.settled) {
             if (o.firstLineNanos == 0 && log.watcher().lines() > 0) {

@@ -81,6 +81,16 @@ public final class Fleet implements AutoCloseable {
          */
         default void caughtUp() {
         }
+
+        /**
+         * The listener's own periodic work while following (a heartbeat line), on the following thread: called as
+         * following begins and then each time the pause it returned has passed.
+         *
+         * @return the pause until the next call, in nanoseconds; {@link Long#MAX_VALUE} for none
+         */
+        default long beat() {
+            return Long.MAX_VALUE;
+        }
     }
 
     /** How each log's monitor matches: the same for every log. */
@@ -187,11 +197,17 @@ public final class Fleet implements AutoCloseable {
             long nextCheck = now + RESCAN_NANOS;
             long nextSafety = now + safetyNanos;
             long nextPulse = now + PULSE_NANOS;
+            long pause = listener.beat();
+            long nextBeat = now + pause;
             while (!Thread.currentThread().isInterrupted()) {
                 now = System.nanoTime();
                 if (now - nextPulse >= 0) {
                     listener.pulse();
                     nextPulse = now + PULSE_NANOS;
+                }
+                if (pause != Long.MAX_VALUE && now - nextBeat >= 0) {
+                    pause = listener.beat();
+                    nextBeat = now + pause;
                 }
                 long scanPeriod = w.allWatched() ? safetyNanos : RESCAN_NANOS;
                 if (growing && (now - lastScan >= scanPeriod
@@ -211,6 +227,9 @@ public final class Fleet implements AutoCloseable {
                     nextSafety = now + safetyNanos;
                 }
                 long until = Math.min(Math.min(nextCheck, nextSafety), nextPulse);
+                if (pause != Long.MAX_VALUE && nextBeat - until < 0) {
+                    until = nextBeat;
+                }
                 if (growing) {
                     until = Math.min(until, lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
                 }
