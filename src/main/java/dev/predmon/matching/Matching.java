@@ -85,6 +85,25 @@ public final class Matching {
         return List.copyOf(alive);
     }
 
+    /**
+     * The faulty scenario the run is most like: the first of {@code faultyAlive} (the faulty scenarios still
+     * matching), else the one whose machine was eliminated last in this run (it matched the run longest); null when
+     * the models have no faulty machine.
+     */
+    public String likeliestFaulty(List<String> faultyAlive) {
+        if (!faultyAlive.isEmpty()) {
+            return faultyAlive.get(0);
+        }
+        ModelTracker longest = null;
+        for (ModelTracker t : trackers) {
+            if (t.model().faulty() && t.elimination() != null
+                    && (longest == null || t.elimination().step() > longest.elimination().step())) {
+                longest = t;
+            }
+        }
+        return longest == null ? null : longest.model().scenario();
+    }
+
     /** Every model's tracker, in model order. */
     public List<ModelTracker> trackers() {
         return List.copyOf(trackers);

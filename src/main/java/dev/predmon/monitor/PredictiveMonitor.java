@@ -215,30 +215,12 @@ public final class PredictiveMonitor implements PipelineListener {
     private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f,
                       MonitorEvent.Clause clause) {
         MonitorEvent.Warning w = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, battery, pairs,
-                trigger.clock(), run, rule, f, reason, clause, likeliestFaulty(faultyAlive),
+                trigger.clock(), run, rule, f, reason, clause, matching.likeliestFaulty(faultyAlive),
                 safety.map(SafetyRule::name).orElse(null));
         warning = warning == null ? w : warning; // the run's outcome keeps its first warning
         firstWarning = firstWarning == null ? w : firstWarning;
         alarm.warned(w);
         events.accept(w);
-    }
-
-    /**
-     * The faulty scenario the run is most like: the first still matching, else the one whose machine was eliminated
-     * last in this run (it matched the run longest), or null when the models have no faulty machine.
-     */
-    private String likeliestFaulty(List<String> faultyAlive) {
-        if (!faultyAlive.isEmpty()) {
-            return faultyAlive.get(0);
-        }
-        ModelTracker longest = null;
-        for (ModelTracker t : matching.trackers()) {
-            if (t.model().faulty() && t.elimination() != null
-                    && (longest == null || t.elimination().step() > longest.elimination().step())) {
-                longest = t;
-            }
-        }
-        return longest == null ? null : longest.model().scenario();
     }
 
     @Override

@@ -94,4 +94,23 @@ class MatchingTest {
         assertFalse(step.nominalAlive());
         assertFalse(step.contradicted(), "one nominal machine predicted o_high, the other never read the level");
     }
+
+    /**
+     * The faulty scenario a warning names when no faulty machine matches any more: the one that matched longest, here
+     * "bad", which took the level reading and was eliminated at the query after; "early" was out at the first pair.
+     */
+    @Test
+    void theLikeliestFaultyScenarioIsTheOneStillMatchingElseTheLastEliminated() {
+        CompactMealy<String, String> m = new CompactMealy<>(ALPHABET);
+        m.addInitialState();
+        LearnedModel early = new LearnedModel("early", "early", true, m, ALPHABET);
+        Matching matching = new Matching(List.of(nominal(), early, faulty()), 0, 0);
+        Matching.Step step = matching.pair(new IoPair("level_i", "o_low", null, null));
+        assertEquals(List.of("bad"), step.faultyAlive());
+        assertEquals("bad", matching.likeliestFaulty(step.faultyAlive()));
+        step = matching.pair(new IoPair("level_i", "o_nothing_learned", null, null));
+        assertEquals(List.of(), step.faultyAlive(), "every faulty machine is out");
+        assertEquals("bad", matching.likeliestFaulty(step.faultyAlive()));
+        assertEquals(null, new Matching(List.of(nominal()), 0, 0).likeliestFaulty(List.of()), "no faulty machine");
+    }
 }
