@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.monitor.TickSeconds;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -9,7 +10,10 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
-/** {@code --timestamps} and {@code --heartbeat}: how watch's output reads while it follows logs for hours. */
+/**
+ * {@code --timestamps}, {@code --heartbeat} and {@code --tick-seconds}: how watch's output reads while it follows logs
+ * for hours.
+ */
 final class FollowOptions {
 
     private static final Pattern DURATION = Pattern.compile("(\\d+(?:\\.\\d+)?)(ms|s|m|h)?");
@@ -39,6 +43,24 @@ final class FollowOptions {
                     + "5m or 1h, got '" + text + "'");
         }
         heartbeatNanos = (long) nanos;
+    }
+
+    private TickSeconds ticks = TickSeconds.NONE;
+
+    @Option(names = "--tick-seconds", paramLabel = "S", description = "How many seconds a tick of the tree lasts, for "
+            + "logs without time stamps (a console capture), which are counted in ticks: every time shown (events, "
+            + "forecasts, leads, the page, hooks) is then in seconds. Logs with time stamps are not affected.")
+    void tickSeconds(double seconds) {
+        if (!(seconds > 0) || Double.isInfinite(seconds)) {
+            throw new ParameterException(mixee.commandLine(), "--tick-seconds must be a positive number of seconds, "
+                    + "got " + seconds);
+        }
+        ticks = new TickSeconds(seconds);
+    }
+
+    /** How long a tick lasts, or {@link TickSeconds#NONE}. */
+    TickSeconds ticks() {
+        return ticks;
     }
 
     /** The pause between two heartbeats, in nanoseconds; 0 without {@code --heartbeat}. */

@@ -139,7 +139,7 @@ final class WatchCommand implements Callable<Integer> {
         try (LiveServer server = liveView.start(err, board);
              WatchOutputs outputs = new WatchOutputs(out, err, input.json, eliminations || input.json, several,
                      noFollow, hookOptions.open(err, bound(abstraction)), board, abstraction, p -> !sources.named(p),
-                     follow.timestamps, follow.heartbeatNanos());
+                     follow.timestamps, follow.heartbeatNanos(), follow.ticks());
              Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), warnBy,
                      outputs)) {
             if (set.forecast() != null) {

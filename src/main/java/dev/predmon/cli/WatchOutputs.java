@@ -7,6 +7,7 @@ import dev.predmon.live.Tile;
 import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.TickSeconds;
 import dev.predmon.monitor.WatchedLog;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
@@ -59,6 +60,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private boolean live;
     private final boolean timestamps;
     private final long heartbeatNanos;
+    private final TickSeconds ticks;
     /** Whether following has begun, so that the next {@link #beat} is a heartbeat. */
     private boolean beating;
 
@@ -95,7 +97,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
      */
     WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
                  CommandHooks hooks, Board board, Abstraction abstraction, Predicate<Path> found) {
-        this(out, err, json, eliminations, several, noFollow, hooks, board, abstraction, found, false, 0);
+        this(out, err, json, eliminations, several, noFollow, hooks, board, abstraction, found, false, 0,
+                TickSeconds.NONE);
     }
 
     /**
@@ -103,10 +106,11 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
      *
      * @param timestamps     start every text line of events with the wall-clock time
      * @param heartbeatNanos the pause between two heartbeat lines while following; 0 for none
+     * @param ticks          how long a tick lasts, so that logs counted in ticks report seconds
      */
     WatchOutputs(PrintWriter out, PrintWriter err, boolean json, boolean eliminations, boolean several, boolean noFollow,
                  CommandHooks hooks, Board board, Abstraction abstraction, Predicate<Path> found, boolean timestamps,
-                 long heartbeatNanos) {
+                 long heartbeatNanos, TickSeconds ticks) {
         this.out = out;
         this.err = err;
         this.json = json;
@@ -120,6 +124,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         this.live = noFollow;
         this.timestamps = timestamps;
         this.heartbeatNanos = heartbeatNanos;
+        this.ticks = ticks;
     }
 
     /** The history of the logs is read: from now on warnings and violations run the hooks. */
@@ -133,6 +138,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         Outlet o = new Outlet(new EventPrinter(out, json, eliminations, several ? log.name() : null, timestamps),
                 board == null ? null : board.tile(log.name()));
         outlets.put(log, o);
+        log.monitor().countTicksAs(ticks);
         // A log named alone is said at once; of those found in a directory or by a glob, only the ones that appear
         // while watching, once they hold a record (not every file of the directory at the start, not notes beside).
         o.announced = noFollow || (found.test(log.path()) && !live);
@@ -213,7 +219,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     public void record(WatchedLog log, LogRecord r) {
         Tile tile = outlets.get(log).tile;
         if (tile != null) {
-            tile.record(r);
+            tile.record(ticks.record(r));
         }
     }
 

@@ -24,6 +24,7 @@ final class ForecastTracker {
     private final Forecaster forecaster;
     private Forecast last;
     private Forecast told;
+    private TickSeconds ticks = TickSeconds.NONE;
 
     private ForecastTracker(Forecaster forecaster) {
         this.forecaster = forecaster;
@@ -108,8 +109,13 @@ final class ForecastTracker {
         return news(forecaster.reading(time, value));
     }
 
+    /** Reports every forecast's times in seconds, a tick lasting {@code t}. */
+    void countTicksAs(TickSeconds t) {
+        ticks = t;
+    }
+
     private Forecast news(Forecast f) {
-        last = f;
+        last = ticks.forecast(f);
         if (told == null || material(told, last)) {
             told = last;
             return last;

@@ -64,6 +64,7 @@ public final class PredictiveMonitor implements PipelineListener {
     private final ForecastTracker forecast;
     private final Alarm alarm;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
+    private TickSeconds ticks = TickSeconds.NONE;
 
     /** As below, confirming as the abstraction says ({@link Abstraction#confirm()}). */
     public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, Consumer<MonitorEvent> events) {
@@ -92,9 +93,17 @@ public final class PredictiveMonitor implements PipelineListener {
         this.forecast = ForecastTracker.of(models);
         this.matching = new Matching(models.models(), threshold, confirm);
         this.safety = abstraction.safety();
-        this.events = events;
-        this.alarm = new Alarm(safety.orElse(null), forecast, events);
+        this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
+        this.alarm = new Alarm(safety.orElse(null), forecast, this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
+    }
+
+    /** Reports every time in seconds, a tick lasting {@code t} (a log without time stamps counts ticks). */
+    public void countTicksAs(TickSeconds t) {
+        ticks = t;
+        if (forecast != null) {
+            forecast.countTicksAs(t);
+        }
     }
 
     /** Takes the next record of the log. */
@@ -152,7 +161,8 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     private RunOutcome current() {
-        return new RunOutcome(run, runLine, warning, violation, noMatch, pairs, battery != null,
+        return new RunOutcome(run, runLine, (MonitorEvent.Warning) ticks.event(warning),
+                (MonitorEvent.Violation) ticks.event(violation), noMatch, pairs, battery != null,
                 forecast == null ? null : forecast.last());
     }
 
@@ -172,7 +182,7 @@ public final class PredictiveMonitor implements PipelineListener {
     /** A record: the action under way; a reading's violation, recovery, forecast and warning ({@link Alarm}). */
     @Override
     public void record(LogRecord record) {
-        clock = record.clock();
+        clock = ticks.clock(record.clock());
         alarm.record(record, run);
         double v = safety.isEmpty() ? Double.NaN : safety.get().valueOf(record);
         if (Double.isNaN(v)) {
@@ -307,12 +317,12 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /** The first warning of the log (of any run), once raised. */
     public Optional<MonitorEvent.Warning> warning() {
-        return Optional.ofNullable(firstWarning);
+        return Optional.ofNullable((MonitorEvent.Warning) ticks.event(firstWarning));
     }
 
     /** The first safety violation of the log (of any run), once seen. */
     public Optional<MonitorEvent.Violation> violation() {
-        return Optional.ofNullable(firstViolation);
+        return Optional.ofNullable((MonitorEvent.Violation) ticks.event(firstViolation));
     }
 
     /** The run being matched: 0, then 1, 2, ... in a log that holds several. */
