@@ -36,7 +36,9 @@ import java.util.function.Predicate;
  * its own warning, hence its own lead), tagged with the log when several are watched; parse problems to stderr
  * (with {@code --no-follow} held until the log is known to hold something to judge, so that a file that is no log
  * gets one line, not a list); interface messages no rule maps, at their first sighting while following; to the
- * live view's tile of the log, and warnings and violations to the hook commands, as JSON that always names the log.
+ * live view's tile of the log, and warnings and violations to the hook commands, as JSON that always names the log
+ * (while following, only those after the logs' history was read: a hook is for what happens now); a line on stderr
+ * when a log is found and followed, and the heartbeat lines.
  */
 final class WatchOutputs implements Fleet.Listener, AutoCloseable {
 

@@ -27,11 +27,11 @@ public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, 
     }
 
     /**
-     * Whether the property was violated with no warning strictly before it: the run was missed (a warning at or
-     * after the violation predicts nothing, as {@code evaluate} counts it).
+     * Whether the property was violated with no warning before it in the log: the run was missed (a warning at the
+     * violating record or after it predicts nothing). The log's order, not its times, which may run backwards.
      */
     public boolean unwarnedViolation() {
-        return violation != null && (warning == null || !(warning.time() < violation.time()));
+        return violation != null && (warning == null || warning.line() >= violation.line());
     }
 
     /** Violation time minus warning time when both happened, in the log's unit. */
