@@ -58,7 +58,8 @@ final class ClassifyCommand implements Callable<Integer> {
             } else {
                 print(out, r, run);
                 if (unwarned) {
-                    out.println("the property is violated before the run could only be faulty: no warning would have come before it");
+                    out.println("the property is violated before the run could only be faulty: no warning would have "
+                            + "come before it");
                 }
             }
         }

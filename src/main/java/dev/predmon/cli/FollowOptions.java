@@ -39,8 +39,8 @@ final class FollowOptions {
             default -> 1e9;
         } : Double.NaN;
         if (!(nanos >= 1e6) || nanos > 1e18) {
-            throw new ParameterException(mixee.commandLine(), "--heartbeat must be a duration of at least 1 ms, as 30s, "
-                    + "5m or 1h, got '" + text + "'");
+            throw new ParameterException(mixee.commandLine(), "--heartbeat must be a duration of at least 1 ms, as "
+                    + "30s, 5m or 1h, got '" + text + "'");
         }
         heartbeatNanos = (long) nanos;
     }
