@@ -129,10 +129,18 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         this.ticks = ticks;
     }
 
-    /** The history of the logs is read: from now on warnings and violations run the hooks. */
+    /**
+     * The history of the logs is read: from now on warnings and violations run the hooks, and each log named that
+     * exists is said to be followed.
+     */
     @Override
     public void caughtUp() {
         live = true;
+        outlets.forEach((log, o) -> {
+            if (!o.announced && Files.exists(log.path())) {
+                announce(o, "following " + log.name());
+            }
+        });
     }
 
     @Override
@@ -141,12 +149,10 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
                 board == null ? null : board.tile(log.name()));
         outlets.put(log, o);
         log.monitor().countTicksAs(ticks);
-        // A log named alone is said at once; of those found in a directory or by a glob, only the ones that appear
-        // while watching, once they hold a record (not every file of the directory at the start, not notes beside).
+        // A log named is said once what it held at the start is read; of those found in a directory or by a glob,
+        // only the ones that appear while watching, once they hold a record (not every file of the directory at the
+        // start, not notes beside the logs).
         o.announced = noFollow || (found.test(log.path()) && !live);
-        if (!o.announced && !found.test(log.path()) && Files.exists(log.path())) {
-            announce(o, "following " + log.name());
-        }
     }
 
     /** Says on stderr, once per log, that its file is found and followed. */
@@ -232,7 +238,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         if (o.tile != null) {
             board.grew(o.tile);
         }
-        if (!o.announced && (!found.test(log.path()) || log.monitor().records() > 0)) {
+        if (live && !o.announced && (!found.test(log.path()) || log.monitor().records() > 0)) {
             announce(o, log.name() + " appeared; following it");
         }
         if (!noFollow && !o.settled) {

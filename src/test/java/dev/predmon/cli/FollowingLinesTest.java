@@ -44,7 +44,7 @@ class FollowingLinesTest {
         Cli.Running w = Cli.start("watch", "--log", present.toString(), "--log", later.toString(), "--models",
                 MODELS.toString());
         await(() -> w.err().toString().contains("waiting for " + later + " to appear"), w.err().toString());
-        assertTrue(w.err().toString().contains("predmon: following " + present + "\n"), w.err().toString());
+        await(() -> w.err().toString().contains("predmon: following " + present + "\n"), w.err().toString());
         Files.writeString(later, FleetWatchTest.run(Scenario.DEPLETED, 9001));
         await(() -> w.err().toString().contains("predmon: " + later + " appeared; following it\n"),
                 w.err().toString());

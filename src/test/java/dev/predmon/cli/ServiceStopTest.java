@@ -83,7 +83,7 @@ class ServiceStopTest {
         List<String> exec = List.of(unit.get("ExecStart").split("\\s+", -1));
         int watch = exec.indexOf("watch");
         assertTrue(watch > 0 && exec.get(watch + 1).equals("--config"), "ExecStart runs watch --config: " + exec);
-        Path log = Files.writeString(dir.resolve("monitor.log"), FleetWatchTest.run(Scenario.DEPLETED, 9001));
+        Path log = Files.writeString(dir.resolve("monitor.log"), ""); // the run comes once the service is up
         Path delivered = dir.resolve("delivered.txt");
         Path conf = config(Map.of("log", log.toString(), "models", Path.of("models").toAbsolutePath().toString(),
                 "http", "0", "on-warning", "sleep 1; echo \"$PREDMON_EVENT\" > " + delivered));
@@ -95,6 +95,14 @@ class ServiceStopTest {
         List<String> out = Child.stdoutLines(p);
         try {
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            // A hook is for what happens while watch runs, not for what the log held at its start: the run comes once
+            // watch says it follows the log, which it says once the log's history is read.
+            while (!Files.readString(dir.resolve("stderr.txt")).contains("predmon: following " + log)) {
+                assertTrue(p.isAlive() && System.nanoTime() < deadline, "waiting for the start: "
+                        + Files.readString(dir.resolve("stderr.txt")));
+                Thread.sleep(10);
+            }
+            Files.writeString(log, FleetWatchTest.run(Scenario.DEPLETED, 9001));
             while (out.stream().noneMatch(l -> l.contains("WARNING: "))) {
                 assertTrue(p.isAlive() && System.nanoTime() < deadline, "waiting for the warning: " + out + " "
                         + Files.readString(dir.resolve("stderr.txt")));
