@@ -4,6 +4,9 @@ import dev.predmon.forecast.Forecast;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
+
 /**
  * How long a tick of the tree lasts, for logs without time stamps ({@code watch --tick-seconds S}): such a log is
  * counted in ticks, and with a length given every time the monitor reports (its events, its forecasts, the records
@@ -33,7 +36,7 @@ public record TickSeconds(double seconds) {
 
     /** {@code r} with its time in seconds, when it counts ticks. */
     public LogRecord record(LogRecord r) {
-        return on(r.clock()) ? new LogRecord(r.line(), r.time() * seconds, r.level(), r.kind(), r.from(), r.to(),
+        return on(r.clock()) ? new LogRecord(r.line(), times(r.time()), r.level(), r.kind(), r.from(), r.to(),
                 r.protocol(), r.command(), r.arguments(), r.reply(), Clock.SECONDS) : r;
     }
 
@@ -42,47 +45,54 @@ public record TickSeconds(double seconds) {
         if (f == null || Double.isNaN(seconds) || !Clock.TICKS.unit().equals(f.unit())) {
             return f;
         }
+        Double perSecond = f.drift() == null ? null : BigDecimal.valueOf(f.drift())
+                .divide(BigDecimal.valueOf(seconds), MathContext.DECIMAL64).doubleValue();
         return new Forecast(f.probability(), times(f.timeToViolation()), times(f.low()), times(f.high()), f.basis(),
-                f.novelSince(), f.runs(), f.violated(), f.value(), f.drift() == null ? null : f.drift() / seconds,
-                Clock.SECONDS.unit());
+                f.novelSince(), f.runs(), f.violated(), f.value(), perSecond, Clock.SECONDS.unit());
     }
 
     private Double times(Double ticks) {
-        return ticks == null ? null : ticks * seconds;
+        return ticks == null ? null : times(ticks.doubleValue());
+    }
+
+    /**
+     * {@code ticks} in seconds, as the decimal product (0.1 s a tick makes tick 93 read 9.3, not 9.300000000000001).
+     */
+    private double times(double ticks) {
+        return BigDecimal.valueOf(ticks).multiply(BigDecimal.valueOf(seconds)).doubleValue();
     }
 
     /** {@code e} with its time in seconds and its forecast too, when it counts ticks. */
     public MonitorEvent event(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w && on(w.clock())) {
-            return new MonitorEvent.Warning(w.time() * seconds, w.line(), w.scenarios(), w.battery(), w.pairs(),
+            return new MonitorEvent.Warning(times(w.time()), w.line(), w.scenarios(), w.battery(), w.pairs(),
                     Clock.SECONDS, w.run(), w.rule(), forecast(w.forecast()), w.reason(), w.clause(), w.scenario(),
                     w.property());
         }
         if (e instanceof MonitorEvent.Violation v && on(v.clock())) {
-            return new MonitorEvent.Violation(v.time() * seconds, v.line(), v.property(), v.value(), v.before(),
+            return new MonitorEvent.Violation(times(v.time()), v.line(), v.property(), v.value(), v.before(),
                     Clock.SECONDS, v.run());
         }
         if (e instanceof MonitorEvent.ForecastChanged f && on(f.clock())) {
-            return new MonitorEvent.ForecastChanged(f.time() * seconds, f.line(), forecast(f.forecast()),
+            return new MonitorEvent.ForecastChanged(times(f.time()), f.line(), forecast(f.forecast()),
                     Clock.SECONDS, f.run());
         }
         if (e instanceof MonitorEvent.Eliminated x && on(x.clock())) {
-            return new MonitorEvent.Eliminated(x.time() * seconds, x.line(), x.model(), x.scenario(), x.faulty(),
+            return new MonitorEvent.Eliminated(times(x.time()), x.line(), x.model(), x.scenario(), x.faulty(),
                     x.reason(), Clock.SECONDS, x.run());
         }
         if (e instanceof MonitorEvent.NoMatch n && on(n.clock())) {
-            return new MonitorEvent.NoMatch(n.time() * seconds, n.line(), Clock.SECONDS, n.run());
+            return new MonitorEvent.NoMatch(times(n.time()), n.line(), Clock.SECONDS, n.run());
         }
         if (e instanceof MonitorEvent.Recovered r && on(r.clock())) {
-            return new MonitorEvent.Recovered(r.time() * seconds, r.line(), r.cause(), r.value(), r.reason(),
+            return new MonitorEvent.Recovered(times(r.time()), r.line(), r.cause(), r.value(), r.reason(),
                     Clock.SECONDS, r.run());
         }
         if (e instanceof MonitorEvent.UnderWay u && on(u.clock())) {
-            return new MonitorEvent.UnderWay(u.time() * seconds, u.line(), u.by(), u.underWay(), Clock.SECONDS,
-                    u.run());
+            return new MonitorEvent.UnderWay(times(u.time()), u.line(), u.by(), u.underWay(), Clock.SECONDS, u.run());
         }
         if (e instanceof MonitorEvent.RunStarted r && on(r.clock())) {
-            return new MonitorEvent.RunStarted(r.run(), r.time() * seconds, r.line(), Clock.SECONDS);
+            return new MonitorEvent.RunStarted(r.run(), times(r.time()), r.line(), Clock.SECONDS);
         }
         return e;
     }

@@ -58,7 +58,8 @@ class TickSecondsTest {
         JsonNode violation = first(inTicks, "violation");
         assertEquals("ticks", violation.get("unit").asText());
         assertEquals("s", first(inSeconds, "violation").get("unit").asText());
-        assertEquals(violation.get("time").asDouble() * 0.5, first(inSeconds, "violation").get("time").asDouble(), 1e-9);
+        assertEquals(violation.get("time").asDouble() * 0.5, first(inSeconds, "violation").get("time").asDouble(),
+                1e-9);
         assertEquals(violation.get("line").asLong(), first(inSeconds, "violation").get("line").asLong());
 
         JsonNode warning = first(inTicks, "warning");
@@ -81,6 +82,13 @@ class TickSecondsTest {
         assertTrue(end.get("lead").isNumber(), end.toString());
         assertEquals(end.get("lead").asDouble() * 0.5, endS.get("lead").asDouble(), 1e-9);
 
+        Cli tenths = Cli.run("watch", "--log", log.toString(), "--models", models.toString(), "--no-follow", "--json",
+                "--tick-seconds", "0.1");
+        for (JsonNode e : tenths.jsonLines()) {
+            if (e.has("time")) {
+                assertTrue(e.get("time").asText().matches("\\d+(\\.\\d)?"), "tenths of a second, no binary tail: " + e);
+            }
+        }
         Cli text = Cli.run("watch", "--log", log.toString(), "--models", models.toString(), "--no-follow",
                 "--tick-seconds", "0.5");
         String violationLine = text.out().lines().filter(l -> l.contains("VIOLATION")).findFirst().orElseThrow();
