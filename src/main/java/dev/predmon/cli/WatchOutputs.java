@@ -12,7 +12,6 @@ import dev.predmon.monitor.WatchedLog;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.Evidence;
-import dev.predmon.pipeline.Traces;
 import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.IOException;
@@ -21,11 +20,9 @@ import java.math.BigDecimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -70,9 +67,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private static final class Outlet {
         final EventPrinter printer;
         final Tile tile;
-        final List<ParseProblem> held = new ArrayList<>();
-        long moreProblems;
-        ParseProblem firstProblem;
+        final ProblemLines problems = new ProblemLines();
         /** Something recognisable arrived, or the notice that nothing did was given. */
         boolean settled;
         /** When the log's first line was read ({@link System#nanoTime()}), 0 before. */
@@ -302,29 +297,12 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
 
     @Override
     public void problem(WatchedLog log, ParseProblem p) {
-        Outlet o = outlets.get(log);
-        if (o.firstProblem == null) {
-            o.firstProblem = p;
-        }
-        if (!noFollow) {
-            err.println(Terminal.line(p.format(log.name())));
-            err.flush();
-        } else if (o.held.size() < Traces.MAX_PROBLEMS) {
-            o.held.add(p);
-        } else {
-            o.moreProblems++;
-        }
+        outlets.get(log).problems.add(err, log.name(), p, noFollow);
     }
 
     /** With {@code --no-follow}: prints the problems held for {@code log}. */
     void flushProblems(WatchedLog log) {
-        Outlet o = outlets.get(log);
-        o.held.forEach(p -> err.println(Terminal.line(p.format(log.name()))));
-        if (o.moreProblems > 0) {
-            err.println(Terminal.line(log.name()) + ": " + o.moreProblems + " more problem(s) not shown");
-        }
-        o.held.clear();
-        err.flush();
+        outlets.get(log).problems.flush(err, log.name());
     }
 
     /**
@@ -345,7 +323,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         PredictiveMonitor m = log.monitor();
         long pairs = m.summary().pairs();
         return new Evidence(log.path(), log.watcher()::lines, m.records(), m.interfaceRecords(), pairs, m.unmapped(),
-                abstraction, outlets.get(log).firstProblem);
+                abstraction, outlets.get(log).problems.first());
     }
 
     @Override
