@@ -47,7 +47,8 @@ class ModelsThatDoNotFitTest {
     private static void noVerdict(Cli r, String what) {
         assertEquals(ExitCodes.BAD_INPUT, r.code(), what + ": " + r.out() + r.err());
         List<String> err = r.err().strip().lines().toList();
-        assertTrue(err.size() <= 12, what + " printed " + err.size() + " lines:\n" + r.err());
+        // the unmapped messages in about ten lines, and watch's two lines of the models' scorecard at its start
+        assertTrue(err.size() <= 14, what + " printed " + err.size() + " lines:\n" + r.err());
         String last = err.get(err.size() - 1);
         assertTrue(last.contains("GoTo/getCurrentPose") && last.contains("location 'user'")
                 && last.contains("the models do not fit this log: no verdict; try --abstraction scope-fetch"), last);
