@@ -281,6 +281,13 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         err.flush();
     }
 
+    /** One line on stderr about a log the fleet goes on watching (something at its path that is no file, ...). */
+    @Override
+    public void notice(String line) {
+        err.println("predmon: " + Terminal.line(line));
+        err.flush();
+    }
+
     @Override
     public void close() {
         if (hooks != null) {
