@@ -106,8 +106,8 @@ public final class LogFollower implements AutoCloseable {
         this(file, sink, maxLineBytes, quietNanos, TimeUnit.MILLISECONDS.toNanos(RELEASE_MILLIS), clock);
     }
 
-    private LogFollower(Path file, LineSink sink, int maxLineBytes, long quietNanos, long releaseNanos,
-                        LongSupplier clock) {
+    /** @param releaseNanos how long a file gone from the path is held open after it last grew */
+    LogFollower(Path file, LineSink sink, int maxLineBytes, long quietNanos, long releaseNanos, LongSupplier clock) {
         this.file = Objects.requireNonNull(file, "file");
         this.sink = Objects.requireNonNull(sink, "sink");
         this.splitter = new LineSplitter(maxLineBytes, sink);
