@@ -36,10 +36,13 @@ class ReplacedLogTest {
     @Test
     @Timeout(90)
     void twoRenamesBeforeTheLoggerReopensThenAFaultyRunWarns() throws Exception {
-        Path log = Files.writeString(dir.resolve("live.log"), "");
+        // an interface message no rule maps: watch says so when it has read it, so the test knows it is following
+        Path log = Files.writeString(dir.resolve("live.log"), "0.000000\tDEBUG\tCommand intercepted:\n"
+                + "  From      : /probe\n  To        : /probed\n  Protocol  : Probe\n  Command   : first\n"
+                + "  Arguments : \n  Reply     : \n");
         Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
         try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.APPEND)) { // exec 3>>live.log
-            Thread.sleep(500);
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/first"), "watch follows: " + w.err());
             Files.move(log, dir.resolve("live.log.1"));
             Files.writeString(log, "");
             Thread.sleep(300); // watch sees the empty file and holds it open
