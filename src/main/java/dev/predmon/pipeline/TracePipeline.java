@@ -7,10 +7,8 @@ import dev.predmon.compact.Compactor;
 import dev.predmon.mealy.CarryEncoder;
 import dev.predmon.parse.LogRecord;
 
-import java.util.Collections;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
 
 /**
  * The one path every log takes, offline ({@code learn}, {@code classify}, {@code evaluate}) and live
@@ -28,7 +26,7 @@ public final class TracePipeline {
     private final RunSplitter runs;
     private final QuietRestart restart;
     private int run;
-    private final Map<String, Long> unmapped = new TreeMap<>();
+    private final UnmappedCounts unmapped = new UnmappedCounts();
     private LogRecord current;
     private long records;
     private long interfaceRecords;
@@ -88,8 +86,9 @@ public final class TracePipeline {
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;
-            if (unmapped.merge(u.key(), 1L, Long::sum) == 1L) {
-                listener.unmapped(u.key(), record);
+            String first = unmapped.add(u.key(), 1);
+            if (first != null) {
+                listener.unmapped(first, record);
             }
             if (UnmappedMessages.novelty(u.key(), abstraction)) {
                 listener.gap(record);
@@ -119,9 +118,12 @@ public final class TracePipeline {
         interfaceRecords = 0;
     }
 
-    /** Interface messages no rule maps, by key, sorted: reported to the user, never silently dropped. */
+    /**
+     * Interface messages no rule maps, by key, sorted: reported to the user, never silently dropped; beyond
+     * {@value UnmappedCounts#KINDS} kinds, counted by command ({@link UnmappedCounts}).
+     */
     public Map<String, Long> unmapped() {
-        return Collections.unmodifiableMap(new TreeMap<>(unmapped));
+        return unmapped.toMap();
     }
 
     /** The run being read: 0, then 1, 2, ... in a log that holds several. */
