@@ -259,7 +259,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         PredictiveMonitor m = log.monitor();
         long pairs = m.summary().pairs();
         return new Evidence(log.path(), log.watcher()::lines, m.records(), m.interfaceRecords(), pairs, m.unmapped(),
-                abstraction, outlets.get(log).firstProblem);
+                abstraction, outlets.get(log).firstProblem,
+                m.pipeline().span());
     }
 
     @Override

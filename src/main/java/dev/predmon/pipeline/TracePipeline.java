@@ -30,6 +30,9 @@ public final class TracePipeline {
     private LogRecord current;
     private long records;
     private long interfaceRecords;
+    /** The lines of the first and of the last record taken; {@code firstLine} is 0 before any. */
+    private long firstLine;
+    private long lastLine;
 
     public TracePipeline(Abstraction abstraction, PipelineListener listener) {
         this.abstraction = abstraction;
@@ -79,6 +82,10 @@ public final class TracePipeline {
         restart.processed(record, c, starts);
         current = record;
         records++;
+        if (firstLine == 0) {
+            firstLine = record.line();
+        }
+        lastLine = record.line();
         listener.record(record);
         if (c instanceof Classification.Mapped m) {
             interfaceRecords++;
@@ -116,6 +123,16 @@ public final class TracePipeline {
         current = null;
         records = 0;
         interfaceRecords = 0;
+        firstLine = 0;
+        lastLine = 0;
+    }
+
+    /**
+     * The lines from the first record to the end of the last one (0 before any): how much of the file the records
+     * are spread over, whatever lies between them.
+     */
+    public long span() {
+        return firstLine == 0 ? 0 : lastLine - firstLine + Evidence.RECORD_LINES;
     }
 
     /**
