@@ -3,6 +3,7 @@ package dev.predmon.bench;
 import com.sun.management.OperatingSystemMXBean;
 import com.sun.management.UnixOperatingSystemMXBean;
 import dev.predmon.monitor.Fleet;
+import dev.predmon.monitor.WatchedLog;
 import dev.predmon.simulate.Scenario;
 
 import java.lang.management.CompilationMXBean;
@@ -12,6 +13,8 @@ import java.lang.management.ThreadMXBean;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -37,40 +40,52 @@ record IdleFleetBench(int logs, double core, double loopCore, double heapMb, dou
     private static final int RECORDS = 12;
 
     static IdleFleetBench run(FleetSetup setup, int logs, double seconds) throws Exception {
-        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         OperatingSystemMXBean os = ManagementFactory.getPlatformMXBean(OperatingSystemMXBean.class);
         MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
         byte[] head = head(BenchData.text(Scenario.DEPLETED, 20_002));
         try (ScratchDir round = setup.scratch("predmon-fleet-idle")) {
+            List<Path> files = new ArrayList<>();
             for (int i = 0; i < logs; i++) {
-                Files.write(round.resolve("robot-" + i + ".log"), head);
+                files.add(Files.write(round.resolve("robot-" + i + ".log"), head));
             }
             System.gc();
             double baseHeap = memory.getHeapMemoryUsage().getUsed() / 1e6;
             long baseFds = fds(os);
-            try (Fleet fleet = setup.fleet((log, e) -> { }); Following following = setup.follow(fleet, round.path())) {
-                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-                while (fleet.logs().size() < logs || fleet.logs().stream().anyMatch(l -> l.monitor().records() == 0)) {
-                    if (System.nanoTime() > deadline) {
-                        throw new IllegalStateException("the fleet did not read its " + logs + " logs within 120 s");
-                    }
-                    Thread.sleep(50);
+            try (Fleet fleet = setup.fleet((log, e) -> { })) {
+                List<WatchedLog> watched = files.stream().map(fleet::add).toList(); // before the following thread
+                Following following = setup.follow(fleet, round.path());
+                try (following) {
+                    return measure(following, watched, logs, seconds, baseHeap, baseFds);
                 }
-                settle();
-                long cpu = os.getProcessCpuTime();
-                long loop = threads.getThreadCpuTime(following.thread().getId());
-                long start = System.nanoTime();
-                Thread.sleep((long) (seconds * 1000));
-                double wall = System.nanoTime() - start;
-                double core = (os.getProcessCpuTime() - cpu) / wall;
-                double loopCore = (threads.getThreadCpuTime(following.thread().getId()) - loop) / wall;
-                long held = fds(os);
-                System.gc();
-                double heap = memory.getHeapMemoryUsage().getUsed() / 1e6;
-                long max = os instanceof UnixOperatingSystemMXBean u ? u.getMaxFileDescriptorCount() : -1;
-                return new IdleFleetBench(logs, core, loopCore, heap, baseHeap, held, baseFds, max);
             }
         }
+    }
+
+    private static IdleFleetBench measure(Following following, List<WatchedLog> watched, int logs, double seconds,
+                                          double baseHeap, long baseFds) throws Exception {
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+        OperatingSystemMXBean os = ManagementFactory.getPlatformMXBean(OperatingSystemMXBean.class);
+        MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+        while (watched.stream().anyMatch(l -> l.monitor().records() == 0)) {
+            if (System.nanoTime() > deadline) {
+                throw new IllegalStateException("the fleet did not read its " + logs + " logs within 120 s");
+            }
+            Thread.sleep(50);
+        }
+        settle();
+        long cpu = os.getProcessCpuTime();
+        long loop = threads.getThreadCpuTime(following.thread().getId());
+        long start = System.nanoTime();
+        Thread.sleep((long) (seconds * 1000));
+        double wall = System.nanoTime() - start;
+        double core = (os.getProcessCpuTime() - cpu) / wall;
+        double loopCore = (threads.getThreadCpuTime(following.thread().getId()) - loop) / wall;
+        long held = fds(os);
+        System.gc();
+        double heap = memory.getHeapMemoryUsage().getUsed() / 1e6;
+        long max = os instanceof UnixOperatingSystemMXBean u ? u.getMaxFileDescriptorCount() : -1;
+        return new IdleFleetBench(logs, core, loopCore, heap, baseHeap, held, baseFds, max);
     }
 
     /** Waits until the compiler has been quiet for a second (at most 20 s), so that its work is not counted. */
