@@ -1,12 +1,15 @@
 package dev.predmon.parse;
 
 import java.io.IOException;
+import java.nio.channels.FileChannel;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.NotDirectoryException;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.FileTime;
+import java.util.List;
 
 /**
  * What is at a followed path now, from one {@code stat}: a regular file (its identity, size and time of last change)
@@ -33,6 +36,47 @@ record FileAt(Object identity, boolean regular, long size, FileTime modified, Pa
         Object key = a.fileKey();
         return new FileAt(key != null ? key : a.creationTime(), a.isRegularFile(), a.size(), a.lastModifiedTime(),
                 path);
+    }
+
+    /**
+     * Opens this regular file for reading; null if it is not regular, or went or changed since it was looked at.
+     * Only a regular file is opened: opening a FIFO would block until a writer comes.
+     */
+    FileChannel open() throws IOException {
+        if (!regular) {
+            return null;
+        }
+        FileChannel opened;
+        try {
+            opened = FileChannel.open(path, StandardOpenOption.READ);
+        } catch (NoSuchFileException gone) {
+            return null; // deleted between the look and the open: as if not there yet
+        }
+        FileAt now = look(path);
+        if (now == null || !identity.equals(now.identity())) {
+            opened.close(); // replaced between the look and the open: it may be the wrong file
+            return null;
+        }
+        return opened;
+    }
+
+    /** Closes every channel, throwing the first failure with the others suppressed. */
+    static void closeAll(List<FileChannel> channels) throws IOException {
+        IOException first = null;
+        for (FileChannel c : channels) {
+            try {
+                c.close();
+            } catch (IOException e) {
+                if (first == null) {
+                    first = e;
+                } else {
+                    first.addSuppressed(e);
+                }
+            }
+        }
+        if (first != null) {
+            throw first;
+        }
     }
 
     /** What a path that is not a regular file holds, in a few words: {@code a FIFO}, {@code a directory}. */

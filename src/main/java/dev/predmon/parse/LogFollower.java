@@ -6,7 +6,6 @@ import java.nio.channels.FileChannel;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.FileTime;
 import java.time.Duration;
@@ -172,7 +171,7 @@ public final class LogFollower implements AutoCloseable {
             if (at.size() == position && at.modified().equals(releasedModified)) {
                 return false; // unchanged since it was released: no need to open it
             }
-            FileChannel opened = openAt(at);
+            FileChannel opened = at.open();
             if (opened == null) {
                 return false;
             }
@@ -180,7 +179,7 @@ public final class LogFollower implements AutoCloseable {
             released = false;
             return poll();
         }
-        FileChannel opened = openAt(at);
+        FileChannel opened = at.open();
         if (opened == null) {
             return false;
         }
@@ -258,32 +257,13 @@ public final class LogFollower implements AutoCloseable {
 
     @Override
     public void close() throws IOException {
-        IOException first = null;
-        for (FileChannel c : openChannels()) {
-            try {
-                c.close();
-            } catch (IOException e) {
-                if (first == null) {
-                    first = e;
-                } else {
-                    first.addSuppressed(e);
-                }
-            }
+        List<FileChannel> all = new ArrayList<>(waiting.channels());
+        if (channel != null) {
+            all.add(0, channel);
         }
         channel = null;
         waiting.clear();
-        if (first != null) {
-            throw first;
-        }
-    }
-
-    private List<FileChannel> openChannels() {
-        List<FileChannel> all = new ArrayList<>();
-        if (channel != null) {
-            all.add(channel);
-        }
-        all.addAll(waiting.channels());
-        return all;
+        FileAt.closeAll(all);
     }
 
     private boolean quiet(long nanos) {
@@ -304,7 +284,7 @@ public final class LogFollower implements AutoCloseable {
                 || waiting.holds(at.identity())) {
             return at; // deleted (the old handle is drained on), unchanged, or known
         }
-        FileChannel opened = openAt(at);
+        FileChannel opened = at.open();
         if (opened != null) {
             waiting.add(opened, at.identity());
         }
@@ -331,30 +311,6 @@ public final class LogFollower implements AutoCloseable {
         tail.clear();
         released = false;
         lastGrowth = clock.getAsLong();
-    }
-
-    /**
-     * Opens the regular file {@code before} found at the path; null if it is not regular, or went or changed
-     * meanwhile. Only a regular file is opened: opening a FIFO would block until a writer comes.
-     */
-    private FileChannel openAt(FileAt before) throws IOException {
-        if (!before.regular()) {
-            return null;
-        }
-        FileChannel opened;
-        try {
-            opened = FileChannel.open(file, StandardOpenOption.READ);
-        } catch (NoSuchFileException gone) {
-            // Deleted between the look and the open: the same as not there yet, try again at the next poll.
-            return null;
-        }
-        FileAt now = FileAt.look(file);
-        if (now == null || !before.identity().equals(now.identity())) {
-            // Replaced between the look and the open: we may hold the wrong file, look again next time.
-            opened.close();
-            return null;
-        }
-        return opened;
     }
 
     private boolean readAvailable() throws IOException {
