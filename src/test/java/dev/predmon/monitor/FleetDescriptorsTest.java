@@ -10,10 +10,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
@@ -88,12 +86,12 @@ class FleetDescriptorsTest {
             Thread.sleep(500);
             long start = descriptors();
             for (int i = 0; i < LOGS; i++) {
-                append(robots.resolve("robot-" + i + ".log"), 0, 3);
+                FleetFollowTest.append(robots.resolve("robot-" + i + ".log"), 0, 3);
             }
             await(() -> everyLogSaw(3), "the first records of every log");
             assertTrue(descriptors() <= start + BUDGET, "at most the budget open: " + (descriptors() - start));
             for (int i = LOGS - 1; i >= 0; i--) { // the logs idle longest first: each is reopened
-                append(robots.resolve("robot-" + i + ".log"), 3, 5);
+                FleetFollowTest.append(robots.resolve("robot-" + i + ".log"), 3, 5);
             }
             await(() -> everyLogSaw(5), "an append to every log, each closed meanwhile");
             assertTrue(descriptors() <= start + BUDGET, "at most the budget open: " + (descriptors() - start));
@@ -129,15 +127,6 @@ class FleetDescriptorsTest {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
-    }
-
-    private static void append(Path log, long from, long to) throws IOException {
-        StringBuilder text = new StringBuilder();
-        for (long seq = from; seq < to; seq++) {
-            text.append(WatchSoakTest.record(seq, "\n"));
-        }
-        Files.write(log, text.toString().getBytes(StandardCharsets.UTF_8), StandardOpenOption.CREATE,
-                StandardOpenOption.APPEND);
     }
 
     private static void await(BooleanSupplier condition, String what) throws InterruptedException {
