@@ -188,6 +188,7 @@ public final class Fleet implements AutoCloseable {
             listener.notice(trouble);
         }
         log.told = trouble;
+        log.watcher().takeNotice().ifPresent(n -> listener.notice(log.name() + ": " + n));
         openFiles.polled(log, grew);
         if (openFiles.over()) {
             relieve(log);

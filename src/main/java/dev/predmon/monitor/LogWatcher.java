@@ -120,6 +120,11 @@ public final class LogWatcher implements AutoCloseable {
         return follower.obstacle();
     }
 
+    /** What the user should be told of this log once, if anything ({@link LogFollower#takeNotice()}). */
+    public Optional<String> takeNotice() {
+        return follower.takeNotice();
+    }
+
     /** How many files are held open for this log now. */
     public int openFiles() {
         return follower.openFiles();

@@ -82,6 +82,8 @@ public final class LogFollower implements AutoCloseable {
     private FileTime releasedModified;
     /** What is at the path when it is not a regular file ({@code a FIFO}), else null. */
     private String obstacle;
+    /** What the user should be told once, or null. */
+    private String notice;
     /** Files found at the path after the one being read, each held open until its turn. */
     private final Replacements waiting = new Replacements();
 
@@ -152,6 +154,11 @@ public final class LogFollower implements AutoCloseable {
             readAvailable();
             progress = true;
         }
+        long lost = waiting.retiredGrowth(clock.getAsLong(), releaseNanos);
+        if (lost > 0) {
+            notice = "the file renamed away at the last rotation grew by " + lost + " bytes after the file now at "
+                    + "the path was taken up: a writer went on in it, and what it wrote there is not read";
+        }
         if (waiting.isEmpty() && (at == null || !at.identity().equals(identity)) && quiet(releaseNanos)) {
             splitter.finish(); // gone from the path and quiet for long: its writer is done with it
             channel.close();
@@ -208,9 +215,16 @@ public final class LogFollower implements AutoCloseable {
         return Optional.ofNullable(obstacle).map(k -> "is " + k + ", not a regular file");
     }
 
+    /** What the user should be told of this log once since the last call, if anything: writes that are not read. */
+    public Optional<String> takeNotice() {
+        Optional<String> out = Optional.ofNullable(notice);
+        notice = null;
+        return out;
+    }
+
     /** How many files this follower holds open now. */
     public int openFiles() {
-        return (channel == null ? 0 : 1) + waiting.size();
+        return (channel == null ? 0 : 1) + waiting.open();
     }
 
     /**
@@ -224,6 +238,7 @@ public final class LogFollower implements AutoCloseable {
         if (channel == null || !waiting.isEmpty()) {
             return false;
         }
+        waiting.closeRetired();
         FileAt at = FileAt.look(file);
         releasedModified = at != null && at.identity().equals(identity) ? at.modified() : null;
         channel.close();
@@ -300,7 +315,7 @@ public final class LogFollower implements AutoCloseable {
         FileChannel done = channel;
         Replacements.Waiting next = waiting.next();
         take(next.channel(), next.identity());
-        done.close();
+        waiting.retire(done, clock.getAsLong());
         sink.restarted("replaced");
     }
 

@@ -7,6 +7,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -37,9 +38,7 @@ class ReplacedLogTest {
     @Timeout(90)
     void twoRenamesBeforeTheLoggerReopensThenAFaultyRunWarns() throws Exception {
         // an interface message no rule maps: watch says so when it has read it, so the test knows it is following
-        Path log = Files.writeString(dir.resolve("live.log"), "0.000000\tDEBUG\tCommand intercepted:\n"
-                + "  From      : /probe\n  To        : /probed\n  Protocol  : Probe\n  Command   : first\n"
-                + "  Arguments : \n  Reply     : \n");
+        Path log = Files.writeString(dir.resolve("live.log"), probe("first"));
         Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
         try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.APPEND)) { // exec 3>>live.log
             FleetWatchTest.await(() -> w.err().toString().contains("Probe/first"), "watch follows: " + w.err());
@@ -94,6 +93,36 @@ class ReplacedLogTest {
         String out = w.out().toString();
         assertTrue(out.contains("end of " + one + " (stopped: interrupted): ") && out.contains("end of " + two
                 + " (stopped: interrupted): "), out);
+    }
+
+    /**
+     * A logger that pauses for more than the quiet time after a rename rotation and then goes on in the renamed file,
+     * after watch took up the new file: what it writes there is not read, and one line says so (it was lost
+     * silently).
+     */
+    @Test
+    @Timeout(90)
+    void aLoggerGoingOnInTheRenamedFileAfterTheTurnIsToldOf() throws Exception {
+        Path log = Files.writeString(dir.resolve("live.log"), probe("first"));
+        Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
+        try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.APPEND)) {
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/first"), "watch follows: " + w.err());
+            Files.move(log, dir.resolve("live.log.1"));
+            Files.writeString(log, probe("second"));
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/second"), "the new file is taken up");
+            held.write(probe("third").getBytes(StandardCharsets.UTF_8));
+            held.flush();
+            FleetWatchTest.await(() -> w.err().toString().contains(log + ": the file renamed away at the last rotation "
+                    + "grew by "), "says that the renamed file is written on: " + w.err());
+        }
+        w.stop();
+        assertTrue(!w.err().toString().contains("Probe/third"), w.err().toString());
+    }
+
+    /** An interface message no rule maps: watch says so when it reads it. */
+    private static String probe(String name) {
+        return "0.000000\tDEBUG\tCommand intercepted:\n  From      : /probe\n  To        : /probed\n"
+                + "  Protocol  : Probe\n  Command   : " + name + "\n  Arguments : \n  Reply     : \n";
     }
 
     static boolean mkfifo(Path path) throws InterruptedException {

@@ -69,8 +69,11 @@ class FollowerChainTest {
             assertTrue(f.poll());
             Files.writeString(file, "c3\n", StandardOpenOption.APPEND);
             f.poll();
-            assertEquals(1, f.openFiles(), "the files passed over are closed");
-            logger.write('x'); // the first logger's handle is still open: nothing it holds is read from now on
+            assertEquals(2, f.openFiles(), "the empty files passed over are closed; the first is kept a while");
+            logger.write('x'); // the first logger's handle is still open: what it writes now is told, not read
+            logger.flush();
+            f.poll();
+            assertTrue(f.takeNotice().isPresent());
         }
         assertEquals(List.of("a1", "<restarted replaced>", "c1", "c2", "c3"), events);
     }
@@ -170,6 +173,46 @@ class FollowerChainTest {
             assertTrue(f.poll());
         }
         assertEquals(List.of("a1", "<restarted replaced>", "b1"), events);
+    }
+
+    /**
+     * A logger that pauses after a rename rotation for longer than the quiet time, then goes on writing to the renamed
+     * file after the follower took up the new one: what it writes there is not read, and the follower says so once,
+     * instead of losing it silently. A renamed file that stays quiet is closed after the release time.
+     */
+    @Test
+    void aRenamedFileWrittenAgainAfterTheTurnIsToldOfOnce() throws IOException {
+        Path file = Files.writeString(dir.resolve("live.log"), "a1\n");
+        Path rotated = dir.resolve("live.log.1");
+        try (LogFollower f = follower(file)) {
+            f.poll();
+            Files.move(file, rotated);
+            Files.writeString(file, "b1\n");
+            f.poll();
+            now[0] += QUIET;
+            f.poll();
+            assertEquals(List.of("a1", "<restarted replaced>", "b1"), events);
+            assertEquals(2, f.openFiles(), "the renamed file is kept open a while");
+            assertEquals(Optional.empty(), f.takeNotice());
+            Files.writeString(rotated, "a2 warning\n", StandardOpenOption.APPEND);
+            f.poll();
+            assertEquals(Optional.of("the file renamed away at the last rotation grew by 11 bytes after the file now "
+                    + "at the path was taken up: a writer went on in it, and what it wrote there is not read"),
+                    f.takeNotice());
+            assertEquals(Optional.empty(), f.takeNotice(), "said once");
+            assertEquals(1, f.openFiles());
+
+            Files.move(file, dir.resolve("live.log.2"));
+            Files.writeString(file, "c1\n");
+            f.poll();
+            now[0] += QUIET;
+            f.poll();
+            assertEquals(2, f.openFiles());
+            now[0] += RELEASE;
+            f.poll();
+            assertEquals(1, f.openFiles(), "quiet for the release time: closed");
+            assertEquals(Optional.empty(), f.takeNotice());
+        }
     }
 
     static boolean mkfifo(Path path) throws InterruptedException {
