@@ -36,10 +36,11 @@ public final class Benchmarks {
      * @param fleetSamples    append-to-warning latencies measured per fleet size (at least one per log)
      * @param fleetSeconds    how long the fleet benchmark runs at robot pace, and idle, per fleet size
      * @param fleetPolling    the fleet polls every log ({@code watch --polling}) instead of waiting for notifications
+     * @param fleetIdleLogs   logs of the idle fleet whose cost is measured apart (0: none)
      */
     public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
                           List<Integer> learnRuns, int modelRuns, Path tempDir, List<Integer> fleetLogs,
-                          int fleetSamples, double fleetSeconds, boolean fleetPolling) {
+                          int fleetSamples, double fleetSeconds, boolean fleetPolling, int fleetIdleLogs) {
     }
 
     private Benchmarks() {
@@ -133,6 +134,17 @@ public final class Benchmarks {
                                 r.logs() < 1000 ? ""
                                         : f("; target idle < 5%% of a core and p99 < 20 ms: %s",
                                         r.idleCore() < 0.05 && r.percentile(0.99) < 20 ? "met" : "MISSED")));
+                    }
+                    if (o.fleetIdleLogs() > 0) {
+                        IdleFleetBench r = IdleFleetBench.run(new FleetSetup(abstraction, models,
+                                o.pollMicros() * 1000, o.fleetPolling(), o.tempDir()), o.fleetIdleLogs(),
+                                o.fleetSeconds());
+                        out.accept(f("fleet idle: %d logs of 12 records in one process, %s: %.1f%% of a core "
+                                        + "(following thread %.1f%%); heap after GC %.0f MB (%.0f before the fleet, %.1f "
+                                        + "KB per log); %d descriptors open (%d before the fleet, limit %d); load "
+                                        + "average %.1f", r.logs(), how, 100 * r.core(), 100 * r.loopCore(), r.heapMb(),
+                                r.baseHeapMb(), r.kbPerLog(), r.descriptors(), r.baseFds(), r.maxFds(),
+                                ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage()));
                     }
                 }
                 case LEARN -> {

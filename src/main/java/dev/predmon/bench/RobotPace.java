@@ -5,6 +5,7 @@ import dev.predmon.monitor.Fleet;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.simulate.Scenario;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.UncheckedIOException;
@@ -58,10 +59,10 @@ final class RobotPace {
     /** The load of following {@code logs} logs growing at the robot's pace for {@code nanos}. */
     Load measure(int logs, long nanos) throws Exception {
         try (ScratchDir round = setup.scratch("predmon-fleet-pace"); Fleet fleet = setup.fleet((log, e) -> { })) {
-            List<OutputStream> outs = new ArrayList<>();
+            List<Path> files = new ArrayList<>();
             for (int i = 0; i < logs; i++) {
                 Path f = Files.createFile(round.resolve("robot-" + i + ".log"));
-                outs.add(Files.newOutputStream(f, StandardOpenOption.APPEND));
+                files.add(f);
                 fleet.add(f);
             }
             int[] cursor = new int[logs];
@@ -75,7 +76,7 @@ final class RobotPace {
                 Thread.sleep(FleetBench.SETTLE_MILLIS);
                 long start = System.nanoTime();
                 Thread writer = new Thread(() -> {
-                    write(outs, cursor, start, nanos);
+                    write(files, cursor, start, nanos);
                     writerCpu.set(threads.getCurrentThreadCpuTime());
                 }, "predmon-bench-pace");
                 long cpu = os.getProcessCpuTime();
@@ -86,27 +87,33 @@ final class RobotPace {
                 wall = System.nanoTime() - start;
             }
             long records = fleet.logs().stream().mapToLong(l -> l.monitor().pipeline().records()).sum();
-            for (OutputStream o : outs) {
-                o.close();
-            }
             return new Load(used / wall, (double) used / Math.max(1, records));
         }
     }
 
-    /** Appends to every log at the robot's pace for {@code nanos}, flushing every 5 ms. */
-    private void write(List<OutputStream> outs, int[] cursor, long start, long nanos) {
+    /**
+     * Appends to every log at the robot's pace for {@code nanos}, looking every 5 ms. Each log is opened for its
+     * append and closed after it, as a logger that reopens its file would: a fleet of 10,000 logs is not 10,000 open
+     * writers in the bench's own process.
+     */
+    private void write(List<Path> files, int[] cursor, long start, long nanos) {
         long written = 0;
+        ByteArrayOutputStream chunk = new ByteArrayOutputStream();
         while (System.nanoTime() - start < nanos) {
             long due = (long) ((System.nanoTime() - start) / 1e9 * rate);
             try {
-                for (; written < due; written++) {
-                    for (int i = 0; i < outs.size(); i++) {
-                        outs.get(i).write(run.get(cursor[i]));
-                        cursor[i] = (cursor[i] + 1) % run.size();
+                if (written < due) {
+                    for (int i = 0; i < files.size(); i++) {
+                        chunk.reset();
+                        for (long w = written; w < due; w++) {
+                            chunk.write(run.get(cursor[i]));
+                            cursor[i] = (cursor[i] + 1) % run.size();
+                        }
+                        try (OutputStream out = Files.newOutputStream(files.get(i), StandardOpenOption.APPEND)) {
+                            chunk.writeTo(out);
+                        }
                     }
-                }
-                for (OutputStream o : outs) {
-                    o.flush();
+                    written = due;
                 }
             } catch (IOException e) {
                 throw new UncheckedIOException(e);

@@ -74,6 +74,11 @@ final class BenchCommand implements Callable<Integer> {
             + "does, instead of waiting for the operating system's file-change notification.")
     boolean fleetPolling;
 
+    @Option(names = "--fleet-idle-logs", defaultValue = "10000",
+            description = "Logs of the idle fleet whose CPU, heap and descriptors the fleet benchmark measures apart "
+                    + "(0: none; default: ${DEFAULT-VALUE}).")
+    int fleetIdleLogs;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -81,7 +86,7 @@ final class BenchCommand implements Callable<Integer> {
                 : only.stream().map(this::kind).toList();
         Path dir = tmp != null ? tmp : Path.of(System.getProperty("java.io.tmpdir"));
         Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, learnRuns,
-                modelRuns, dir, fleetLogs, fleetSamples, fleetSeconds, fleetPolling), line -> {
+                modelRuns, dir, fleetLogs, fleetSamples, fleetSeconds, fleetPolling, fleetIdleLogs), line -> {
             out.println(line);
             out.flush();
         });

@@ -323,7 +323,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         PredictiveMonitor m = log.monitor();
         long pairs = m.summary().pairs();
         return new Evidence(log.path(), log.watcher()::lines, m.records(), m.interfaceRecords(), pairs, m.unmapped(),
-                abstraction, outlets.get(log).problems.first());
+                abstraction, outlets.get(log).problems.first(), m.pipeline().span());
     }
 
     @Override
@@ -342,6 +342,13 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         String every = BigDecimal.valueOf(pauseNanos, 6).stripTrailingZeros().toPlainString() + " ms";
         err.println(Terminal.line("predmon: file-change notification unavailable" + (dir == null ? "" : " for " + dir)
                 + " (" + why + "); polling " + (dir == null ? "every log" : "its logs") + " every " + every));
+        err.flush();
+    }
+
+    /** One line on stderr about a log the fleet goes on watching (something at its path that is no file, ...). */
+    @Override
+    public void notice(String line) {
+        err.println("predmon: " + Terminal.line(line));
         err.flush();
     }
 

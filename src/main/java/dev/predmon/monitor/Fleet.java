@@ -8,6 +8,7 @@ import dev.predmon.parse.ParseProblem;
 import java.io.IOException;
 import java.nio.channels.ClosedByInterruptException;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -91,15 +92,28 @@ public final class Fleet implements AutoCloseable {
         default long beat() {
             return Long.MAX_VALUE;
         }
+
+        /**
+         * One line the user should read while following, naming the log it is about: something at its path that is
+         * not a file (a FIFO, a directory), a read that failed, the fleet closing idle logs for want of descriptors.
+         * Each is told once, until it changes; the fleet goes on watching every log.
+         */
+        default void notice(String line) {
+        }
     }
 
-    /** How each log's monitor matches: the same for every log. */
-    record Settings(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule) {
+    /**
+     * How each log's monitor matches: the same for every log; {@code release}: how long a file gone from its log's
+     * path is held open after it last grew.
+     */
+    record Settings(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule,
+                    Duration release) {
     }
 
-    private final Settings settings;
+    private Settings settings;
     private final Listener listener;
     private final Map<Path, WatchedLog> logs = new LinkedHashMap<>();
+    private OpenFiles openFiles = new OpenFiles(OpenFiles.defaultBudget());
     /** While following: told of each log added. */
     private Wakeups wakeups;
 
@@ -114,8 +128,23 @@ public final class Fleet implements AutoCloseable {
     /** A fleet whose monitors warn by {@code rule}. */
     public Fleet(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule,
                  Listener listener) {
-        this.settings = new Settings(models, abstraction, threshold, confirm, rule);
+        this.settings = new Settings(models, abstraction, threshold, confirm, rule, LogWatcher.DEFAULT_RELEASE);
         this.listener = listener;
+    }
+
+    /**
+     * For tests, before any log is added: how long a file gone from the path is held open, and how many files the
+     * fleet may hold open.
+     */
+    void limits(Duration release, int budget) {
+        settings = new Settings(settings.models(), settings.abstraction(), settings.threshold(), settings.confirm(),
+                settings.rule(), release);
+        openFiles = new OpenFiles(budget);
+    }
+
+    /** How many files the fleet's logs hold open now. */
+    int openFiles() {
+        return openFiles.open();
     }
 
     /** Watches {@code log} from now on, unless it is watched already (under any spelling of its path). */
@@ -148,18 +177,64 @@ public final class Fleet implements AutoCloseable {
         return any;
     }
 
-    private boolean poll(WatchedLog log) throws IOException {
-        if (log.watcher().poll()) {
-            listener.grew(log);
-            return true;
+    /**
+     * Polls one log. A log that cannot be read (what is at its path is no file, a read fails) is told once and
+     * watched on; it never stops the others. When the fleet holds more files than it may, the logs idle longest
+     * are closed, to be reopened when they change.
+     */
+    private boolean poll(WatchedLog log) throws ClosedByInterruptException {
+        boolean grew = false;
+        String trouble = null;
+        try {
+            grew = log.watcher().poll();
+        } catch (ClosedByInterruptException stop) {
+            throw stop;
+        } catch (IOException e) {
+            if (OpenFiles.exhausted(e)) {
+                openFiles.exhausted();
+                trouble = relieve(log) ? null : log.name() + ": cannot be opened: too many open files";
+            } else {
+                trouble = log.name() + ": cannot be read (" + DirectoryWatch.why(e) + "); still watching it";
+            }
         }
-        return false;
+        if (trouble == null) {
+            trouble = log.watcher().obstacle().map(o -> log.name() + ": " + o + "; watching for a log file there")
+                    .orElse(null);
+        }
+        if (trouble != null && !trouble.equals(log.told)) {
+            listener.notice(trouble);
+        }
+        log.told = trouble;
+        log.watcher().takeNotice().ifPresent(n -> listener.notice(log.name() + ": " + n));
+        openFiles.polled(log, grew);
+        if (openFiles.over()) {
+            relieve(log);
+        }
+        if (grew) {
+            listener.grew(log);
+        }
+        return grew;
     }
 
-    /** Reads every log to its end and completes its trace ({@code --no-follow}). */
+    /** Closes idle logs' files, saying so the first time; whether any could be closed. */
+    private boolean relieve(WatchedLog keep) {
+        int before = openFiles.open();
+        try {
+            if (openFiles.relieve(keep)) {
+                listener.notice(logs.size() + " logs need more open files than this process may hold ("
+                        + openFiles.budget() + "): the files of idle logs are closed and reopened when they change");
+            }
+        } catch (IOException e) {
+            listener.notice("closing idle logs: " + DirectoryWatch.why(e));
+        }
+        return openFiles.open() < before;
+    }
+
+    /** Reads every log to its end and completes its trace ({@code --no-follow}); each file is closed once read. */
     public void drain() throws IOException {
         for (WatchedLog log : logs.values()) {
             log.watcher().drain();
+            log.watcher().release();
         }
     }
 
@@ -269,6 +344,7 @@ public final class Fleet implements AutoCloseable {
         IOException first = null;
         for (WatchedLog log : new ArrayList<>(logs.values())) {
             try {
+                openFiles.closed(log);
                 log.watcher().close();
             } catch (IOException e) {
                 if (first == null) {

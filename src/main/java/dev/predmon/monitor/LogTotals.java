@@ -1,9 +1,9 @@
 package dev.predmon.monitor;
 
 import dev.predmon.pipeline.TracePipeline;
+import dev.predmon.pipeline.UnmappedCounts;
 
 import java.util.Map;
-import java.util.TreeMap;
 
 /**
  * What a log's pipeline counted before its restarts. The pipeline counts from 0 again after a truncation or
@@ -13,13 +13,14 @@ final class LogTotals {
 
     private long records;
     private long interfaceRecords;
-    private final Map<String, Long> unmapped = new TreeMap<>();
+    /** Bounded as each pipeline's are: a log rotated daily for months adds no kinds beyond the bound. */
+    private final UnmappedCounts unmapped = new UnmappedCounts();
 
     /** Adds what {@code pipeline} counted, just before it is reset. */
     void add(TracePipeline pipeline) {
         records += pipeline.records();
         interfaceRecords += pipeline.interfaceRecords();
-        pipeline.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
+        unmapped.addAll(pipeline.unmapped());
     }
 
     long records(TracePipeline now) {
@@ -31,8 +32,12 @@ final class LogTotals {
     }
 
     Map<String, Long> unmapped(TracePipeline now) {
-        Map<String, Long> all = new TreeMap<>(unmapped);
-        now.unmapped().forEach((k, n) -> all.merge(k, n, Long::sum));
-        return all;
+        if (unmapped.isEmpty()) {
+            return now.unmapped();
+        }
+        UnmappedCounts all = new UnmappedCounts();
+        all.addAll(unmapped.toMap());
+        all.addAll(now.unmapped());
+        return all.toMap();
     }
 }

@@ -9,6 +9,7 @@ import dev.predmon.parse.ParseProblem;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.Optional;
 import java.util.function.Consumer;
 
 /**
@@ -20,6 +21,7 @@ import java.util.function.Consumer;
 public final class LogWatcher implements AutoCloseable {
 
     private static final Duration DEFAULT_QUIET = Duration.ofMillis(LogFollower.QUIET_MILLIS);
+    static final Duration DEFAULT_RELEASE = Duration.ofMillis(LogFollower.RELEASE_MILLIS);
 
     private final PredictiveMonitor monitor;
     private final LogParser parser;
@@ -27,7 +29,7 @@ public final class LogWatcher implements AutoCloseable {
     private long lines;
 
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
-        this(log, monitor, problems, record -> { }, record -> { }, DEFAULT_QUIET);
+        this(log, monitor, problems, record -> { }, record -> { }, DEFAULT_QUIET, DEFAULT_RELEASE);
     }
 
     /**
@@ -36,7 +38,7 @@ public final class LogWatcher implements AutoCloseable {
      */
     LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
                Duration quiet) {
-        this(log, monitor, problems, seen, record -> { }, quiet);
+        this(log, monitor, problems, seen, record -> { }, quiet, DEFAULT_RELEASE);
     }
 
     /**
@@ -45,11 +47,17 @@ public final class LogWatcher implements AutoCloseable {
      */
     public static LogWatcher withRecords(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
                                          Consumer<LogRecord> taken) {
-        return new LogWatcher(log, monitor, problems, record -> { }, taken, DEFAULT_QUIET);
+        return new LogWatcher(log, monitor, problems, record -> { }, taken, DEFAULT_QUIET, DEFAULT_RELEASE);
+    }
+
+    /** As {@link #withRecords}; a file gone from the path is closed once it has not grown for {@code release}. */
+    static LogWatcher withRelease(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
+                                  Consumer<LogRecord> taken, Duration release) {
+        return new LogWatcher(log, monitor, problems, record -> { }, taken, DEFAULT_QUIET, release);
     }
 
     private LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
-                       Consumer<LogRecord> taken, Duration quiet) {
+                       Consumer<LogRecord> taken, Duration quiet, Duration release) {
         this.monitor = monitor;
         this.parser = new LogParser(record -> {
             seen.accept(record);
@@ -57,7 +65,7 @@ public final class LogWatcher implements AutoCloseable {
             taken.accept(record);
         }, problems);
         LineSink lines = parser.lineSink();
-        this.follower = LogFollower.withQuiet(log, new LineSink() {
+        this.follower = LogFollower.withTimes(log, new LineSink() {
             @Override
             public void line(String line) {
                 LogWatcher.this.lines++;
@@ -87,7 +95,7 @@ public final class LogWatcher implements AutoCloseable {
                 lines.restarted(reason); // reports a record the rotation cut, then starts the parser over
                 monitor.restart(reason);
             }
-        }, quiet);
+        }, quiet, release);
     }
 
     /** Processes whatever was appended since the last call; whether anything was. */
@@ -105,6 +113,26 @@ public final class LogWatcher implements AutoCloseable {
     /** Whether a replaced file waits for a later {@link #poll()} to be finished ({@link LogFollower#replacing()}). */
     public boolean replacing() {
         return follower.replacing();
+    }
+
+    /** What is at the log's path when it is not a regular file ({@link LogFollower#obstacle()}), if so. */
+    public Optional<String> obstacle() {
+        return follower.obstacle();
+    }
+
+    /** What the user should be told of this log once, if anything ({@link LogFollower#takeNotice()}). */
+    public Optional<String> takeNotice() {
+        return follower.takeNotice();
+    }
+
+    /** How many files are held open for this log now. */
+    public int openFiles() {
+        return follower.openFiles();
+    }
+
+    /** Closes the log's file to spare a descriptor ({@link LogFollower#release()}); whether one was closed. */
+    public boolean release() throws IOException {
+        return follower.release();
     }
 
     /** Lines read since the start or the last rotation. */

@@ -12,14 +12,18 @@ public final class WatchedLog {
     private final Path path;
     private final PredictiveMonitor monitor;
     private final LogWatcher watcher;
+    /** Files its watcher held open after its last poll, as {@link OpenFiles} counted them. */
+    int openFiles;
+    /** What the user was last told about it (something not a file at its path, a read that failed), or null. */
+    String told;
 
     WatchedLog(Path path, Fleet.Settings settings, Fleet.Listener listener) {
         this.path = path;
         this.name = path.toString();
         this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.threshold(),
                 settings.confirm(), settings.rule(), e -> listener.event(this, e));
-        this.watcher = LogWatcher.withRecords(path, monitor, p -> listener.problem(this, p),
-                r -> listener.record(this, r));
+        this.watcher = LogWatcher.withRelease(path, monitor, p -> listener.problem(this, p),
+                r -> listener.record(this, r), settings.release());
     }
 
     /** The log as named on the command line or found under a directory or glob; events are tagged with it. */

@@ -3,17 +3,16 @@ package dev.predmon.parse;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
-import java.nio.file.Files;
+import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
+import java.nio.file.attribute.FileTime;
 import java.time.Duration;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
 
@@ -31,52 +30,62 @@ import java.util.function.LongSupplier;
  *       once, so that nothing written to it is lost, but the old file is read on as long as its writer may still
  *       write to it. logrotate's default ({@code create}) renames the log and creates an empty one, and the
  *       program goes on writing to the renamed file until it reopens its log, if it ever does. The old file is
- *       therefore finished (its unterminated last line included) only once the new file holds something and the
- *       old one has not grown for {@value #QUIET_MILLIS} ms; then {@code restarted("replaced")}, then the new
- *       file is read from 0. A file replaced again before that waits its turn, held open too.</li>
+ *       therefore finished (its unterminated last line included) only once a file after it holds something and
+ *       the old one has not grown for {@value #QUIET_MILLIS} ms; then {@code restarted("replaced")}, then the new
+ *       file is read from 0. A file replaced again before that waits its turn, held open too; one that is still
+ *       empty when a later one holds something is passed over (rotated twice before the logger reopened).</li>
  *   <li>Deletion: the old handle keeps being drained, since a writer may still hold it, until a new file
- *       appears at the path.</li>
+ *       appears at the path, or until it has not grown for {@link #RELEASE_MILLIS} ms: then it is closed.</li>
+ *   <li>Something at the path that is not a regular file (a FIFO, a directory, a socket) is never opened: opening
+ *       a FIFO blocks until a writer comes. It is as if the path were empty, and {@link #obstacle()} says what is
+ *       there; a regular file at the path later is read as a replacement.</li>
+ *   <li>{@link #release()} closes the file being read to spare a descriptor; the next {@code poll()} that finds it
+ *       changed reopens it where reading stopped.</li>
  * </ul>
  * Files are told apart by {@link BasicFileAttributes#fileKey()} (device and inode on Unix), or by creation time
  * where the file system has no keys. Unlike {@code tail -F}, a truncation followed by a rewrite longer than the
  * old read position before the next poll is seen too: the last bytes read are kept and compared with what the
  * file now holds before the read position; if they differ, the file was rewritten and is read from 0. (A
  * rewrite with the very same bytes there cannot be told apart.) Lines are decoded and capped as by {@link LogReader}.
- * Memory is constant: one read buffer and at most one partial line.
+ * Memory is constant: at most one partial line, and one read buffer per thread shared by all followers.
  */
 public final class LogFollower implements AutoCloseable {
 
     /** How long a replaced file must have been quiet before it is finished; {@code tail -F} waits about 5 s. */
     public static final long QUIET_MILLIS = 1000;
+    /** How long a file no longer at the path (deleted, renamed away) is held open after it last grew. */
+    public static final long RELEASE_MILLIS = 60_000;
     private static final int BUFFER_BYTES = 64 * 1024;
-    /** How many of the last bytes read are kept to notice a rewrite: enough for a time stamp and more. */
-    private static final int TAIL_BYTES = 64;
-    /** Replacements held open at most while the file read is still written: beyond, the oldest is finished at once. */
-    private static final int MAX_WAITING = 8;
+    /** One read buffer per thread: a fleet of thousands of logs polled by one thread holds one. */
+    private static final ThreadLocal<byte[]> BUFFER = ThreadLocal.withInitial(() -> new byte[BUFFER_BYTES]);
 
     private final Path file;
     private final LineSink sink;
     private final LineSplitter splitter;
     private final long quietNanos;
+    private final long releaseNanos;
     private final LongSupplier clock;
-    private final ByteBuffer buffer = ByteBuffer.allocate(BUFFER_BYTES);
-    /** The bytes just before {@link #position}, as read: {@code tail[0, tailLength)}. */
-    private final byte[] tail = new byte[TAIL_BYTES];
-    private int tailLength;
-    private final ByteBuffer check = ByteBuffer.allocate(TAIL_BYTES);
+    /** The last bytes read, to notice a rewrite. */
+    private final ReadTail tail = new ReadTail();
 
-    /** The file being read; {@code null} until one was found at the path. */
+    /** The file being read; {@code null} until one was found at the path, once released, or once gone. */
     private FileChannel channel;
+    /** The identity of the file being read (kept while it is released); null before the first and once gone. */
     private Object identity;
     private long position;
     /** {@link #clock} when the file being read last grew (or was opened). */
     private long lastGrowth;
-    /** Files found at the path after the one being read, oldest first, each held open until its turn. */
-    private final ArrayDeque<Waiting> waiting = new ArrayDeque<>();
-
-    /** A replacement held open until the file before it is finished. */
-    private record Waiting(FileChannel channel, Object identity) {
-    }
+    /** Whether some file was read: the next one is then a replacement. */
+    private boolean started;
+    /** Whether the file being read was closed by {@link #release()}, and when it had last changed then. */
+    private boolean released;
+    private FileTime releasedModified;
+    /** What is at the path when it is not a regular file ({@code a FIFO}), else null. */
+    private String obstacle;
+    /** What the user should be told once, or null. */
+    private String notice;
+    /** Files found at the path after the one being read, each held open until its turn. */
+    private final Replacements waiting = new Replacements();
 
     /**
      * @param file the log to follow; it need not exist yet
@@ -95,16 +104,28 @@ public final class LogFollower implements AutoCloseable {
      * @param clock      the time in nanoseconds, as {@link System#nanoTime()}
      */
     LogFollower(Path file, LineSink sink, int maxLineBytes, long quietNanos, LongSupplier clock) {
+        this(file, sink, maxLineBytes, quietNanos, TimeUnit.MILLISECONDS.toNanos(RELEASE_MILLIS), clock);
+    }
+
+    /** @param releaseNanos how long a file gone from the path is held open after it last grew */
+    LogFollower(Path file, LineSink sink, int maxLineBytes, long quietNanos, long releaseNanos, LongSupplier clock) {
         this.file = Objects.requireNonNull(file, "file");
         this.sink = Objects.requireNonNull(sink, "sink");
         this.splitter = new LineSplitter(maxLineBytes, sink);
         this.quietNanos = quietNanos;
+        this.releaseNanos = releaseNanos;
         this.clock = Objects.requireNonNull(clock, "clock");
     }
 
     /** A follower that finishes a replaced file once it has been quiet for {@code quiet} ({@code watch}'s is 1 s). */
     public static LogFollower withQuiet(Path file, LineSink sink, Duration quiet) {
-        return new LogFollower(file, sink, LineSplitter.DEFAULT_MAX_LINE_BYTES, quiet.toNanos(), System::nanoTime);
+        return withTimes(file, sink, quiet, Duration.ofMillis(RELEASE_MILLIS));
+    }
+
+    /** As {@link #withQuiet}; a file gone from the path is closed once it has not grown for {@code release}. */
+    public static LogFollower withTimes(Path file, LineSink sink, Duration quiet, Duration release) {
+        return new LogFollower(file, sink, LineSplitter.DEFAULT_MAX_LINE_BYTES, quiet.toNanos(), release.toNanos(),
+                System::nanoTime);
     }
 
     /**
@@ -115,32 +136,70 @@ public final class LogFollower implements AutoCloseable {
      */
     public boolean poll() throws IOException {
         if (channel == null) {
-            Object found = identityOf(file);
-            FileChannel opened = found == null ? null : openAt(found);
-            if (opened == null) {
-                return false;
-            }
-            take(opened, found);
-            return readAvailable();
+            return pollClosed();
         }
         // The open file may have been truncated (and written again) even if it is no longer at the path.
         boolean progress = false;
-        if (channel.size() < position || rewritten()) {
+        if (channel.size() < position || tail.rewritten(channel, position)) {
             splitter.finish();
             sink.restarted("truncated");
             position = 0;
-            tailLength = 0;
+            tail.clear();
             progress = true;
         }
         progress |= readAvailable();
-        lookForReplacement();
-        while (!waiting.isEmpty() && (waiting.size() >= MAX_WAITING
-                || (clock.getAsLong() - lastGrowth >= quietNanos && waiting.peek().channel().size() > 0))) {
+        FileAt at = lookForReplacement();
+        while (!waiting.isEmpty() && (waiting.full() || (quiet(quietNanos) && waiting.anyHolds()))) {
             finishAndTakeNext();
             readAvailable();
             progress = true;
         }
+        long lost = waiting.retiredGrowth(clock.getAsLong(), releaseNanos);
+        if (lost > 0) {
+            notice = "the file renamed away at the last rotation grew by " + lost + " bytes after the file now at "
+                    + "the path was taken up: a writer went on in it, and what it wrote there is not read";
+        }
+        if (waiting.isEmpty() && (at == null || !at.identity().equals(identity)) && quiet(releaseNanos)) {
+            splitter.finish(); // gone from the path and quiet for long: its writer is done with it
+            channel.close();
+            channel = null;
+            identity = null;
+        }
         return progress;
+    }
+
+    /** Nothing is open: the path is looked at, and a file there (back) is opened. */
+    private boolean pollClosed() throws IOException {
+        FileAt at = look();
+        if (at == null) {
+            return false;
+        }
+        if (released && at.identity().equals(identity)) {
+            if (at.size() == position && at.modified().equals(releasedModified)) {
+                return false; // unchanged since it was released: no need to open it
+            }
+            FileChannel opened = at.open();
+            if (opened == null) {
+                return false;
+            }
+            channel = opened;
+            released = false;
+            return poll();
+        }
+        FileChannel opened = at.open();
+        if (opened == null) {
+            return false;
+        }
+        if (started) { // the file read before was released or is gone: this one replaces it
+            splitter.finish();
+            take(opened, at.identity());
+            sink.restarted("replaced");
+            readAvailable();
+            return true;
+        }
+        started = true;
+        take(opened, at.identity());
+        return readAvailable();
     }
 
     /**
@@ -149,6 +208,43 @@ public final class LogFollower implements AutoCloseable {
      */
     public boolean replacing() {
         return !waiting.isEmpty();
+    }
+
+    /** What is at the path when it is not a regular file ({@code is a FIFO, not a regular file}), if so. */
+    public Optional<String> obstacle() {
+        return Optional.ofNullable(obstacle).map(k -> "is " + k + ", not a regular file");
+    }
+
+    /** What the user should be told of this log once since the last call, if anything: writes that are not read. */
+    public Optional<String> takeNotice() {
+        Optional<String> out = Optional.ofNullable(notice);
+        notice = null;
+        return out;
+    }
+
+    /** How many files this follower holds open now. */
+    public int openFiles() {
+        return (channel == null ? 0 : 1) + waiting.open();
+    }
+
+    /**
+     * Closes the file being read to spare a descriptor, unless a replacement waits; a later {@link #poll()} reopens
+     * it where reading stopped once it changed. Whatever a writer adds to a file renamed or deleted meanwhile is not
+     * seen.
+     *
+     * @return whether a file was closed
+     */
+    public boolean release() throws IOException {
+        if (channel == null || !waiting.isEmpty()) {
+            return false;
+        }
+        waiting.closeRetired();
+        FileAt at = FileAt.look(file);
+        releasedModified = at != null && at.identity().equals(identity) ? at.modified() : null;
+        channel.close();
+        channel = null;
+        released = true;
+        return true;
     }
 
     /**
@@ -162,6 +258,9 @@ public final class LogFollower implements AutoCloseable {
     public void drainToEnd() throws IOException {
         poll();
         if (channel == null) {
+            if (obstacle != null) {
+                throw new FileSystemException(file.toString(), null, obstacle().orElseThrow());
+            }
             throw new NoSuchFileException(file.toString());
         }
         while (!waiting.isEmpty()) {
@@ -173,54 +272,50 @@ public final class LogFollower implements AutoCloseable {
 
     @Override
     public void close() throws IOException {
-        IOException first = null;
-        for (FileChannel c : openChannels()) {
-            try {
-                c.close();
-            } catch (IOException e) {
-                if (first == null) {
-                    first = e;
-                } else {
-                    first.addSuppressed(e);
-                }
-            }
+        List<FileChannel> all = new ArrayList<>(waiting.channels());
+        if (channel != null) {
+            all.add(0, channel);
         }
         channel = null;
         waiting.clear();
-        if (first != null) {
-            throw first;
-        }
+        FileAt.closeAll(all);
     }
 
-    private List<FileChannel> openChannels() {
-        List<FileChannel> all = new ArrayList<>();
-        if (channel != null) {
-            all.add(channel);
-        }
-        waiting.forEach(w -> all.add(w.channel()));
-        return all;
+    private boolean quiet(long nanos) {
+        return clock.getAsLong() - lastGrowth >= nanos;
     }
 
-    /** Opens a file found at the path that is neither the one read nor one waiting, and queues it. */
-    private void lookForReplacement() throws IOException {
-        Object found = identityOf(file);
-        if (found == null || found.equals(identity) || waiting.size() >= MAX_WAITING
-                || waiting.stream().anyMatch(w -> w.identity().equals(found))) {
-            return; // deleted (the old handle is drained on), unchanged, or known
+    /** The file at the path, noting what is there when it is not a regular file. */
+    private FileAt look() throws IOException {
+        FileAt at = FileAt.look(file);
+        obstacle = at == null || at.regular() ? null : at.kind();
+        return at;
+    }
+
+    /** Opens a regular file found at the path that is neither the one read nor one waiting, and queues it. */
+    private FileAt lookForReplacement() throws IOException {
+        FileAt at = look();
+        if (at == null || at.identity().equals(identity) || waiting.full()
+                || waiting.holds(at.identity())) {
+            return at; // deleted (the old handle is drained on), unchanged, or known
         }
-        FileChannel opened = openAt(found);
+        FileChannel opened = at.open();
         if (opened != null) {
-            waiting.add(new Waiting(opened, found));
+            waiting.add(opened, at.identity());
         }
+        return at;
     }
 
-    /** The file being read is done: its last line goes out, then the restart, then the next file from 0. */
+    /**
+     * The file being read is done: its last line goes out, then the restart, then the next file from 0. A next file
+     * that is still empty while one after it holds something is passed over: it was rotated away before its turn.
+     */
     private void finishAndTakeNext() throws IOException {
         splitter.finish();
         FileChannel done = channel;
-        Waiting next = waiting.poll();
+        Replacements.Waiting next = waiting.next();
         take(next.channel(), next.identity());
-        done.close();
+        waiting.retire(done, clock.getAsLong());
         sink.restarted("replaced");
     }
 
@@ -228,28 +323,14 @@ public final class LogFollower implements AutoCloseable {
         channel = opened;
         identity = id;
         position = 0;
-        tailLength = 0;
+        tail.clear();
+        released = false;
         lastGrowth = clock.getAsLong();
     }
 
-    /** Opens the file at the path, which had identity {@code before}; null if it went or changed meanwhile. */
-    private FileChannel openAt(Object before) throws IOException {
-        FileChannel opened;
-        try {
-            opened = FileChannel.open(file, StandardOpenOption.READ);
-        } catch (NoSuchFileException gone) {
-            // Deleted between the look and the open: the same as not there yet, try again at the next poll.
-            return null;
-        }
-        if (!before.equals(identityOf(file))) {
-            // Replaced between the look and the open: we may hold the wrong file, look again next time.
-            opened.close();
-            return null;
-        }
-        return opened;
-    }
-
     private boolean readAvailable() throws IOException {
+        byte[] bytes = BUFFER.get();
+        ByteBuffer buffer = ByteBuffer.wrap(bytes);
         boolean progress = false;
         while (true) {
             buffer.clear();
@@ -262,52 +343,8 @@ public final class LogFollower implements AutoCloseable {
             }
             position += n;
             progress = true;
-            remember(buffer.array(), n);
-            splitter.feed(buffer.array(), 0, n);
+            tail.remember(bytes, n);
+            splitter.feed(bytes, 0, n);
         }
-    }
-
-    /** Keeps the last {@value #TAIL_BYTES} bytes read, the {@code n} bytes of {@code bytes} being the newest. */
-    private void remember(byte[] bytes, int n) {
-        if (n >= TAIL_BYTES) {
-            System.arraycopy(bytes, n - TAIL_BYTES, tail, 0, TAIL_BYTES);
-            tailLength = TAIL_BYTES;
-            return;
-        }
-        int keep = Math.min(tailLength, TAIL_BYTES - n);
-        System.arraycopy(tail, tailLength - keep, tail, 0, keep);
-        System.arraycopy(bytes, 0, tail, keep, n);
-        tailLength = keep + n;
-    }
-
-    /**
-     * Whether the bytes before the read position are no longer those read there: the file was truncated and
-     * written again past the old position between two polls (copytruncate rotation while the logger writes).
-     */
-    private boolean rewritten() throws IOException {
-        if (tailLength == 0) {
-            return false;
-        }
-        check.clear().limit(tailLength);
-        long at = position - tailLength;
-        while (check.hasRemaining()) {
-            int n = channel.read(check, at + check.position());
-            if (n <= 0) {
-                return true; // shorter than it was: truncated
-            }
-        }
-        return !Arrays.equals(check.array(), 0, tailLength, tail, 0, tailLength);
-    }
-
-    /** The identity of the file at {@code path}, or {@code null} if there is none. */
-    private static Object identityOf(Path path) throws IOException {
-        BasicFileAttributes attributes;
-        try {
-            attributes = Files.readAttributes(path, BasicFileAttributes.class);
-        } catch (NoSuchFileException absent) {
-            return null;
-        }
-        Object key = attributes.fileKey();
-        return key != null ? key : attributes.creationTime();
     }
 }

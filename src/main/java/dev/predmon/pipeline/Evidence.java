@@ -25,9 +25,10 @@ import java.util.function.LongSupplier;
  * @param unmapped         interface messages no rule maps, by key
  * @param abstraction      the abstraction the log is read with
  * @param firstProblem     the first parse problem, or null
+ * @param span             the lines from the first record to the end of the last ({@link TracePipeline#span()})
  */
 public record Evidence(Path log, LongSupplier lines, long records, long interfaceRecords, long pairs,
-                       Map<String, Long> unmapped, Abstraction abstraction, ParseProblem firstProblem) {
+                       Map<String, Long> unmapped, Abstraction abstraction, ParseProblem firstProblem, long span) {
 
     /** While following, nothing recognisable in this many records is said once. */
     public static final long FIRST = 200;
@@ -42,7 +43,7 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
     public static Evidence of(LogTrace trace, Abstraction abstraction) {
         return new Evidence(trace.log(), trace::lines, trace.records(),
                 trace.interfaceRecords(), trace.pairs().size(), trace.unmapped(), abstraction,
-                trace.problems().isEmpty() ? null : trace.problems().get(0));
+                trace.problems().isEmpty() ? null : trace.problems().get(0), trace.span());
     }
 
     /** Why the complete log gives no evidence, in one line naming it; empty when it gives some. */
@@ -61,13 +62,15 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
     }
 
     /**
-     * Why a whole file that holds records is still no evidence: its records make up less than half of its lines
-     * (random bytes around a fragment of a log). A monitor's capture is records from end to end, but for the lines
-     * of other programs between them (real captures: 1%, the simulator's noisiest logs: 13%).
+     * Why a whole file that holds records is still no evidence: its records make up less than half of its lines,
+     * and lie within less than half of them (random bytes around a fragment of a log). A monitor's capture is
+     * records from end to end, but for the lines of other programs between them (real captures: 1%, the simulator's
+     * noisiest logs: 13%); a capture where another program wrote more lines than the monitor between its records is
+     * still records from end to end, and is judged, as it is while followed.
      */
     public Optional<String> fragment() {
         long n = lines.getAsLong();
-        if (records == 0 || records * RECORD_LINES * 2 >= n) {
+        if (records == 0 || records * RECORD_LINES * 2 >= n || span * 2 >= n) {
             return Optional.empty();
         }
         return Optional.of(log + ": only " + records + (records == 1 ? " monitor record" : " monitor records")

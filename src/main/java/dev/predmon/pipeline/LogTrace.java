@@ -21,9 +21,10 @@ import java.util.Map;
  * @param interfaceRecords records of the skill-component interface
  * @param unmapped         interface messages no rule maps, by key
  * @param runs             the runs the log holds (one, unless the robot ran several missions in it)
+ * @param span             the lines from its first record to the end of its last ({@link TracePipeline#span()})
  */
 public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems, long lines, long records,
-                       long interfaceRecords, Map<String, Long> unmapped, List<Run> runs) {
+                       long interfaceRecords, Map<String, Long> unmapped, List<Run> runs, long span) {
 
     /**
      * One run of a log.

@@ -7,10 +7,8 @@ import dev.predmon.compact.Compactor;
 import dev.predmon.mealy.CarryEncoder;
 import dev.predmon.parse.LogRecord;
 
-import java.util.Collections;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
 
 /**
  * The one path every log takes, offline ({@code learn}, {@code classify}, {@code evaluate}) and live
@@ -28,10 +26,13 @@ public final class TracePipeline {
     private final RunSplitter runs;
     private final QuietRestart restart;
     private int run;
-    private final Map<String, Long> unmapped = new TreeMap<>();
+    private final UnmappedCounts unmapped = new UnmappedCounts();
     private LogRecord current;
     private long records;
     private long interfaceRecords;
+    /** The lines of the first and of the last record taken; {@code firstLine} is 0 before any. */
+    private long firstLine;
+    private long lastLine;
 
     public TracePipeline(Abstraction abstraction, PipelineListener listener) {
         this.abstraction = abstraction;
@@ -81,6 +82,10 @@ public final class TracePipeline {
         restart.processed(record, c, starts);
         current = record;
         records++;
+        if (firstLine == 0) {
+            firstLine = record.line();
+        }
+        lastLine = record.line();
         listener.record(record);
         if (c instanceof Classification.Mapped m) {
             interfaceRecords++;
@@ -88,8 +93,9 @@ public final class TracePipeline {
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;
-            if (unmapped.merge(u.key(), 1L, Long::sum) == 1L) {
-                listener.unmapped(u.key(), record);
+            String first = unmapped.add(u.key(), 1);
+            if (first != null) {
+                listener.unmapped(first, record);
             }
             if (UnmappedMessages.novelty(u.key(), abstraction)) {
                 listener.gap(record);
@@ -117,11 +123,24 @@ public final class TracePipeline {
         current = null;
         records = 0;
         interfaceRecords = 0;
+        firstLine = 0;
+        lastLine = 0;
     }
 
-    /** Interface messages no rule maps, by key, sorted: reported to the user, never silently dropped. */
+    /**
+     * The lines from the first record to the end of the last one (0 before any): how much of the file the records
+     * are spread over, whatever lies between them.
+     */
+    public long span() {
+        return firstLine == 0 ? 0 : lastLine - firstLine + Evidence.RECORD_LINES;
+    }
+
+    /**
+     * Interface messages no rule maps, by key, sorted: reported to the user, never silently dropped; beyond
+     * {@value UnmappedCounts#KINDS} kinds, counted by command ({@link UnmappedCounts}).
+     */
     public Map<String, Long> unmapped() {
-        return Collections.unmodifiableMap(new TreeMap<>(unmapped));
+        return unmapped.toMap();
     }
 
     /** The run being read: 0, then 1, 2, ... in a log that holds several. */

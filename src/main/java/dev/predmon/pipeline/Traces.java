@@ -50,7 +50,7 @@ public final class Traces {
         }, n -> lines[0] = n);
         pipeline.endOfInput();
         return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), lines[0], pipeline.records(),
-                pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs());
+                pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs(), pipeline.span());
     }
 
     /** A log that could not be read, with the reason ({@link #getCause()}). */

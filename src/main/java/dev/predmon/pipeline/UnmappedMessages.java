@@ -36,8 +36,11 @@ public final class UnmappedMessages {
      * @param noRule    whether the abstraction has no rule for the command at all
      * @param locations the locations its messages name that the abstraction does not know
      * @param replies   distinct reply values no reply of its rule takes
+     * @param more      whether more kinds came than are told apart ({@link UnmappedCounts}): {@code replies} is
+     *                  a lower bound
      */
-    public record Group(String command, long messages, boolean noRule, TreeSet<String> locations, long replies) {
+    public record Group(String command, long messages, boolean noRule, TreeSet<String> locations, long replies,
+                        boolean more) {
 
         /** {@code GoTo/goTo (4 messages): about a location the abstraction does not know: 'user'}. */
         public String describe() {
@@ -51,6 +54,9 @@ public final class UnmappedMessages {
             if (replies > 0) {
                 why.add(replies + " distinct " + (replies == 1 ? "reply" : "replies") + " no rule takes");
             }
+            if (more) {
+                why.add("more distinct messages than are told apart");
+            }
             return command + " (" + messages + (messages == 1 ? " message" : " messages") + "): "
                     + String.join("; ", why);
         }
@@ -61,6 +67,9 @@ public final class UnmappedMessages {
 
     /** The command of a kind of unmapped message: {@code GoTo/goTo} of {@code GoTo/goTo reply 'kitchen'}. */
     public static String command(String kind) {
+        if (kind.endsWith(" " + UnmappedCounts.OTHER)) {
+            return kind.substring(0, kind.length() - UnmappedCounts.OTHER.length() - 1);
+        }
         int command = kind.indexOf(" command");
         int reply = kind.indexOf(" reply");
         int end = command < 0 ? reply : reply < 0 ? command : Math.min(command, reply);
@@ -69,16 +78,18 @@ public final class UnmappedMessages {
 
     /** The messages by command, the commands with most messages first. */
     public static List<Group> groups(Map<String, Long> unmapped) {
-        Map<String, long[]> counts = new LinkedHashMap<>(); // messages, no rule (0/1), distinct replies
+        Map<String, long[]> counts = new LinkedHashMap<>(); // messages, no rule (0/1), distinct replies, more (0/1)
         Map<String, TreeSet<String>> locations = new LinkedHashMap<>();
         unmapped.forEach((kind, n) -> {
             String command = command(kind);
-            long[] c = counts.computeIfAbsent(command, k -> new long[3]);
+            long[] c = counts.computeIfAbsent(command, k -> new long[4]);
             locations.computeIfAbsent(command, k -> new TreeSet<>());
             c[0] += n;
             String rest = kind.substring(command.length());
             int at = rest.indexOf(LOCATION);
-            if (at >= 0) {
+            if (rest.equals(" " + UnmappedCounts.OTHER) || kind.equals(UnmappedCounts.OTHER_COMMANDS)) {
+                c[3] = 1;
+            } else if (at >= 0) {
                 locations.get(command).add(rest.substring(at + LOCATION.length(), rest.length() - 1));
             } else if (rest.equals(" command")) {
                 c[1] = 1;
@@ -90,7 +101,7 @@ public final class UnmappedMessages {
         counts.forEach((command, c) -> {
             // a reply of a command without rule has no rule either: it says nothing more about the command
             long replies = c[1] == 1 ? 0 : c[2];
-            groups.add(new Group(command, c[0], c[1] == 1, locations.get(command), replies));
+            groups.add(new Group(command, c[0], c[1] == 1, locations.get(command), replies, c[3] == 1));
         });
         groups.sort(Comparator.comparingLong(Group::messages).reversed().thenComparing(Group::command));
         return groups;

@@ -71,17 +71,19 @@ class EvaluateCommandsTest {
     void benchPrintsEveryFigureWithTinySizes() {
         Cli r = Cli.run("bench", "--batch-mb", "1", "--latency-runs", "3", "--memory-records", "20000",
                 "--learn-runs", "2", "--model-runs", "2", "--fleet-logs", "1,3", "--fleet-samples", "3",
-                "--fleet-seconds", "0.2", "--tmp", dir.toString());
+                "--fleet-seconds", "0.2", "--fleet-idle-logs", "20", "--tmp", dir.toString());
         assertEquals(ExitCodes.OK, r.code(), r.err());
         for (String figure : new String[] {"batch: parse", "grep -c", "latency:", "latency without the forecast",
             "p99 with the forecast / without", "watch cpu:", "watch heap:", "learn: 2 runs",
             "latency: append of the warning's record -> warning event, 3 runs",
             "fleet: 1 log in one process, woken by file-change notification", "(3 samples)",
-            "fleet: 3 logs in one process, woken by file-change notification"}) {
+            "fleet: 3 logs in one process, woken by file-change notification",
+            "fleet idle: 20 logs of 12 records in one process, woken by file-change notification"}) {
             assertTrue(r.out().contains(figure), figure + " in\n" + r.out());
         }
         Cli polling = Cli.run("bench", "--only", "fleet", "--fleet-polling", "--fleet-samples", "3",
-                "--model-runs", "2", "--fleet-logs", "2", "--fleet-seconds", "0.2", "--tmp", dir.toString());
+                "--model-runs", "2", "--fleet-logs", "2", "--fleet-seconds", "0.2", "--fleet-idle-logs", "0", "--tmp",
+                dir.toString());
         assertEquals(ExitCodes.OK, polling.code(), polling.err());
         assertTrue(polling.out().contains("fleet: 2 logs in one process, polling every 1000 us"), polling.out());
         assertEquals(ExitCodes.USAGE, Cli.run("bench", "--only", "nonsense").code());

@@ -65,4 +65,33 @@ class FragmentTest {
         Cli r = Cli.run("classify", "--log", log.toString(), "--models", MODELS.toString());
         assertEquals(ExitCodes.OK, r.code(), r.err());
     }
+
+    /**
+     * A complete faulty run in a capture where another program wrote 8 lines between every two records: the records
+     * are under half of the lines, but spread from end to end. {@code --no-follow} warned, then said "no verdict"
+     * with exit 3, while following it gave exit 1; both now judge it the same, as does classify.
+     */
+    @Test
+    void aWholeRunWithMoreLinesOfAnotherProgramThanRecordsGetsOneVerdictFollowedOrNot() throws Exception {
+        StringBuilder text = new StringBuilder();
+        for (String line : FleetWatchTest.run(Scenario.DEPLETED, 9001).split("\n", -1)) {
+            if (!line.isEmpty() && Character.isDigit(line.charAt(0))) {
+                for (int k = 0; k < 8; k++) {
+                    text.append("[other] status line ").append(k).append('\n');
+                }
+            }
+            text.append(line).append('\n');
+        }
+        Path log = Files.writeString(tmp.resolve("shared.log"), text);
+        Cli once = Cli.run("watch", "--no-follow", "--log", log.toString(), "--models", MODELS.toString());
+        assertEquals(ExitCodes.WARNING, once.code(), once.out() + once.err());
+        assertTrue(once.out().contains("end of " + log + ": ") && once.out().contains("warning raised, property "
+                + "violated"), once.out());
+        assertEquals(ExitCodes.WARNING, Cli.run("classify", "--log", log.toString(), "--models", MODELS.toString())
+                .code());
+        Cli.Running followed = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
+        FleetWatchTest.await(() -> followed.out().toString().contains("VIOLATION"), "read to the violation");
+        followed.stop();
+        assertEquals(ExitCodes.WARNING, followed.code().get(), followed.out() + "\n" + followed.err());
+    }
 }

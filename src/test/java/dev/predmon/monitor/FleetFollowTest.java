@@ -189,7 +189,7 @@ class FleetFollowTest {
     }
 
     /** Appends records {@code from} to {@code to} (exclusive), in one write, creating the file if need be. */
-    private static void append(Path log, long from, long to) throws IOException {
+    static void append(Path log, long from, long to) throws IOException {
         StringBuilder text = new StringBuilder();
         for (long seq = from; seq < to; seq++) {
             text.append(WatchSoakTest.record(seq, "\n"));

@@ -1,0 +1,110 @@
+package dev.predmon.monitor;
+
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.OperatingSystemMXBean;
+import java.nio.file.FileSystemException;
+import java.util.Iterator;
+import java.util.LinkedHashSet;
+import java.util.Set;
+
+/**
+ * The files a {@link Fleet}'s logs hold open, kept within what the process may open ({@code ulimit -n}): a fleet
+ * larger than that keeps following every log by closing the files of the logs that were idle longest, which their
+ * next change reopens ({@link LogWatcher#release()}). The budget is half of the descriptors still free when the
+ * fleet starts, so that the live page's connections, hooks and the notification keep theirs; when an open fails
+ * for want of descriptors anyway, the budget shrinks to what is open.
+ */
+final class OpenFiles {
+
+    /** Descriptors every fleet may hold, whatever the limit says. */
+    private static final int FLOOR = 8;
+
+    private int budget;
+    private int open;
+    /** The logs holding files open, the one active longest ago first. */
+    private final Set<WatchedLog> byActivity = new LinkedHashSet<>();
+    private boolean told;
+
+    OpenFiles(int budget) {
+        this.budget = Math.max(FLOOR, budget);
+    }
+
+    /** Half of the descriptors this process may still open, or effectively no bound where that cannot be told. */
+    static int defaultBudget() {
+        OperatingSystemMXBean os = ManagementFactory.getOperatingSystemMXBean();
+        if (os instanceof com.sun.management.UnixOperatingSystemMXBean unix) {
+            long free = unix.getMaxFileDescriptorCount() - unix.getOpenFileDescriptorCount();
+            return (int) Math.min(Integer.MAX_VALUE, Math.max(FLOOR, free / 2));
+        }
+        return Integer.MAX_VALUE;
+    }
+
+    /** Whether {@code e} is an open that failed for want of descriptors (EMFILE, ENFILE). */
+    static boolean exhausted(IOException e) {
+        String why = e instanceof FileSystemException f ? f.getReason() : e.getMessage();
+        return why != null && (why.contains("Too many open files") || why.contains("too many open files"));
+    }
+
+    int budget() {
+        return budget;
+    }
+
+    int open() {
+        return open;
+    }
+
+    /** After {@code log} was polled: counts what it holds open now; {@code active} when it had something new. */
+    void polled(WatchedLog log, boolean active) {
+        int now = log.watcher().openFiles();
+        open += now - log.openFiles;
+        log.openFiles = now;
+        if (now == 0) {
+            byActivity.remove(log);
+        } else if (active || !byActivity.contains(log)) {
+            byActivity.remove(log);
+            byActivity.add(log);
+        }
+    }
+
+    /** A log is no longer followed (its files are closed). */
+    void closed(WatchedLog log) {
+        open -= log.openFiles;
+        log.openFiles = 0;
+        byActivity.remove(log);
+    }
+
+    /** Whether more files are open than the budget allows. */
+    boolean over() {
+        return open > budget;
+    }
+
+    /** An open failed for want of descriptors: from now on no more than are open now, less a margin. */
+    void exhausted() {
+        budget = Math.max(FLOOR, Math.min(budget, open - Math.max(1, open / 8)));
+    }
+
+    /**
+     * Closes the files of the logs idle longest until the budget is kept with room to spare, sparing {@code keep};
+     * a log whose replacement waits is not closed (its files cannot be reopened by path).
+     *
+     * @return whether this is the first time the fleet had to, so that it is said once
+     */
+    boolean relieve(WatchedLog keep) throws IOException {
+        int target = budget - budget / 10;
+        for (Iterator<WatchedLog> i = byActivity.iterator(); i.hasNext() && open > target; ) {
+            WatchedLog log = i.next();
+            if (log != keep && !log.watcher().replacing() && log.watcher().release()) {
+                open -= log.openFiles;
+                log.openFiles = log.watcher().openFiles();
+                open += log.openFiles;
+                if (log.openFiles == 0) {
+                    i.remove();
+                }
+            }
+        }
+        boolean first = !told;
+        told = true;
+        return first;
+    }
+}

@@ -1,0 +1,151 @@
+package dev.predmon.cli;
+
+import dev.predmon.simulate.Scenario;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+/**
+ * {@code watch} when a log's path comes to hold something other than the next written file: two rename rotations
+ * before the logger reopens (an empty file between), a FIFO, a directory. The file now at the path is read, nothing
+ * blocks, one line names the log, the other logs of the fleet are watched on, and a warning already raised keeps its
+ * exit code, with the {@code end} of every log printed.
+ */
+class ReplacedLogTest {
+
+    private static final Path MODELS = Path.of("models");
+
+    @TempDir
+    Path dir;
+
+    /**
+     * {@code exec 3>>live.log; mv live.log live.log.1; : >live.log; mv live.log live.log.2; : >live.log; cat dep.log
+     * >>live.log}: the depleted run now at the path warns (it was never read: exit 0).
+     */
+    @Test
+    @Timeout(90)
+    void twoRenamesBeforeTheLoggerReopensThenAFaultyRunWarns() throws Exception {
+        // an interface message no rule maps: watch says so when it has read it, so the test knows it is following
+        Path log = Files.writeString(dir.resolve("live.log"), probe("first"));
+        Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
+        try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.APPEND)) { // exec 3>>live.log
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/first"), "watch follows: " + w.err());
+            Files.move(log, dir.resolve("live.log.1"));
+            Files.writeString(log, "");
+            Thread.sleep(300); // watch sees the empty file and holds it open
+            Files.move(log, dir.resolve("live.log.2"));
+            Files.writeString(log, "");
+            Thread.sleep(300);
+            Files.writeString(log, FleetWatchTest.run(Scenario.DEPLETED, 9001), StandardOpenOption.APPEND);
+            FleetWatchTest.await(() -> w.out().toString().contains("VIOLATION"), "the run now at the path is read: "
+                    + w.out() + w.err());
+        }
+        w.stop();
+        assertEquals(ExitCodes.WARNING, w.code().get(), w.out() + "\n" + w.err());
+        assertTrue(w.out().toString().contains("WARNING"), w.out().toString());
+    }
+
+    /**
+     * A fleet: robot-1 warns, then its log is replaced by a FIFO, then by a directory; robot-2's run comes after
+     * and its warning arrives. One line names robot-1 each time, and both get their {@code end}; exit 1.
+     */
+    @Test
+    @Timeout(90)
+    void aLogReplacedByAFifoThenADirectoryStopsNothing() throws Exception {
+        Path robots = Files.createDirectories(dir.resolve("robots"));
+        Path one = Files.writeString(robots.resolve("robot-1.log"), FleetWatchTest.run(Scenario.DEPLETED, 9001));
+        Path two = Files.writeString(robots.resolve("robot-2.log"), "");
+        Cli.Running w = Cli.start("watch", "--log", robots.toString(), "--models", MODELS.toString());
+        try {
+            FleetWatchTest.await(() -> w.out().toString().contains(one + ": ") && w.out().toString().contains(
+                    "VIOLATION"), "robot-1's run: " + w.out());
+            Files.delete(one);
+            assumeTrue(mkfifo(one), "no mkfifo here");
+            FleetWatchTest.await(() -> w.err().toString().contains(one + ": is a FIFO, not a regular file"),
+                    "says what is at robot-1's path: " + w.err());
+            Files.writeString(two, FleetWatchTest.run(Scenario.DEPLETED, 9002), StandardOpenOption.APPEND);
+            FleetWatchTest.await(() -> w.out().toString().lines().anyMatch(l -> l.startsWith(two + ": ")
+                    && l.contains("WARNING")), "robot-2 is still watched: " + w.out() + w.err());
+            Files.delete(one);
+            Files.createDirectory(one);
+            FleetWatchTest.await(() -> w.err().toString().contains(one + ": is a directory, not a regular file"),
+                    "says what is at robot-1's path: " + w.err());
+            w.stop();
+        } finally {
+            unblock(one);
+        }
+        assertEquals(ExitCodes.WARNING, w.code().get(), w.out() + "\n" + w.err());
+        List<String> about = w.err().toString().lines().filter(l -> l.contains("robot-1")).toList();
+        assertEquals(List.of("predmon: " + one + ": is a FIFO, not a regular file; watching for a log file there",
+                "predmon: " + one + ": is a directory, not a regular file; watching for a log file there"), about);
+        String out = w.out().toString();
+        assertTrue(out.contains("end of " + one + " (stopped: interrupted): ") && out.contains("end of " + two
+                + " (stopped: interrupted): "), out);
+    }
+
+    /**
+     * A logger that pauses for more than the quiet time after a rename rotation and then goes on in the renamed file,
+     * after watch took up the new file: what it writes there is not read, and one line says so (it was lost
+     * silently).
+     */
+    @Test
+    @Timeout(90)
+    void aLoggerGoingOnInTheRenamedFileAfterTheTurnIsToldOf() throws Exception {
+        Path log = Files.writeString(dir.resolve("live.log"), probe("first"));
+        Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
+        try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.APPEND)) {
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/first"), "watch follows: " + w.err());
+            Files.move(log, dir.resolve("live.log.1"));
+            Files.writeString(log, probe("second"));
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/second"), "the new file is taken up");
+            held.write(probe("third").getBytes(StandardCharsets.UTF_8));
+            held.flush();
+            FleetWatchTest.await(() -> w.err().toString().contains(log + ": the file renamed away at the last rotation "
+                    + "grew by "), "says that the renamed file is written on: " + w.err());
+        }
+        w.stop();
+        assertTrue(!w.err().toString().contains("Probe/third"), w.err().toString());
+    }
+
+    /** An interface message no rule maps: watch says so when it reads it. */
+    private static String probe(String name) {
+        return "0.000000\tDEBUG\tCommand intercepted:\n  From      : /probe\n  To        : /probed\n"
+                + "  Protocol  : Probe\n  Command   : " + name + "\n  Arguments : \n  Reply     : \n";
+    }
+
+    static boolean mkfifo(Path path) throws InterruptedException {
+        try {
+            return new ProcessBuilder("mkfifo", path.toString()).inheritIO().start().waitFor() == 0;
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    /** Should a reader be stuck opening a FIFO there, a writer's open lets it go. */
+    private static void unblock(Path fifo) {
+        if (Files.isRegularFile(fifo) || Files.isDirectory(fifo) || !Files.exists(fifo)) {
+            return;
+        }
+        Thread t = new Thread(() -> {
+            try (OutputStream out = Files.newOutputStream(fifo)) {
+                out.flush();
+            } catch (IOException ignored) {
+                // nothing was stuck after all
+            }
+        }, "unblock-fifo");
+        t.setDaemon(true);
+        t.start();
+    }
+}

@@ -1,0 +1,141 @@
+package dev.predmon.monitor;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.learn.LearnedModels;
+import dev.predmon.parse.LogRecord;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.stream.LongStream;
+import java.util.stream.Stream;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+/**
+ * A fleet of more logs than it may hold files open keeps following every one of them, by closing the files of idle
+ * logs and reopening them when they change; logs that are deleted give their descriptors back. The descriptors are
+ * counted in {@code /proc/self/fd}.
+ */
+class FleetDescriptorsTest {
+
+    private static final Abstraction ABSTRACTION = AbstractionFiles.defaults();
+    private static final int LOGS = 60;
+    private static final int BUDGET = 8;
+    private static final Path FDS = Path.of("/proc/self/fd");
+
+    @TempDir
+    Path dir;
+
+    private final Map<String, Queue<Long>> seen = new ConcurrentHashMap<>();
+    private final AtomicInteger told = new AtomicInteger();
+
+    @Test
+    @Timeout(120)
+    void moreLogsThanOpenFilesAreAllFollowedAndDeletedOnesGiveTheirDescriptorsBack() throws Exception {
+        assumeTrue(Files.isDirectory(FDS), "no /proc/self/fd here");
+        Path robots = Files.createDirectories(dir.resolve("robots"));
+        Fleet fleet = new Fleet(LearnedModels.modelSet(List.of(), ABSTRACTION), ABSTRACTION, 0, 0,
+                new Fleet.Listener() {
+                    @Override
+                    public void event(WatchedLog log, MonitorEvent event) {
+                    }
+
+                    @Override
+                    public void record(WatchedLog log, LogRecord record) {
+                        seen.computeIfAbsent(log.path().getFileName().toString(),
+                                n -> new ConcurrentLinkedQueue<>()).add(Long.parseLong(record.arguments()));
+                    }
+
+                    @Override
+                    public void notice(String line) {
+                        if (line.contains("logs need more open files than this process may hold (8)")) {
+                            told.incrementAndGet();
+                        }
+                    }
+                });
+        fleet.limits(Duration.ofMillis(300), BUDGET);
+        LogSources sources = new LogSources(List.of(robots));
+        AtomicReference<Throwable> failed = new AtomicReference<>();
+        Thread following = new Thread(() -> {
+            try {
+                fleet.follow(sources, TimeUnit.MILLISECONDS.toNanos(5), false, TimeUnit.MILLISECONDS.toNanos(100));
+            } catch (Throwable t) {
+                failed.set(t);
+            }
+        }, "fleet-follow");
+        try (fleet) {
+            following.start();
+            Thread.sleep(500);
+            long start = descriptors();
+            for (int i = 0; i < LOGS; i++) {
+                FleetFollowTest.append(robots.resolve("robot-" + i + ".log"), 0, 3);
+            }
+            await(() -> everyLogSaw(3), "the first records of every log");
+            assertTrue(descriptors() <= start + BUDGET, "at most the budget open: " + (descriptors() - start));
+            for (int i = LOGS - 1; i >= 0; i--) { // the logs idle longest first: each is reopened
+                FleetFollowTest.append(robots.resolve("robot-" + i + ".log"), 3, 5);
+            }
+            await(() -> everyLogSaw(5), "an append to every log, each closed meanwhile");
+            assertTrue(descriptors() <= start + BUDGET, "at most the budget open: " + (descriptors() - start));
+            assertEquals(1, told.get(), "said once");
+            try (Stream<Path> logs = Files.list(robots)) {
+                for (Path p : logs.toList()) {
+                    Files.delete(p);
+                }
+            }
+            await(() -> descriptors() <= start, "deleted logs give their descriptors back: " + (descriptors() - start)
+                    + " more than at the start");
+            assertEquals(null, failed.get());
+            following.interrupt();
+            following.join(10_000);
+        }
+        assertEquals(null, failed.get());
+    }
+
+    private boolean everyLogSaw(int records) {
+        List<Long> expected = LongStream.range(0, records).boxed().toList();
+        for (int i = 0; i < LOGS; i++) {
+            Queue<Long> got = seen.get("robot-" + i + ".log");
+            if (got == null || !List.copyOf(got).equals(expected)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    static long descriptors() {
+        try (Stream<Path> fds = Files.list(FDS)) {
+            return fds.count() - 1; // the listing's own
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static void await(BooleanSupplier condition, String what) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("not within 30 s: " + what);
+            }
+            Thread.sleep(10);
+        }
+    }
+}
