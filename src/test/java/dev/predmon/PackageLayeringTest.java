@@ -134,6 +134,17 @@ class PackageLayeringTest {
     }
 
     @Test
+    void propertiesSitOnTheRecordsAndBelowEveryStageThatChecksThem() throws IOException {
+        Map<String, Set<String>> graph = dependencies();
+        // A property speaks of log records: it knows the parser only, and the abstraction file carries properties.
+        assertEquals(Set.of("parse"), graph.get("property"), "what property uses");
+        assertTrue(graph.get("abstraction").contains("property"), graph.get("abstraction").toString());
+        for (String above : List.of("monitor", "learn", "forecast", "pipeline", "abstraction.file")) {
+            assertFalse(graph.get("property").contains(above), above);
+        }
+    }
+
+    @Test
     void theCheckSeesImportsAndQualifiedNamesOnly() {
         Map<String, Set<String>> graph = new TreeMap<>(Map.of("a", Set.of("b"), "b", Set.of("c"), "c", Set.of("a")));
         assertEquals("a -> b -> c -> a", cycle(graph));

@@ -3,6 +3,8 @@ package dev.predmon.abstraction;
 import dev.predmon.abstraction.Definition.Reply;
 import dev.predmon.abstraction.Definition.Rule;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 
 import java.util.ArrayList;
 import java.util.Collections;
@@ -32,7 +34,7 @@ public final class Abstraction {
     private final Map<String, String> locations;
     /** The compiled drop filters and rules: what {@link #classify} decides. */
     private final Rules rules;
-    private final Optional<SafetyRule> safety;
+    private final Optional<Bound> safety;
     private final Map<String, Double> learnedHysteresis;
     /** Each continuous rule's band symbols, expanded, to the rule's input template. */
     private final Map<String, String> continuousInputOf;
@@ -66,7 +68,8 @@ public final class Abstraction {
         this.learnedHysteresis = Map.copyOf(learned);
         this.locations = definition.locations();
         this.rules = new Rules(definition);
-        this.safety = Optional.ofNullable(definition.safety());
+        this.safety = definition.properties().stream().filter(p -> p instanceof Bound b && b.hasFloor())
+                .map(p -> (Bound) p).findFirst();
         Set<String> inputs = new TreeSet<>();
         Set<String> outputs = new TreeSet<>();
         for (Rule r : definition.rules()) {
@@ -263,7 +266,7 @@ public final class Abstraction {
             return this;
         }
         Definition d = definition;
-        return new Abstraction(new Definition(d.name(), d.locations(), d.drop(), tuned, d.safety(), d.confirm(),
+        return new Abstraction(new Definition(d.name(), d.locations(), d.drop(), tuned, d.properties(), d.confirm(),
                 d.runs()), canonicalJson, fingerprint, applied);
     }
 
@@ -277,9 +280,17 @@ public final class Abstraction {
         return definition.runs();
     }
 
-    /** The built-in safety monitor's property, if the file defines one. */
-    public Optional<SafetyRule> safety() {
+    /**
+     * The property the forecast follows and that labels a run violated or not when learning: the first bound
+     * property with a floor, if the file defines one (a value falling to a floor is what the forecast predicts).
+     */
+    public Optional<Bound> safety() {
         return safety;
+    }
+
+    /** Every safety property of the file, in file order: what the safety monitor checks on every run. */
+    public List<Property> properties() {
+        return definition.properties();
     }
 
     /** The abstraction's name from the file. */
@@ -293,8 +304,9 @@ public final class Abstraction {
     }
 
     /**
-     * SHA-256 hex of {@link #canonicalJson()} (without the safety property's {@code action}, which is advice and
-     * changes no trace): tells whether models were learned with this abstraction.
+     * SHA-256 hex of {@link #canonicalJson()} without the properties' {@code action}s (advice, which changes no trace)
+     * and without the properties other than {@link #safety()} (which change no learned model): tells whether models
+     * were learned with this abstraction.
      */
     public String fingerprint() {
         return fingerprint;

@@ -1,5 +1,7 @@
 package dev.predmon.abstraction;
 
+import dev.predmon.property.Property;
+
 import java.util.List;
 import java.util.Map;
 
@@ -11,13 +13,13 @@ import java.util.Map;
  * @param locations location name, as in arguments and client ports, to its abbreviation in symbols
  * @param drop      filters for records outside the skill-component interface, in file order
  * @param rules     how each message kind becomes symbols, in file order (the first that matches is used)
- * @param safety    the built-in safety monitor's property, or null
+ * @param properties the safety properties the monitor checks, in file order (possibly none)
  * @param confirm   pairs a faulty model must still match after the last nominal model is eliminated before the
  *                  warning
  * @param runs      where one run ends and the next begins in a log that holds several
  */
 public record Definition(String name, Map<String, String> locations, List<Drop> drop, List<Rule> rules,
-                         SafetyRule safety, int confirm, RunRule runs) {
+                         List<Property> properties, int confirm, RunRule runs) {
 
     /** The placeholder for a location's abbreviation in input and reply symbols. */
     public static final String LOC = "{loc}";
@@ -26,6 +28,7 @@ public record Definition(String name, Map<String, String> locations, List<Drop> 
         locations = Map.copyOf(locations);
         drop = List.copyOf(drop);
         rules = List.copyOf(rules);
+        properties = List.copyOf(properties);
     }
 
     /** A record matching every non-null key is dropped; {@code *} in a value matches any characters. */

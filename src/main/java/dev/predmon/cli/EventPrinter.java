@@ -111,10 +111,10 @@ final class EventPrinter implements Consumer<MonitorEvent> {
                     ForecastJson.of(w.forecast()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             o = new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
-                    ForecastJson.of(f.forecast()));
+                    ForecastJson.of(f.forecast()), f.property());
         } else if (e instanceof MonitorEvent.Violation v) {
-            o = new ViolationJson("violation", v.time(), v.clock().unit(), v.line(), v.run(), v.property(), v.value(),
-                    v.before());
+            o = new ViolationJson("violation", v.time(), v.clock().unit(), v.line(), v.run(), v.property(), v.name(),
+                    v.value(), v.forecast() ? v.value() : null, v.before(), v.what());
         } else if (e instanceof MonitorEvent.Eliminated x) {
             o = new EliminatedJson("eliminated", x.time(), x.clock().unit(), x.line(), x.run(), x.model(), x.scenario(),
                     x.faulty(), x.reason());
@@ -150,11 +150,16 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     record UnderWayJson(String event, double time, String unit, long line, int run, String by, boolean underWay) {
     }
 
-    record ForecastEventJson(String event, double time, String unit, long line, int run, ForecastJson forecast) {
+    record ForecastEventJson(String event, double time, String unit, long line, int run, ForecastJson forecast,
+                             String property) {
     }
 
-    record ViolationJson(String event, double time, String unit, long line, int run, String property, double battery,
-                         Double before) {
+    /**
+     * A property's violation: {@code property} its id, {@code name} its words, {@code value} the violating value of a
+     * bound (null for an event), {@code battery} the same for the forecast's property only, {@code what} in words.
+     */
+    record ViolationJson(String event, double time, String unit, long line, int run, String property, String name,
+                         Double value, Double battery, Double before, String what) {
     }
 
     record EliminatedJson(String event, double time, String unit, long line, int run, String model, String scenario,
@@ -180,12 +185,16 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast: %s", at(f.time(), f.clock()), f.line(),
                     ForecastWords.line(f.forecast())) : null;
         }
+        if (e instanceof MonitorEvent.Violation v && !v.forecast()) {
+            return String.format(Locale.ROOT, "%s line %d: VIOLATION of '%s' (%s): %s", at(v.time(), v.clock()),
+                    v.line(), v.name(), v.property(), v.what());
+        }
         if (e instanceof MonitorEvent.Violation v) {
             String lead = warning == null ? "no warning came before it"
                     : String.format(Locale.ROOT, "lead of the warning: %s, battery %s at the warning vs %s now",
                     span(v.time() - warning.time(), v.clock()), battery(warning.battery()), battery(v.value()));
             return String.format(Locale.ROOT, "%s line %d: VIOLATION of '%s': %s; %s", at(v.time(), v.clock()), v.line(),
-                    v.property(), battery(v.value()), lead);
+                    v.name(), battery(v.value()), lead);
         }
         if (e instanceof MonitorEvent.Eliminated x) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: model %s (%s) eliminated: %s", at(x.time(), x.clock()),

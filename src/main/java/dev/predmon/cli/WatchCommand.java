@@ -2,7 +2,6 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
@@ -15,6 +14,7 @@ import dev.predmon.monitor.RunsSummary;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.monitor.WatchedLog;
 import dev.predmon.pipeline.Evidence;
+import dev.predmon.property.Bound;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -208,7 +208,7 @@ final class WatchCommand implements Callable<Integer> {
 
     /** The bound below which the abstraction's property is violated, NaN without a property. */
     private static double bound(Abstraction abstraction) {
-        return abstraction.safety().map(SafetyRule::below).orElse(Double.NaN);
+        return abstraction.safety().map(Bound::floor).orElse(Double.NaN);
     }
 
     /**
@@ -241,11 +241,12 @@ final class WatchCommand implements Callable<Integer> {
         if (input.json) {
             List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
                     r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
-                    ForecastJson.of(r.forecast()))).toList();
+                    ForecastJson.of(r.forecast()), PropertyJson.of(r.properties()))).toList();
             End end = new End("end", stop, m.records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), all.noMatch(), perRun,
                     all.runs(), all.dropped(), unmapped, m.rule().id(),
-                    ForecastJson.of(runs.get(runs.size() - 1).forecast()));
+                    ForecastJson.of(runs.get(runs.size() - 1).forecast()),
+                    PropertyJson.of(runs.get(runs.size() - 1).properties()));
             out.println(Json.line(Json.stamped(end, several ? log.name() : null, Instant.now())));
         } else {
             if (all.dropped() > 0) {
@@ -262,6 +263,7 @@ final class WatchCommand implements Callable<Integer> {
                             : r.safetyObserved() ? ", property held" : ", property not observed")
                             + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse("")
                             + (r.forecast() == null ? "" : "; last forecast " + ForecastWords.line(r.forecast())));
+                    PropertyJson.lines(r.properties()).forEach(out::println);
                 }
             }
             String verdict = !judged ? "no verdict"
@@ -273,6 +275,9 @@ final class WatchCommand implements Callable<Integer> {
                     + "end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
                     + stop + ")") + ": " + m.records() + " records, " + (all.runs() > 1 ? all.runs() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
+            if (all.runs() == 1) {
+                PropertyJson.lines(runs.get(0).properties()).forEach(out::println);
+            }
             RunOutcome last = runs.get(runs.size() - 1);
             if (all.runs() == 1 && last.forecast() != null) {
                 // in a fleet every line names its log
@@ -287,12 +292,15 @@ final class WatchCommand implements Callable<Integer> {
 
     /** One run's verdict in the {@code end} event. */
     record RunEnd(int run, long line, long pairs, boolean warning, boolean violation, Double lead, boolean noMatch,
-                  ForecastJson forecast) {
+                  ForecastJson forecast, List<PropertyJson> properties) {
     }
 
-    /** The {@code end} event. */
+    /**
+     * The {@code end} event. {@code violation} and {@code lead} are the forecast property's; {@code properties} are
+     * every property's verdicts on the last run (each run's are in {@code runs}).
+     */
     record End(String event, String stop, long records, long pairs, boolean warning, boolean violation, Double lead,
                String unit, boolean noMatch, List<RunEnd> runs, int runCount, int runsNotListed,
-               Map<String, Long> unmapped, String rule, ForecastJson forecast) {
+               Map<String, Long> unmapped, String rule, ForecastJson forecast, List<PropertyJson> properties) {
     }
 }

@@ -1,7 +1,6 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.LogWatcher;
@@ -12,6 +11,7 @@ import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
+import dev.predmon.property.Bound;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -140,11 +140,11 @@ public final class Replay {
      * Per run, the time of its first record and the readings near the bound on the way to its violation (since the
      * value was last above the band), seen after the
      * monitor took each record (so that {@link PredictiveMonitor#run()} already counts a record that starts a run).
-     * Read with the safety monitor's own {@link SafetyRule#valueOf}, so the violation counted up to is the one it
+     * Read with the safety monitor's own {@link Bound#valueOf}, so the violation counted up to is the one it
      * reported.
      */
     private static final class Approach {
-        private final SafetyRule rule;
+        private final Bound rule;
         private final PredictiveMonitor monitor;
         /** The lowest value a safe training run read: the raw-value baseline warns below it (NaN: never). */
         private final double floor;
@@ -156,7 +156,7 @@ public final class Replay {
         private final Map<Integer, Integer> near = new HashMap<>();
         private final Set<Integer> violated = new HashSet<>();
 
-        Approach(SafetyRule rule, PredictiveMonitor monitor, double floor) {
+        Approach(Bound rule, PredictiveMonitor monitor, double floor) {
             this.rule = rule;
             this.monitor = monitor;
             this.floor = floor;
@@ -186,7 +186,7 @@ public final class Replay {
             } else {
                 below.remove(run); // the baseline's alarm ends when its cause ends, as the monitor's do
             }
-            if (v < rule.below() + RunResult.APPROACH_BAND) {
+            if (v < rule.floor() + RunResult.APPROACH_BAND) {
                 near.merge(run, 1, Integer::sum);
             } else {
                 // Back above the band: an earlier dip that recovered (a recharge) is no approach to a later violation.

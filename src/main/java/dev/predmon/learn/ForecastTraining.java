@@ -1,7 +1,6 @@
 package dev.predmon.learn;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.Calibration;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastModel;
@@ -14,6 +13,7 @@ import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunTiming;
+import dev.predmon.property.Bound;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -189,12 +189,12 @@ public final class ForecastTraining {
 
     /** The safety property's threshold, NaN when the abstraction has no property. */
     public static double limit(Abstraction abstraction) {
-        return abstraction.safety().map(SafetyRule::below).orElse(Double.NaN);
+        return abstraction.safety().map(Bound::floor).orElse(Double.NaN);
     }
 
     /** The safety property's name, null when the abstraction has no property. */
     public static String property(Abstraction abstraction) {
-        return abstraction.safety().map(SafetyRule::name).orElse(null);
+        return abstraction.safety().map(Bound::name).orElse(null);
     }
 
     /**

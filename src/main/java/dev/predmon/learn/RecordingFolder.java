@@ -2,10 +2,10 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.property.Bound;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -50,7 +50,7 @@ public final class RecordingFolder {
      * and a violating one is in both, each taking its own runs); a scenario without runs is left out.
      */
     static List<ScenarioSpec> scenarios(Path dir, Abstraction abstraction) throws BadInputException {
-        SafetyRule rule = abstraction.safety().orElseThrow(() -> new BadInputException(dir
+        Bound rule = abstraction.safety().orElseThrow(() -> new BadInputException(dir
                 + ": a folder of recordings is labelled by the safety monitor, and abstraction '" + abstraction.name()
                 + "' has none; give it a \"safety\" property or sort the logs into <scenario>/scenario.json folders"));
         List<Path> violating = new ArrayList<>();

@@ -3,7 +3,6 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.model.LearnedModel;
@@ -11,6 +10,7 @@ import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
+import dev.predmon.property.Bound;
 
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -38,7 +38,7 @@ public final class Board {
             "ended");
 
     private final List<LearnedModel> models;
-    private final Optional<SafetyRule> safety;
+    private final Optional<Bound> safety;
     private final List<Scorecard> scorecards;
     private final long staleMillis;
     private final LongSupplier clock;
@@ -64,16 +64,16 @@ public final class Board {
         warnsAt = rule == WarningRule.FORECAST && models.forecast() != null ? models.forecast().threshold() : null;
     }
 
-    Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock) {
+    Board(List<LearnedModel> models, Optional<Bound> safety, Duration staleAfter, LongSupplier clock) {
         this(models, safety, staleAfter, clock, RobotNames.byFile());
     }
 
-    Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock,
+    Board(List<LearnedModel> models, Optional<Bound> safety, Duration staleAfter, LongSupplier clock,
           RobotNames names) {
         this(models, safety, staleAfter, clock, names, List.of());
     }
 
-    Board(List<LearnedModel> models, Optional<SafetyRule> safety, Duration staleAfter, LongSupplier clock,
+    Board(List<LearnedModel> models, Optional<Bound> safety, Duration staleAfter, LongSupplier clock,
           RobotNames names, List<Scorecard> scorecards) {
         this.models = List.copyOf(models);
         this.safety = safety;
@@ -81,7 +81,7 @@ public final class Board {
         this.staleMillis = staleAfter.toMillis();
         this.clock = clock;
         this.names = names;
-        this.metrics = new Metrics(() -> status(null), safety.map(SafetyRule::name).orElse(""));
+        this.metrics = new Metrics(() -> status(null), safety.map(Bound::name).orElse(""));
     }
 
     /** The tile of {@code log}, made on first use. */
@@ -126,7 +126,7 @@ public final class Board {
                     : tiles.containsKey(log) ? List.of(tiles.get(log)) : List.of();
         }
         long now = clock.getAsLong();
-        String action = safety.map(SafetyRule::action).orElse(null);
+        String action = safety.map(Bound::action).orElse(null);
         Map<Tile, String> shown = shownNames();
         List<ObjectNode> snapshots = new ArrayList<>();
         for (Tile t : all) {

@@ -138,7 +138,8 @@ final class Metrics {
     void event(Tile tile, MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning) {
             warnings.labelValues(tile.log(), tile.name(), property).inc();
-        } else if (e instanceof MonitorEvent.Violation) {
+        } else if (e instanceof MonitorEvent.Violation v && v.forecast()) {
+            // this label is the forecast's property; the other properties' violations are not its own
             violations.labelValues(tile.log(), tile.name(), property).inc();
         }
     }

@@ -3,12 +3,12 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Bound;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -41,7 +41,7 @@ public final class Tile {
     private final String log;
     private final String name;
     private final List<LearnedModel> models;
-    private final Optional<SafetyRule> safety;
+    private final Optional<Bound> safety;
 
     private int run;
     private long runLine = 1;
@@ -63,7 +63,7 @@ public final class Tile {
     private Clock clock = Clock.SECONDS;
     private long grewAtMillis;
 
-    Tile(String log, String name, List<LearnedModel> models, Optional<SafetyRule> safety, long nowMillis) {
+    Tile(String log, String name, List<LearnedModel> models, Optional<Bound> safety, long nowMillis) {
         this.log = log;
         this.name = name;
         this.models = List.copyOf(models);
@@ -236,12 +236,12 @@ public final class Tile {
         o.put("records", records);
         o.put("line", line);
         o.put("unit", clock.unit());
-        o.put("property", safety.map(SafetyRule::name).orElse(null));
+        o.put("property", safety.map(Bound::name).orElse(null));
         o.put("action", shown.action());
         o.put("exists", shown.exists());
         o.put("noVerdict", noVerdict);
         if (safety.isPresent()) {
-            o.put("threshold", safety.get().below());
+            o.put("threshold", safety.get().floor());
         }
         number(o, "battery", battery.last());
         // Models that do not fit the log make no forecast worth showing.

@@ -2,9 +2,9 @@ package dev.predmon.model;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.StateStats;
+import dev.predmon.property.Bound;
 
 import java.nio.file.Path;
 import java.util.HashMap;
@@ -28,7 +28,7 @@ final class ForecastCheck {
      */
     static void check(Path file, Path indexFile, ForecastModel forecast, List<LearnedModel> models,
                       Abstraction abstraction) throws BadInputException {
-        double bound = abstraction.safety().map(SafetyRule::below).orElse(Double.NaN);
+        double bound = abstraction.safety().map(Bound::floor).orElse(Double.NaN);
         if (Double.compare(forecast.limit(), bound) != 0) {
             throw new BadInputException(file + ": limit " + shown(forecast.limit()) + " is not the bound of the "
                     + "abstraction's safety property (" + shown(bound) + "); relearn with the abstraction in use");

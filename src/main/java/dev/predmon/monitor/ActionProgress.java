@@ -1,7 +1,7 @@
 package dev.predmon.monitor;
 
-import dev.predmon.abstraction.UnderWay;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.property.UnderWay;
 
 import java.util.Arrays;
 import java.util.List;

@@ -1,10 +1,10 @@
 package dev.predmon.monitor;
 
-import dev.predmon.abstraction.SafetyRule;
-import dev.predmon.abstraction.UnderWay;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Bound;
+import dev.predmon.property.UnderWay;
 
 import java.util.List;
 import java.util.function.Consumer;
@@ -24,7 +24,7 @@ final class Alarm {
     /** How far above its value at the warning the property must rise, as a share of its distance to the bound. */
     static final double RISE = 0.05;
 
-    private final SafetyRule safety;
+    private final Bound safety;
     private final ForecastTracker forecast;
     private final Consumer<MonitorEvent> events;
     private final ActionProgress action;
@@ -36,7 +36,7 @@ final class Alarm {
      * @param safety   the property, or null
      * @param forecast the run's forecast, or null
      */
-    Alarm(SafetyRule safety, ForecastTracker forecast, Consumer<MonitorEvent> events) {
+    Alarm(Bound safety, ForecastTracker forecast, Consumer<MonitorEvent> events) {
         this.safety = safety;
         this.forecast = forecast;
         this.events = events;
@@ -99,7 +99,7 @@ final class Alarm {
             forecast.startOver();
         }
         events.accept(new MonitorEvent.Recovered(r.time(), r.line(), "property", value, "the property holds again ("
-                + ForecastWords.fixed(value, 2) + ", at least " + ForecastWords.fixed(safety.below(), 2) + ")",
+                + ForecastWords.fixed(value, 2) + ", at least " + ForecastWords.fixed(safety.floor(), 2) + ")",
                 r.clock(), run));
     }
 
@@ -114,9 +114,9 @@ final class Alarm {
             return;
         }
         double at = active.battery();
-        double gap = Math.max(0, at - safety.below());
+        double gap = Math.max(0, at - safety.floor());
         double floor = forecast == null ? Double.NaN : forecast.safeFloor();
-        if (!(value > at && value - safety.below() >= gap * (1 + RISE)) || value < floor) {
+        if (!(value > at && value - safety.floor() >= gap * (1 + RISE)) || value < floor) {
             return; // not risen enough, or still below every safe training run's lowest
         }
         boolean byAction = action.underWay() || action.since() >= active.time();

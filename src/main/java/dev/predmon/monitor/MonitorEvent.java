@@ -46,7 +46,8 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param clause    which clause of the rule warned
      * @param scenario  the faulty scenario the run is most like: the first still matching, else the one whose
      *                  machine matched the run longest, or null when no faulty machine ever matched it
-     * @param property  the name of the property whose violation is predicted, or null when the abstraction has none
+     * @param property  the id of the property whose violation is predicted (the forecast's), or null when the
+     *                  abstraction has none
      */
     record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run,
                    WarningRule rule, Forecast forecast, String reason, Clause clause, String scenario,
@@ -124,23 +125,39 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param forecast the new forecast
      * @param clock    what {@code time} counts
      * @param run      the run of the log
+     * @param property the id of the property forecast, or null when not known
      */
-    record ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run) implements MonitorEvent {
+    record ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run, String property)
+            implements MonitorEvent {
+
+        /** A forecast of no named property. */
+        public ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run) {
+            this(time, line, forecast, clock, run, null);
+        }
     }
 
     /**
-     * The built-in safety monitor saw the property violated (first time only).
+     * The safety monitor saw a property violated (its first violation in the run).
      *
      * @param time     time of the violating record
      * @param line     its line
-     * @param property the property's name
-     * @param value    the violating value (the battery level)
-     * @param before   the value of the reading before it on the same channel, or null when it was the first
+     * @param property the property's id ({@code battery}, {@code no-abort})
+     * @param name     the property in words
+     * @param value    the violating value of a bound property (the battery level), or null for an event
+     * @param before   the value of the reading before it on the same channel, or null
+     * @param what     what violated it, in words ({@code GoTo/getStatus reply 3}), or null
      * @param clock    what {@code time} counts
      * @param run      the run of the log
+     * @param forecast whether it is the property the forecast and the warnings are about, whose violation the lead,
+     *                 the hits and the exit codes count
      */
-    record Violation(double time, long line, String property, double value, Double before, Clock clock, int run)
-            implements MonitorEvent {
+    record Violation(double time, long line, String property, String name, Double value, Double before, String what,
+                     Clock clock, int run, boolean forecast) implements MonitorEvent {
+
+        /** A violation of the forecast's bound property, named by {@code property} alone. */
+        public Violation(double time, long line, String property, double value, Double before, Clock clock, int run) {
+            this(time, line, property, property, value, before, null, clock, run, true);
+        }
     }
 
     /**

@@ -1,7 +1,6 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
@@ -14,6 +13,7 @@ import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
+import dev.predmon.property.Bound;
 
 import java.util.List;
 import java.util.Map;
@@ -36,14 +36,15 @@ import java.util.function.ObjIntConsumer;
  * The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
  * {@code confirm} more pairs ({@link Abstraction#confirm()}). Per record the work and the state are constant.
  *
- * <p>The built-in safety monitor (the abstraction's property, by default {@code level < 20.0} on the BatteryReader
- * channel) runs alongside on the raw records and reports the violation, so that the lead of the warning can be seen;
- * the {@link Alarm} says when a warning or a violation is over.
+ * <p>Every property of the abstraction is checked on every run ({@link SafetyMonitor}). The forecast's property
+ * (the built-ins' {@code battery}, {@code level >= 20}) is followed here: its violation gives the lead of the
+ * warning, and the {@link Alarm} says when a warning or a violation is over.
  */
 public final class PredictiveMonitor implements PipelineListener {
 
     private final Matching matching;
-    private final Optional<SafetyRule> safety;
+    private final Optional<Bound> safety;
+    private final SafetyMonitor properties;
     private final Consumer<MonitorEvent> events;
     private final TracePipeline pipeline;
     private MonitorEvent.Warning warning;
@@ -95,6 +96,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.safety = abstraction.safety();
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety.orElse(null), forecast, this.events);
+        this.properties = new SafetyMonitor(abstraction, this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
@@ -155,6 +157,7 @@ public final class PredictiveMonitor implements PipelineListener {
         battery = null;
         pairs = 0;
         alarm.reset();
+        properties.reset();
         if (forecast != null) {
             forecast.reset();
         }
@@ -163,7 +166,7 @@ public final class PredictiveMonitor implements PipelineListener {
     private RunOutcome current() {
         return new RunOutcome(run, runLine, (MonitorEvent.Warning) ticks.event(warning),
                 (MonitorEvent.Violation) ticks.event(violation), noMatch, pairs, battery != null,
-                forecast == null ? null : forecast.last());
+                forecast == null ? null : forecast.last(), properties.verdicts());
     }
 
     /**
@@ -183,6 +186,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void record(LogRecord record) {
         clock = ticks.clock(record.clock());
+        properties.accept(record, run);
         alarm.record(record, run);
         double v = safety.isEmpty() ? Double.NaN : safety.get().valueOf(record);
         if (Double.isNaN(v)) {
@@ -191,8 +195,9 @@ public final class PredictiveMonitor implements PipelineListener {
         Double before = battery;
         battery = v;
         if (!alarm.violated() && safety.get().violatedBy(v)) {
-            MonitorEvent.Violation now = new MonitorEvent.Violation(record.time(), record.line(), safety.get().name(),
-                    v, before, record.clock(), run);
+            Bound p = safety.get();
+            MonitorEvent.Violation now = new MonitorEvent.Violation(record.time(), record.line(), p.id(), p.name(), v,
+                    before, p.violation(v), record.clock(), run, true);
             violation = violation == null ? now : violation;
             firstViolation = firstViolation == null ? now : firstViolation;
             alarm.violatedNow();
@@ -217,7 +222,8 @@ public final class PredictiveMonitor implements PipelineListener {
         Forecast f = forecast.last();
         everyForecast.accept(f, run);
         if (news != null) {
-            events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(), run));
+            events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(), run,
+                    properties.forecastId()));
         }
         return f;
     }
@@ -226,7 +232,7 @@ public final class PredictiveMonitor implements PipelineListener {
                       MonitorEvent.Clause clause) {
         MonitorEvent.Warning w = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, battery, pairs,
                 trigger.clock(), run, rule, f, reason, clause, matching.likeliestFaulty(faultyAlive),
-                safety.map(SafetyRule::name).orElse(null));
+                properties.forecastId());
         warning = warning == null ? w : warning; // the run's outcome keeps its first warning
         firstWarning = firstWarning == null ? w : firstWarning;
         alarm.warned(w);
@@ -320,7 +326,7 @@ public final class PredictiveMonitor implements PipelineListener {
         return Optional.ofNullable((MonitorEvent.Warning) ticks.event(firstWarning));
     }
 
-    /** The first safety violation of the log (of any run), once seen. */
+    /** The forecast property's first violation in the log (of any run), once seen. */
     public Optional<MonitorEvent.Violation> violation() {
         return Optional.ofNullable((MonitorEvent.Violation) ticks.event(firstViolation));
     }

@@ -1,7 +1,9 @@
 package dev.predmon.monitor;
 
 import dev.predmon.forecast.Forecast;
+import dev.predmon.property.PropertyChecker.PropertyVerdict;
 
+import java.util.List;
 import java.util.Optional;
 
 /**
@@ -16,14 +18,20 @@ import java.util.Optional;
  * @param safetyObserved whether the run had a value for the safety property at all (without one, "held" would be a
  *                       verdict on no evidence)
  * @param forecast  the run's last forecast (for its last state), or null without one
+ * @param properties every property of the abstraction with its verdict on the run, in file order
  */
 public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
-                         boolean noMatch, long pairs, boolean safetyObserved, Forecast forecast) {
+                         boolean noMatch, long pairs, boolean safetyObserved, Forecast forecast,
+                         List<PropertyVerdict> properties) {
+
+    public RunOutcome {
+        properties = List.copyOf(properties);
+    }
 
     /** An outcome without a forecast. */
     public RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
                       boolean noMatch, long pairs, boolean safetyObserved) {
-        this(run, firstLine, warning, violation, noMatch, pairs, safetyObserved, null);
+        this(run, firstLine, warning, violation, noMatch, pairs, safetyObserved, null, List.of());
     }
 
     /**

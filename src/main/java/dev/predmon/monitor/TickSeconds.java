@@ -70,12 +70,12 @@ public record TickSeconds(double seconds) {
                     w.property());
         }
         if (e instanceof MonitorEvent.Violation v && on(v.clock())) {
-            return new MonitorEvent.Violation(times(v.time()), v.line(), v.property(), v.value(), v.before(),
-                    Clock.SECONDS, v.run());
+            return new MonitorEvent.Violation(times(v.time()), v.line(), v.property(), v.name(), v.value(), v.before(),
+                    v.what(), Clock.SECONDS, v.run(), v.forecast());
         }
         if (e instanceof MonitorEvent.ForecastChanged f && on(f.clock())) {
             return new MonitorEvent.ForecastChanged(times(f.time()), f.line(), forecast(f.forecast()),
-                    Clock.SECONDS, f.run());
+                    Clock.SECONDS, f.run(), f.property());
         }
         if (e instanceof MonitorEvent.Eliminated x && on(x.clock())) {
             return new MonitorEvent.Eliminated(times(x.time()), x.line(), x.model(), x.scenario(), x.faulty(),

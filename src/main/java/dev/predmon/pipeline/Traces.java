@@ -2,11 +2,11 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
+import dev.predmon.property.Bound;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -148,7 +148,7 @@ public final class Traces {
     /** Collects each run's pairs and whether the safety monitor saw it violate the property. */
     private static final class RunCollector implements PipelineListener {
         private final Abstraction abstraction;
-        private final Optional<SafetyRule> safety;
+        private final Optional<Bound> safety;
         private Map<String, List<Double>> readings = new TreeMap<>();
         private final List<IoPair> all;
         private final List<LogTrace.Run> done = new ArrayList<>();

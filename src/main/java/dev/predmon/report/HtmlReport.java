@@ -1,13 +1,13 @@
 package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.evaluate.Confusion;
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.evaluate.ScenarioSummary;
 import dev.predmon.files.AtomicFiles;
 import dev.predmon.parse.Clock;
+import dev.predmon.property.Bound;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -63,7 +63,7 @@ public final class HtmlReport {
         for (RunResult r : firstWhatWentWrong(e.runs())) {
             runs.add(RunView.of(runs.size() + 1, r));
         }
-        SafetyRule rule = abstraction.safety().orElse(null);
+        Bound rule = abstraction.safety().orElse(null);
         int plotted = rule == null ? 0 : Math.min(MAX_PLOTS, runs.size());
         StringBuilder h = new StringBuilder(1 << 18);
         h.append(SIGNATURE).append('\n')
@@ -165,7 +165,7 @@ public final class HtmlReport {
     }
 
     private static void plots(StringBuilder h, List<RunView> runs, int plotted, Abstraction abstraction,
-                              SafetyRule rule) throws IOException {
+                              Bound rule) throws IOException {
         h.append("<h2 id=plots>Plots of the runs</h2>\n");
         if (rule == null) {
             h.append("<p>The abstraction has no safety property, so there is no level to plot.</p>\n");
@@ -177,7 +177,7 @@ public final class HtmlReport {
         }
         h.append("<p>").append(Svg.esc(rule.name())).append(": the watched value over time from the start of the run; "
                 + "orange dashed line: the warning; red line: the violation; shaded between them: the lead; brown "
-                + "dotted line: from there no model matched; grey dashed: the bound ").append(fmt(rule.below()))
+                + "dotted line: from there no model matched; grey dashed: the bound ").append(fmt(rule.floor()))
                 .append("; purple, on the scale at the right: the forecast's probability of a violation as the run "
                         + "went, and dotted across, the threshold at which it warns. The number before each plot leads "
                         + "back to its row in the table.</p>\n<div class=plots>\n");

@@ -1,8 +1,8 @@
 package dev.predmon.report;
 
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
+import dev.predmon.property.Bound;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -36,15 +36,15 @@ final class RunPlot {
     }
 
     /** The plot of run {@code v}, whose values are {@code t}, for property {@code rule}. */
-    static String svg(RunView v, Timeline t, SafetyRule rule) {
+    static String svg(RunView v, Timeline t, Bound rule) {
         RunResult r = v.result();
         double start = r.start();
         Double warning = r.sinceStart(r.warningTime());
         Double violation = r.sinceStart(r.violationTime());
         Double noMatch = r.sinceStart(r.noMatchTime());
         double end = 0;
-        double min = Math.min(0, rule.below());
-        double max = rule.below();
+        double min = Math.min(0, rule.floor());
+        double max = rule.floor();
         for (int i = 0; i < t.times().length; i++) {
             end = Math.max(end, t.times()[i] - start);
             min = Math.min(min, t.values()[i]);
@@ -73,7 +73,7 @@ final class RunPlot {
                     .append("\" width=\"").append(Svg.num(x.px(violation) - x.px(warning))).append("\" height=\"")
                     .append(HEIGHT - TOP - Axis.BOTTOM).append("\"/>");
         }
-        s.append("<path class=\"bound\" d=\"M").append(Axis.LEFT).append(' ').append(Svg.num(y.px(rule.below())))
+        s.append("<path class=\"bound\" d=\"M").append(Axis.LEFT).append(' ').append(Svg.num(y.px(rule.floor())))
                 .append('H').append(WIDTH - right).append("\"/>");
         if (p) {
             probability(s, f, start, x);
@@ -82,12 +82,12 @@ final class RunPlot {
             s.append("<path class=\"val\" d=\"").append(path(t, start, x, y)).append("\"/>");
         } else {
             s.append(Svg.text("empty", (Axis.LEFT + WIDTH - right) / 2.0, (TOP + HEIGHT - Axis.BOTTOM) / 2.0,
-                    "no reading of " + rule.command() + " in this run"));
+                    "no reading of " + rule.value().command() + " in this run"));
         }
         marker(s, x, warning, "warn", 0, "warning " + v.duration(warning));
         marker(s, x, violation, "viol", 1, "violation " + v.duration(violation));
         marker(s, x, noMatch, "nomatch", 2, "no model matches from " + v.duration(noMatch));
-        Axis.frame(s, x, y, "time (" + t.clock().unit() + " from start)", rule.command());
+        Axis.frame(s, x, y, "time (" + t.clock().unit() + " from start)", rule.value().command());
         return s.append("</svg>").toString();
     }
 

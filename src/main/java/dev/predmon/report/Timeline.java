@@ -1,7 +1,6 @@
 package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.compact.IoPair;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
@@ -9,6 +8,7 @@ import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
+import dev.predmon.property.Bound;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -17,7 +17,7 @@ import java.util.List;
 
 /**
  * The values a run's safety property watches (the battery level) over time, for plotting. Read with the same
- * parser and the same {@link SafetyRule#valueOf} as the built-in safety monitor, so the plotted violation is
+ * parser and the same {@link Bound#valueOf} as the built-in safety monitor, so the plotted violation is
  * the one the monitor reported.
  *
  * <p>Times are the log's own, and {@link #start} is the time of the run's first record, whatever it is: plots
@@ -38,7 +38,7 @@ public record Timeline(double start, double[] times, double[] values, Clock cloc
      * The timeline of one run as {@link RunResult#log()} names it ({@code file}, or {@code file#k} for run k of a log
      * that holds several), cut into runs by the abstraction's rule as the monitor cuts it; the clock is the log's own.
      */
-    public static Timeline ofRun(String runName, Abstraction abstraction, SafetyRule rule, int maxPoints)
+    public static Timeline ofRun(String runName, Abstraction abstraction, Bound rule, int maxPoints)
             throws IOException {
         int hash = runName.lastIndexOf('#');
         int run = 0;

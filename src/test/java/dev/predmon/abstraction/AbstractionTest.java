@@ -3,6 +3,10 @@ package dev.predmon.abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
+import dev.predmon.property.Bound;
+import dev.predmon.property.Scope;
+import dev.predmon.property.UnderWay;
+import dev.predmon.property.ValueReader;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -110,7 +114,7 @@ public class AbstractionTest {
     void levelBands(String value, String expected) {
         LogRecord r = reply("/BatteryComponent", "/BatteryReaderBatteryLevelClient", "BatteryReader", "level", "", value);
         assertEquals(expected, symbol(r));
-        SafetyRule safety = A.safety().orElseThrow();
+        Bound safety = A.safety().orElseThrow();
         assertEquals(expected.equals("o_level_low") || expected.equals("o_level_zero"),
                 safety.violatedBy(safety.valueOf(r)), "o_level_low/zero must coincide with the safety violation");
     }
@@ -187,10 +191,11 @@ public class AbstractionTest {
 
     @Test
     void safetyNameAndFingerprint() throws AbstractionException {
-        assertEquals(new SafetyRule("battery level >= 20% (thesis 3.3.1)", "BatteryReader", "level",
-                "/BatteryComponent", "/BatteryReaderBatteryLevelClient", 20.0,
-                "send the robot to the charging station", List.of(new UnderWay(null, "GoTo", "goTo", "charging_station"),
-                new UnderWay("GoToChargingStation", null, null, null))), A.safety().orElseThrow());
+        assertEquals(new Bound("battery", "battery level >= 20% (thesis 3.3.1)", "send the robot to the charging station",
+                Scope.GLOBAL, new ValueReader("BatteryReader", "level", "/BatteryComponent",
+                "/BatteryReaderBatteryLevelClient"), 20.0, Double.POSITIVE_INFINITY,
+                List.of(new UnderWay(null, "GoTo", "goTo", "charging_station"),
+                        new UnderWay("GoToChargingStation", null, null, null))), A.safety().orElseThrow());
         assertEquals("thesis-tables-4.1-4.2-bands-5.2", A.name());
         assertTrue(A.fingerprint().matches("[0-9a-f]{64}"));
         // Same content in another key order and layout: same canonical form and fingerprint.

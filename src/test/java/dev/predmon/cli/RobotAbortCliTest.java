@@ -47,7 +47,8 @@ class RobotAbortCliTest {
         List<JsonNode> events = w.jsonLines();
         JsonNode noMatch = Cli.firstEvent(events, "no-match").orElse(null);
         JsonNode warning = Cli.firstEvent(events, "warning").orElse(null);
-        JsonNode violation = Cli.firstEvent(events, "violation").orElse(null);
+        JsonNode violation = events.stream().filter(e -> e.get("event").asText().equals("violation")
+                && e.get("property").asText().equals("battery")).findFirst().orElse(null);
         assertNotNull(noMatch, "the abort is behaviour no model has seen: " + w.out());
         assertNotNull(violation, "the battery drains past 20");
         assertNotNull(warning, "warned: " + w.out());

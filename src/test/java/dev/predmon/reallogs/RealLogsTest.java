@@ -1,12 +1,12 @@
 package dev.predmon.reallogs;
 
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.parse.RecordKind;
+import dev.predmon.property.Bound;
 import dev.predmon.support.RealLogs;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.function.Executable;
@@ -42,7 +42,7 @@ class RealLogsTest {
 
     @Test
     void everyRecordingHasItsTablesCountsAndViolation() throws IOException {
-        SafetyRule safety = AbstractionFiles.defaults().safety().orElseThrow();
+        Bound safety = AbstractionFiles.defaults().safety().orElseThrow();
         List<Executable> checks = new ArrayList<>();
         for (RealLogs.Row row : RealLogs.rows()) {
             Seen seen = new Seen();

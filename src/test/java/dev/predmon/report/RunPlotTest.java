@@ -1,9 +1,9 @@
 package dev.predmon.report;
 
-import dev.predmon.abstraction.SafetyRule;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
+import dev.predmon.property.Bound;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
@@ -25,7 +25,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /** The report's plots as SVG text: times from the start of the run, round ticks, labels apart, curves thinned. */
 class RunPlotTest {
 
-    private static final SafetyRule RULE = AbstractionFiles.defaults().safety().orElseThrow();
+    private static final Bound RULE = AbstractionFiles.defaults().safety().orElseThrow();
     private static final Pattern TEXT = Pattern.compile(
             "<text class=\"([^\"]+)\" x=\"([-0-9.]+)\" y=\"([-0-9.]+)\">([^<]*)</text>");
 

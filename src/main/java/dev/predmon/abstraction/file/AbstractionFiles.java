@@ -2,10 +2,14 @@ package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.AbstractionException;
-import dev.predmon.abstraction.SafetyRule;
+import dev.predmon.abstraction.file.AbstractionSpec.SafetySpec;
+import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -30,7 +34,7 @@ import java.util.Optional;
  * {@code locations} (name to abbreviation, used for {@code {loc}} in symbols), {@code rules} (required:
  * {@code protocol}, {@code command}, {@code input}, {@code replies}, optional {@code description}; each reply has a
  * {@code symbol} and exactly one of {@code any: true}, {@code equals: [strings]},
- * {@code range: {above|atLeast, below|atMost}}), {@code safety} (see {@link SafetyRule}), {@code warning} and
+ * {@code range: {above|atLeast, below|atMost}}), {@code properties} (see {@link PropertySpecs}; older files give one {@code safety} object), {@code warning} and
  * {@code runs} ({@link AbstractionSpec} says what each means).
  *
  * <p>Band boundaries of the default: bands are upper-inclusive, {@code (lower, upper]}, like the thesis's
@@ -129,19 +133,70 @@ public final class AbstractionFiles {
         if (!tree.root().isObject()) {
             throw new AbstractionException(position(source, tree.locate("")) + "expected a JSON object at the top");
         }
+        // The properties list is read on its own (PropertySpecs); the rest binds as files always have.
+        JsonNode properties = tree.root() instanceof ObjectNode o ? o.remove("properties") : null;
         AbstractionSpec spec;
+        List<Property> read = null;
         try {
             spec = SpecBinder.spec(tree.root());
             AbstractionValidator.validate(spec);
+            if (properties != null) {
+                if (spec.safety() != null) {
+                    throw new AbstractionValidator.Invalid("/safety", "'safety' is the older form of one bound"
+                            + " property: give it in 'properties' instead, with an id");
+                }
+                read = PropertySpecs.read(properties);
+            }
         } catch (AbstractionValidator.Invalid e) {
             throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
         }
+        if (read == null) {
+            return older(spec);
+        }
+        String canonical = SpecWriter.canonical(spec, SpecWriter.properties(properties));
+        // What is learned depends on the forecast's property only: the fingerprint hashes the file with that property
+        // in the older form, so that models learned before properties came, or with other properties, stay valid.
+        Bound forecast = read.stream().filter(p -> p instanceof Bound b && b.hasFloor()).map(p -> (Bound) p)
+                .findFirst().orElse(null);
+        String text = SpecWriter.canonical(spec.withSafety(forecast == null ? null : new SafetySpec(forecast.name(),
+                forecast.value().protocol(), forecast.value().command(), orNull(forecast.value().from()),
+                orNull(forecast.value().to()), forecast.floor(), null, null)));
+        if (forecast != null && forecast.ceiling() != Double.POSITIVE_INFINITY) {
+            text += "\nceiling " + forecast.ceiling();
+        }
+        return new Abstraction(spec.definition(read), canonical, sha256(text));
+    }
+
+    /**
+     * A file of the older form: at most one property, its {@code safety} object. One that is a built-in but for its
+     * action or its form (the {@code models/abstraction.json} of models learned before properties came) gets the
+     * built-in's properties, its own action kept.
+     */
+    private static Abstraction older(AbstractionSpec spec) {
         String canonical = SpecWriter.canonical(spec);
         // The recommended action, and what says it is under way, are advice to operators: they change no trace, so
         // models stay valid when they do.
         String fingerprint = sha256(spec.hasAdvice() ? SpecWriter.canonical(spec.withoutAdvice()) : canonical);
-        SafetyRule advice = spec.safety() == null ? null : builtinAdvice(fingerprint);
-        return new Abstraction(spec.definition(advice), canonical, fingerprint);
+        List<Property> builtin = builtinProperties(fingerprint);
+        List<Property> properties;
+        if (builtin != null) {
+            // the built-in's properties; its forecast property with this file's own advice where it gives some
+            properties = builtin.stream().map(p -> spec.hasAdvice() && p instanceof Bound b && b.hasFloor()
+                    ? withIdAndBounds(spec.safetyProperty(b), b) : p).toList();
+        } else {
+            properties = spec.safety() == null ? List.of() : List.of(spec.safetyProperty(null));
+        }
+        return new Abstraction(spec.definition(properties), canonical, fingerprint);
+    }
+
+    /** {@code advised} (an older file's property with its advice) under the id, name and bounds of {@code b}. */
+    private static Bound withIdAndBounds(Bound advised, Bound b) {
+        return new Bound(b.id(), b.name(), advised.action(), b.scope(), b.value(), b.floor(), b.ceiling(),
+                advised.underWay());
+    }
+
+    private static String orNull(String port) {
+        return port.isEmpty() ? null : port;
     }
 
     private static String at(String pointer) {
@@ -162,29 +217,22 @@ public final class AbstractionFiles {
     }
 
     /**
-     * The safety property of the built-in abstraction with this fingerprint, for its advice (the recommended action
-     * and what says it is under way), or null. An abstraction file that is a built-in but for its advice (the
-     * {@code models/abstraction.json} of models learned before the advice existed) thus gets the built-in's.
+     * The properties, with their actions, of the built-in abstraction with this fingerprint, or null. An older
+     * abstraction file that is a built-in but for its action and its form thus gets the built-in's.
      */
-    static SafetyRule builtinAdvice(String fingerprint) {
-        Map<String, SafetyRule> advice = BuiltinAdvice.BY_FINGERPRINT;
-        return advice == null ? null : advice.get(fingerprint); // null while the built-ins themselves are read
-    }
-
-    /** The recommended action of the built-in abstraction with this fingerprint, or null. */
-    static String builtinAction(String fingerprint) {
-        SafetyRule advice = builtinAdvice(fingerprint);
-        return advice == null ? null : advice.action();
+    static List<Property> builtinProperties(String fingerprint) {
+        Map<String, List<Property>> byFingerprint = BuiltinProperties.BY_FINGERPRINT;
+        return byFingerprint == null ? null : byFingerprint.get(fingerprint); // null while the built-ins are read
     }
 
     /** Read on first use: most runs of predmon never need it. */
-    private static final class BuiltinAdvice {
-        static final Map<String, SafetyRule> BY_FINGERPRINT = read();
+    private static final class BuiltinProperties {
+        static final Map<String, List<Property>> BY_FINGERPRINT = read();
 
-        private static Map<String, SafetyRule> read() {
-            Map<String, SafetyRule> byFingerprint = new HashMap<>();
+        private static Map<String, List<Property>> read() {
+            Map<String, List<Property>> byFingerprint = new HashMap<>();
             for (String name : BUILTIN.keySet()) {
-                builtin(name).ifPresent(a -> a.safety().ifPresent(s -> byFingerprint.put(a.fingerprint(), s)));
+                builtin(name).ifPresent(a -> byFingerprint.put(a.fingerprint(), a.properties()));
             }
             return Map.copyOf(byFingerprint);
         }

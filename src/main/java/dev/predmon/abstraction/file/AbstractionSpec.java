@@ -6,8 +6,11 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Band;
 import dev.predmon.abstraction.Definition;
 import dev.predmon.abstraction.RunRule;
-import dev.predmon.abstraction.SafetyRule;
-import dev.predmon.abstraction.UnderWay;
+import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
+import dev.predmon.property.Scope;
+import dev.predmon.property.UnderWay;
+import dev.predmon.property.ValueReader;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -27,7 +30,7 @@ import java.util.Map;
  * @param drop        filters for records outside the skill-component interface
  * @param locations   location name, as in arguments and client ports, to its abbreviation in symbols
  * @param rules       how each (protocol, command) becomes an input symbol and its replies output symbols
- * @param safety      the property of the built-in safety monitor, optional
+ * @param safety      the older form of one bound property, optional (files now give {@code properties})
  * @param warning     how cautiously the predictive monitor warns on this system, optional
  * @param runs        where one run ends and the next begins in a log that holds several, optional
  */
@@ -46,12 +49,35 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
         return safety != null && (safety.action() != null || safety.underWay() != null);
     }
 
+    /** This spec with {@code safety} in place of its own. */
+    AbstractionSpec withSafety(SafetySpec safety) {
+        return new AbstractionSpec(name, description, drop, locations, rules, safety, warning, runs);
+    }
+
     /**
-     * What this validated spec defines, with the defaults of absent keys.
+     * The one bound property of the older {@code safety} object, with the id {@value #SAFETY_ID}.
      *
      * @param advice the property whose action and under-way messages are taken where the spec gives none, or null
      */
-    Definition definition(SafetyRule advice) {
+    Bound safetyProperty(Bound advice) {
+        String action = safety.action() != null || advice == null ? safety.action() : advice.action();
+        List<UnderWay> underWay = safety.underWay() != null
+                ? safety.underWay().stream().map(UnderWaySpec::underWay).toList()
+                : advice == null ? List.of() : advice.underWay();
+        return new Bound(SAFETY_ID, safety.name(), action, Scope.GLOBAL, new ValueReader(safety.protocol(),
+                safety.command(), safety.from() == null ? "" : safety.from(), safety.to() == null ? "" : safety.to()),
+                safety.below(), Double.POSITIVE_INFINITY, underWay);
+    }
+
+    /** The id of the property an older file's {@code safety} object defines. */
+    static final String SAFETY_ID = "safety";
+
+    /**
+     * What this validated spec defines, with the defaults of absent keys.
+     *
+     * @param properties the file's safety properties
+     */
+    Definition definition(List<Property> properties) {
         List<Definition.Drop> drops = new ArrayList<>();
         for (DropSpec d : drop == null ? List.<DropSpec>of() : drop) {
             drops.add(new Definition.Drop(d.kind(), d.from(), d.to(), d.protocol(), d.command()));
@@ -66,15 +92,10 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
             compiled.add(new Definition.Rule(r.protocol(), r.command(), r.client(), r.input(),
                     Boolean.TRUE.equals(r.continuous()), Boolean.TRUE.equals(r.carry()), r.hysteresis(), replies));
         }
-        SafetyRule property = safety == null ? null : new SafetyRule(safety.name(), safety.protocol(),
-                safety.command(), safety.from() == null ? "" : safety.from(), safety.to() == null ? "" : safety.to(),
-                safety.below(), safety.action() != null || advice == null ? safety.action() : advice.action(),
-                safety.underWay() != null ? safety.underWay().stream().map(UnderWaySpec::underWay).toList()
-                        : advice == null ? List.of() : advice.underWay());
         RunRule runRule = runs == null ? RunRule.DEFAULT : new RunRule(runs.tickRestart() == null || runs.tickRestart(),
                 runs.silence() == null ? RunRule.DEFAULT_SILENCE : runs.silence());
         int confirm = warning == null || warning.confirm() == null ? 0 : warning.confirm();
-        return new Definition(name, locations == null ? Map.of() : locations, drops, compiled, property, confirm,
+        return new Definition(name, locations == null ? Map.of() : locations, drops, compiled, properties, confirm,
                 runRule);
     }
 
@@ -140,9 +161,9 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
     }
 
     /**
-     * See {@link SafetyRule}; {@code from}, {@code to}, {@code action} (what an operator should do when the property
-     * is predicted to fail or fails, e.g. {@code send the robot to the charging station}) and {@code underWay} (the
-     * messages that say the robot already does it) are optional.
+     * The older form of one {@link Bound} property (a floor, {@code below}); {@code from}, {@code to}, {@code action}
+     * (what an operator should do when the property is predicted to fail or fails, e.g. {@code send the robot to the
+     * charging station}) and {@code underWay} (the messages that say the robot already does it) are optional.
      */
     @JsonInclude(JsonInclude.Include.NON_NULL)
     record SafetySpec(String name, String protocol, String command, String from, String to, Double below,

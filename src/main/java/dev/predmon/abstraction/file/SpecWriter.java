@@ -1,6 +1,7 @@
 package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionSpec.DropSpec;
 import dev.predmon.abstraction.file.AbstractionSpec.RangeSpec;
@@ -34,9 +35,18 @@ final class SpecWriter {
 
     /** The canonical JSON of {@code spec}. */
     static String canonical(AbstractionSpec spec) {
+        return canonical(spec, null);
+    }
+
+    /**
+     * The canonical JSON of {@code spec} with a {@code properties} list.
+     *
+     * @param properties the list's canonical JSON ({@link #properties}), or null for none
+     */
+    static String canonical(AbstractionSpec spec, String properties) {
         StringWriter out = new StringWriter();
         try (JsonGenerator g = LocatedJson.FACTORY.createGenerator(out)) {
-            spec(g, spec);
+            spec(g, spec, properties);
         } catch (IOException e) {
             throw new UncheckedIOException("writing to a string cannot fail", e);
         }
@@ -45,7 +55,7 @@ final class SpecWriter {
 
     // Each record's keys below are written in alphabetical order.
 
-    private static void spec(JsonGenerator g, AbstractionSpec s) throws IOException {
+    private static void spec(JsonGenerator g, AbstractionSpec s, String properties) throws IOException {
         g.writeStartObject();
         string(g, "description", s.description());
         if (s.drop() != null) {
@@ -68,6 +78,10 @@ final class SpecWriter {
             g.writeEndObject();
         }
         string(g, "name", s.name());
+        if (properties != null) {
+            g.writeFieldName("properties");
+            g.writeRawValue(properties);
+        }
         if (s.rules() != null) {
             g.writeArrayFieldStart("rules");
             for (RuleSpec r : s.rules()) {
@@ -229,6 +243,45 @@ final class SpecWriter {
     private static void bool(JsonGenerator g, String name, Boolean value) throws IOException {
         if (value != null) {
             g.writeBooleanField(name, value);
+        }
+    }
+
+    /** The canonical form of a {@code properties} list: keys sorted at every level, numbers as doubles, one line. */
+    static String properties(JsonNode list) {
+        StringWriter out = new StringWriter();
+        try (JsonGenerator g = LocatedJson.FACTORY.createGenerator(out)) {
+            write(g, list);
+        } catch (IOException e) {
+            throw new UncheckedIOException("writing to a string cannot fail", e);
+        }
+        return out.toString();
+    }
+
+    private static void write(JsonGenerator g, JsonNode n) throws IOException {
+        if (n.isObject()) {
+            g.writeStartObject();
+            Map<String, JsonNode> sorted = new TreeMap<>();
+            n.fields().forEachRemaining(e -> sorted.put(e.getKey(), e.getValue()));
+            for (Map.Entry<String, JsonNode> e : sorted.entrySet()) {
+                g.writeFieldName(e.getKey());
+                write(g, e.getValue());
+            }
+            g.writeEndObject();
+        } else if (n.isArray()) {
+            g.writeStartArray();
+            for (JsonNode e : n) {
+                write(g, e);
+            }
+            g.writeEndArray();
+        } else if (n.isTextual()) {
+            g.writeString(n.textValue());
+        } else if (n.isNumber()) {
+            // every number a double, as the rest of the canonical form writes them (10 is 10.0): one reading of it
+            g.writeNumber(n.doubleValue());
+        } else if (n.isBoolean()) {
+            g.writeBoolean(n.booleanValue());
+        } else {
+            g.writeNull();
         }
     }
 }

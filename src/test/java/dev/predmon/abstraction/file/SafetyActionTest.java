@@ -50,13 +50,18 @@ class SafetyActionTest {
             assertEquals("send the robot to the charging station",
                     AbstractionFiles.builtin(name).orElseThrow().safety().orElseThrow().action(), name);
         }
-        // models/abstraction.json of models learned before actions existed: the built-in but for the action.
-        String stored = AbstractionFiles.defaults().canonicalJson().replace(
-                "\"action\":\"send the robot to the charging station\",", "");
+        // models/abstraction.json of models learned before actions and properties existed: the built-in in the
+        // older form, one safety object without an action. It gets the built-in's properties and their actions.
+        String stored = AbstractionFiles.defaults().canonicalJson().replaceAll(",\"properties\":\\[.*\\](?=,\"rules\")",
+                "") + "";
+        stored = stored.substring(0, stored.length() - 1) + ",\"safety\":{\"below\":20.0,\"command\":\"level\","
+                + "\"from\":\"/BatteryComponent\",\"name\":\"battery level >= 20% (thesis 3.3.1)\","
+                + "\"protocol\":\"BatteryReader\",\"to\":\"/BatteryReaderBatteryLevelClient\"}}";
         assertFalse(stored.contains("action"), stored);
         Abstraction old = AbstractionFiles.fromJson("models/abstraction.json", stored);
         assertEquals(AbstractionFiles.defaults().fingerprint(), old.fingerprint());
         assertEquals("send the robot to the charging station", old.safety().orElseThrow().action());
+        assertEquals(AbstractionFiles.defaults().properties(), old.properties());
     }
 
     @Test

@@ -58,14 +58,41 @@ class SpecBindingTest {
             + " \"replies\": [{\"equals\": [\"1\", \"27503\"], \"symbol\": \"o_q_{loc}\"},"
             + " {\"any\": true, \"symbol\": \"o_q_{loc}_other\"}]}]}";
 
-    @Test
-    void canonicalJsonOfTheBuiltInsIsWhatDataBindingWrote() {
-        for (String name : AbstractionFiles.BUILTIN_NAMES) {
-            String json = AbstractionFiles.builtinJson(name).orElseThrow();
-            DatabindOracle.Outcome before = DatabindOracle.fromJson(name, json);
-            assertNotNull(before.canonical(), before.error());
-            assertEquals(before.canonical(), AbstractionFiles.builtin(name).orElseThrow().canonicalJson(), name);
+    /**
+     * The built-ins as data binding read files, that is without their {@code properties} list (read on its own by
+     * {@link PropertySpecs}): the text the binding tests below edit.
+     */
+    static String bound(String name) {
+        try {
+            ObjectNode tree = (ObjectNode) DatabindOracle.MAPPER.readTree(AbstractionFiles.builtinJson(name).orElseThrow());
+            tree.remove("properties");
+            return DatabindOracle.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(tree);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException(e);
         }
+    }
+
+    @Test
+    void canonicalJsonOfTheBuiltInsIsWhatDataBindingWrote() throws AbstractionException {
+        for (String name : AbstractionFiles.BUILTIN_NAMES) {
+            DatabindOracle.Outcome before = DatabindOracle.fromJson(name, bound(name));
+            assertNotNull(before.canonical(), before.error());
+            String properties = AbstractionFiles.builtin(name).orElseThrow().canonicalJson()
+                    .replaceAll(",\"properties\":\\[.*\\](?=,\"rules\")", "");
+            assertEquals(before.canonical(), properties, name);
+        }
+    }
+
+    /**
+     * Models learned with a built-in carry its fingerprint: the properties list changed none (what is learned
+     * depends only on the forecast's property, hashed in the older {@code safety} form).
+     */
+    @Test
+    void theBuiltInsKeepTheFingerprintsOfModelsLearnedBeforeProperties() {
+        assertEquals("caed5be02408e2d34599d484a8b487484f4d44ce2b93956c044ee1df3f33f821",
+                AbstractionFiles.builtin("thesis").orElseThrow().fingerprint());
+        assertEquals("3c9b533e07acef022c02e522d35a6dda131b3d8189b463cfa9062616a76d0148",
+                AbstractionFiles.builtin("scope-fetch").orElseThrow().fingerprint());
     }
 
     /** The shipped models carry a fingerprint: it must still be the one of their abstraction file. */
@@ -75,7 +102,8 @@ class SpecBindingTest {
         String json = Files.readString(file);
         Abstraction a = AbstractionFiles.load(file);
         assertEquals(json, a.canonicalJson(), "abstraction.json is its own canonical form");
-        assertEquals(DatabindOracle.fromJson(file.toString(), json).canonical(), a.canonicalJson());
+        String withoutProperties = json.replaceAll(",\"properties\":\\[.*\\](?=,\"rules\")", "");
+        assertEquals(DatabindOracle.fromJson(file.toString(), withoutProperties).canonical(), withoutProperties);
         assertTrue(Files.readString(Path.of("models", "index.json")).contains(a.fingerprint()));
     }
 
@@ -94,7 +122,7 @@ class SpecBindingTest {
     void everyValueOfEveryTypeBindsAsBefore() throws IOException {
         int compared = 0;
         List<String> files = new ArrayList<>(List.of(ALL_KEYS));
-        AbstractionFiles.BUILTIN_NAMES.forEach(name -> files.add(AbstractionFiles.builtinJson(name).orElseThrow()));
+        AbstractionFiles.BUILTIN_NAMES.forEach(name -> files.add(bound(name)));
         for (String file : files) {
             JsonNode tree = LocatedJson.parse(file).root();
             // Binding depends on where a value is, not on which rule or reply: two places of each kind suffice.
@@ -115,7 +143,7 @@ class SpecBindingTest {
     /** Unknown keys first, last and beside bad values, in every object; keys left out of every object. */
     @Test
     void unknownAndMissingKeysAreReportedAsBefore() throws IOException {
-        JsonNode tree = LocatedJson.parse(AbstractionFiles.builtinJson("thesis").orElseThrow()).root();
+        JsonNode tree = LocatedJson.parse(bound("thesis")).root();
         List<String> pointers = new ArrayList<>(List.of(""));
         pointers.addAll(pointers(tree, ""));
         for (String pointer : pointers) {
@@ -144,7 +172,7 @@ class SpecBindingTest {
                 "20.0", "\"NaN\"", "\"x\"", "\"{loc}\"", "\"equals\"", "\"any\"", "\"symbol\"", "\"values\"", "\n"};
         Random random = new Random(12);
         for (String name : AbstractionFiles.BUILTIN_NAMES) {
-            String text = AbstractionFiles.builtinJson(name).orElseThrow();
+            String text = bound(name);
             for (int n = 0; n < 1500; n++) {
                 StringBuilder s = new StringBuilder(text);
                 for (int edits = 1 + random.nextInt(3); edits > 0; edits--) {

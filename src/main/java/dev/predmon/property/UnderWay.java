@@ -1,4 +1,4 @@
-package dev.predmon.abstraction;
+package dev.predmon.property;
 
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;

@@ -1,0 +1,66 @@
+package dev.predmon.monitor;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
+import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.Verdict;
+
+import java.util.List;
+import java.util.Optional;
+import java.util.function.Consumer;
+
+/**
+ * The safety monitor of one log: checks every property of the abstraction on every run ({@link PropertyChecker}) for
+ * its verdict, and tells each property's first violation in a run as a {@link MonitorEvent.Violation} naming it, but
+ * for the forecast's property ({@link Abstraction#safety()}): {@link PredictiveMonitor} tells that one's violations
+ * itself, with the alarm that follows it (violated, recovered, violated again).
+ */
+final class SafetyMonitor {
+
+    private final PropertyChecker checker;
+    /** The forecast property's position among the checked ones, or -1 without one. */
+    private final int forecastIndex;
+    private final String forecastId;
+    private final Consumer<MonitorEvent> events;
+    private LogRecord record;
+    private int run;
+
+    SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events) {
+        Optional<Bound> forecast = abstraction.safety();
+        this.forecastIndex = forecast.map(b -> abstraction.properties().indexOf(b)).orElse(-1);
+        this.forecastId = forecast.map(Bound::id).orElse(null);
+        this.checker = new PropertyChecker(abstraction.properties(), this::violated);
+        this.events = events;
+    }
+
+    /** Checks {@code r}, the next record of run {@code run}, telling the violations it makes. */
+    void accept(LogRecord r, int run) {
+        this.record = r;
+        this.run = run;
+        checker.accept(r);
+    }
+
+    private void violated(int index, Property p, Verdict.Violated v) {
+        if (index != forecastIndex) {
+            events.accept(new MonitorEvent.Violation(v.time(), v.line(), p.id(), p.name(), v.value(), v.before(),
+                    v.what(), record.clock(), run, false));
+        }
+    }
+
+    /** A new run: every property starts over. */
+    void reset() {
+        checker.reset();
+    }
+
+    /** The id of the property the forecast and the warnings are about, or null without one. */
+    String forecastId() {
+        return forecastId;
+    }
+
+    /** Every property with its verdict on the current run so far. */
+    List<PropertyChecker.PropertyVerdict> verdicts() {
+        return checker.verdicts();
+    }
+}

@@ -1,0 +1,131 @@
+package dev.predmon.property;
+
+import dev.predmon.parse.LogRecord;
+
+/**
+ * The incremental check of one property within one segment of its scope: constant state, one step per record.
+ * {@link PropertyChecker} keeps the first violation and the scope; a check only says what each record does.
+ */
+abstract class Check {
+
+    /** The value this record gave a {@link Bound}, NaN for any other record or kind. */
+    double reading = Double.NaN;
+
+    /**
+     * The next record of the segment.
+     *
+     * @param ticks {@code Tick} records of the run so far, this one included
+     * @return the violation this record makes, or null
+     */
+    abstract Verdict.Violated step(LogRecord r, long ticks);
+
+    /** The segment ends at {@code r} (after its step): a violation if something is still owed, else null. */
+    Verdict.Violated close(LogRecord r) {
+        return null;
+    }
+
+    /** What is owed now, if anything: {@link Verdict.Pending}, else {@link Verdict#HOLDS}. */
+    Verdict owed() {
+        return Verdict.HOLDS;
+    }
+
+    /** Whether the check reads a value (a bound's, which the forecast follows even after the violation). */
+    boolean reads() {
+        return false;
+    }
+
+    /** Starts a segment afresh. */
+    abstract void reset();
+
+    /** The check of {@code p}. */
+    static Check of(Property p) {
+        if (p instanceof Bound b) {
+            return new BoundCheck(b);
+        }
+        if (p instanceof Absence a) {
+            return new AbsenceCheck(a);
+        }
+        if (p instanceof Precedence q) {
+            return new PrecedenceCheck(q);
+        }
+        return new ResponseCheck((Response) p);
+    }
+
+    private static final class BoundCheck extends Check {
+        private final Bound p;
+        private double last = Double.NaN;
+
+        BoundCheck(Bound p) {
+            this.p = p;
+        }
+
+        @Override
+        Verdict.Violated step(LogRecord r, long ticks) {
+            double v = p.valueOf(r);
+            reading = v;
+            if (Double.isNaN(v)) {
+                return null;
+            }
+            Double before = Double.isNaN(last) ? null : last;
+            last = v;
+            if (!p.violatedBy(v)) {
+                return null;
+            }
+            return new Verdict.Violated(r.line(), r.time(), v, before, p.violation(v));
+        }
+
+        @Override
+        boolean reads() {
+            return true;
+        }
+
+        @Override
+        void reset() {
+            last = Double.NaN;
+        }
+    }
+
+    private static final class AbsenceCheck extends Check {
+        private final Absence p;
+
+        AbsenceCheck(Absence p) {
+            this.p = p;
+        }
+
+        @Override
+        Verdict.Violated step(LogRecord r, long ticks) {
+            return p.event().matches(r) ? new Verdict.Violated(r.line(), r.time(), null, null, p.event().describe())
+                    : null;
+        }
+
+        @Override
+        void reset() {
+            // no state: every occurrence violates
+        }
+    }
+
+    private static final class PrecedenceCheck extends Check {
+        private final Precedence p;
+        private boolean seen;
+
+        PrecedenceCheck(Precedence p) {
+            this.p = p;
+        }
+
+        @Override
+        Verdict.Violated step(LogRecord r, long ticks) {
+            if (p.first().matches(r)) {
+                seen = true;
+            } else if (!seen && p.then().matches(r)) {
+                return new Verdict.Violated(r.line(), r.time(), null, null,
+                        p.then().describe() + " before any " + p.first().describe());
+            }
+            return null;
+        }
+
+        @Override
+        void reset() {
+            seen = false;
+        }
+    }
+}

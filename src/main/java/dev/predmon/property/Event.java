@@ -1,0 +1,40 @@
+package dev.predmon.property;
+
+import dev.predmon.parse.LogRecord;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+/**
+ * An event of a property: a record that matches any of {@code alternatives} (navigation ends: a {@code getStatus}
+ * reply SUCCESS, or a {@code halt}).
+ */
+public record Event(List<RecordMatch> alternatives) {
+
+    public Event {
+        if (alternatives.isEmpty()) {
+            throw new IllegalArgumentException("an event needs at least one record matcher");
+        }
+        alternatives = List.copyOf(alternatives);
+    }
+
+    /** The event of one record matcher. */
+    public static Event of(RecordMatch match) {
+        return new Event(List.of(match));
+    }
+
+    /** Whether {@code r} is this event. */
+    public boolean matches(LogRecord r) {
+        for (int i = 0; i < alternatives.size(); i++) {
+            if (alternatives.get(i).matches(r)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** In a user's words, alternatives joined by {@code or}. */
+    public String describe() {
+        return alternatives.stream().map(RecordMatch::describe).collect(Collectors.joining(" or "));
+    }
+}

@@ -1,0 +1,130 @@
+package dev.predmon.property;
+
+import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordKind;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Checks every property on one run, record by record, with constant state per property: the safety monitor of a
+ * run. Each property's first violation is told to the listener as it happens and stays its verdict for the run;
+ * {@link #reset()} starts the next run.
+ *
+ * <p>Scopes: a property with a scope is checked from an occurrence of its {@code from} event (that record
+ * included) to the next occurrence of its {@code until} event (included, unless it is the opening record); each
+ * segment starts the property's check afresh and a response owed when a segment closes is violated there.
+ */
+public final class PropertyChecker {
+
+    /** Told each property's first violation in a run. */
+    @FunctionalInterface
+    public interface Listener {
+        /**
+         * A property is violated for the first time in the run.
+         *
+         * @param index    the property's position in the checker's list
+         * @param property the property
+         * @param verdict  its violation
+         */
+        void violated(int index, Property property, Verdict.Violated verdict);
+    }
+
+    /** A property with its verdict. */
+    public record PropertyVerdict(Property property, Verdict verdict) {
+    }
+
+    private final List<Property> properties;
+    private final Check[] checks;
+    private final boolean[] open;
+    private final Verdict.Violated[] violated;
+    private final Listener listener;
+    private long ticks;
+
+    public PropertyChecker(List<Property> properties, Listener listener) {
+        this.properties = List.copyOf(properties);
+        this.listener = listener;
+        this.checks = new Check[this.properties.size()];
+        for (int i = 0; i < checks.length; i++) {
+            checks[i] = Check.of(this.properties.get(i));
+        }
+        this.open = new boolean[checks.length];
+        this.violated = new Verdict.Violated[checks.length];
+    }
+
+    /** Takes the next record of the run. */
+    public void accept(LogRecord r) {
+        if (r.kind() == RecordKind.TICK) {
+            ticks++;
+        }
+        for (int i = 0; i < checks.length; i++) {
+            Check c = checks[i];
+            c.reading = Double.NaN;
+            if (violated[i] != null && !c.reads()) {
+                continue; // the verdict is final; only a bound still reads its value, for the forecast
+            }
+            Scope s = properties.get(i).scope();
+            Verdict.Violated v;
+            if (s.global()) {
+                v = c.step(r, ticks);
+            } else {
+                boolean opening = !open[i] && s.from().matches(r);
+                if (opening) {
+                    open[i] = true;
+                    c.reset();
+                }
+                if (!open[i]) {
+                    continue;
+                }
+                v = c.step(r, ticks);
+                if (!opening && s.until().matches(r)) {
+                    open[i] = false;
+                    Verdict.Violated owed = c.close(r);
+                    v = v != null ? v : owed;
+                    c.reset();
+                }
+            }
+            if (v != null && violated[i] == null) {
+                violated[i] = v;
+                listener.violated(i, properties.get(i), v);
+            }
+        }
+    }
+
+    /** The value the last record gave property {@code index} (a {@link Bound}), or NaN when it gave none. */
+    public double reading(int index) {
+        return checks[index].reading;
+    }
+
+    /** The verdict of property {@code index} on the run so far. */
+    public Verdict verdict(int index) {
+        if (violated[index] != null) {
+            return violated[index];
+        }
+        return open[index] || properties.get(index).scope().global() ? checks[index].owed() : Verdict.HOLDS;
+    }
+
+    /** Every property with its verdict on the run so far, in the checker's order. */
+    public List<PropertyVerdict> verdicts() {
+        List<PropertyVerdict> all = new ArrayList<>(checks.length);
+        for (int i = 0; i < checks.length; i++) {
+            all.add(new PropertyVerdict(properties.get(i), verdict(i)));
+        }
+        return all;
+    }
+
+    /** The properties checked, in order. */
+    public List<Property> properties() {
+        return properties;
+    }
+
+    /** A new run: every property starts over. */
+    public void reset() {
+        ticks = 0;
+        for (int i = 0; i < checks.length; i++) {
+            checks[i].reset();
+            open[i] = false;
+            violated[i] = null;
+        }
+    }
+}

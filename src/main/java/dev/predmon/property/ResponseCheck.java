@@ -1,0 +1,107 @@
+package dev.predmon.property;
+
+import dev.predmon.parse.LogRecord;
+
+/**
+ * The check of a {@link Response}: whether an obligation is open, since when and until when, the count of the
+ * counted event, and whether the trigger's condition held at the last reading. Constant state.
+ */
+final class ResponseCheck extends Check {
+
+    private final Response p;
+    private final Deadline d;
+    private boolean pending;
+    private long line;
+    private double since;
+    private double deadline;
+    private long count;
+    private boolean held;
+    /** Whether a lasting response holds (only with {@code cancelledBy}). */
+    private boolean answered;
+    /** Whether the trigger's state (the condition held and no response lasted) held at the last reading. */
+    private boolean owing;
+
+    ResponseCheck(Response p) {
+        this.p = p;
+        this.d = p.within();
+    }
+
+    @Override
+    Verdict.Violated step(LogRecord r, long ticks) {
+        if (pending) {
+            if (d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r)) {
+                count++;
+            }
+            if (now(r, ticks) > deadline) {
+                pending = false;
+                return new Verdict.Violated(r.line(), r.time(), null, null, "no " + p.response().describe()
+                        + " within " + d.describe() + " of " + p.describeTrigger() + " at line " + line);
+            }
+            if (p.response().matches(r)) {
+                pending = false;
+            }
+        }
+        if (p.cancelledBy() != null) {
+            boolean responds = p.response().matches(r);
+            answered = responds || (answered && !p.cancelledBy().matches(r));
+        }
+        if (fires(r) && !pending) {
+            pending = true;
+            line = r.line();
+            count = d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r) ? 1 : 0;
+            since = now(r, ticks);
+            deadline = d.unit() == Deadline.Unit.OCCURRENCES ? d.amount() : since + d.amount();
+        }
+        return null;
+    }
+
+    /** Where the run is, in the deadline's unit. */
+    private double now(LogRecord r, long ticks) {
+        return switch (d.unit()) {
+            case TICKS -> ticks;
+            case SECONDS -> r.time();
+            case OCCURRENCES -> count;
+        };
+    }
+
+    /**
+     * Whether {@code r} is a trigger: the event while no response lasts, or the record from which the condition holds
+     * while no response lasts (a reading that makes it true, or a cancelling record while it holds).
+     */
+    private boolean fires(LogRecord r) {
+        if (p.trigger() != null) {
+            return p.trigger().matches(r) && !answered;
+        }
+        double v = p.condition().value().valueOf(r);
+        if (!Double.isNaN(v)) {
+            held = p.condition().test(v);
+        }
+        boolean was = owing;
+        owing = held && !answered;
+        return owing && !was;
+    }
+
+    @Override
+    Verdict.Violated close(LogRecord r) {
+        if (!pending) {
+            return null;
+        }
+        pending = false;
+        return new Verdict.Violated(r.line(), r.time(), null, null, "the scope ended before "
+                + p.response().describe() + " answered " + p.describeTrigger() + " at line " + line);
+    }
+
+    @Override
+    Verdict owed() {
+        return pending ? new Verdict.Pending(line, since, deadline, d.unit()) : Verdict.HOLDS;
+    }
+
+    @Override
+    void reset() {
+        pending = false;
+        count = 0;
+        held = false;
+        answered = false;
+        owing = false;
+    }
+}
