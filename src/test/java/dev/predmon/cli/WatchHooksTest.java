@@ -163,23 +163,25 @@ class WatchHooksTest {
         Path calls = dir.resolve("calls");
         Cli.Running watch = Cli.start("watch", "--log", robot.toString(), "--models", MODELS.toString(), "--json",
                 "--on-warning", "echo warning $PREDMON_RUN >> '" + calls + "'",
-                "--on-violation", "echo violation $PREDMON_RUN >> '" + calls + "'");
-        awaitOutput(watch, "\"run\":1,\"time\""); // the history is read: run 0's warning, violation, then run 1
+                "--on-violation", "echo violation $PREDMON_RUN $PREDMON_PROPERTY >> '" + calls + "'");
+        awaitOutput(watch, "\"run\":1,\"time\""); // the history is read: run 0's warning, violations, then run 1
         assertTrue(watch.out().toString().contains("\"event\":\"warning\""), "the history's warning is shown");
         Thread.sleep(1000); // time for a hook command, were one started
         assertFalse(Files.exists(calls), "no hook for the history: " + (Files.exists(calls) ? Files.readString(calls)
                 : ""));
         Files.writeString(robot, LogWriter.toText(day.get(2), o), StandardOpenOption.APPEND);
-        awaitOutput(watch, "\"event\":\"violation\",\"time\":" + "", 2);
+        // a depleted run violates the battery's floor, then its navigation aborts (no-abort): in run 0 and in run 2
+        awaitOutput(watch, "\"property\":\"no-abort\"", 2);
         long deadline = System.currentTimeMillis() + 10_000;
         while (System.currentTimeMillis() < deadline
-                && (!Files.exists(calls) || Files.readAllLines(calls).size() < 2)) {
+                && (!Files.exists(calls) || Files.readAllLines(calls).size() < 3)) {
             Thread.sleep(20);
         }
         Thread.sleep(300);
         watch.stop();
         // once each; the two commands run side by side, so either may write first
-        assertEquals(List.of("violation 2", "warning 2"), Files.readAllLines(calls).stream().sorted().toList(),
+        assertEquals(List.of("violation 2 battery", "violation 2 no-abort", "warning 2"),
+                Files.readAllLines(calls).stream().sorted().toList(),
                 watch.out().toString());
         assertEquals(ExitCodes.WARNING, watch.code().get(), watch.err().toString());
     }
