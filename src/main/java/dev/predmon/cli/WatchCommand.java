@@ -263,7 +263,9 @@ final class WatchCommand implements Callable<Integer> {
                             : r.safetyObserved() ? ", property held" : ", property not observed")
                             + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse("")
                             + (r.forecast() == null ? "" : "; last forecast " + ForecastWords.line(r.forecast())));
-                    PropertyJson.lines(r.properties()).forEach(out::println);
+                    if (judged) {
+                        PropertyJson.lines(r.properties()).forEach(l -> out.println(stamp(log, several) + l));
+                    }
                 }
             }
             String verdict = !judged ? "no verdict"
@@ -275,8 +277,8 @@ final class WatchCommand implements Callable<Integer> {
                     + "end of " + Terminal.line(log.name()) + (stop.equals("end-of-file") ? "" : " (stopped: "
                     + stop + ")") + ": " + m.records() + " records, " + (all.runs() > 1 ? all.runs() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
-            if (all.runs() == 1) {
-                PropertyJson.lines(runs.get(0).properties()).forEach(out::println);
+            if (all.runs() == 1 && judged) {
+                PropertyJson.lines(runs.get(0).properties()).forEach(l -> out.println(stamp(log, several) + l));
             }
             RunOutcome last = runs.get(runs.size() - 1);
             if (all.runs() == 1 && last.forecast() != null) {
@@ -288,6 +290,12 @@ final class WatchCommand implements Callable<Integer> {
         out.flush();
         return all.runs() == 1 ? ExitCodes.of(all.unwarnedViolation(), all.noMatch(), m.warning().isPresent())
                 : ExitCodes.ofRuns(all);
+    }
+
+    /** What begins a property's verdict line: the wall-clock time with --timestamps, the log's name in a fleet. */
+    private String stamp(WatchedLog log, boolean several) {
+        return (follow.timestamps ? Json.wallTime(Instant.now()) + " " : "") + (several ? Terminal.line(log.name()) + ":"
+                : "");
     }
 
     /** One run's verdict in the {@code end} event. */
