@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
+import dev.predmon.forecast.Survival;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.Clock;
 
@@ -108,7 +109,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         if (e instanceof MonitorEvent.Warning w) {
             o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.property(), w.scenario(),
                     w.scenarios(), w.battery(), w.pairs(), w.rule().id(), w.clause().id(), w.reason(),
-                    ForecastJson.of(w.forecast()));
+                    ForecastJson.of(w.forecast()), DeadlineJson.of(w.deadline()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             o = new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
                     ForecastJson.of(f.forecast()), f.property());
@@ -140,7 +141,19 @@ final class EventPrinter implements Consumer<MonitorEvent> {
 
     record WarningJson(String event, double time, String unit, long line, int run, String property,
                        String scenario, List<String> scenarios, Double battery, long pairs, String rule, String clause,
-                       String reason, ForecastJson forecast) {
+                       String reason, ForecastJson forecast, DeadlineJson deadline) {
+    }
+
+    /**
+     * A deadline forecast: {@code probability} of a miss (null when the obligation is past every training one:
+     * {@code novel}), {@code timeLeft} before the deadline in its unit, {@code atRisk} training obligations pending
+     * as long, {@code longer} of them still pending at the deadline.
+     */
+    record DeadlineJson(Double probability, double timeLeft, int atRisk, int longer, boolean novel) {
+        static DeadlineJson of(Survival.Estimate e) {
+            return e == null ? null : new DeadlineJson(e.novel() ? null : e.probability(), e.timeLeft(), e.atRisk(),
+                    e.longer(), e.novel());
+        }
     }
 
     record RecoveredJson(String event, double time, String unit, long line, int run, String cause, double battery,
@@ -176,6 +189,10 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     }
 
     String toText(MonitorEvent e) {
+        if (e instanceof MonitorEvent.Warning w && w.deadline() != null) {
+            return String.format(Locale.ROOT, "%s line %d: WARNING: %s", at(w.time(), w.clock()), w.line(),
+                    w.reason());
+        }
         if (e instanceof MonitorEvent.Warning w) {
             warning = w;
             return String.format(Locale.ROOT, "%s line %d: WARNING: %s; battery %s", at(w.time(), w.clock()), w.line(),

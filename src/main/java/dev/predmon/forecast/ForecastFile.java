@@ -59,6 +59,14 @@ public final class ForecastFile {
             c.put("runs", m.calibration().runs());
         }
         writeScorecards(root, m.scorecards());
+        if (!m.obligations().isEmpty()) {
+            ObjectNode o = root.putObject("obligations");
+            new TreeMap<>(m.obligations()).forEach((id, survival) -> {
+                ObjectNode n = o.putObject(id);
+                numbers(n.putArray("discharged"), survival.discharged());
+                numbers(n.putArray("censored"), survival.censored());
+            });
+        }
         ArrayNode starts = root.putArray("startInputs");
         m.startInputs().forEach(starts::add);
         lows(root, m.lows());
@@ -204,7 +212,29 @@ public final class ForecastFile {
         return new ForecastModel(format, required(root, "unit").asText(), number(root, "limit"),
                 runs, violating, lows(root), threshold,
                 required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
-                starts, calibration, readScorecards(root));
+                starts, calibration, readScorecards(root), readObligations(root));
+    }
+
+    /** The optional {@code obligations}: per bounded-response property, the training obligations' durations. */
+    private static Map<String, Survival> readObligations(JsonNode root) {
+        Map<String, Survival> obligations = new TreeMap<>();
+        JsonNode o = root.get("obligations");
+        if (o == null) {
+            return obligations;
+        }
+        if (!o.isObject()) {
+            throw new IllegalArgumentException("'obligations': expected an object");
+        }
+        for (Iterator<Map.Entry<String, JsonNode>> it = o.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> e = it.next();
+            try {
+                obligations.put(e.getKey(), new Survival(doubles(required(e.getValue(), "discharged")),
+                        doubles(required(e.getValue(), "censored"))));
+            } catch (IllegalArgumentException x) {
+                throw new IllegalArgumentException("'obligations/" + e.getKey() + "': " + x.getMessage(), x);
+            }
+        }
+        return obligations;
     }
 
     /** The optional {@code scorecards} list: one object per property, written only when there is one. */

@@ -24,11 +24,14 @@ import java.util.Map;
  *                    held-out runs as the threshold ({@link Calibration#IDENTITY} when none was fitted); the
  *                    threshold is on the calibrated scale
  * @param scorecards  how well the forecast did in that cross-validation, per property (empty when it did not run)
+ * @param obligations by bounded-response property id, how long its obligations stayed pending in the training runs:
+ *                    the deadline forecast of that property ({@link Survival})
  */
 public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
                             double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
-                            Calibration calibration, List<Scorecard> scorecards) {
+                            Calibration calibration, List<Scorecard> scorecards,
+                            Map<String, Survival> obligations) {
 
     /** Current format. */
     public static final int FORMAT = 1;
@@ -41,6 +44,15 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         states = Map.copyOf(states);
         startInputs = List.copyOf(startInputs);
         scorecards = List.copyOf(scorecards);
+        obligations = Map.copyOf(obligations);
+    }
+
+    /** A model without deadline forecasts. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold,
+                         String thresholdNote, boolean validated, Map<String, Map<Integer, StateStats>> states,
+                         List<String> startInputs, Calibration calibration, List<Scorecard> scorecards) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, scorecards, Map.of());
     }
 
     /** A model without a scorecard. */
@@ -111,19 +123,19 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs, calibration, scorecards);
+                startInputs, calibration, scorecards, obligations);
     }
 
     /** This model with another calibration (the threshold is left as it is). */
     public ForecastModel withCalibration(Calibration c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, c, scorecards);
+                states, startInputs, c, scorecards, obligations);
     }
 
     /** This model with {@code cards} as its scorecards. */
     public ForecastModel withScorecards(List<Scorecard> cards) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, cards);
+                states, startInputs, calibration, cards, obligations);
     }
 
     @Override
@@ -133,7 +145,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && lows.equals(m.lows)
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
                 && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration)
-                && scorecards.equals(m.scorecards);
+                && scorecards.equals(m.scorecards) && obligations.equals(m.obligations);
     }
 
     @Override

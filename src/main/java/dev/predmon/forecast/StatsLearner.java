@@ -59,7 +59,24 @@ public final class StatsLearner {
             }
         }
         return new ForecastModel(ForecastModel.FORMAT, unit, limit, counted, violated,
-                new Lows(toArray(safe), toArray(violating)), 0.5, "not chosen", false, states, List.copyOf(starts));
+                new Lows(toArray(safe), toArray(violating)), 0.5, "not chosen", false, states, List.copyOf(starts),
+                Calibration.IDENTITY, List.of(), obligations(runs));
+    }
+
+    /** Per bounded-response property, how long the runs' obligations stayed pending, discharged or censored. */
+    static Map<String, Survival> obligations(List<LogTrace.Run> runs) {
+        Map<String, List<Double>> discharged = new TreeMap<>();
+        Map<String, List<Double>> censored = new TreeMap<>();
+        for (LogTrace.Run r : runs) {
+            for (RunTiming.Obligation o : r.timing().obligations()) {
+                discharged.computeIfAbsent(o.property(), k -> new ArrayList<>());
+                censored.computeIfAbsent(o.property(), k -> new ArrayList<>());
+                (o.discharged() ? discharged : censored).get(o.property()).add(o.duration());
+            }
+        }
+        Map<String, Survival> out = new TreeMap<>();
+        discharged.forEach((id, d) -> out.put(id, new Survival(toArray(d), toArray(censored.get(id)))));
+        return out;
     }
 
     /** Per state of {@code machine}: counts, times and drift over the runs it takes. */

@@ -57,6 +57,16 @@ public final class Survival {
         this.after = Arrays.copyOf(s, distinct);
     }
 
+    /** How long each discharged obligation took, sorted. */
+    public double[] discharged() {
+        return discharged.clone();
+    }
+
+    /** How long each censored obligation had been pending when it was let go, sorted. */
+    public double[] censored() {
+        return censored.clone();
+    }
+
     /** Training obligations, discharged or not. */
     public int size() {
         return discharged.length + censored.length;
@@ -115,6 +125,16 @@ public final class Survival {
      * @param novel       the obligation has been pending longer than any training obligation: no evidence
      */
     public record Estimate(double probability, double timeLeft, int atRisk, int longer, boolean novel) {
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Survival s && Arrays.equals(discharged, s.discharged) && Arrays.equals(censored, s.censored);
+    }
+
+    @Override
+    public int hashCode() {
+        return 31 * Arrays.hashCode(discharged) + Arrays.hashCode(censored);
     }
 
     private static double[] finiteSorted(double[] values, String what) {

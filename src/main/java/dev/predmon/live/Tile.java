@@ -92,6 +92,9 @@ public final class Tile {
         if (lastEvents.size() > LAST_EVENTS) {
             lastEvents.removeFirst();
         }
+        if (e instanceof MonitorEvent.Warning w && w.clause() == MonitorEvent.Clause.DEADLINE) {
+            return; // another property's deadline: in the last events, not the forecast property's light
+        }
         if (alarm.event(e, node)) {
             if (e instanceof MonitorEvent.Warning w && w.forecast() != null) {
                 setForecast(w.forecast(), node);

@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.Survival;
 import dev.predmon.parse.Clock;
 
 import java.util.List;
@@ -21,7 +22,12 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
         /** The thesis's matching: the run can only be one of the faulty scenarios. */
         MATCHING,
         /** The run does something no safe training run did, with its value below every safe run's lowest. */
-        NOVELTY;
+        NOVELTY,
+        /**
+         * A bounded response's deadline forecast: a miss at even odds, or an obligation pending past every training
+         * one ({@code DeadlineWatch}).
+         */
+        DEADLINE;
 
         /** As in JSON: {@code forecast}, {@code matching}, {@code novelty}. */
         public String id() {
@@ -46,12 +52,22 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param clause    which clause of the rule warned
      * @param scenario  the faulty scenario the run is most like: the first still matching, else the one whose
      *                  machine matched the run longest, or null when no faulty machine ever matched it
-     * @param property  the id of the property whose violation is predicted (the forecast's), or null when the
-     *                  abstraction has none
+     * @param property  the id of the property whose violation is predicted (the forecast's, or a bounded response's
+     *                  for a deadline), or null when the abstraction has none
+     * @param deadline  for {@link Clause#DEADLINE}, the deadline forecast that warned ({@code forecast} is then null);
+     *                  else null
      */
     record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run,
                    WarningRule rule, Forecast forecast, String reason, Clause clause, String scenario,
-                   String property) implements MonitorEvent {
+                   String property, Survival.Estimate deadline) implements MonitorEvent {
+
+        /** A warning of the forecast's property, or of the match rule. */
+        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+                       int run, WarningRule rule, Forecast forecast, String reason, Clause clause, String scenario,
+                       String property) {
+            this(time, line, scenarios, battery, pairs, clock, run, rule, forecast, reason, clause, scenario,
+                    property, null);
+        }
 
         /** A warning whose scenario is the first still matching, for a property not named. */
         public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,

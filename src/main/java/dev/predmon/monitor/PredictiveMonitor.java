@@ -96,7 +96,8 @@ public final class PredictiveMonitor implements PipelineListener {
         this.safety = abstraction.safety();
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety.orElse(null), forecast, this.events);
-        this.properties = new SafetyMonitor(abstraction, this.events);
+        this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
+                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, this::deadline);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
@@ -215,6 +216,12 @@ public final class PredictiveMonitor implements PipelineListener {
         } else if (forecast == null) {
             alarm.reading(record, v, null, false, run); // models without a forecast: recovered by the action alone
         }
+    }
+
+    /** A bounded response's deadline forecast warns: a warning of that property, beside the forecast's. */
+    private void deadline(LogRecord r, DeadlineWatch.Due d) {
+        events.accept(new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(), run, rule,
+                null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate()));
     }
 
     /** Reports {@code news} if it is news, and returns the latest forecast. */

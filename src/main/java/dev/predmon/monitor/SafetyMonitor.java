@@ -9,6 +9,7 @@ import dev.predmon.property.Verdict;
 
 import java.util.List;
 import java.util.Optional;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
 /**
@@ -26,8 +27,19 @@ final class SafetyMonitor {
     private final Consumer<MonitorEvent> events;
     private LogRecord record;
     private int run;
+    /** The deadline forecasts, or null when nothing warns by them (the match rule, models without a forecast). */
+    private final DeadlineWatch deadlines;
+    private final BiConsumer<LogRecord, DeadlineWatch.Due> dues;
 
     SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events) {
+        this(abstraction, events, null, (r, d) -> { });
+    }
+
+    /** As above, telling {@code dues} each deadline warning of {@code deadlines} with the record that raised it. */
+    SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events, DeadlineWatch deadlines,
+                  BiConsumer<LogRecord, DeadlineWatch.Due> dues) {
+        this.deadlines = deadlines;
+        this.dues = dues;
         Optional<Bound> forecast = abstraction.safety();
         this.forecastIndex = forecast.map(b -> abstraction.properties().indexOf(b)).orElse(-1);
         this.forecastId = forecast.map(Bound::id).orElse(null);
@@ -40,6 +52,9 @@ final class SafetyMonitor {
         this.record = r;
         this.run = run;
         checker.accept(r);
+        if (deadlines != null) {
+            deadlines.step(checker, d -> dues.accept(r, d));
+        }
     }
 
     private void violated(int index, Property p, Verdict.Violated v) {
@@ -52,6 +67,9 @@ final class SafetyMonitor {
     /** A new run: every property starts over. */
     void reset() {
         checker.reset();
+        if (deadlines != null) {
+            deadlines.reset();
+        }
     }
 
     /** The id of the property the forecast and the warnings are about, or null without one. */

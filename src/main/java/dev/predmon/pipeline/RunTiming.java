@@ -19,16 +19,35 @@ import java.util.List;
  * @param gaps          where the trace misses a step: the interface messages of the run that the abstraction cannot
  *                      name ({@link UnmappedMessages#novelty}), in order, so that the forecast made offline treats them
  *                      as {@code watch} does
+ * @param obligations   how each obligation of the abstraction's bounded-response properties ended in the run, in
+ *                      order: what the deadline forecast learns from
  */
 // Arrays: one number per pair, read by index; a run's timing is never compared or hashed.
 @SuppressWarnings("ArrayRecordComponent")
 public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
-                        double lowestSafeValue, String unit, List<Reading> readings, List<Gap> gaps) {
+                        double lowestSafeValue, String unit, List<Reading> readings, List<Gap> gaps,
+                        List<Obligation> obligations) {
+
+    /** As above, without obligations. */
+    public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
+                     String unit, List<Reading> readings, List<Gap> gaps) {
+        this(times, values, violationTime, endTime, lowestSafeValue, unit, readings, gaps, List.of());
+    }
 
     /** As above, with a trace that misses no step. */
     public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
                      String unit, List<Reading> readings) {
         this(times, values, violationTime, endTime, lowestSafeValue, unit, readings, List.of());
+    }
+
+    /**
+     * One obligation of a bounded-response property, as it ended.
+     *
+     * @param property   the property's id
+     * @param duration   how long it was pending, in the deadline's unit
+     * @param discharged whether its response came (else it was let go still pending: a censored duration)
+     */
+    public record Obligation(String property, double duration, boolean discharged) {
     }
 
     /**
@@ -59,6 +78,7 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
         values = values.clone();
         readings = List.copyOf(readings);
         gaps = List.copyOf(gaps);
+        obligations = List.copyOf(obligations);
     }
 
     /** No timing known for {@code pairs} pairs (every time and value NaN). */

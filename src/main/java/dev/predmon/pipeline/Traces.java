@@ -7,6 +7,7 @@ import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.property.Bound;
+import dev.predmon.property.PropertyChecker;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -164,15 +165,22 @@ public final class Traces {
         private List<RunTiming.Gap> gaps = new ArrayList<>();
         private double[] times = new double[64];
         private double[] values = new double[64];
+        /** The safety monitor's obligations, for the deadline forecast. */
+        private final PropertyChecker checker;
+        private List<RunTiming.Obligation> obligations = new ArrayList<>();
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
             this.abstraction = abstraction;
             this.safety = abstraction.safety();
             this.all = all;
+            this.checker = new PropertyChecker(abstraction.properties(), (i, p, v) -> { });
+            checker.onObligations((i, p, duration, discharged) ->
+                    obligations.add(new RunTiming.Obligation(p.id(), duration, discharged)));
         }
 
         @Override
         public void record(LogRecord record) {
+            checker.accept(record);
             if (!Double.isNaN(record.time())) {
                 endTime = record.time();
             }
@@ -239,10 +247,13 @@ public final class Traces {
         private void finish() {
             Map<String, List<Double>> frozen = new TreeMap<>();
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
+            checker.finish();
+            checker.reset();
             RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
-                    violationTime, endTime, lowestSafe, unit, changes, gaps);
+                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations);
             changes = new ArrayList<>();
             gaps = new ArrayList<>();
+            obligations = new ArrayList<>();
             done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated,
                     Collections.unmodifiableMap(frozen), timing));
             pairs = new ArrayList<>();

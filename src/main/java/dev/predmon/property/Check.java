@@ -29,6 +29,21 @@ abstract class Check {
         return Verdict.HOLDS;
     }
 
+    /** Told how each obligation of a bounded response ended; set by the checker. */
+    PropertyChecker.Obligations obligations = (duration, discharged) -> { };
+
+    /**
+     * How long the open obligation has been pending, in its deadline's unit (ticks, seconds, or occurrences of the
+     * counted event); NaN when none is open or the kind has none.
+     */
+    double elapsed() {
+        return Double.NaN;
+    }
+
+    /** The run ends: an obligation still open is told as censored at its elapsed time. */
+    void finish() {
+    }
+
     /** Whether the check reads a value (a bound's, which the forecast follows even after the violation). */
     boolean reads() {
         return false;

@@ -30,6 +30,29 @@ public final class PropertyChecker {
         void violated(int index, Property property, Verdict.Violated verdict);
     }
 
+    /**
+     * Told how each obligation of a bounded response ended: what learning measures the deadline forecast on
+     * ({@code forecast.Survival}).
+     */
+    @FunctionalInterface
+    public interface Obligations {
+        /**
+         * An obligation ended.
+         *
+         * @param duration   how long it was pending, in its deadline's unit
+         * @param discharged true when its response came; false when it was let go still pending (the deadline
+         *                   passed, its scope closed, or the run ended): a censored duration
+         */
+        void closed(double duration, boolean discharged);
+    }
+
+    /** Told each obligation's end with its property's position. */
+    @FunctionalInterface
+    public interface ObligationListener {
+        /** Property {@code index}'s obligation ended, as {@link Obligations#closed} tells it. */
+        void closed(int index, Property property, double duration, boolean discharged);
+    }
+
     /** A property with its verdict. */
     public record PropertyVerdict(Property property, Verdict verdict) {
     }
@@ -91,6 +114,23 @@ public final class PropertyChecker {
         }
     }
 
+    /** Tells {@code listener} how every obligation of a bounded response ends, from now on. */
+    public void onObligations(ObligationListener listener) {
+        for (int i = 0; i < checks.length; i++) {
+            int index = i;
+            Property p = properties.get(i);
+            checks[i].obligations = (duration, discharged) -> listener.closed(index, p, duration, discharged);
+        }
+    }
+
+    /**
+     * How long property {@code index}'s open obligation has been pending, in its deadline's unit; NaN when none is
+     * open (or the property is no bounded response).
+     */
+    public double elapsed(int index) {
+        return checks[index].elapsed();
+    }
+
     /** The value the last record gave property {@code index} (a {@link Bound}), or NaN when it gave none. */
     public double reading(int index) {
         return checks[index].reading;
@@ -116,6 +156,13 @@ public final class PropertyChecker {
     /** The properties checked, in order. */
     public List<Property> properties() {
         return properties;
+    }
+
+    /** The run ends (a new run, the end of the log): obligations still open are told as censored. */
+    public void finish() {
+        for (Check c : checks) {
+            c.finish();
+        }
     }
 
     /** A new run: every property starts over. */

@@ -20,6 +20,8 @@ final class ResponseCheck extends Check {
     private boolean answered;
     /** Whether the trigger's state (the condition held and no response lasted) held at the last reading. */
     private boolean owing;
+    /** Where the run was at the last record, in the deadline's unit. */
+    private double now;
 
     ResponseCheck(Response p) {
         this.p = p;
@@ -32,13 +34,16 @@ final class ResponseCheck extends Check {
             if (d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r)) {
                 count++;
             }
-            if (now(r, ticks) > deadline) {
+            now = now(r, ticks);
+            if (now > deadline) {
                 pending = false;
+                obligations.closed(now - since(), false);
                 return new Verdict.Violated(r.line(), r.time(), null, null, "no " + p.response().describe()
                         + " within " + d.describe() + " of " + p.describeTrigger() + " at line " + line);
             }
             if (p.response().matches(r)) {
                 pending = false;
+                obligations.closed(now - since(), true);
             }
         }
         if (p.cancelledBy() != null) {
@@ -50,9 +55,27 @@ final class ResponseCheck extends Check {
             line = r.line();
             count = d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r) ? 1 : 0;
             since = now(r, ticks);
+            now = since;
             deadline = d.unit() == Deadline.Unit.OCCURRENCES ? d.amount() : since + d.amount();
         }
         return null;
+    }
+
+    /** Where the obligation began, in the deadline's unit: occurrences count from none. */
+    private double since() {
+        return d.unit() == Deadline.Unit.OCCURRENCES ? 0 : since;
+    }
+
+    @Override
+    double elapsed() {
+        return pending ? now - since() : Double.NaN;
+    }
+
+    @Override
+    void finish() {
+        if (pending) {
+            obligations.closed(now - since(), false);
+        }
     }
 
     /** Where the run is, in the deadline's unit. */
@@ -87,6 +110,7 @@ final class ResponseCheck extends Check {
             return null;
         }
         pending = false;
+        obligations.closed(now - since(), false);
         return new Verdict.Violated(r.line(), r.time(), null, null, "the scope ended before "
                 + p.response().describe() + " answered " + p.describeTrigger() + " at line " + line);
     }

@@ -1,0 +1,127 @@
+package dev.predmon.monitor;
+
+import dev.predmon.forecast.Calibration;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.Lows;
+import dev.predmon.forecast.Survival;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordKind;
+import dev.predmon.property.Deadline;
+import dev.predmon.property.Event;
+import dev.predmon.property.Property;
+import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.RecordMatch;
+import dev.predmon.property.Response;
+import dev.predmon.property.Scope;
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * A navigation that must end within 10 ticks: how long its obligations stay pending is measured, and a pending one
+ * is forecast against what training runs took, on hand-made records.
+ */
+class DeadlineWatchTest {
+
+    private static final Response NAVIGATION = new Response("navigation-in-time", "a navigation ends in 10 ticks",
+            "check whether the robot is stuck", Scope.GLOBAL,
+            Event.of(new RecordMatch(RecordKind.COMMAND, "GoTo", "goTo", null, null, null, null)), null,
+            Event.of(new RecordMatch(RecordKind.REPLY, "GoTo", "getStatus", null, null, null, List.of("2"))), null,
+            new Deadline(10, Deadline.Unit.TICKS, null));
+
+    private long line = 1;
+
+    private LogRecord record(RecordKind kind, String protocol, String command, String reply) {
+        LogRecord r = new LogRecord(line, line, "DEBUG", kind, "/a", "/b", protocol, command, "", reply);
+        line += 7;
+        return r;
+    }
+
+    private LogRecord goTo() {
+        return record(RecordKind.COMMAND, "GoTo", "goTo", "");
+    }
+
+    private LogRecord arrived() {
+        return record(RecordKind.REPLY, "GoTo", "getStatus", "2");
+    }
+
+    private LogRecord tick() {
+        return record(RecordKind.TICK, "", "", "");
+    }
+
+    @Test
+    void obligationsAreMeasuredDischargedOrCensored() {
+        List<String> seen = new ArrayList<>();
+        PropertyChecker c = new PropertyChecker(List.<Property>of(NAVIGATION), (i, p, v) -> { });
+        c.onObligations((i, p, d, discharged) -> seen.add((discharged ? "discharged " : "censored ") + d));
+        c.accept(goTo());
+        c.accept(tick());
+        c.accept(tick());
+        assertEquals(2.0, c.elapsed(0));
+        c.accept(arrived());
+        assertTrue(Double.isNaN(c.elapsed(0)), "nothing pending once it arrived");
+        c.accept(goTo());
+        c.accept(tick());
+        c.finish(); // the run ends with the second navigation pending
+        c.reset();
+        c.accept(goTo());
+        for (int t = 0; t < 11; t++) {
+            c.accept(tick()); // the 11th tick is past the deadline: violated, and censored there
+        }
+        assertEquals(List.of("discharged 2.0", "censored 1.0", "censored 11.0"), seen);
+    }
+
+    @Test
+    void aNavigationPendingPastEveryTrainingOneIsWarnedHalfWayToItsDeadline() {
+        // training navigations took 2, 3, 3 and 4 ticks
+        Survival s = new Survival(new double[] {2, 3, 3, 4}, new double[0]);
+        PropertyChecker c = new PropertyChecker(List.<Property>of(NAVIGATION), (i, p, v) -> { });
+        DeadlineWatch w = new DeadlineWatch(List.of(NAVIGATION), model(s));
+        List<DeadlineWatch.Due> due = new ArrayList<>();
+        c.accept(goTo());
+        int warnedAt = -1;
+        for (int t = 1; t <= 10 && warnedAt < 0; t++) {
+            c.accept(tick());
+            w.step(c, due::add);
+            warnedAt = due.isEmpty() ? -1 : t;
+        }
+        assertEquals(7, warnedAt, "(4 + 10) / 2: past the longest training navigation, half way to the deadline");
+        DeadlineWatch.Due d = due.get(0);
+        assertTrue(d.estimate().novel());
+        assertEquals(3.0, d.estimate().timeLeft());
+        assertTrue(d.reason().contains("longer than any of the 4 training obligations"), d.reason());
+        for (int t = 0; t < 2; t++) {
+            c.accept(tick());
+            w.step(c, due::add);
+        }
+        assertEquals(1, due.size(), "once per obligation");
+    }
+
+    @Test
+    void aNavigationAsLongAsTrainingOnesIsNotWarnedAndNoTrainingMeansNoVerdict() {
+        Survival s = new Survival(new double[] {2, 3, 3, 4}, new double[0]);
+        PropertyChecker c = new PropertyChecker(List.<Property>of(NAVIGATION), (i, p, v) -> { });
+        DeadlineWatch w = new DeadlineWatch(List.of(NAVIGATION), model(s));
+        DeadlineWatch none = new DeadlineWatch(List.of(NAVIGATION), model(new Survival(new double[0], new double[0])));
+        List<DeadlineWatch.Due> due = new ArrayList<>();
+        c.accept(goTo());
+        for (int t = 0; t < 4; t++) {
+            c.accept(tick());
+            w.step(c, due::add);
+            none.step(c, due::add);
+        }
+        c.accept(arrived());
+        w.step(c, due::add);
+        assertTrue(due.isEmpty(), due.toString());
+    }
+
+    private static ForecastModel model(Survival s) {
+        return new ForecastModel(ForecastModel.FORMAT, "ticks", 20, 4, 0, new Lows(new double[] {30}, new double[0]),
+                0.9, "test", true, Map.of(), List.of(), Calibration.IDENTITY, Map.of(NAVIGATION.id(), s));
+    }
+}
