@@ -12,6 +12,7 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -121,7 +122,8 @@ public final class Replay {
                             List.copyOf(probabilities.getOrDefault(o.run(), List.of())), o.forecast(),
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
-                            times.getOrDefault(o.run(), List.of()))));
+                            times.getOrDefault(o.run(), List.of())),
+                    others(abstraction, events, o.run())));
         }
         return results;
     }
@@ -134,6 +136,30 @@ public final class Replay {
             }
         }
         untimed.clear();
+    }
+
+    /** Every property but the forecast's, with its first warning and violation in run {@code run}. */
+    private static List<RunResult.PropertyResult> others(Abstraction abstraction, List<MonitorEvent> events, int run) {
+        String forecast = abstraction.safety().map(Property::id).orElse(null);
+        List<RunResult.PropertyResult> out = new ArrayList<>();
+        for (Property p : abstraction.properties()) {
+            if (p.id().equals(forecast)) {
+                continue;
+            }
+            Double warning = null;
+            Double violation = null;
+            for (MonitorEvent e : events) {
+                if (e instanceof MonitorEvent.Warning w && w.run() == run && p.id().equals(w.property())
+                        && warning == null) {
+                    warning = w.time();
+                } else if (e instanceof MonitorEvent.Violation v && v.run() == run && p.id().equals(v.property())
+                        && violation == null) {
+                    violation = v.time();
+                }
+            }
+            out.add(new RunResult.PropertyResult(p.id(), warning, violation));
+        }
+        return out;
     }
 
     /**

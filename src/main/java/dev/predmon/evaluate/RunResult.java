@@ -39,12 +39,36 @@ import java.util.List;
  * @param beforeViolation  the value read just before the violation on the same channel, or null (no violation, or
  *                         the violation was the first reading): how far the value fell in the violating reading
  * @param forecast         the run's forecasts, or null when the models carry none
+ * @param properties       the abstraction's other properties (every one but the forecast's), each with its first
+ *                         warning and violation in the run, in file order
  */
 public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                         List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
-                        double start, int nearBound, Double beforeViolation, ForecastTrace forecast) {
+                        double start, int nearBound, Double beforeViolation, ForecastTrace forecast,
+                        List<PropertyResult> properties) {
+
+    /** A result without the other properties. */
+    public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
+                     Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
+                     Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
+                     List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
+                     double start, int nearBound, Double beforeViolation, ForecastTrace forecast) {
+        this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, batteryAtWarning,
+                violationTime, lead, noMatch, noMatchTime, records, pairs, problems, eliminations, safetyObserved, unit,
+                sudden, start, nearBound, beforeViolation, forecast, List.of());
+    }
+
+    /**
+     * One of the abstraction's other properties in the run.
+     *
+     * @param property  its id
+     * @param warning   the time of its first warning (a deadline forecast), or null
+     * @param violation the time of its violation, or null
+     */
+    public record PropertyResult(String property, Double warning, Double violation) {
+    }
 
     /** A result without forecasts. */
     public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,

@@ -2,6 +2,7 @@ package dev.predmon.report;
 
 import dev.predmon.evaluate.Confusion;
 import dev.predmon.evaluate.Evaluation;
+import dev.predmon.evaluate.PropertyScore;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.evaluate.ScenarioSummary;
 import dev.predmon.evaluate.Stats;
@@ -48,6 +49,17 @@ public final class TextReport {
         out.printf(Locale.ROOT, "recall %s, false-alarm rate %s (warning rule: %s)%n", percent(c.recall()),
                 percent(c.falseAlarmRate()), e.rule());
         ForecastTables.print(out, e);
+        List<PropertyScore> others = PropertyScore.of(e.runs());
+        if (!others.isEmpty()) {
+            out.println();
+            out.println("the other properties (warnings from their deadline forecasts; lead in the runs' unit)");
+            Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median");
+            for (PropertyScore p : others) {
+                t.row(p.property(), p.runs(), p.violating(), p.warned(), p.falseAlarms(),
+                        p.lead().n() == 0 ? "-" : String.format(Locale.ROOT, "%.1f", p.lead().median()));
+            }
+            t.print(out);
+        }
         out.println();
         out.println("times from the start of each run");
         Table runs = new Table("log", ">run", ">fold", "scenario", "verdict", ">warning", ">violation", ">lead",
