@@ -122,6 +122,6 @@ class DeadlineWatchTest {
 
     private static ForecastModel model(Survival s) {
         return new ForecastModel(ForecastModel.FORMAT, "ticks", 20, 4, 0, new Lows(new double[] {30}, new double[0]),
-                0.9, "test", true, Map.of(), List.of(), Calibration.IDENTITY, Map.of(NAVIGATION.id(), s));
+                0.9, "test", true, Map.of(), List.of(), Calibration.IDENTITY, List.of(), Map.of(NAVIGATION.id(), s));
     }
 }
