@@ -117,12 +117,12 @@ public final class SimulateCommand implements Callable<Integer> {
                     + "the tree reacts to the noisy reading, as a real one would. Default: ${DEFAULT-VALUE}.")
     double noise;
 
-    @Option(names = "--navigation-deadline", defaultValue = "300", paramLabel = "TICKS",
+    @Option(names = "--navigation-deadline", defaultValue = "400", paramLabel = "TICKS",
             description = "The truth's navigation-in-time: ticks a navigation has to reach its destination. "
                     + "Default: ${DEFAULT-VALUE}.")
     int navigationDeadline;
 
-    @Option(names = "--grasp-attempts", defaultValue = "5", paramLabel = "K",
+    @Option(names = "--grasp-attempts", defaultValue = "8", paramLabel = "K",
             description = "The truth's grasp-in-time: closeHand attempts a grasp has to hold. Default: ${DEFAULT-VALUE}.")
     int graspAttempts;
 
