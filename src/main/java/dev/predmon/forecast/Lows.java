@@ -120,7 +120,8 @@ public final class Lows {
         return copy;
     }
 
-    private static int atMost(double[] sorted, double value) {
+    /** How many of {@code sorted} are at most {@code value}; all of them when it is NaN. */
+    static int atMost(double[] sorted, double value) {
         if (Double.isNaN(value)) {
             return sorted.length;
         }

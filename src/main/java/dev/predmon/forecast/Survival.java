@@ -82,13 +82,13 @@ public final class Survival {
 
     /** The Kaplan-Meier estimate of P(still pending after {@code t}); 1 before the first discharge. */
     public double survival(double t) {
-        int i = atMost(times, t);
+        int i = Lows.atMost(times, t);
         return i == 0 ? 1.0 : after[i - 1];
     }
 
     /** Training obligations still pending after {@code t}: at risk of missing a deadline beyond it. */
     public int pendingAfter(double t) {
-        return discharged.length - atMost(discharged, t) + censored.length - atMost(censored, t);
+        return discharged.length - Lows.atMost(discharged, t) + censored.length - Lows.atMost(censored, t);
     }
 
     /** Of those, how many are known to have been still pending after {@code deadline}. */
@@ -160,19 +160,5 @@ public final class Survival {
             }
         }
         return sorted.length - lo;
-    }
-
-    private static int atMost(double[] sorted, double value) {
-        int lo = 0;
-        int hi = sorted.length;
-        while (lo < hi) {
-            int mid = (lo + hi) >>> 1;
-            if (sorted[mid] <= value) {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        return lo;
     }
 }
