@@ -1,19 +1,22 @@
 package dev.predmon.cli;
 
+import dev.predmon.BadInputException;
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
+import dev.predmon.monitor.LogWatcher;
+import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.pipeline.LogTrace;
-import dev.predmon.pipeline.RunTiming;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.OptionalInt;
 import java.util.concurrent.Callable;
 
 /** {@code predmon classify}: Algorithm 7 on a complete log. */
@@ -21,8 +24,9 @@ import java.util.concurrent.Callable;
         description = {"Classify a complete log against every model (thesis Algorithm 7): discrepancies per model, "
                 + "the models eliminated (an input they cannot take, or more discrepancies than --threshold), the "
                 + "best match and whether it is faulty.",
-                "Exit 6 when the property is violated before the run could only be faulty, else 1 when the "
-                        + "best match is a faulty scenario, 5 when no model matches, 0 otherwise; 3 when the log holds "
+                "Then the verdict watch reaches at the end of the same log, from the same replay: its exit code is "
+                        + "classify's. Exit 6 when the property is violated with no warning before it, else 1 when a "
+                        + "warning came, 5 when no model matches the run at its end, 0 otherwise; 3 when the log holds "
                         + "nothing to judge."})
 final class ClassifyCommand implements Callable<Integer> {
 
@@ -37,46 +41,55 @@ final class ClassifyCommand implements Callable<Integer> {
         LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
         ModelSet set = in.models();
         PrintWriter out = spec.commandLine().getOut();
+        int code = watchCode(set, in.abstraction());
         // A log of several runs (the tick counter started again) is classified run by run.
         List<MealyTrace> runs = in.trace().judgedRuns();
         List<LogTrace.Run> inFull = in.trace().judgedRunsInFull();
         List<Result> results = new ArrayList<>();
-        List<Integer> codes = new ArrayList<>();
         for (int i = 0; i < runs.size(); i++) {
             MealyTrace run = runs.get(i);
             Classifier.Result r = Classifier.classify(set, run, input.threshold());
             boolean violated = i < inFull.size() && inFull.get(i).violated();
-            boolean unwarned = violated && !before(r.onlyFaultyFrom(), inFull.get(i).timing());
-            codes.add(ExitCodes.of(unwarned, r.best().isEmpty(), r.faulty()));
             if (input.json) {
                 List<Score> scores = r.scores().stream().map(s -> new Score(s.model().id(), s.model().scenario(),
                         s.model().faulty(), s.eliminated(), s.discrepancies(),
                         s.failure() == null ? null : s.failure().describe())).toList();
                 results.add(new Result(run.source(), run.pairs(), scores,
                         r.best().map(s -> s.model().id()).orElse(null),
-                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty(), violated));
+                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty(), violated, code));
             } else {
                 print(out, r, run);
-                if (unwarned) {
-                    out.println("the property is violated before the run could only be faulty: no warning would have "
-                            + "come before it");
-                }
             }
         }
         if (input.json) {
             out.println(Json.line(results.size() == 1 ? results.get(0) : new Runs(input.log().toString(), results)));
+        } else {
+            out.println("watch's verdict at the end of the log: " + words(code) + " (exit " + code + ")");
         }
         out.flush();
-        return ExitCodes.ofRuns(codes.stream().mapToInt(Integer::intValue));
+        return code;
     }
 
     /**
-     * Whether the run could only be faulty from a pair that came strictly before the violation: what watch's matching
-     * would have warned in time.
+     * The code {@code watch --no-follow} gives this log: the log replayed through watch's own monitor, with its
+     * default rule and confirmation, so that the two commands cannot disagree.
      */
-    private static boolean before(OptionalInt pair, RunTiming timing) {
-        return pair.isPresent() && pair.getAsInt() < timing.times().length
-                && timing.times()[pair.getAsInt()] < timing.violationTime();
+    private int watchCode(ModelSet set, Abstraction abstraction) throws IOException, BadInputException {
+        PredictiveMonitor m = new PredictiveMonitor(set, abstraction, input.threshold(), abstraction.confirm(),
+                PredictiveMonitor.defaultRule(set), e -> { });
+        try (LogWatcher w = LogWatcher.withRecords(input.log(), m, p -> { }, r -> { })) {
+            w.drain();
+        }
+        return ExitCodes.ofMonitor(m);
+    }
+
+    private static String words(int code) {
+        return switch (code) {
+            case ExitCodes.UNWARNED_VIOLATION -> "the property was violated with no warning before it";
+            case ExitCodes.WARNING -> "a warning was raised";
+            case ExitCodes.NO_MATCH -> "no learned model matches the run";
+            default -> "no warning, and a nominal model matches";
+        };
     }
 
     private void print(PrintWriter out, Classifier.Result r, MealyTrace run) {
@@ -102,6 +115,6 @@ final class ClassifyCommand implements Callable<Integer> {
 
     /** The {@code --json} document. */
     record Result(String log, int pairs, List<Score> models, String best, String scenario, boolean faulty,
-                  boolean violated) {
+                  boolean violated, int watchExit) {
     }
 }

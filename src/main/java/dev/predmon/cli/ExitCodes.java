@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunsSummary;
 
 import java.util.Arrays;
@@ -53,6 +54,15 @@ public final class ExitCodes {
      */
     static int ofRuns(RunsSummary runs) {
         return ofRuns(runs.unwarnedViolation(), runs.warnedMatching(), runs.noMatch());
+    }
+
+    /**
+     * Watch's code for a log {@code m} judged to its end: the run's {@link #of} code, or {@link #ofRuns(RunsSummary)}
+     * for a log of several runs. {@code classify} gives the same, from the same replay.
+     */
+    static int ofMonitor(PredictiveMonitor m) {
+        RunsSummary all = m.summary();
+        return all.runs() == 1 ? of(all.unwarnedViolation(), all.noMatch(), m.warning().isPresent()) : ofRuns(all);
     }
 
     /** {@link #ofRuns(RunsSummary)} from each run's {@link #of} code. */

@@ -288,8 +288,7 @@ final class WatchCommand implements Callable<Integer> {
             }
         }
         out.flush();
-        return all.runs() == 1 ? ExitCodes.of(all.unwarnedViolation(), all.noMatch(), m.warning().isPresent())
-                : ExitCodes.ofRuns(all);
+        return ExitCodes.ofMonitor(m);
     }
 
     /** What begins a property's verdict line: the wall-clock time with --timestamps, the log's name in a fleet. */
