@@ -24,7 +24,8 @@ public final class HookEnvironment {
      * ({@code s} or {@code ticks}), PREDMON_LINE, PREDMON_PROPERTY (the property's id), PREDMON_VALUE (its last
      * value, two decimals) and PREDMON_BATTERY (the same, the older name); for a warning PREDMON_SCENARIO (the faulty
      * scenario the run is most like), PREDMON_SCENARIOS (the faulty scenarios still matching, comma-separated),
-     * PREDMON_PROBABILITY (two decimals) and PREDMON_TIME_TO_VIOLATION (in PREDMON_UNIT, as the page rounds it); for
+     * PREDMON_PROBABILITY (two decimals; for a deadline's warning its probability of a miss, empty past every training
+ * obligation) and PREDMON_TIME_TO_VIOLATION (in PREDMON_UNIT, as the page rounds it; empty for a deadline); for
      * a violation PREDMON_BEFORE (the value before the violating one).
      *
      * @param bound the property's bound, below which it is violated (NaN when not known): a value below it is rounded
@@ -38,7 +39,9 @@ public final class HookEnvironment {
             env.put("PREDMON_SCENARIO", w.scenario() == null ? "" : w.scenario());
             env.put("PREDMON_SCENARIOS", String.join(",", w.scenarios()));
             Forecast f = w.forecast();
-            env.put("PREDMON_PROBABILITY", f == null ? "" : fixed(f.probability(), 2, RoundingMode.HALF_UP));
+            env.put("PREDMON_PROBABILITY", f != null ? fixed(f.probability(), 2, RoundingMode.HALF_UP)
+                    : w.deadline() != null && !w.deadline().novel()
+                    ? fixed(w.deadline().probability(), 2, RoundingMode.HALF_UP) : "");
             env.put("PREDMON_TIME_TO_VIOLATION", f == null || f.timeToViolation() == null ? ""
                     : span(f.timeToViolation(), w.clock().unit()));
         } else if (event instanceof MonitorEvent.Violation v) {
