@@ -278,11 +278,14 @@ public final class ModelStore {
         return Objects.equals(before, identity(base)) && modelsAt(dir).equals(base);
     }
 
-    /** Which directory {@code dir} is now (its file key, an inode), or null when there is none. */
+    /**
+     * Which directory {@code dir} is now, or null when there is none: its file key (an inode) with its last
+     * modification, since a directory learn removed gives its inode back and the next learn's may get it again.
+     */
     private static Object identity(Path dir) {
         try {
             BasicFileAttributes a = Files.readAttributes(dir, BasicFileAttributes.class);
-            return a.fileKey() != null ? a.fileKey() : a.creationTime();
+            return List.of(a.fileKey() != null ? a.fileKey() : a.creationTime(), a.lastModifiedTime());
         } catch (IOException e) {
             return null;
         }
