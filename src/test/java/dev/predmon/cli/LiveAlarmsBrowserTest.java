@@ -8,6 +8,7 @@ import dev.predmon.live.Tile;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.Clock;
+import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.AfterAll;
@@ -24,13 +25,11 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * The live page's alarms and names in a real browser (headless Chromium at 1920x1080): a warned run that recovered
@@ -44,44 +43,30 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 class LiveAlarmsBrowserTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
-    private static final int WIDTH = 1920;
-    private static final int HEIGHT = 1080;
+    private static final int WIDTH = BrowserTabs.WIDTH;
     private static final Set<String> DOCUMENTED = Set.of("live-alarms.png", "live-single.png", "live-names.png");
-    private static HeadlessChromium browser;
-    private final List<HeadlessChromium.Page> pages = new ArrayList<>();
+    private static BrowserTabs tabs;
 
     @TempDir
     Path dir;
 
     @BeforeAll
     static void startBrowser() throws Exception {
-        Optional<Path> chromium = HeadlessChromium.find();
-        if (chromium.isPresent()) {
-            browser = HeadlessChromium.start(chromium.get(), WIDTH, HEIGHT);
-        }
+        tabs = BrowserTabs.start();
     }
 
     @AfterAll
     static void stopBrowser() throws Exception {
-        if (browser != null) {
-            browser.close();
-        }
+        tabs.close();
     }
 
     @AfterEach
     void closeTabs() throws Exception {
-        for (HeadlessChromium.Page p : pages) {
-            p.call("Page.close", JSON.createObjectNode());
-        }
+        tabs.closeTabs();
     }
 
     private HeadlessChromium.Page open(URI url) throws Exception {
-        assumeTrue(browser != null, "no Chromium found (apt-get install chromium, or -Dpredmon.chromium=PATH): the "
-                + "live page's alarms are not tested in a browser");
-        HeadlessChromium.Page page = browser.open(URI.create("about:blank"));
-        pages.add(page);
-        page.call("Emulation.setDeviceMetricsOverride", JSON.createObjectNode().put("width", WIDTH)
-                .put("height", HEIGHT).put("deviceScaleFactor", 1).put("mobile", false));
+        HeadlessChromium.Page page = tabs.blank("the live page's alarms are not tested in a browser");
         page.call("Page.navigate", JSON.createObjectNode().put("url", url.toString()));
         return page;
     }

@@ -11,6 +11,7 @@ import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.simulate.Scenario;
+import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
 import dev.predmon.support.Records;
 import org.junit.jupiter.api.AfterAll;
@@ -28,13 +29,11 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * The live page as an operator beside the robots uses it, in a real browser (headless Chromium at 1920x1080): the
@@ -49,46 +48,32 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 class LivePageBrowserTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
-    private static final int WIDTH = 1920;
-    private static final int HEIGHT = 1080;
+    private static final int WIDTH = BrowserTabs.WIDTH;
+    private static final int HEIGHT = BrowserTabs.HEIGHT;
     /** The screenshots the documentation shows. */
     private static final Set<String> DOCUMENTED = Set.of("live-fleet.png", "live-compact.png");
-    private static HeadlessChromium browser;
-    private final List<HeadlessChromium.Page> pages = new ArrayList<>();
+    private static BrowserTabs tabs;
 
     @TempDir
     Path dir;
 
     @BeforeAll
     static void startBrowser() throws Exception {
-        Optional<Path> chromium = HeadlessChromium.find();
-        if (chromium.isPresent()) {
-            browser = HeadlessChromium.start(chromium.get(), WIDTH, HEIGHT);
-        }
+        tabs = BrowserTabs.start();
     }
 
     @AfterAll
     static void stopBrowser() throws Exception {
-        if (browser != null) {
-            browser.close();
-        }
+        tabs.close();
     }
 
-    /** Each test's tabs are closed after it, so that none keeps polling a server that is gone. */
     @AfterEach
     void closeTabs() throws Exception {
-        for (HeadlessChromium.Page p : pages) {
-            p.call("Page.close", JSON.createObjectNode());
-        }
+        tabs.closeTabs();
     }
 
     private HeadlessChromium.Page open(URI url) throws Exception {
-        assumeTrue(browser != null, "no Chromium found (apt-get install chromium, or -Dpredmon.chromium=PATH): the "
-                + "live page is not tested in a browser");
-        HeadlessChromium.Page page = browser.open(URI.create("about:blank"));
-        pages.add(page);
-        page.call("Emulation.setDeviceMetricsOverride", JSON.createObjectNode().put("width", WIDTH)
-                .put("height", HEIGHT).put("deviceScaleFactor", 1).put("mobile", false));
+        HeadlessChromium.Page page = tabs.blank("the live page is not tested in a browser");
         // Stand-ins for the browser's notifications and sound, which a headless browser cannot show or play.
         page.call("Page.enable", JSON.createObjectNode());
         page.call("Page.addScriptToEvaluateOnNewDocument", JSON.createObjectNode().put("source", """
