@@ -91,11 +91,6 @@ public final class Survival {
         return discharged.length - Lows.atMost(discharged, t) + censored.length - Lows.atMost(censored, t);
     }
 
-    /** Of those, how many are known to have been still pending after {@code deadline}. */
-    public int pendingAfterBoth(double t, double deadline) {
-        return pendingAfter(Math.max(t, deadline));
-    }
-
     /**
      * The forecast of an obligation pending for {@code elapsed} against {@code deadline} (same unit).
      *
@@ -112,7 +107,7 @@ public final class Survival {
         double now = survival(elapsed);
         double km = now <= 0 ? 1.0 : Math.min(1.0, survival(Math.max(elapsed, deadline)) / now);
         double p = (atRisk * km + ForecastModel.PRIOR_RUNS * base) / (atRisk + ForecastModel.PRIOR_RUNS);
-        return new Estimate(p, left, atRisk, pendingAfterBoth(elapsed, deadline), false);
+        return new Estimate(p, left, atRisk, pendingAfter(Math.max(elapsed, deadline)), false);
     }
 
     /**

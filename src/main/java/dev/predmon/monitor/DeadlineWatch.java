@@ -8,6 +8,7 @@ import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
 import dev.predmon.property.Response;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
@@ -88,7 +89,7 @@ final class DeadlineWatch {
 
     /** A new run. */
     void reset() {
-        java.util.Arrays.fill(warned, false);
+        Arrays.fill(warned, false);
     }
 
     /**
