@@ -50,7 +50,9 @@ final class FollowedLog implements RecordSource {
         private void record(LogRecord record) {
             if (replacement) {
                 replacement = false;
-                sink.restarted("replaced");
+                if (this == current || !current.gaveRecord) { // else a later file began the run under way
+                    sink.restarted("replaced");
+                }
             }
             if (this != current && current.gaveRecord && !toldTwoWriters) {
                 toldTwoWriters = true;
