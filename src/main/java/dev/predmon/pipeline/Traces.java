@@ -3,9 +3,11 @@ package dev.predmon.pipeline;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.IoPair;
-import dev.predmon.parse.LogReader;
+import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
+import dev.predmon.parse.RecordSink;
+import dev.predmon.parse.RecordSource;
 import dev.predmon.property.Bound;
 import dev.predmon.property.PropertyChecker;
 
@@ -43,14 +45,17 @@ public final class Traces {
         List<ParseProblem> problems = new ArrayList<>();
         RunCollector runs = new RunCollector(abstraction, pairs);
         TracePipeline pipeline = new TracePipeline(abstraction, runs);
-        long[] lines = {0};
-        LogReader.read(log, pipeline::accept, p -> {
+        long lines;
+        try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(pipeline::accept, p -> {
             if (problems.size() < MAX_PROBLEMS) {
                 problems.add(p);
             }
-        }, n -> lines[0] = n);
+        }))) {
+            source.drain();
+            lines = source.lines();
+        }
         pipeline.endOfInput();
-        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), lines[0], pipeline.records(),
+        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), lines, pipeline.records(),
                 pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs(), pipeline.span());
     }
 
