@@ -38,7 +38,7 @@ final class ExplainCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
-        List<Explanation> runs = Explanation.of(in.trace(), in.models(), in.abstraction(), input.threshold(),
+        List<Explanation> runs = Explanation.of(input.log(), in.models(), in.abstraction(), input.threshold(),
                 confirm.value(in.abstraction()));
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.
@@ -90,11 +90,12 @@ final class ExplainCommand implements Callable<Integer> {
         boolean nominal = x.models().stream().anyMatch(f -> !f.faulty() && f.matched());
         int lastNominal = x.models().stream().filter(f -> !f.faulty() && f.stoppedAt() != null)
                 .mapToInt(Explanation.ModelFate::stoppedAt).max().orElse(-1);
-        boolean outlived = x.models().stream().anyMatch(f -> f.faulty()
-                && (f.matched() || (f.stoppedAt() != null && f.stoppedAt() > lastNominal)));
+        boolean outlived = x.matchRuleAt() >= 0; // the monitor's own match rule, confirm included
         String matching = nominal ? "a nominal model matches the whole run"
                 : outlived ? "every nominal model was eliminated by pair " + lastNominal + " while a faulty one still "
-                + "matched" : "no faulty model was left when the last nominal one was eliminated";
+                + "matched (the thesis's rule holds from pair " + x.matchRuleAt() + ")"
+                : "no faulty model still matched " + (lastNominal < 0 ? "" : "after pair " + lastNominal + " ")
+                + "as long as the rule asks (confirm)";
         if (x.warning() != null) {
             out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d), rule %s: %s%n", x.warning().time(),
                     x.warning().line(), x.rule().id(), x.warning().reason());

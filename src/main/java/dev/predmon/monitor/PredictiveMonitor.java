@@ -53,6 +53,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private Double battery;
     private Clock clock = Clock.SECONDS;
     private long pairs;
+    /** The pair of the current run at which the thesis's match rule first held (confirm included), or -1. */
+    private long matchRuleAt = -1;
     private int run;
     private long runLine = 1;
     private final RunHistory finished = new RunHistory();
@@ -66,6 +68,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private final Alarm alarm;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
     private TickSeconds ticks = TickSeconds.NONE;
+    /** Sees what the pipeline gives the monitor, each just before the monitor takes it (the replay's stream). */
+    private PipelineListener tee = (pair, trigger) -> { };
 
     /** As below, confirming as the abstraction says ({@link Abstraction#confirm()}). */
     public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, Consumer<MonitorEvent> events) {
@@ -138,6 +142,7 @@ public final class PredictiveMonitor implements PipelineListener {
     /** A new run begins in the log: its outcome is kept and every model starts over. */
     @Override
     public void runStarted(int number, LogRecord first) {
+        tee.runStarted(number, first);
         finished.add(current());
         startRun(runsBefore + number, first.line());
         events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
@@ -157,6 +162,7 @@ public final class PredictiveMonitor implements PipelineListener {
         noMatch = false;
         battery = null;
         pairs = 0;
+        matchRuleAt = -1;
         alarm.reset();
         properties.reset();
         if (forecast != null) {
@@ -186,6 +192,7 @@ public final class PredictiveMonitor implements PipelineListener {
     /** A record: the action under way; a reading's violation, recovery, forecast and warning ({@link Alarm}). */
     @Override
     public void record(LogRecord record) {
+        tee.record(record);
         clock = ticks.clock(record.clock());
         properties.accept(record, run);
         alarm.record(record, run);
@@ -248,11 +255,13 @@ public final class PredictiveMonitor implements PipelineListener {
 
     @Override
     public void unmapped(String key, LogRecord record) {
+        tee.unmapped(key, record);
         events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
     }
 
     @Override
     public void gap(LogRecord record) {
+        tee.gap(record);
         if (forecast != null) {
             forecast.unseen(record.line());
         }
@@ -260,8 +269,12 @@ public final class PredictiveMonitor implements PipelineListener {
 
     @Override
     public void pair(IoPair pair, LogRecord trigger) {
+        tee.pair(pair, trigger);
         pairs++;
         Matching.Step step = matching.pair(pair);
+        if (step.ruleWarns() && matchRuleAt < 0) {
+            matchRuleAt = pairs - 1;
+        }
         for (ModelTracker t : step.eliminated()) {
             LearnedModel m = t.model();
             events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
@@ -313,6 +326,14 @@ public final class PredictiveMonitor implements PipelineListener {
         this.everyForecast = each;
     }
 
+    /**
+     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before the
+     * monitor takes it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
+     */
+    public void tee(PipelineListener also) {
+        this.tee = also;
+    }
+
     /** The rule this monitor warns by. */
     public WarningRule rule() {
         return rule;
@@ -361,6 +382,14 @@ public final class PredictiveMonitor implements PipelineListener {
     /** What the log's times count: seconds, or ticks in a log without time stamps (seconds until a record says). */
     public Clock clock() {
         return clock;
+    }
+
+    /**
+     * The pair (0-based) of the current run after which the thesis's match rule first held, {@code confirm} pairs
+     * included, whether or not the rule in force warned there; -1 while it has not.
+     */
+    public long matchRuleAt() {
+        return matchRuleAt;
     }
 
     /** Compacted pairs matched so far. */
