@@ -1,10 +1,13 @@
 package dev.predmon.cli;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.explain.Explanation;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.WarningRule;
+import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -37,9 +40,10 @@ final class ExplainCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
-        List<Explanation> runs = Explanation.of(input.log(), in.models(), in.abstraction(), input.threshold(),
-                confirm.value(in.abstraction()));
+        Abstraction abstraction = input.tuned();
+        Replay.Approach approach = Explanation.approach(input.models(), abstraction);
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), confirm.value(abstraction), approach::record);
+        List<Explanation> runs = Explanation.of(replayed, input.models(), abstraction, approach);
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.
             List<ExplanationJson> json = runs.stream().map(ExplanationJson::of).toList();

@@ -96,7 +96,7 @@ public final class Replay {
                     verdict, warningTime, warning == null ? null : warning.line(),
                     warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.battery(),
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
-                    runs.size() == 1 ? replayed.records() : -1, o.pairs(), replayed.problems(),
+                    runs.size() == 1 ? replayed.records() : -1, o.pairs(), replayed.problems().size(),
                     List.copyOf(eliminations), o.safetyObserved(), replayed.unit(),
                     violation != null && approach.near(o.run()) < RunResult.SUDDEN_READINGS, approach.start(o.run()),
                     approach.near(o.run()), violation == null ? null : violation.before(),

@@ -77,10 +77,21 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
      */
     public static List<Explanation> of(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
             throws IOException {
-        WarningRule rule = PredictiveMonitor.defaultRule(models);
-        Replay.Approach approach = new Replay.Approach(abstraction.safety().orElse(null),
+        Replay.Approach approach = approach(models, abstraction);
+        return of(LogReplay.replay(log, models, abstraction, threshold, confirm, PredictiveMonitor.defaultRule(models),
+                approach::record), models, abstraction, approach);
+    }
+
+    /** What the verdicts of an explanation need of each record as it is replayed ({@link Replay.Approach}). */
+    public static Replay.Approach approach(ModelSet models, Abstraction abstraction) {
+        return new Replay.Approach(abstraction.safety().orElse(null),
                 models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
-        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, threshold, confirm, rule, approach::record);
+    }
+
+    /** Explains a log already replayed, {@code approach} having taken its records: one explanation per run. */
+    public static List<Explanation> of(ReplayedLog replayed, ModelSet models, Abstraction abstraction,
+                                       Replay.Approach approach) {
+        WarningRule rule = replayed.monitor().rule();
         List<RunResult> verdicts = Replay.of(replayed, "?", false, RunLabel.ALL, -1, models, abstraction, approach);
         List<Explanation> all = new ArrayList<>();
         for (int i = 0; i < replayed.runs().size(); i++) {

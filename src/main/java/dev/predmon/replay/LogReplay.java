@@ -10,6 +10,7 @@ import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.PipelineListener;
 
 import java.io.IOException;
@@ -69,10 +70,12 @@ public final class LogReplay {
         });
         monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
                 current[0].time(), current[0].line(), monitor.pairs())));
-        int[] problems = {0};
-        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> problems[0]++,
+        List<ParseProblem> problems = new ArrayList<>();
+        long lines;
+        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, problems::add,
                 r -> taken.accept(r, monitor.run()))) {
             watcher.drain();
+            lines = watcher.lines();
         }
         of(runs, monitor.run()).end(monitor);
         List<ReplayedRun> out = new ArrayList<>();
@@ -81,7 +84,7 @@ public final class LogReplay {
             out.add(new ReplayedRun(o.run(), o, b.pairs, b.gaps, b.forecasts,
                     b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt));
         }
-        return new ReplayedLog(log, out, problems[0], monitor);
+        return new ReplayedLog(log, out, problems, lines, monitor);
     }
 
     /** As above, with the models' default rule ({@link PredictiveMonitor#defaultRule}) and no record hook. */

@@ -1,6 +1,9 @@
 package dev.predmon.replay;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.parse.ParseProblem;
+import dev.predmon.pipeline.Evidence;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -10,13 +13,23 @@ import java.util.List;
  *
  * @param log      the file
  * @param runs     every run the log holds, in order
- * @param problems the lines the parser could not read
+ * @param problems what the parser could not read, in line order
+ * @param lines    the lines of the file
  * @param monitor  the monitor that took it, at the end of the input (its summary gives watch's verdict)
  */
-public record ReplayedLog(Path log, List<ReplayedRun> runs, int problems, PredictiveMonitor monitor) {
+public record ReplayedLog(Path log, List<ReplayedRun> runs, List<ParseProblem> problems, long lines,
+                          PredictiveMonitor monitor) {
 
     public ReplayedLog {
         runs = List.copyOf(runs);
+        problems = List.copyOf(problems);
+    }
+
+    /** What the log gives to judge it by, as {@code watch} sees it at the end of the file. */
+    public Evidence evidence(Abstraction abstraction) {
+        return new Evidence(log, () -> lines, monitor.records(), monitor.interfaceRecords(), monitor.summary().pairs(),
+                monitor.unmapped(), abstraction, problems.isEmpty() ? null : problems.get(0),
+                monitor.pipeline().span());
     }
 
     /** Records read from the log. */
