@@ -3,7 +3,6 @@ package dev.predmon.monitor;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
-import dev.predmon.forecast.ForecastWords;
 import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
 import dev.predmon.matching.ModelTracker;
@@ -31,7 +30,8 @@ import java.util.function.ObjIntConsumer;
  * <p>The forecast ({@link ForecastTracker}) follows the same pairs when the models carry one: a probability of
  * violation and a time to it after every pair, also through behaviour no model has seen. With the default
  * {@link WarningRule#FORECAST} rule the monitor warns when that probability reaches the threshold learned with the
- * models; the thesis's rule below stays available as {@link WarningRule#MATCH}.
+ * models; the thesis's rule below stays available as {@link WarningRule#MATCH}. Whether to warn is decided in one
+ * place, {@link WarningPolicy}: the monitor feeds it and tells its warnings.
  *
  * The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
  * {@code confirm} more pairs ({@link Abstraction#confirm()}). Per record the work and the state are constant.
@@ -66,6 +66,7 @@ public final class PredictiveMonitor implements PipelineListener {
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private final Alarm alarm;
+    private final WarningPolicy policy;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
     private TickSeconds ticks = TickSeconds.NONE;
     /** Sees what the pipeline gives the monitor, each just before the monitor takes it (the replay's stream). */
@@ -100,6 +101,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.safety = abstraction.safety();
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety.orElse(null), forecast, this.events);
+        this.policy = new WarningPolicy(rule, forecast, alarm);
         this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
                 ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, this::deadline);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
@@ -214,11 +216,10 @@ public final class PredictiveMonitor implements PipelineListener {
         alarm.holdsAgain(record, v, run);
         if (forecast != null && (before == null || before != v)) {
             Forecast f = told(forecast.reading(record.time(), v), record);
-            boolean warns = rule == WarningRule.FORECAST && forecast.warns(f, !matching.nominalAlive());
-            alarm.reading(record, v, f, warns, run);
-            if (warns && !alarm.violated() && alarm.mayWarn(forecast.clause(f))) {
-                warn(record, matching.faultyAlive(), forecast.reason(f, "at the new reading "
-                        + ForecastWords.fixed(v, 2)), f, forecast.clause(f));
+            alarm.reading(record, v, f, policy.forecastWarns(f, !matching.nominalAlive()), run);
+            WarningPolicy.Decision d = policy.atReading(f, v, !matching.nominalAlive());
+            if (d != null) {
+                warn(record, matching.faultyAlive(), d.reason(), f, d.clause());
             }
         } else if (forecast == null) {
             alarm.reading(record, v, null, false, run); // models without a forecast: recovered by the action alone
@@ -282,20 +283,9 @@ public final class PredictiveMonitor implements PipelineListener {
         }
         Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
-        if (alarm.quiet() && (rule == WarningRule.MATCH || !alarm.violated())) {
-            String reason = null;
-            MonitorEvent.Clause clause = MonitorEvent.Clause.MATCHING;
-            if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f, step))
-                    && alarm.mayWarn(clause)) {
-                reason = MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
-                        + (f == null ? "" : "; " + ForecastWords.line(f));
-            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f, !step.nominalAlive())) {
-                reason = forecast.reason(f, "after " + pair.input() + " -> " + pair.output());
-                clause = forecast.clause(f);
-            }
-            if (reason != null) {
-                warn(trigger, step.faultyAlive(), reason, f, clause);
-            }
+        WarningPolicy.Decision d = policy.atPair(pair, step, f);
+        if (d != null) {
+            warn(trigger, step.faultyAlive(), d.reason(), f, d.clause());
         }
         if (!noMatch && step.noMatch()) {
             noMatch = true;
