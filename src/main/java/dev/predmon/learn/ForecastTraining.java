@@ -25,9 +25,10 @@ import java.util.function.Predicate;
 
 /**
  * Learns the forecast that goes with the machines: the per-state statistics over every training run
- * ({@link StatsLearner}), and the warning threshold chosen by cross-validation over the same runs: each fold's
- * machines and statistics are learned without it, its runs are forecast pair by pair, and each run's highest
- * forecast before its violation decides ({@link ThresholdChoice}).
+ * ({@link StatsLearner}), and the warning threshold chosen by cross-validation over the same runs ({@link Folds}):
+ * each fold's machines and statistics are learned without it, its logs are replayed through {@code watch}'s own monitor
+ * with them ({@link HeldOutRun#replay}), and each run's highest forecast before its violation decides
+ * ({@link ThresholdChoice}).
  *
  * <p>The forecast rule also warns where the thesis's rule would, when every nominal machine was contradicted (every
  * nominal machine eliminated by an output it predicted otherwise while a faulty one matches, {@code confirm} pairs
