@@ -98,8 +98,9 @@ final class ExplainCommand implements Callable<Integer> {
         String matching = nominal ? "a nominal model matches the whole run"
                 : outlived ? "every nominal model was eliminated by pair " + lastNominal + " while a faulty one still "
                 + "matched (the thesis's rule holds from pair " + x.matchRuleAt() + ")"
-                : "no faulty model still matched " + (lastNominal < 0 ? "" : "after pair " + lastNominal + " ")
-                + "as long as the rule asks (confirm)";
+                : lastNominal < 0 ? "the models hold no nominal scenario"
+                : "every nominal model was eliminated by pair " + lastNominal + ", but no faulty one still matched "
+                + "as many pairs after it as the rule confirms with";
         if (x.warning() != null) {
             out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d), rule %s: %s%n", x.warning().time(),
                     x.warning().line(), x.rule().id(), x.warning().reason());
