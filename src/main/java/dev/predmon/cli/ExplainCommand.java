@@ -1,10 +1,13 @@
 package dev.predmon.cli;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.explain.Explanation;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.WarningRule;
+import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -37,9 +40,10 @@ final class ExplainCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
-        List<Explanation> runs = Explanation.of(in.trace(), in.models(), in.abstraction(), input.threshold(),
-                confirm.value(in.abstraction()));
+        Abstraction abstraction = input.tuned();
+        Replay.Approach approach = Explanation.approach(input.models(), abstraction);
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), confirm.value(abstraction), approach::record);
+        List<Explanation> runs = Explanation.of(replayed, input.models(), abstraction, approach);
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.
             List<ExplanationJson> json = runs.stream().map(ExplanationJson::of).toList();
@@ -90,11 +94,13 @@ final class ExplainCommand implements Callable<Integer> {
         boolean nominal = x.models().stream().anyMatch(f -> !f.faulty() && f.matched());
         int lastNominal = x.models().stream().filter(f -> !f.faulty() && f.stoppedAt() != null)
                 .mapToInt(Explanation.ModelFate::stoppedAt).max().orElse(-1);
-        boolean outlived = x.models().stream().anyMatch(f -> f.faulty()
-                && (f.matched() || (f.stoppedAt() != null && f.stoppedAt() > lastNominal)));
+        boolean outlived = x.matchRuleAt() >= 0; // the monitor's own match rule, confirm included
         String matching = nominal ? "a nominal model matches the whole run"
                 : outlived ? "every nominal model was eliminated by pair " + lastNominal + " while a faulty one still "
-                + "matched" : "no faulty model was left when the last nominal one was eliminated";
+                + "matched (the thesis's rule holds from pair " + x.matchRuleAt() + ")"
+                : lastNominal < 0 ? "the models hold no nominal scenario"
+                : "every nominal model was eliminated by pair " + lastNominal + ", but no faulty one still matched "
+                + "as many pairs after it as the rule confirms with";
         if (x.warning() != null) {
             out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d), rule %s: %s%n", x.warning().time(),
                     x.warning().line(), x.rule().id(), x.warning().reason());
