@@ -3,6 +3,7 @@ package dev.predmon.evaluate;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.learn.DeadlineTraining;
 import dev.predmon.learn.ForecastTraining;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.learn.LearnedScenario;
@@ -187,8 +188,9 @@ public final class Evaluator {
             learned.add(ScenarioLearner.learnSamples(s, own, alphabet));
             learnedSpecs.add(s);
         }
-        ForecastModel forecast = ForecastTraining.train(learnedSpecs, traces, LearnedModels.machines(learned), alphabet,
-                ForecastTraining.limit(tuned), ForecastTraining.property(tuned), confirm);
+        ForecastModel forecast = DeadlineTraining.train(ForecastTraining.train(learnedSpecs, traces,
+                LearnedModels.machines(learned), alphabet, ForecastTraining.limit(tuned), ForecastTraining.property(tuned),
+                confirm), learnedSpecs, traces, tuned);
         return LearnedModels.modelSet(learned, tuned, forecast);
     }
 

@@ -63,9 +63,9 @@ public final class Learning {
             each.accept(l);
             learned.add(l);
         }
-        ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
-                MealyAlphabet.inputs(abstraction), ForecastTraining.limit(tuned), ForecastTraining.property(tuned),
-                tuned.confirm());
+        ForecastModel forecast = DeadlineTraining.train(ForecastTraining.train(specs, traces,
+                LearnedModels.machines(learned), MealyAlphabet.inputs(abstraction), ForecastTraining.limit(tuned),
+                ForecastTraining.property(tuned), tuned.confirm()), specs, traces, tuned);
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
                 LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(), forecast, step);
         return new Result(List.copyOf(learned), notes, forecast);
