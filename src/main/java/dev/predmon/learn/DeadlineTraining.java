@@ -35,7 +35,9 @@ import java.util.function.IntPredicate;
  * {@link DeadlineRule#DEFAULT}, not validated, and the note says why.
  *
  * <p>The scorecard of each property comes from the same held-out forecasts, each fold judged with a threshold and a
- * calibration chosen from the other folds only.
+ * calibration chosen from the other folds only. A property none of whose held-out obligations missed its deadline
+ * gets none, as the forecast's property gets none without runs of both outcomes: there is no warning to score, and
+ * its rule's note says it is not validated.
  */
 public final class DeadlineTraining {
 
@@ -70,8 +72,8 @@ public final class DeadlineTraining {
             }
             List<HeldOut> judged = heldOut(r.id(), specs, traces, folds, k);
             rules.put(r.id(), rule(judged));
-            if (!judged.isEmpty()) {
-                cards.add(scorecard(r, k, judged));
+            if (judged.stream().anyMatch(HeldOut::missed)) {
+                cards.add(scorecard(r, k, judged)); // without a missed deadline, nothing to score (the rule says so)
             }
         }
         return model.withDeadlines(rules).withScorecards(cards);

@@ -84,6 +84,29 @@ class ScenarioViolatesCliTest {
         assertTrue(n.err().contains("this scenario is not faulty"), n.err());
     }
 
+    /**
+     * Trained with stuck runs too, each navigation's held-out forecast meets runs that missed: the deadline's rule is
+     * chosen by cross-validation and learn prints its scorecard, counted in obligations.
+     */
+    @Test
+    void learnScoresTheDeadlineWhenTrainingNavigationsMissedIt() throws Exception {
+        Path logs = tmp.resolve("mixed");
+        assertEquals(0, Cli.run("simulate", "--scenario", "direct", "--runs", "4", "--seed", "21", "--out-dir",
+                logs.resolve("direct").toString()).code());
+        Path stuckDir = logs.resolve("stuck");
+        assertEquals(0, Cli.run("simulate", "--scenario", "direct", "--runs", "4", "--seed", "31", "--never-arrives",
+                "500", "--out-dir", stuckDir.toString()).code());
+        Files.writeString(stuckDir.resolve("scenario.json"), "{\"faulty\": true, \"violates\": \"navigation-in-time\"}");
+        Path models = tmp.resolve("mixed-models");
+        Cli c = Cli.run("learn", "--logs", logs.toString(), "--models", models.toString());
+        assertEquals(0, c.code(), c.err());
+        String card = c.out().lines().filter(l -> l.startsWith("scorecard of 'a navigation ends within 400 ticks'"))
+                .findFirst().orElseThrow(() -> new AssertionError(c.out()));
+        assertTrue(card.contains("on 8 obligations): warned 4 of 4 missed deadlines, "), card);
+        String json = Files.readString(models.resolve("forecast.json"));
+        assertTrue(json.contains("\"counted\" : \"obligations\""), json);
+    }
+
     /** A log directory with one scenario, {@code stuck}, holding the stuck run and {@code json}. */
     private static Path scenario(String name, String json) throws Exception {
         Path dir = Files.createDirectories(tmp.resolve(name).resolve("stuck"));
