@@ -3,6 +3,8 @@ package dev.predmon.cli;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.model.ModelIndex;
+import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunTiming;
 import dev.predmon.pipeline.Traces;
@@ -105,6 +107,13 @@ class ScenarioViolatesCliTest {
         assertTrue(card.contains("on 8 obligations): warned 4 of 4 missed deadlines, "), card);
         String json = Files.readString(models.resolve("forecast.json"));
         assertTrue(json.contains("\"counted\" : \"obligations\""), json);
+        // the models keep which property the faulty scenario is about
+        ModelIndex index = ModelStore.read(models, AbstractionFiles.defaults()).index();
+        assertEquals("navigation-in-time", index.scenarios().stream().filter(s -> s.name().equals("stuck"))
+                .findFirst().orElseThrow().violates());
+        assertNull(index.scenarios().stream().filter(s -> s.name().equals("direct")).findFirst().orElseThrow()
+                .violates());
+        assertFalse(Files.readString(models.resolve("index.json")).contains("\"violates\" : null"));
     }
 
     /** A log directory with one scenario, {@code stuck}, holding the stuck run and {@code json}. */
