@@ -71,9 +71,10 @@ public record Scorecard(String property, int folds, int runs, int violating, int
                 + "%d of %d %s, %d false alarm(s) in %d %s, %s", property, folds, runs, counted, warned,
                 violating, runsCounted ? "violations" : "missed deadlines", falseAlarms, held(),
                 runsCounted ? "safe runs" : "met in time", leadWords());
+        String often = runsCounted ? "runs violate" : "deadlines are missed";
         String second = Double.isNaN(brier) ? "  no Brier score: no held-out forecast had evidence (the forecast has"
                 + " no skill to show)" : String.format(Locale.ROOT, "  Brier score %.3f vs %.3f for the base rate: %s",
-                brier, baseBrier, skill() ? "the forecast knows more than how often " + counted + " violate"
+                brier, baseBrier, skill() ? "the forecast knows more than how often " + often
                         : "the forecast has no skill on these models (it does no better than the base rate)");
         return List.of(first, second);
     }
