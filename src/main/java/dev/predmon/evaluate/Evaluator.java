@@ -156,8 +156,7 @@ public final class Evaluator {
     private ModelSet learn(List<ScenarioSpec> specs, Map<Path, LogTrace> samples,
                            Predicate<Path> training, List<String> notes, String prefix)
             throws BadInputException {
-        List<ScenarioSpec> train = specs.stream().map(s -> new ScenarioSpec(s.name(), s.faulty(), s.description(),
-                s.logs().stream().filter(training).filter(samples::containsKey).toList(), s.runs())).toList();
+        List<ScenarioSpec> train = specs.stream().map(s -> s.withLogs(s.logs().stream().filter(training).filter(samples::containsKey).toList())).toList();
         List<String> said = new ArrayList<>();
         Learning.Learned learned = Learning.learn(train, samples, abstraction, confirm,
                 tuned -> reread(samples, tuned), said, l -> { });

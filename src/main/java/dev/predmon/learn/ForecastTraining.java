@@ -61,8 +61,7 @@ public final class ForecastTraining {
         List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
         String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
         ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
-        List<ScenarioSpec> read = specs.stream().map(s -> new ScenarioSpec(s.name(), s.faulty(), s.description(),
-                s.logs().stream().filter(traces::containsKey).toList(), s.runs())).toList();
+        List<ScenarioSpec> read = specs.stream().map(s -> s.withLogs(s.logs().stream().filter(traces::containsKey).toList())).toList();
         long logs = read.stream().flatMap(s -> s.logs().stream()).distinct().count();
         int k = (int) Math.min(FOLDS, logs);
         if (k < 2) {

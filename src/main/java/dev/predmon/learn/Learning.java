@@ -109,8 +109,8 @@ public final class Learning {
             learnedSpecs.add(s);
         }
         Alphabet<String> alphabet = MealyAlphabet.inputs(abstraction);
-        ForecastModel forecast = ForecastTraining.train(learnedSpecs, read, LearnedModels.machines(learned), alphabet,
-                tuned, confirm);
+        ForecastModel forecast = DeadlineTraining.train(ForecastTraining.train(learnedSpecs, read,
+                LearnedModels.machines(learned), alphabet, tuned, confirm), learnedSpecs, read, tuned);
         return new Learned(List.copyOf(learned), tuned, forecast);
     }
 

@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Survival;
@@ -19,16 +20,14 @@ import java.util.function.Consumer;
  * runs' obligations of the same property took ({@link Survival}, Kaplan-Meier with the runs that stopped early
  * censored).
  *
- * <p>It warns once per obligation, when the odds are even or worse ({@value #EVEN_ODDS}, the floor of the forecast
- * rule's threshold), or when the obligation has been pending longer than every training obligation (no evidence
- * either way) and half of the time from the longest of them to the deadline has passed too: a robot stuck in a way
- * no training run was is warned with that half of the margin left. A property without a training obligation gets no
+ * <p>It warns once per obligation, by the property's {@link DeadlineRule}: when the calibrated P(miss) reaches the
+ * threshold learned by cross-validation (even odds when the training obligations could not choose one), or when the
+ * obligation has been pending longer than every training obligation (no evidence either way) and half of the time
+ * from the longest of them to the deadline has passed too: a robot stuck in a way no training run was is warned with
+ * that half of the margin left. A property without a training obligation gets no
  * forecast and no warning: no verdict on no evidence. Constant state per property.
  */
 final class DeadlineWatch {
-
-    /** The probability of a miss at which it warns. */
-    static final double EVEN_ODDS = 0.5;
 
     /**
      * A deadline warning.
@@ -43,12 +42,14 @@ final class DeadlineWatch {
 
     private final Response[] properties;
     private final Survival[] survival;
+    private final DeadlineRule[] rules;
     private final boolean[] warned;
 
     /** The deadlines of {@code properties} that {@code model} learned durations for; none without a model. */
     DeadlineWatch(List<Property> properties, ForecastModel model) {
         this.properties = new Response[properties.size()];
         this.survival = new Survival[properties.size()];
+        this.rules = new DeadlineRule[properties.size()];
         this.warned = new boolean[properties.size()];
         for (int i = 0; i < properties.size(); i++) {
             if (properties.get(i) instanceof Response r && model != null) {
@@ -56,6 +57,7 @@ final class DeadlineWatch {
                 if (s != null && s.size() > 0) {
                     this.properties[i] = r;
                     this.survival[i] = s;
+                    this.rules[i] = model.deadlineRule(r.id());
                 }
             }
         }
@@ -77,10 +79,9 @@ final class DeadlineWatch {
             }
             Deadline d = properties[i].within();
             Survival s = survival[i];
-            Survival.Estimate e = s.estimate(elapsed, d.amount());
-            boolean warns = e.novel() ? elapsed >= (s.longest() + d.amount()) / 2
-                    : e.probability() >= EVEN_ODDS;
-            if (warns) {
+            Survival.Estimate raw = s.estimate(elapsed, d.amount());
+            if (rules[i].warns(raw, elapsed, d.amount(), s)) {
+                Survival.Estimate e = rules[i].calibrated(raw);
                 warned[i] = true;
                 out.accept(new Due(properties[i], e, elapsed, reason(properties[i], e, elapsed, s)));
             }
