@@ -62,7 +62,7 @@ public final class ExitCodes {
      */
     static int ofMonitor(PredictiveMonitor m) {
         RunsSummary all = m.summary();
-        return all.runs() == 1 ? of(all.unwarnedViolation(), all.noMatch(), m.warning().isPresent()) : ofRuns(all);
+        return all.runs() == 1 ? of(all.unwarnedViolation(), all.noMatch(), all.warned()) : ofRuns(all);
     }
 
     /** {@link #ofRuns(RunsSummary)} from each run's {@link #of} code. */

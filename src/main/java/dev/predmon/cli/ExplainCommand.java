@@ -14,7 +14,9 @@ import java.io.PrintWriter;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.Callable;
+import java.util.stream.Stream;
 
 /** {@code predmon explain}: why did it warn, why did it not. */
 @Command(name = "explain", mixinStandardHelpOptions = true,
@@ -56,11 +58,20 @@ final class ExplainCommand implements Callable<Integer> {
         return ExitCodes.ofRuns(runs.stream().mapToInt(x -> code(x.run())));
     }
 
-    /** The run's exit code as watch gives it: a violation is unwarned when no warning came strictly before it. */
+    /**
+     * The run's exit code as watch gives it, over every property: a violation is unwarned when no warning of any
+     * property came strictly before it.
+     */
     private static int code(RunResult r) {
-        boolean unwarned = r.violationTime() != null
-                && (r.warningTime() == null || !(r.warningTime() < r.violationTime()));
-        return ExitCodes.of(unwarned, r.noMatch(), r.warningTime() != null);
+        Double violated = first(r.violationTime(), r.properties().stream().map(RunResult.PropertyResult::violation));
+        Double warned = first(r.warningTime(), r.properties().stream().map(RunResult.PropertyResult::warning));
+        boolean unwarned = violated != null && (warned == null || !(warned < violated));
+        return ExitCodes.of(unwarned, r.noMatch(), warned != null);
+    }
+
+    /** The earliest of {@code time} and {@code others}, nulls left out; null when all are. */
+    private static Double first(Double time, Stream<Double> others) {
+        return Stream.concat(Stream.of(time), others).filter(Objects::nonNull).min(Double::compare).orElse(null);
     }
 
     private static void print(PrintWriter out, Explanation x) {
