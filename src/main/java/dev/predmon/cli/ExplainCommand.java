@@ -1,6 +1,8 @@
 package dev.predmon.cli;
 
+import dev.predmon.Terminal;
 import dev.predmon.evaluate.RunResult;
+import dev.predmon.event.ForecastJson;
 import dev.predmon.explain.Explanation;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;

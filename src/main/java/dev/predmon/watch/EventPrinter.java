@@ -1,14 +1,15 @@
-package dev.predmon.cli;
+package dev.predmon.watch;
 
+import dev.predmon.Terminal;
+import dev.predmon.event.EventJson;
+import dev.predmon.event.ForecastJson;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
-import dev.predmon.forecast.Survival;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.Clock;
 
 import java.io.PrintWriter;
 import java.time.Instant;
-import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
 
@@ -23,26 +24,22 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     private final boolean json;
     private final boolean verbose;
     private final String log;
-    private final boolean timestamps;
+    private final Stamp stamp;
     private MonitorEvent.Warning warning;
 
-    /** @param eliminations also print each model's elimination (JSON always does) */
-    EventPrinter(PrintWriter out, boolean json, boolean eliminations) {
-        this(out, json, eliminations, null, false);
-    }
-
     /**
-     * For one log of several: each event says which ({@code "log"} in JSON, a {@code log: } prefix in text).
+     * For one log of several, each event says which ({@code "log"} in JSON, a {@code log: } prefix in text).
      *
-     * @param log        the log's name, or null when only one log is watched
-     * @param timestamps start each text line with the wall-clock time
+     * @param eliminations also print each model's elimination (JSON always does)
+     * @param log          the log's name, or null when only one log is watched
+     * @param stamp        what begins each text line
      */
-    EventPrinter(PrintWriter out, boolean json, boolean eliminations, String log, boolean timestamps) {
+    EventPrinter(PrintWriter out, boolean json, boolean eliminations, String log, Stamp stamp) {
         this.out = out;
         this.json = json;
         this.verbose = eliminations;
         this.log = log;
-        this.timestamps = timestamps;
+        this.stamp = stamp;
     }
 
     @Override
@@ -56,7 +53,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             return; // the caller reports these with the parse problems
         }
         if (json) {
-            out.println(toJson(e, log, at));
+            out.println(EventJson.line(EventJson.of(e, log, at)));
         } else {
             String text = toText(e);
             if (text != null) {
@@ -76,7 +73,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     void heartbeat(long line, int run, long records, Forecast forecast, boolean present, Instant at) {
         if (json) {
             HeartbeatJson o = new HeartbeatJson("heartbeat", present, line, run, records, ForecastJson.of(forecast));
-            out.println(Json.line(Json.stamped(o, log, at)));
+            out.println(EventJson.line(EventJson.stamped(o, log, at)));
         } else {
             out.println(Terminal.line(line("heartbeat: " + (!present && records == 0 ? "waiting for the file"
                     : "line " + line + ", run " + run + ", " + records + " records; " + (forecast == null
@@ -85,109 +82,15 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         out.flush();
     }
 
-    /** A text line as printed: the wall-clock time with {@code --timestamps}, then the log's name in a fleet. */
+    /** A text line as printed: the stamp ({@link Stamp}), then the log's name in a fleet. */
     String line(String text, Instant at) {
-        return (timestamps ? Json.wallTime(at) + " " : "") + (log == null ? text : log + ": " + text);
-    }
-
-    /** The JSON object of an event ({@link MonitorEvent.Unmapped} is not one: it goes to stderr with the problems). */
-    static String toJson(MonitorEvent e) {
-        return toJson(e, null);
-    }
-
-    /** The JSON object of an event of {@code log} ({@code "log"} right after {@code "event"}), or untagged if null. */
-    static String toJson(MonitorEvent e, String log) {
-        return toJson(e, log, Instant.now());
-    }
-
-    /**
-     * The JSON object of an event of {@code log} ({@code "log"} right after {@code "event"}, or untagged if null),
-     * written at wall-clock time {@code at} ({@code "wallTime"}, last).
-     */
-    static String toJson(MonitorEvent e, String log, Instant at) {
-        Object o;
-        if (e instanceof MonitorEvent.Warning w) {
-            o = new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.property(), w.scenario(),
-                    w.scenarios(), w.battery(), w.pairs(), w.rule().id(), w.clause().id(), w.reason(),
-                    ForecastJson.of(w.forecast()), DeadlineJson.of(w.deadline()));
-        } else if (e instanceof MonitorEvent.ForecastChanged f) {
-            o = new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
-                    ForecastJson.of(f.forecast()), f.property());
-        } else if (e instanceof MonitorEvent.Violation v) {
-            o = new ViolationJson("violation", v.time(), v.clock().unit(), v.line(), v.run(), v.property(), v.name(),
-                    v.value(), v.forecast() ? v.value() : null, v.before(), v.what());
-        } else if (e instanceof MonitorEvent.Eliminated x) {
-            o = new EliminatedJson("eliminated", x.time(), x.clock().unit(), x.line(), x.run(), x.model(), x.scenario(),
-                    x.faulty(), x.reason());
-        } else if (e instanceof MonitorEvent.NoMatch n) {
-            o = new NoMatchJson("no-match", n.time(), n.clock().unit(), n.line(), n.run());
-        } else if (e instanceof MonitorEvent.RunStarted r) {
-            o = new RunJson("run", r.run(), r.time(), r.clock().unit(), r.line());
-        } else if (e instanceof MonitorEvent.Restarted r) {
-            o = new RestartedJson("restarted", r.reason());
-        } else if (e instanceof MonitorEvent.Recovered r) {
-            o = new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(), r.value(),
-                    r.reason());
-        } else if (e instanceof MonitorEvent.UnderWay u) {
-            o = new UnderWayJson("under-way", u.time(), u.clock().unit(), u.line(), u.run(), u.by(), u.underWay());
-        } else {
-            throw new IllegalArgumentException("not printed as a JSON event: " + e);
-        }
-        return Json.line(Json.stamped(o, log, at));
+        return stamp.of(at) + (log == null ? text : log + ": " + text);
     }
 
     record HeartbeatJson(String event, boolean present, long line, int run, long records, ForecastJson forecast) {
     }
 
-    record WarningJson(String event, double time, String unit, long line, int run, String property,
-                       String scenario, List<String> scenarios, Double battery, long pairs, String rule, String clause,
-                       String reason, ForecastJson forecast, DeadlineJson deadline) {
-    }
-
-    /**
-     * A deadline forecast: {@code probability} of a miss (null when the obligation is past every training one:
-     * {@code novel}), {@code timeLeft} before the deadline in its unit, {@code atRisk} training obligations pending
-     * as long, {@code longer} of them still pending at the deadline.
-     */
-    record DeadlineJson(Double probability, double timeLeft, int atRisk, int longer, boolean novel) {
-        static DeadlineJson of(Survival.Estimate e) {
-            return e == null ? null : new DeadlineJson(e.novel() ? null : e.probability(), e.timeLeft(), e.atRisk(),
-                    e.longer(), e.novel());
-        }
-    }
-
-    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, double battery,
-                         String reason) {
-    }
-
-    record UnderWayJson(String event, double time, String unit, long line, int run, String by, boolean underWay) {
-    }
-
-    record ForecastEventJson(String event, double time, String unit, long line, int run, ForecastJson forecast,
-                             String property) {
-    }
-
-    /**
-     * A property's violation: {@code property} its id, {@code name} its words, {@code value} the violating value of a
-     * bound (null for an event), {@code battery} the same for the forecast's property only, {@code what} in words.
-     */
-    record ViolationJson(String event, double time, String unit, long line, int run, String property, String name,
-                         Double value, Double battery, Double before, String what) {
-    }
-
-    record EliminatedJson(String event, double time, String unit, long line, int run, String model, String scenario,
-                          boolean faulty, String reason) {
-    }
-
-    record NoMatchJson(String event, double time, String unit, long line, int run) {
-    }
-
-    record RunJson(String event, int run, double time, String unit, long line) {
-    }
-
-    record RestartedJson(String event, String reason) {
-    }
-
+    /** {@code e} as a text line (without the stamp), or null when it is not printed as text. */
     String toText(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w && w.deadline() != null) {
             return String.format(Locale.ROOT, "%s line %d: WARNING: %s", at(w.time(), w.clock()), w.line(),
@@ -249,7 +152,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
     }
 
     /** A duration with its unit: {@code 5.026 s} or {@code 48 ticks}. */
-    static String span(double amount, Clock clock) {
+    public static String span(double amount, Clock clock) {
         return clock == Clock.TICKS ? String.format(Locale.ROOT, "%.0f ticks", amount)
                 : String.format(Locale.ROOT, "%.3f s", amount);
     }
