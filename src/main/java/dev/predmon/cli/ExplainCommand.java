@@ -24,7 +24,7 @@ import java.util.stream.Stream;
 @Command(name = "explain", mixinStandardHelpOptions = true,
         description = {"Explain a run: its abstract trace pair by pair and, for each model, where it stopped "
                 + "matching and why (the reply it expected versus the one seen), then what 'watch' concluded.",
-                "Exit as watch --no-follow would on this log: 6 when the property is violated with no warning "
+                "Exit as watch --no-follow would on this log: 6 when a property is violated with no warning "
                         + "before it, else 1 when it warns, 5 when no model matches the run, 0 otherwise; 3 when the "
                         + "log holds nothing to judge."})
 final class ExplainCommand implements Callable<Integer> {

@@ -35,7 +35,8 @@ import java.util.concurrent.TimeUnit;
                 "Several logs (--log repeated, a directory or a glob) are watched in one process, each with its "
                         + "own monitor; each event then names its log.",
                 "Ctrl-C (SIGINT), SIGTERM or SIGHUP stops it: it prints the end summary and exits as below.",
-                "Exit 6 when the property was violated with no warning before it, else 1 when a warning was raised, "
+                "Exit 6 when a property (any of them) was violated with no warning of any property before it, else "
+                        + "1 when a warning was raised (a deadline's too), "
                         + "5 when no model matches the run any more, 0 otherwise; 3 when the log held nothing to "
                         + "judge (with --no-follow, at the end of the file; while following one log, at once when it "
                         + "is not a monitor log)."})

@@ -11,14 +11,13 @@ import dev.predmon.parse.Clock;
 import java.io.PrintWriter;
 import java.time.Instant;
 import java.util.Locale;
-import java.util.function.Consumer;
 
 /**
- * Prints monitor events as they happen: one readable line each, or with {@code --json} one JSON object per
- * line ({@code {"event":"warning","time":...,"scenario":...,"battery":...,"wallTime":...}}), flushed at once so a
- * pipe sees each warning immediately.
+ * Prints one log's monitor events on stdout as they happen: one readable line each, or with {@code --json} one JSON
+ * object per line ({@link EventJson}: {@code {"event":"warning","time":...,"scenario":...,"wallTime":...}}), flushed
+ * at once so a pipe sees each warning immediately.
  */
-final class EventPrinter implements Consumer<MonitorEvent> {
+final class EventPrinter {
 
     private final PrintWriter out;
     private final boolean json;
@@ -40,11 +39,6 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         this.verbose = eliminations;
         this.log = log;
         this.stamp = stamp;
-    }
-
-    @Override
-    public void accept(MonitorEvent e) {
-        accept(e, Instant.now());
     }
 
     /** Prints {@code e}, which happened at wall-clock time {@code at}. */

@@ -1,7 +1,6 @@
 package dev.predmon.watch;
 
 import dev.predmon.monitor.PredictiveMonitor;
-import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.RunsSummary;
 
 import java.util.Arrays;
@@ -41,11 +40,6 @@ public final class ExitRule {
      */
     public static int of(boolean unwarnedViolation, boolean noModelMatches, boolean warned) {
         return unwarnedViolation ? UNWARNED_VIOLATION : noModelMatches ? NO_MATCH : warned ? WARNING : OK;
-    }
-
-    /** A run's code ({@link #of}) from its outcome. */
-    public static int of(RunOutcome run) {
-        return of(run.unwarnedViolation(), run.noMatch(), run.warned());
     }
 
     /**
