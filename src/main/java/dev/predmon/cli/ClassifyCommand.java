@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.Terminal;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
 import dev.predmon.pipeline.LogTrace;
@@ -21,7 +22,7 @@ import java.util.concurrent.Callable;
                 + "the models eliminated (an input they cannot take, or more discrepancies than --threshold), the "
                 + "best match and whether it is faulty.",
                 "Then the verdict watch reaches at the end of the same log, from the same replay: its exit code is "
-                        + "classify's. Exit 6 when the property is violated with no warning before it, else 1 when a "
+                        + "classify's. Exit 6 when a property is violated with no warning before it, else 1 when a "
                         + "warning came, 5 when no model matches the run at its end, 0 otherwise; 3 when the log holds "
                         + "nothing to judge."})
 final class ClassifyCommand implements Callable<Integer> {
@@ -70,7 +71,7 @@ final class ClassifyCommand implements Callable<Integer> {
 
     private static String words(int code) {
         return switch (code) {
-            case ExitCodes.UNWARNED_VIOLATION -> "the property was violated with no warning before it";
+            case ExitCodes.UNWARNED_VIOLATION -> "a property was violated with no warning before it";
             case ExitCodes.WARNING -> "a warning was raised";
             case ExitCodes.NO_MATCH -> "no learned model matches the run";
             default -> "no warning, and a nominal model matches";

@@ -1,8 +1,10 @@
 package dev.predmon.cli;
 
+import dev.predmon.Terminal;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
+import dev.predmon.event.ForecastJson;
 import dev.predmon.explain.Explanation;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
@@ -23,7 +25,7 @@ import java.util.concurrent.Callable;
 @Command(name = "explain", mixinStandardHelpOptions = true,
         description = {"Explain a run: its abstract trace pair by pair and, for each model, where it stopped "
                 + "matching and why (the reply it expected versus the one seen), then what 'watch' concluded.",
-                "Exit as watch --no-follow would on this log: 6 when the property is violated with no warning "
+                "Exit as watch --no-follow would on this log: 6 when a property is violated with no warning "
                         + "before it, else 1 when it warns, 5 when no model matches the run, 0 otherwise; 3 when the "
                         + "log holds nothing to judge."})
 final class ExplainCommand implements Callable<Integer> {
@@ -57,14 +59,7 @@ final class ExplainCommand implements Callable<Integer> {
             }
         }
         out.flush();
-        return ExitCodes.ofRuns(runs.stream().mapToInt(x -> code(x.run())));
-    }
-
-    /** The run's exit code as watch gives it: a violation is unwarned when no warning came strictly before it. */
-    private static int code(RunResult r) {
-        boolean unwarned = r.violationTime() != null
-                && (r.warningTime() == null || !(r.warningTime() < r.violationTime()));
-        return ExitCodes.of(unwarned, r.noMatch(), r.warningTime() != null);
+        return ExitCodes.ofMonitor(replayed.monitor()); // watch's rule, on the monitor watch would have run
     }
 
     private static void print(PrintWriter out, Explanation x) {

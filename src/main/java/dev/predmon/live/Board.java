@@ -3,11 +3,11 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
-import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.property.Bound;
@@ -102,10 +102,10 @@ public final class Board {
     }
 
     /** An event of {@code tile}'s log: the tile takes it, and {@code /events} sends its JSON (which names the log). */
-    public void event(Tile tile, MonitorEvent e, String json) {
-        tile.event(e, json);
-        metrics.event(tile, e);
-        stream.publish(json);
+    public void event(Tile tile, LogEvent e) {
+        tile.event(e);
+        metrics.event(tile, e.event());
+        stream.publish(e.line());
     }
 
     /** {@code tile}'s log grew now. */

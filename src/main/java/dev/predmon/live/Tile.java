@@ -3,6 +3,7 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
@@ -81,8 +82,9 @@ public final class Tile {
     }
 
     /** An event of this log's monitor, with its JSON. */
-    public synchronized void event(MonitorEvent e, String json) {
-        JsonNode node = TileJson.parse(json);
+    public synchronized void event(LogEvent sent) {
+        MonitorEvent e = sent.event();
+        JsonNode node = sent.json();
         if (e instanceof MonitorEvent.ForecastChanged f) {
             // Forecasts change often: the tile shows the latest, and the last events keep room for the rest.
             setForecast(f.forecast(), node);

@@ -48,6 +48,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private final Consumer<MonitorEvent> events;
     private final TracePipeline pipeline;
     private MonitorEvent.Warning warning;
+    /** The run's first warning of any property: the forecast's {@link #warning}, or a deadline's. */
+    private MonitorEvent.Warning anyWarning;
     private MonitorEvent.Violation violation;
     private boolean noMatch;
     private Double battery;
@@ -160,6 +162,7 @@ public final class PredictiveMonitor implements PipelineListener {
         runLine = line;
         matching.reset();
         warning = null;
+        anyWarning = null;
         violation = null;
         noMatch = false;
         battery = null;
@@ -175,7 +178,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private RunOutcome current() {
         return new RunOutcome(run, runLine, (MonitorEvent.Warning) ticks.event(warning),
                 (MonitorEvent.Violation) ticks.event(violation), noMatch, pairs, battery != null,
-                forecast == null ? null : forecast.last(), properties.verdicts());
+                forecast == null ? null : forecast.last(), properties.verdicts(),
+                (MonitorEvent.Warning) ticks.event(anyWarning));
     }
 
     /**
@@ -228,8 +232,10 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /** A bounded response's deadline forecast warns: a warning of that property, beside the forecast's. */
     private void deadline(LogRecord r, DeadlineWatch.Due d) {
-        events.accept(new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(), run, rule,
-                null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate()));
+        MonitorEvent.Warning w = new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(), run,
+                rule, null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate());
+        anyWarning = anyWarning == null ? w : anyWarning;
+        events.accept(w);
     }
 
     /** Reports {@code news} if it is news, and returns the latest forecast. */
@@ -249,6 +255,7 @@ public final class PredictiveMonitor implements PipelineListener {
                 trigger.clock(), run, rule, f, reason, clause, matching.likeliestFaulty(faultyAlive),
                 properties.forecastId());
         warning = warning == null ? w : warning; // the run's outcome keeps its first warning
+        anyWarning = anyWarning == null ? w : anyWarning;
         firstWarning = firstWarning == null ? w : firstWarning;
         alarm.warned(w);
         events.accept(w);

@@ -1,4 +1,4 @@
-package dev.predmon.cli;
+package dev.predmon.event;
 
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
 import dev.predmon.property.Verdict;
@@ -12,10 +12,10 @@ import java.util.Locale;
  * bound) and {@code what}; a pending response's trigger {@code line}, {@code since}, {@code deadline} and
  * {@code unit} ({@code ticks}, {@code seconds} or {@code occurrences}).
  */
-record PropertyJson(String property, String name, String kind, String verdict, Long line, Double time, Double value,
+public record PropertyJson(String property, String name, String kind, String verdict, Long line, Double time, Double value,
                     String what, Double since, Double deadline, String unit) {
 
-    static PropertyJson of(PropertyVerdict pv) {
+    public static PropertyJson of(PropertyVerdict pv) {
         Verdict v = pv.verdict();
         String id = pv.property().id();
         String name = pv.property().name();
@@ -30,12 +30,12 @@ record PropertyJson(String property, String name, String kind, String verdict, L
         return new PropertyJson(id, name, kind, v.id(), null, null, null, null, null, null, null);
     }
 
-    static List<PropertyJson> of(List<PropertyVerdict> verdicts) {
+    public static List<PropertyJson> of(List<PropertyVerdict> verdicts) {
         return verdicts.stream().map(PropertyJson::of).toList();
     }
 
     /** One line per property for the end summary: {@code no-abort (navigation never aborts): holds}. */
-    static List<String> lines(List<PropertyVerdict> verdicts) {
+    public static List<String> lines(List<PropertyVerdict> verdicts) {
         return verdicts.stream().map(pv -> String.format(Locale.ROOT, "  %s (%s): %s", pv.property().id(),
                 pv.property().name(), pv.verdict().describe())).toList();
     }
