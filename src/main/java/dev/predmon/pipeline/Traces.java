@@ -167,6 +167,8 @@ public final class Traces {
         private double[] values = new double[64];
         /** The safety monitor's obligations, for the deadline forecast. */
         private final PropertyChecker checker;
+        /** The safety property's position among the checked ones, or -1. */
+        private final int safetyIndex;
         private List<RunTiming.Obligation> obligations = new ArrayList<>();
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
@@ -174,6 +176,7 @@ public final class Traces {
             this.safety = abstraction.safety();
             this.all = all;
             this.checker = new PropertyChecker(abstraction.properties(), (i, p, v) -> { });
+            this.safetyIndex = safety.map(b -> abstraction.properties().indexOf(b)).orElse(-1);
             checker.onObligations((i, p, duration, discharged) ->
                     obligations.add(new RunTiming.Obligation(p.id(), duration, discharged)));
         }
@@ -188,7 +191,7 @@ public final class Traces {
             if (safety.isEmpty()) {
                 return;
             }
-            double v = safety.get().valueOf(record);
+            double v = checker.value(safetyIndex); // safety's valueOf(record), as the checker read it
             if (Double.isNaN(v)) {
                 return;
             }
