@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.UnmappedMessages;
 
@@ -23,7 +24,7 @@ final class Problems {
      * The interface messages no abstraction rule maps, never silently dropped: one line per command with its count
      * and why, at most {@value UnmappedMessages#MAX_LINES} lines (a pose a message would be a line per value).
      */
-    static void unmapped(PrintWriter err, Path log, Map<String, Long> unmapped) {
+    static void unmapped(PrintWriter err, Path log, Map<UnmappedMessage, Long> unmapped) {
         UnmappedMessages.lines(unmapped).forEach(line -> err.println(Terminal.line(log + ": warning: interface "
                 + "messages no rule maps: " + line)));
         err.flush();

@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
@@ -14,6 +15,7 @@ import dev.predmon.monitor.RunsSummary;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.monitor.WatchedLog;
 import dev.predmon.pipeline.Evidence;
+import dev.predmon.pipeline.UnmappedMessages;
 import dev.predmon.property.Bound;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -232,7 +234,7 @@ final class WatchCommand implements Callable<Integer> {
      */
     private int summary(WatchedLog log, WatchOutputs outputs, String stop, boolean several, boolean judged) {
         PredictiveMonitor m = log.monitor();
-        Map<String, Long> unmapped = m.unmapped();
+        Map<UnmappedMessage, Long> unmapped = m.unmapped();
         Problems.unmapped(err, log.path(), unmapped);
         List<RunOutcome> runs = m.runs();
         RunsSummary all = m.summary();
@@ -244,7 +246,7 @@ final class WatchCommand implements Callable<Integer> {
                     ForecastJson.of(r.forecast()), PropertyJson.of(r.properties()))).toList();
             End end = new End("end", stop, m.records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), all.noMatch(), perRun,
-                    all.runs(), all.dropped(), unmapped, m.rule().id(),
+                    all.runs(), all.dropped(), UnmappedMessages.texts(unmapped), m.rule().id(),
                     ForecastJson.of(runs.get(runs.size() - 1).forecast()),
                     PropertyJson.of(runs.get(runs.size() - 1).properties()));
             out.println(Json.line(Json.stamped(end, several ? log.name() : null, Instant.now())));

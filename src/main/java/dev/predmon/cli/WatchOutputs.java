@@ -208,12 +208,12 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
     private void firstSighting(WatchedLog log, MonitorEvent.Unmapped u) {
         Outlet o = outlets.get(log);
         if (noFollow || o.commandsSeen.size() > UnmappedMessages.MAX_LINES
-                || !o.commandsSeen.add(UnmappedMessages.command(u.message()))) {
+                || !o.commandsSeen.add(u.message().name())) {
             return;
         }
         err.println(Terminal.line(log.name() + ":" + u.line() + ": warning: " + (o.commandsSeen.size()
                 > UnmappedMessages.MAX_LINES ? "more commands no abstraction rule maps; the totals come at the stop"
-                : "interface message no abstraction rule maps: " + u.message() + " (first of its command; the "
+                : "interface message no abstraction rule maps: " + u.message().text() + " (first of its command; the "
                 + "totals come at the stop)")));
         err.flush();
     }

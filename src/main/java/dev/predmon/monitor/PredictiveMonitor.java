@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
@@ -247,8 +248,8 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     @Override
-    public void unmapped(String key, LogRecord record) {
-        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
+    public void unmapped(UnmappedMessage message, LogRecord record) {
+        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), message));
     }
 
     @Override
@@ -301,7 +302,7 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /** Interface messages no rule maps since the start, by key, sorted. */
-    public Map<String, Long> unmapped() {
+    public Map<UnmappedMessage, Long> unmapped() {
         return before.unmapped(pipeline);
     }
 
