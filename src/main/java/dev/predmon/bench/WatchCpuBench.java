@@ -82,7 +82,7 @@ final class WatchCpuBench {
             long threadStart = threads.getThreadCpuTime(follower.getId());
             long processStart = os.getProcessCpuTime();
             long wallStart = System.nanoTime();
-            long measured = append(out, pool, counts, written, warmUp + records, taken, failed) - written;
+            long measured = append(out, pool, counts, written, written + records, taken, failed) - written;
             double threadNanos = threads.getThreadCpuTime(follower.getId()) - threadStart;
             double processNanos = os.getProcessCpuTime() - processStart;
             double seconds = (System.nanoTime() - wallStart) / 1e9;
