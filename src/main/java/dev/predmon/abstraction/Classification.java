@@ -7,8 +7,8 @@ public sealed interface Classification permits Classification.Dropped, Classific
     record Dropped() implements Classification {
     }
 
-    /** Part of the interface, but no rule maps it; {@code key} names it for the end-of-run report. */
-    record Unmapped(String key) implements Classification {
+    /** Part of the interface, but no rule maps it: which kind of message, and why. */
+    record Unmapped(UnmappedMessage message) implements Classification {
     }
 
     /** Mapped to a symbol. */

@@ -137,7 +137,7 @@ final class Rules {
         }
         Rule rule = route.rule;
         if (rule == null) {
-            return new Classification.Unmapped(what(r) + " reply '" + r.reply() + "'");
+            return unmapped(r, UnmappedMessage.Kind.REPLY, r.reply());
         }
         String value = r.reply();
         double number = rule.numeric ? Decimals.parse(value) : Double.NaN;
@@ -149,7 +149,7 @@ final class Rules {
             }
         }
         if (template == null) {
-            return new Classification.Unmapped(what(r) + " reply '" + r.reply() + "'");
+            return unmapped(r, UnmappedMessage.Kind.REPLY, r.reply());
         }
         if (template.contains(Definition.LOC)) {
             String abbreviation = route.location != null ? route.location : locations.get(r.reply().trim());
@@ -157,8 +157,7 @@ final class Rules {
                 abbreviation = route.client;
             }
             if (abbreviation == null) {
-                return new Classification.Unmapped(what(r) + " reply about unknown location '"
-                        + locationCandidate(r) + "'");
+                return unmapped(r, UnmappedMessage.Kind.REPLY_LOCATION, locationCandidate(r));
             }
             template = expand(template, abbreviation);
         }
@@ -207,7 +206,7 @@ final class Rules {
             }
         }
         if (rule == null) {
-            Classification unmapped = command ? new Classification.Unmapped(what(r) + " command") : null;
+            Classification unmapped = command ? unmapped(r, UnmappedMessage.Kind.COMMAND, "") : null;
             return route(r, false, unmapped, null, channel, null, null, null);
         }
         if (!command) {
@@ -218,8 +217,7 @@ final class Rules {
         if (input.contains(Definition.LOC)) {
             String abbreviation = location(r);
             if (abbreviation == null) {
-                Classification unknown = new Classification.Unmapped(what(r) + " command about unknown location '"
-                        + locationCandidate(r) + "'");
+                Classification unknown = unmapped(r, UnmappedMessage.Kind.COMMAND_LOCATION, locationCandidate(r));
                 return route(r, true, unknown, rule, channel, null, null, null);
             }
             input = expand(input, abbreviation);
@@ -244,8 +242,9 @@ final class Rules {
                 .computeIfAbsent(abbreviation, a -> template.replace(Definition.LOC, a));
     }
 
-    private static String what(LogRecord r) {
-        return (r.protocol().isEmpty() ? "" : r.protocol() + "/") + r.command();
+    /** {@code r} is a message of this kind that no rule maps, told apart by {@code detail}. */
+    private static Classification unmapped(LogRecord r, UnmappedMessage.Kind kind, String detail) {
+        return new Classification.Unmapped(new UnmappedMessage(r.protocol(), r.command(), kind, detail));
     }
 
     private static boolean dropped(Drop d, LogRecord r) {

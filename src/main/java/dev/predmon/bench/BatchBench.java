@@ -22,8 +22,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 
 /**
- * Batch throughput of the whole offline path on one large generated log: parse, abstract, compact and match
- * (a {@link PredictiveMonitor} with the learned models, restarted at each run boundary as a rotated log would
+ * Batch throughput of the whole offline path on one large generated log: parse, abstract, compact, match, check
+ * every property and forecast (a {@link PredictiveMonitor} with the learned models and their forecast, restarted at each run boundary as a rotated log would
  * restart it, so the models keep matching instead of being eliminated once for the whole file). Compared with
  * {@code grep -c intercepted} on the same file, the floor of any line-by-line reader.
  *
@@ -68,15 +68,15 @@ final class BatchBench {
         return n == 0 ? Double.NaN : n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
     }
 
-    static Result run(Abstraction abstraction, List<LearnedScenario> learned, long megabytes, int repeats, Path dir)
-            throws Exception {
-        ModelSet models = LearnedModels.modelSet(learned, abstraction);
+    static Result run(Abstraction abstraction, List<LearnedScenario> learned, ModelSet models, long megabytes,
+                      int repeats, Path dir) throws Exception {
         Path file = Files.createTempFile(dir, "predmon-batch", ".log");
         Path modelDir = Files.createTempDirectory(dir, "predmon-batch-models");
         try {
             BenchData.bigLog(file, megabytes * 1_000_000L);
             ModelStore.write(modelDir, LearnedModels.index(learned, abstraction),
-                    LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson());
+                    LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(),
+                    models.forecast());
             long size = Files.size(file);
             double[] seconds = new double[repeats];
             long records = 0;

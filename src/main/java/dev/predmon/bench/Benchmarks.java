@@ -5,6 +5,9 @@ import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.WarningRule;
+import dev.predmon.property.Property;
+import dev.predmon.property.Response;
 
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
@@ -20,7 +23,7 @@ import java.util.function.Consumer;
 public final class Benchmarks {
 
     /** The benchmarks, as named on the command line. */
-    public enum Kind { BATCH, LATENCY, MEMORY, LEARN, FLEET }
+    public enum Kind { BATCH, LATENCY, CPU, MEMORY, LEARN, FLEET }
 
     /**
      * Sizes.
@@ -29,6 +32,7 @@ public final class Benchmarks {
      * @param latencyRuns     appends measured
      * @param pollMicros      the watcher's pause when nothing was appended
      * @param memoryRecords   records pushed through the monitor
+     * @param cpuRecords      records a following watch takes while its CPU time is measured
      * @param learnRuns       runs per scenario, one learning per value
      * @param modelRuns       runs per scenario the monitored models are learned from
      * @param tempDir         where generated logs go
@@ -39,7 +43,7 @@ public final class Benchmarks {
      * @param fleetIdleLogs   logs of the idle fleet whose cost is measured apart (0: none)
      */
     public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
-                          List<Integer> learnRuns, int modelRuns, Path tempDir, List<Integer> fleetLogs,
+                          long cpuRecords, List<Integer> learnRuns, int modelRuns, Path tempDir, List<Integer> fleetLogs,
                           int fleetSamples, double fleetSeconds, boolean fleetPolling, int fleetIdleLogs) {
     }
 
@@ -51,19 +55,20 @@ public final class Benchmarks {
         Abstraction abstraction = AbstractionFiles.defaults();
         ModelSet models = null;
         List<LearnedScenario> learned = null;
-        if (kinds.contains(Kind.BATCH) || kinds.contains(Kind.LATENCY) || kinds.contains(Kind.MEMORY)
-                || kinds.contains(Kind.FLEET)) {
+        if (kinds.stream().anyMatch(k -> k != Kind.LEARN)) {
             learned = BenchData.learned(abstraction, o.modelRuns());
             models = BenchData.models(abstraction, learned, o.modelRuns());
             out.accept(f("models: %d machines learned from %d runs per scenario, with their forecast (rule %s)",
                     models.models().size(), o.modelRuns(), PredictiveMonitor.defaultRule(models).id()));
+            out.accept(properties(abstraction, models));
         }
         out.accept(f("machine: %d cores, Java %s, max heap %.0f MB", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.version"), Runtime.getRuntime().maxMemory() / 1e6));
         for (Kind k : kinds) {
             switch (k) {
                 case BATCH -> {
-                    BatchBench.Result r = BatchBench.run(abstraction, learned, o.batchMegabytes(), 5, o.tempDir());
+                    BatchBench.Result r = BatchBench.run(abstraction, learned, models, o.batchMegabytes(), 5,
+                            o.tempDir());
                     double[] t = r.seconds();
                     double mb = r.mbPerSecond(r.median());
                     out.accept(f("batch: parse+abstract+compact+match of %.1f MB (%d records): median %.3f s, %.1f MB/s "
@@ -103,6 +108,15 @@ public final class Benchmarks {
                     out.accept(f("latency: p99 with the forecast / without: %.2fx; target within 1.5x: %s",
                             r.get(0).p99() / r.get(1).p99(), r.get(0).p99() <= 1.5 * r.get(1).p99() ? "met"
                                     : "MISSED"));
+                }
+                case CPU -> {
+                    WatchCpuBench.Result r = WatchCpuBench.run(abstraction, models, o.cpuRecords(), o.pollMicros(),
+                            o.tempDir());
+                    out.accept(f("watch cpu per record: a following watch (poll pause %d us) took %d records appended "
+                                    + "run by run in %.1f s: %.0f ns of its thread's CPU time per record (%.0f ns of "
+                                    + "the whole process's); load average %.1f", o.pollMicros(), r.records(),
+                            r.seconds(), r.threadNanos(), r.processNanos(),
+                            ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage()));
                 }
                 case MEMORY -> {
                     MemoryBench.Result r = MemoryBench.run(abstraction, models, o.memoryRecords(), 10);
@@ -166,6 +180,24 @@ public final class Benchmarks {
                 }
             }
         }
+    }
+
+    /**
+     * Which properties every benchmark checks on every record (each mode but {@code learn} monitors with {@code
+     * models}, and learning reads every log through the same property checker): those of the abstraction, with the
+     * forecast's and the deadline forecasts.
+     */
+    static String properties(Abstraction abstraction, ModelSet models) {
+        List<String> on = new ArrayList<>();
+        boolean warns = PredictiveMonitor.defaultRule(models) == WarningRule.FORECAST;
+        for (Property p : abstraction.properties()) {
+            boolean forecast = abstraction.safety().map(b -> b.id().equals(p.id())).orElse(false);
+            boolean deadline = warns && p instanceof Response
+                    && models.forecast().obligations().containsKey(p.id());
+            on.add(p.id() + (forecast ? " (forecast)" : deadline ? " (deadline forecast)" : ""));
+        }
+        return f("properties on in every benchmark: %d of abstraction %s: %s", on.size(), abstraction.name(),
+                String.join(", ", on));
     }
 
     private static String f(String format, Object... args) {

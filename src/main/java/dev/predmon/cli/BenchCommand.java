@@ -17,7 +17,8 @@ import java.util.concurrent.Callable;
 /** {@code predmon bench}: the performance figures of the README, measured on this machine. */
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = {"Measure predmon on this machine with simulated logs: batch throughput (vs grep), "
-                + "append-to-warning latency of watch, watch's CPU per record and heap as the log grows, "
+                + "append-to-warning latency of watch, a following watch's CPU per record, its CPU per record and "
+                + "heap as the log grows, "
                 + "learning time and peak heap, and a fleet of logs watched in one process against one log.",
                 "For the heap figure run: java -Xmx64m -jar predmon.jar bench --only memory"})
 final class BenchCommand implements Callable<Integer> {
@@ -25,7 +26,7 @@ final class BenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--only", split = ",", paramLabel = "batch|latency|memory|learn|fleet",
+    @Option(names = "--only", split = ",", paramLabel = "batch|latency|cpu|memory|learn|fleet",
             description = "Run only these benchmarks (default: all, in this order).")
     List<String> only;
 
@@ -43,6 +44,11 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--memory-records", defaultValue = "10000000",
             description = "Records pushed through the monitor (default: ${DEFAULT-VALUE}).")
     long memoryRecords;
+
+    @Option(names = "--cpu-records", defaultValue = "500000",
+            description = "Records a following watch takes while its CPU time is measured, after half as many "
+                    + "not measured (default: ${DEFAULT-VALUE}).")
+    long cpuRecords;
 
     @Option(names = "--learn-runs", split = ",", defaultValue = "10,100,1000",
             description = "Runs per scenario to learn from, one measurement each (default: ${DEFAULT-VALUE}).")
@@ -85,7 +91,7 @@ final class BenchCommand implements Callable<Integer> {
         List<Benchmarks.Kind> kinds = only == null || only.isEmpty() ? Arrays.asList(Benchmarks.Kind.values())
                 : only.stream().map(this::kind).toList();
         Path dir = tmp != null ? tmp : Path.of(System.getProperty("java.io.tmpdir"));
-        Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, learnRuns,
+        Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, cpuRecords, learnRuns,
                 modelRuns, dir, fleetLogs, fleetSamples, fleetSeconds, fleetPolling, fleetIdleLogs), line -> {
             out.println(line);
             out.flush();

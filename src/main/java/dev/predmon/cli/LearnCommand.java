@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.Terminal;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.learn.Conflict;
 import dev.predmon.learn.LearnedScenario;
 import dev.predmon.learn.Learning;
@@ -53,7 +54,7 @@ final class LearnCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
-        Map<String, Long> unmapped = new TreeMap<>();
+        Map<UnmappedMessage, Long> unmapped = new TreeMap<>();
         Learning.Result result = Learning.learnAndWrite(logs, models, abstraction, l -> {
             l.problems().forEach(err::println);
             l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));

@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.Terminal;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.watch.ProblemLines;
@@ -25,7 +26,7 @@ final class Problems {
     }
 
     /** As above, of a log's {@code problems} and {@code unmapped} messages. */
-    static void print(PrintWriter err, Path log, List<ParseProblem> problems, Map<String, Long> unmapped) {
+    static void print(PrintWriter err, Path log, List<ParseProblem> problems, Map<UnmappedMessage, Long> unmapped) {
         problems.forEach(p -> err.println(Terminal.line(p.format(log.toString()))));
         ProblemLines.unmapped(err, log, unmapped);
     }

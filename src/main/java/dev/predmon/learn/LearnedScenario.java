@@ -1,5 +1,6 @@
 package dev.predmon.learn;
 
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.mealy.MealyTrace;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -17,7 +18,7 @@ import java.util.Map;
  * @param unmapped interface messages no abstraction rule maps, by key, over all its logs
  */
 public record LearnedScenario(ScenarioSpec spec, List<Machine> machines, List<Conflict> splits, List<String> skipped,
-                              List<String> problems, Map<String, Long> unmapped) {
+                              List<String> problems, Map<UnmappedMessage, Long> unmapped) {
 
     /**
      * One machine and the samples it was learned from.

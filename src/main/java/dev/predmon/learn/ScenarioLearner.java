@@ -2,6 +2,7 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelStore;
@@ -56,7 +57,7 @@ public final class ScenarioLearner {
         List<MealyTrace> samples = new ArrayList<>();
         List<String> skipped = new ArrayList<>();
         List<String> problems = new ArrayList<>();
-        Map<String, Long> unmapped = new TreeMap<>();
+        Map<UnmappedMessage, Long> unmapped = new TreeMap<>();
         for (Path log : spec.logs()) {
             LogTrace trace = traces.get(log);
             trace.problems().forEach(p -> problems.add(p.format(log.toString())));

@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.pipeline.UnmappedCounts;
 
@@ -31,7 +32,7 @@ final class LogTotals {
         return interfaceRecords + now.interfaceRecords();
     }
 
-    Map<String, Long> unmapped(TracePipeline now) {
+    Map<UnmappedMessage, Long> unmapped(TracePipeline now) {
         if (unmapped.isEmpty()) {
             return now.unmapped();
         }

@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.Survival;
 import dev.predmon.parse.Clock;
@@ -213,9 +214,9 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      *
      * @param time    its time
      * @param line    its line
-     * @param message its kind, {@code Protocol/command}
+     * @param message its kind
      */
-    record Unmapped(double time, long line, String message) implements MonitorEvent {
+    record Unmapped(double time, long line, UnmappedMessage message) implements MonitorEvent {
     }
 
     /** The log was truncated or replaced; matching starts over. */

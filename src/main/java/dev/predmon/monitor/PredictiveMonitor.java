@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.matching.MatchRule;
@@ -202,7 +203,7 @@ public final class PredictiveMonitor implements PipelineListener {
         clock = ticks.clock(record.clock());
         properties.accept(record, run);
         alarm.record(record, run);
-        double v = safety.isEmpty() ? Double.NaN : safety.get().valueOf(record);
+        double v = properties.forecastValue(); // safety's valueOf(record), as the checker read it
         if (Double.isNaN(v)) {
             return;
         }
@@ -262,9 +263,9 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     @Override
-    public void unmapped(String key, LogRecord record) {
-        tee.unmapped(key, record);
-        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
+    public void unmapped(UnmappedMessage message, LogRecord record) {
+        tee.unmapped(message, record);
+        events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), message));
     }
 
     @Override
@@ -311,7 +312,7 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /** Interface messages no rule maps since the start, by key, sorted. */
-    public Map<String, Long> unmapped() {
+    public Map<UnmappedMessage, Long> unmapped() {
         return before.unmapped(pipeline);
     }
 

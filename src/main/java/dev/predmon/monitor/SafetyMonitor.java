@@ -72,6 +72,14 @@ final class SafetyMonitor {
         }
     }
 
+    /**
+     * The forecast property's value on the record last checked ({@link Bound#valueOf}, whatever its scope), read once
+     * by the checker; NaN when the record carried none or there is no such property.
+     */
+    double forecastValue() {
+        return forecastIndex < 0 ? Double.NaN : checker.value(forecastIndex);
+    }
+
     /** The id of the property the forecast and the warnings are about, or null without one. */
     String forecastId() {
         return forecastId;

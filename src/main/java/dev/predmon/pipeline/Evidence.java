@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.parse.ParseProblem;
 
 import java.nio.file.Path;
@@ -28,7 +29,7 @@ import java.util.function.LongSupplier;
  * @param span             the lines from the first record to the end of the last ({@link TracePipeline#span()})
  */
 public record Evidence(Path log, LongSupplier lines, long records, long interfaceRecords, long pairs,
-                       Map<String, Long> unmapped, Abstraction abstraction, ParseProblem firstProblem, long span) {
+                       Map<UnmappedMessage, Long> unmapped, Abstraction abstraction, ParseProblem firstProblem, long span) {
 
     /** While following, nothing recognisable in this many records is said once. */
     public static final long FIRST = 200;
@@ -134,7 +135,8 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
                     + "' maps, but no complete query/reply pair " + where;
         }
         return "no skill-component interface message the abstraction '" + abstraction.name() + "' maps " + where
-                + (unmapped.isEmpty() ? "" : " (only " + String.join(", ", unmapped.keySet().stream().limit(3).toList())
+                + (unmapped.isEmpty() ? "" : " (only " + String.join(", ", unmapped.keySet().stream().limit(3).map(UnmappedMessage::text)
+                .toList())
                 + (unmapped.size() > 3 ? ", ..." : "") + ")");
     }
 }

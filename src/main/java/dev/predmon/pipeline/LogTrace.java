@@ -1,5 +1,6 @@
 package dev.predmon.pipeline;
 
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.compact.IoPair;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealyTrace;
@@ -24,7 +25,7 @@ import java.util.Map;
  * @param span             the lines from its first record to the end of its last ({@link TracePipeline#span()})
  */
 public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems, long lines, long records,
-                       long interfaceRecords, Map<String, Long> unmapped, List<Run> runs, long span) {
+                       long interfaceRecords, Map<UnmappedMessage, Long> unmapped, List<Run> runs, long span) {
 
     /**
      * One run of a log.

@@ -1,6 +1,7 @@
 package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Classification;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.LogRecord;
 
@@ -15,7 +16,7 @@ public interface PipelineListener {
      * The first interface message of its kind that no abstraction rule maps (since the start or the last reset):
      * reported, never silently dropped.
      */
-    default void unmapped(String key, LogRecord record) {
+    default void unmapped(UnmappedMessage message, LogRecord record) {
     }
 
     /**

@@ -3,6 +3,7 @@ package dev.predmon.pipeline;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.abstraction.RunRule;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.compact.Compactor;
 import dev.predmon.mealy.CarryEncoder;
 import dev.predmon.parse.LogRecord;
@@ -93,11 +94,11 @@ public final class TracePipeline {
             compactor.push(hysteresis.settle(m.event()));
         } else if (c instanceof Classification.Unmapped u) {
             interfaceRecords++;
-            String first = unmapped.add(u.key(), 1);
+            UnmappedMessage first = unmapped.add(u.message(), 1);
             if (first != null) {
                 listener.unmapped(first, record);
             }
-            if (UnmappedMessages.novelty(u.key(), abstraction)) {
+            if (UnmappedMessages.novelty(u.message(), abstraction)) {
                 listener.gap(record);
             }
         }
@@ -139,7 +140,7 @@ public final class TracePipeline {
      * Interface messages no rule maps, by key, sorted: reported to the user, never silently dropped; beyond
      * {@value UnmappedCounts#KINDS} kinds, counted by command ({@link UnmappedCounts}).
      */
-    public Map<String, Long> unmapped() {
+    public Map<UnmappedMessage, Long> unmapped() {
         return unmapped.toMap();
     }
 

@@ -174,6 +174,8 @@ public final class Traces {
         private double[] values = new double[64];
         /** The safety monitor's obligations, for the deadline forecast. */
         private final PropertyChecker checker;
+        /** The safety property's position among the checked ones, or -1. */
+        private final int safetyIndex;
         private List<RunTiming.Obligation> obligations = new ArrayList<>();
         /** By property index, the bounded-response ones: how long the pending obligation was after each record. */
         private final Steps[] steps;
@@ -186,6 +188,7 @@ public final class Traces {
             this.all = all;
             this.checker = new PropertyChecker(abstraction.properties(),
                     (i, p, v) -> violations.putIfAbsent(p.id(), v.time()));
+            this.safetyIndex = safety.map(b -> abstraction.properties().indexOf(b)).orElse(-1);
             List<Property> properties = abstraction.properties();
             this.steps = new Steps[properties.size()];
             for (int i = 0; i < steps.length; i++) {
@@ -216,7 +219,7 @@ public final class Traces {
             if (safety.isEmpty()) {
                 return;
             }
-            double v = safety.get().valueOf(record);
+            double v = checker.value(safetyIndex); // safety's valueOf(record), as the checker read it
             if (Double.isNaN(v)) {
                 return;
             }

@@ -1,6 +1,9 @@
 package dev.predmon.pipeline;
 
+import dev.predmon.abstraction.UnmappedMessage;
+
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -9,59 +12,55 @@ import java.util.TreeMap;
  * ({@code GoTo/getCurrentPose reply '-6.19;0.55'}), so a log read for months by the wrong abstraction has a kind per
  * reading; as the run history keeps the latest runs in full and only counts the others, this keeps the first
  * {@value #KINDS} kinds apart and counts each later new kind under its command ({@code GoTo/getCurrentPose}
- * {@value #OTHER}), for at most {@value #KINDS} commands, then under {@value #OTHER_COMMANDS}. Every message is
- * counted.
+ * {@value UnmappedMessage#OTHER}), for at most {@value #KINDS} commands, then under
+ * {@link UnmappedMessage#OTHER_COMMANDS}. Every message is counted.
  */
 public final class UnmappedCounts {
 
     /** Kinds told apart; as many commands again are counted as a whole beyond them. */
     public static final int KINDS = 1000;
-    /** The end of the key that counts a command's kinds beyond {@link #KINDS}. */
-    public static final String OTHER = "(other values)";
-    /** The key that counts every message beyond both bounds. */
-    public static final String OTHER_COMMANDS = "(other commands)";
 
-    private final Map<String, Long> counts = new TreeMap<>();
+    private final Map<UnmappedMessage, Long> counts = new HashMap<>();
     private int kinds;
     private int commands;
 
     /**
      * Counts {@code n} messages of {@code kind}.
      *
-     * @return the key they were counted under, or null when that key was counted before
+     * @return the kind they were counted under, or null when that kind was counted before
      */
-    public String add(String kind, long n) {
-        String key = keyOf(kind);
-        Long before = counts.merge(key, n, Long::sum) - n;
+    public UnmappedMessage add(UnmappedMessage kind, long n) {
+        UnmappedMessage key = keyOf(kind);
+        long before = counts.merge(key, n, Long::sum) - n;
         if (before != 0) {
             return null;
         }
-        if (key.endsWith(" " + OTHER)) {
+        if (key.kind() == UnmappedMessage.Kind.OTHER_VALUES) {
             commands++;
-        } else if (!key.equals(OTHER_COMMANDS)) {
+        } else if (key.kind() != UnmappedMessage.Kind.OTHER_COMMANDS) {
             kinds++;
         }
         return key;
     }
 
     /** Adds every count of {@code other}. */
-    public void addAll(Map<String, Long> other) {
+    public void addAll(Map<UnmappedMessage, Long> other) {
         other.forEach(this::add);
     }
 
-    private String keyOf(String kind) {
+    private UnmappedMessage keyOf(UnmappedMessage kind) {
         if (counts.containsKey(kind)) {
             return kind;
         }
-        boolean folded = kind.equals(OTHER_COMMANDS) || kind.endsWith(" " + OTHER);
-        if (!folded && kinds < KINDS) {
+        UnmappedMessage.Kind k = kind.kind();
+        if (k == UnmappedMessage.Kind.OTHER_COMMANDS) {
             return kind;
         }
-        if (kind.equals(OTHER_COMMANDS)) {
+        if (k != UnmappedMessage.Kind.OTHER_VALUES && kinds < KINDS) {
             return kind;
         }
-        String byCommand = UnmappedMessages.command(kind) + " " + OTHER;
-        return counts.containsKey(byCommand) || commands < KINDS ? byCommand : OTHER_COMMANDS;
+        UnmappedMessage byCommand = UnmappedMessage.otherValues(kind);
+        return counts.containsKey(byCommand) || commands < KINDS ? byCommand : UnmappedMessage.OTHER_COMMANDS;
     }
 
     public void clear() {
@@ -74,8 +73,8 @@ public final class UnmappedCounts {
         return counts.isEmpty();
     }
 
-    /** A sorted copy of the counts by key. */
-    public Map<String, Long> toMap() {
+    /** A copy of the counts by kind, in the order of the kinds' texts. */
+    public Map<UnmappedMessage, Long> toMap() {
         return Collections.unmodifiableMap(new TreeMap<>(counts));
     }
 }

@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
@@ -13,6 +14,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.TreeMap;
 import java.util.TreeSet;
 
 /**
@@ -26,7 +28,6 @@ public final class UnmappedMessages {
 
     /** At most this many lines say which commands were not mapped; one more counts the rest. */
     public static final int MAX_LINES = 10;
-    private static final String LOCATION = " about unknown location '";
 
     /**
      * One command's messages no rule maps.
@@ -65,19 +66,13 @@ public final class UnmappedMessages {
     private UnmappedMessages() {
     }
 
-    /** The command of a kind of unmapped message: {@code GoTo/goTo} of {@code GoTo/goTo reply 'kitchen'}. */
-    public static String command(String kind) {
-        if (kind.endsWith(" " + UnmappedCounts.OTHER)) {
-            return kind.substring(0, kind.length() - UnmappedCounts.OTHER.length() - 1);
-        }
-        int command = kind.indexOf(" command");
-        int reply = kind.indexOf(" reply");
-        int end = command < 0 ? reply : reply < 0 ? command : Math.min(command, reply);
-        return end < 0 ? kind : kind.substring(0, end);
+    /** The command a group counts {@code m} under: {@code GoTo/goTo}, or the text of every other command. */
+    private static String command(UnmappedMessage m) {
+        return m.kind() == UnmappedMessage.Kind.OTHER_COMMANDS ? m.text() : m.name();
     }
 
     /** The messages by command, the commands with most messages first. */
-    public static List<Group> groups(Map<String, Long> unmapped) {
+    public static List<Group> groups(Map<UnmappedMessage, Long> unmapped) {
         Map<String, long[]> counts = new LinkedHashMap<>(); // messages, no rule (0/1), distinct replies, more (0/1)
         Map<String, TreeSet<String>> locations = new LinkedHashMap<>();
         unmapped.forEach((kind, n) -> {
@@ -85,16 +80,11 @@ public final class UnmappedMessages {
             long[] c = counts.computeIfAbsent(command, k -> new long[4]);
             locations.computeIfAbsent(command, k -> new TreeSet<>());
             c[0] += n;
-            String rest = kind.substring(command.length());
-            int at = rest.indexOf(LOCATION);
-            if (rest.equals(" " + UnmappedCounts.OTHER) || kind.equals(UnmappedCounts.OTHER_COMMANDS)) {
-                c[3] = 1;
-            } else if (at >= 0) {
-                locations.get(command).add(rest.substring(at + LOCATION.length(), rest.length() - 1));
-            } else if (rest.equals(" command")) {
-                c[1] = 1;
-            } else {
-                c[2]++;
+            switch (kind.kind()) {
+                case OTHER_VALUES, OTHER_COMMANDS -> c[3] = 1;
+                case COMMAND_LOCATION, REPLY_LOCATION -> locations.get(command).add(kind.location());
+                case COMMAND -> c[1] = 1;
+                case REPLY -> c[2]++;
             }
         });
         List<Group> groups = new ArrayList<>();
@@ -112,12 +102,19 @@ public final class UnmappedMessages {
      * abstraction leaves out talking (a camera): it names a location the abstraction does not know, or it is a command
      * or a reply of a component the abstraction maps that no rule takes. The trace misses a step there.
      */
-    public static boolean novelty(String kind, Abstraction abstraction) {
-        return kind.contains(LOCATION) || abstraction.mapsProtocol(protocol(command(kind)));
+    public static boolean novelty(UnmappedMessage kind, Abstraction abstraction) {
+        return kind.location() != null || abstraction.mapsProtocol(kind.protocol());
+    }
+
+    /** The counts by the kinds' texts, in their order: how JSON and people read them. */
+    public static Map<String, Long> texts(Map<UnmappedMessage, Long> unmapped) {
+        Map<String, Long> texts = new LinkedHashMap<>();
+        new TreeMap<>(unmapped).forEach((kind, n) -> texts.put(kind.text(), n));
+        return texts;
     }
 
     /** At most {@value #MAX_LINES} lines, one per command, then one that counts the commands left out. */
-    public static List<String> lines(Map<String, Long> unmapped) {
+    public static List<String> lines(Map<UnmappedMessage, Long> unmapped) {
         List<Group> groups = groups(unmapped);
         List<String> lines = new ArrayList<>();
         int shown = groups.size() <= MAX_LINES ? groups.size() : MAX_LINES - 1;
@@ -143,14 +140,16 @@ public final class UnmappedMessages {
      * @param abstraction      the abstraction the log was read with
      * @param consequence      what follows from it ({@code no verdict}), said after the reasons
      */
-    public static Optional<String> misfit(String log, long interfaceRecords, Map<String, Long> unmapped,
+    public static Optional<String> misfit(String log, long interfaceRecords, Map<UnmappedMessage, Long> unmapped,
                                           Abstraction abstraction, String consequence) {
         long notMapped = unmapped.values().stream().mapToLong(Long::longValue).sum();
         List<String> unseen = new ArrayList<>();
         TreeSet<String> places = new TreeSet<>();
+        Map<String, String> protocols = new LinkedHashMap<>(); // by command
+        unmapped.keySet().forEach(m -> protocols.putIfAbsent(command(m), m.protocol()));
         for (Group g : groups(unmapped)) {
             places.addAll(g.locations());
-            if (g.noRule() && abstraction.mapsProtocol(protocol(g.command()))) {
+            if (g.noRule() && abstraction.mapsProtocol(protocols.get(g.command()))) {
                 unseen.add(g.command());
             }
         }
@@ -180,7 +179,7 @@ public final class UnmappedMessages {
      * The built-in abstraction that would map most of these messages, if one would map more than half of them: what
      * to try instead. Each kind is tried as a message of its command (with the location it names).
      */
-    public static Optional<String> likelyFix(Map<String, Long> unmapped, Abstraction current) {
+    public static Optional<String> likelyFix(Map<UnmappedMessage, Long> unmapped, Abstraction current) {
         long total = unmapped.values().stream().mapToLong(Long::longValue).sum();
         String best = null;
         long bestCovered = 0;
@@ -190,7 +189,7 @@ public final class UnmappedMessages {
             }
             Abstraction other = AbstractionFiles.builtin(name).orElseThrow();
             long covered = 0;
-            for (Map.Entry<String, Long> e : unmapped.entrySet()) {
+            for (Map.Entry<UnmappedMessage, Long> e : unmapped.entrySet()) {
                 if (!(other.classify(example(e.getKey())) instanceof Classification.Unmapped)) {
                     covered += e.getValue();
                 }
@@ -204,17 +203,8 @@ public final class UnmappedMessages {
     }
 
     /** A command message of the kind's command, naming the location the kind names (if it does). */
-    private static LogRecord example(String kind) {
-        String command = command(kind);
-        int at = kind.indexOf(LOCATION);
-        String location = at < 0 ? "" : kind.substring(at + LOCATION.length(), kind.length() - 1);
-        int slash = command.indexOf('/');
-        return new LogRecord(0, 0, "DEBUG", RecordKind.COMMAND, "", "", slash < 0 ? "" : command.substring(0, slash),
-                command.substring(slash + 1), location, "");
-    }
-
-    private static String protocol(String command) {
-        int slash = command.indexOf('/');
-        return slash < 0 ? "" : command.substring(0, slash);
+    private static LogRecord example(UnmappedMessage kind) {
+        String location = kind.location() == null ? "" : kind.location();
+        return new LogRecord(0, 0, "DEBUG", RecordKind.COMMAND, "", "", kind.protocol(), kind.command(), location, "");
     }
 }

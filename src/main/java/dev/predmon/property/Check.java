@@ -52,10 +52,10 @@ abstract class Check {
     /** Starts a segment afresh. */
     abstract void reset();
 
-    /** The check of {@code p}. */
-    static Check of(Property p) {
+    /** The check of {@code p}, which takes the values it reads from {@code readings}. */
+    static Check of(Property p, Readings readings) {
         if (p instanceof Bound b) {
-            return new BoundCheck(b);
+            return new BoundCheck(b, readings);
         }
         if (p instanceof Absence a) {
             return new AbsenceCheck(a);
@@ -63,20 +63,24 @@ abstract class Check {
         if (p instanceof Precedence q) {
             return new PrecedenceCheck(q);
         }
-        return new ResponseCheck((Response) p);
+        return new ResponseCheck((Response) p, readings);
     }
 
     private static final class BoundCheck extends Check {
         private final Bound p;
+        private final Readings readings;
+        private final int slot;
         private double last = Double.NaN;
 
-        BoundCheck(Bound p) {
+        BoundCheck(Bound p, Readings readings) {
             this.p = p;
+            this.readings = readings;
+            this.slot = readings.slot(p.value());
         }
 
         @Override
         Verdict.Violated step(LogRecord r, long ticks) {
-            double v = p.valueOf(r);
+            double v = readings.value(slot); // p.valueOf(r), read once for every property
             reading = v;
             if (Double.isNaN(v)) {
                 return null;

@@ -58,7 +58,12 @@ public final class PropertyChecker {
     }
 
     private final List<Property> properties;
+    private final Scope[] scopes;
     private final Check[] checks;
+    /** Every value the properties read, each read once per record, whatever the scopes. */
+    private final Readings readings;
+    /** Per property, its value's slot in {@link #readings} (a bound's), or -1. */
+    private final int[] slots;
     private final boolean[] open;
     private final Verdict.Violated[] violated;
     private final Listener listener;
@@ -68,8 +73,14 @@ public final class PropertyChecker {
         this.properties = List.copyOf(properties);
         this.listener = listener;
         this.checks = new Check[this.properties.size()];
+        this.scopes = new Scope[checks.length];
+        this.slots = new int[checks.length];
+        this.readings = new Readings(this.properties);
         for (int i = 0; i < checks.length; i++) {
-            checks[i] = Check.of(this.properties.get(i));
+            Property p = this.properties.get(i);
+            checks[i] = Check.of(p, readings);
+            scopes[i] = p.scope();
+            slots[i] = p instanceof Bound b ? readings.slot(b.value()) : -1;
         }
         this.open = new boolean[checks.length];
         this.violated = new Verdict.Violated[checks.length];
@@ -80,13 +91,14 @@ public final class PropertyChecker {
         if (r.kind() == RecordKind.TICK) {
             ticks++;
         }
+        readings.read(r);
         for (int i = 0; i < checks.length; i++) {
             Check c = checks[i];
             c.reading = Double.NaN;
             if (violated[i] != null && !c.reads()) {
                 continue; // the verdict is final; only a bound still reads its value, for the forecast
             }
-            Scope s = properties.get(i).scope();
+            Scope s = scopes[i];
             Verdict.Violated v;
             if (s.global()) {
                 v = c.step(r, ticks);
@@ -136,12 +148,20 @@ public final class PropertyChecker {
         return checks[index].reading;
     }
 
+    /**
+     * The value the last record carried for bound {@code index} ({@link Bound#valueOf}), whether or not its scope is
+     * open; NaN when it carried none (or the property is no bound).
+     */
+    public double value(int index) {
+        return slots[index] < 0 ? Double.NaN : readings.value(slots[index]);
+    }
+
     /** The verdict of property {@code index} on the run so far. */
     public Verdict verdict(int index) {
         if (violated[index] != null) {
             return violated[index];
         }
-        return open[index] || properties.get(index).scope().global() ? checks[index].owed() : Verdict.HOLDS;
+        return open[index] || scopes[index].global() ? checks[index].owed() : Verdict.HOLDS;
     }
 
     /** Every property with its verdict on the run so far, in the checker's order. */

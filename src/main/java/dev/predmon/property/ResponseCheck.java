@@ -23,13 +23,21 @@ final class ResponseCheck extends Check {
     /** Where the run was at the last record, in the deadline's unit. */
     private double now;
 
-    ResponseCheck(Response p) {
+    private final Readings readings;
+    /** The condition's value's slot in {@link #readings}, or -1 for a trigger that is an event. */
+    private final int slot;
+
+    ResponseCheck(Response p, Readings readings) {
         this.p = p;
         this.d = p.within();
+        this.readings = readings;
+        this.slot = p.condition() == null ? -1 : readings.slot(p.condition().value());
     }
 
     @Override
     Verdict.Violated step(LogRecord r, long ticks) {
+        // Whether r is a response, asked at most once per record: null until asked.
+        Boolean responds = null;
         if (pending) {
             if (d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r)) {
                 count++;
@@ -41,14 +49,15 @@ final class ResponseCheck extends Check {
                 return new Verdict.Violated(r.line(), r.time(), null, null, "no " + p.response().describe()
                         + " within " + d.describe() + " of " + p.describeTrigger() + " at line " + line);
             }
-            if (p.response().matches(r)) {
+            responds = p.response().matches(r);
+            if (responds) {
                 pending = false;
                 obligations.closed(now - since(), true);
             }
         }
         if (p.cancelledBy() != null) {
-            boolean responds = p.response().matches(r);
-            answered = responds || (answered && !p.cancelledBy().matches(r));
+            boolean response = responds != null ? responds : p.response().matches(r);
+            answered = response || (answered && !p.cancelledBy().matches(r));
         }
         if (fires(r) && !pending) {
             pending = true;
@@ -95,7 +104,7 @@ final class ResponseCheck extends Check {
         if (p.trigger() != null) {
             return p.trigger().matches(r) && !answered;
         }
-        double v = p.condition().value().valueOf(r);
+        double v = readings.value(slot); // p.condition().value().valueOf(r), read once for every property
         if (!Double.isNaN(v)) {
             held = p.condition().test(v);
         }

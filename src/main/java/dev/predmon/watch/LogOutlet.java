@@ -1,5 +1,6 @@
 package dev.predmon.watch;
 
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.live.Tile;
 import dev.predmon.pipeline.UnmappedMessages;
 
@@ -35,9 +36,9 @@ final class LogOutlet {
      * Whether an unmapped {@code message} is the first of its command, to be said: of at most
      * {@value UnmappedMessages#MAX_LINES} commands, and one more to say that there are more.
      */
-    boolean firstOfItsCommand(String message) {
+    boolean firstOfItsCommand(UnmappedMessage message) {
         return commandsSeen.size() <= UnmappedMessages.MAX_LINES
-                && commandsSeen.add(UnmappedMessages.command(message));
+                && commandsSeen.add(message.name());
     }
 
     /** How many commands of unmapped messages were seen (at most one past {@value UnmappedMessages#MAX_LINES}). */

@@ -1,6 +1,7 @@
 package dev.predmon.watch;
 
 import dev.predmon.Terminal;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.IOException;
@@ -35,10 +36,10 @@ final class Notices {
      *
      * @param commands how many commands have been seen so far, this one included
      */
-    void unmapped(String log, long line, String message, int commands) {
+    void unmapped(String log, long line, UnmappedMessage message, int commands) {
         err.println(Terminal.line(log + ":" + line + ": warning: " + (commands > UnmappedMessages.MAX_LINES
                 ? "more commands no abstraction rule maps; the totals come at the stop"
-                : "interface message no abstraction rule maps: " + message + " (first of its command; the totals "
+                : "interface message no abstraction rule maps: " + message.text() + " (first of its command; the totals "
                 + "come at the stop)")));
         err.flush();
     }

@@ -1,6 +1,7 @@
 package dev.predmon.watch;
 
 import dev.predmon.Terminal;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.pipeline.UnmappedMessages;
@@ -56,7 +57,7 @@ public final class ProblemLines {
      * The interface messages no abstraction rule maps, never silently dropped: one line per command with its count
      * and why, at most {@value UnmappedMessages#MAX_LINES} lines (a pose a message would be a line per value).
      */
-    public static void unmapped(PrintWriter err, Path log, Map<String, Long> unmapped) {
+    public static void unmapped(PrintWriter err, Path log, Map<UnmappedMessage, Long> unmapped) {
         UnmappedMessages.lines(unmapped).forEach(line -> err.println(Terminal.line(log + ": warning: interface "
                 + "messages no rule maps: " + line)));
         err.flush();

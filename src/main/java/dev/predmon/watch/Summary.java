@@ -1,6 +1,7 @@
 package dev.predmon.watch;
 
 import dev.predmon.Terminal;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.event.EventJson;
 import dev.predmon.event.ForecastJson;
 import dev.predmon.event.PropertyJson;
@@ -9,6 +10,7 @@ import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.RunsSummary;
 import dev.predmon.monitor.WatchedLog;
+import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.PrintWriter;
 import java.time.Instant;
@@ -48,7 +50,7 @@ final class Summary {
      */
     int print(WatchedLog log, String stop, boolean judged, IntFunction<Optional<String>> restartBefore) {
         PredictiveMonitor m = log.monitor();
-        Map<String, Long> unmapped = m.unmapped();
+        Map<UnmappedMessage, Long> unmapped = m.unmapped();
         ProblemLines.unmapped(err, log.path(), unmapped);
         if (settings.json()) {
             json(log, stop);
@@ -70,7 +72,7 @@ final class Summary {
                 ForecastJson.of(r.forecast()), PropertyJson.of(r.properties()))).toList();
         End end = new End("end", stop, m.records(), all.pairs(), m.warning().isPresent(), m.violation().isPresent(),
                 first.lead().orElse(null), m.clock().unit(), all.noMatch(), perRun, all.runs(), all.dropped(),
-                m.unmapped(), m.rule().id(), ForecastJson.of(last.forecast()), PropertyJson.of(last.properties()));
+                UnmappedMessages.texts(m.unmapped()), m.rule().id(), ForecastJson.of(last.forecast()), PropertyJson.of(last.properties()));
         out.println(EventJson.line(EventJson.stamped(end, settings.several() ? log.name() : null, Instant.now())));
     }
 

@@ -124,7 +124,8 @@ public class AbstractionTest {
         for (String v : List.of("", "high", "NaN", "Infinity", "1d")) {
             Classification c = A.classify(reply("/BatteryComponent", "/BatteryReaderBatteryLevelClient",
                     "BatteryReader", "level", "", v));
-            assertEquals(new Classification.Unmapped("BatteryReader/level reply '" + v + "'"), c);
+            assertUnmapped(new UnmappedMessage("BatteryReader", "level", UnmappedMessage.Kind.REPLY, v),
+                    "BatteryReader/level reply '" + v + "'", c);
         }
     }
 
@@ -144,13 +145,17 @@ public class AbstractionTest {
 
     @Test
     void unknownTrafficIsUnmappedWithAReadableKey() {
-        assertEquals(new Classification.Unmapped("GoTo/teleport command"),
+        assertUnmapped(new UnmappedMessage("GoTo", "teleport", UnmappedMessage.Kind.COMMAND, ""),
+                "GoTo/teleport command",
                 A.classify(command("/GoToGoToClient/kitchen", "/GoToComponent", "GoTo", "teleport", "kitchen")));
-        assertEquals(new Classification.Unmapped("GoTo/teleport reply '5'"),
+        assertUnmapped(new UnmappedMessage("GoTo", "teleport", UnmappedMessage.Kind.REPLY, "5"),
+                "GoTo/teleport reply '5'",
                 A.classify(reply("/GoToComponent", "/GoToGoToClient/kitchen", "GoTo", "teleport", "kitchen", "5")));
-        assertEquals(new Classification.Unmapped("GoTo/getStatus reply '7'"),
+        assertUnmapped(new UnmappedMessage("GoTo", "getStatus", UnmappedMessage.Kind.REPLY, "7"),
+                "GoTo/getStatus reply '7'",
                 A.classify(reply("/GoToComponent", "/GoToGoToClient/kitchen", "GoTo", "getStatus", "kitchen", "7")));
-        assertEquals(new Classification.Unmapped("GoTo/goTo command about unknown location 'bedroom'"),
+        assertUnmapped(new UnmappedMessage("GoTo", "goTo", UnmappedMessage.Kind.COMMAND_LOCATION, "bedroom"),
+                "GoTo/goTo command about unknown location 'bedroom'",
                 A.classify(command("/GoToGoToClient/bedroom", "/GoToComponent", "GoTo", "goTo", "bedroom")));
     }
 
@@ -169,7 +174,7 @@ public class AbstractionTest {
         assertEquals("o_level_high", symbol(reply("/BatteryComponent", "/BatteryReaderBatteryLevelClient", "", "level", "", "97.3")));
         assertEquals("isAt_ch_i", symbol(command("/GoToIsAtClient/charging_station", "/GoToComponent", "", "isAtLocation",
                 "charging_station extra")));
-        assertEquals(new Classification.Unmapped("teleport command"),
+        assertUnmapped(new UnmappedMessage("", "teleport", UnmappedMessage.Kind.COMMAND, ""), "teleport command",
                 A.classify(command("/GoToGoToClient/kitchen", "/GoToComponent", "", "teleport", "kitchen")));
     }
 
@@ -211,5 +216,11 @@ public class AbstractionTest {
         assertEquals(AbstractionFiles.fromJson("a", reordered).fingerprint(), AbstractionFiles.fromJson("b", ordered).fingerprint());
         assertNotEquals(A.fingerprint(), AbstractionFiles.fromJson("b", ordered).fingerprint());
         assertTrue(A.canonicalJson().indexOf("\"drop\"") < A.canonicalJson().indexOf("\"name\""));
+    }
+
+    /** {@code c} is the unmapped message {@code expected}, whose written form is {@code text}. */
+    private static void assertUnmapped(UnmappedMessage expected, String text, Classification c) {
+        assertEquals(new Classification.Unmapped(expected), c);
+        assertEquals(text, expected.text());
     }
 }

@@ -1,5 +1,6 @@
 package dev.predmon.event;
 
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.Clock;
@@ -45,7 +46,8 @@ class EventJsonTest {
         LogEvent sent = LogEvent.of("a.log", new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0), AT);
         assertEquals("{\"event\":\"no-match\",\"log\":\"a.log\",\"time\":5.0,\"unit\":\"s\",\"line\":40,\"run\":0,"
                 + "\"wallTime\":\"2026-11-25T17:40:01.123Z\"}", sent.line());
-        assertThrows(IllegalArgumentException.class, () -> EventJson.of(new MonitorEvent.Unmapped(1, 2, "X/y"),
+        assertThrows(IllegalArgumentException.class, () -> EventJson.of(new MonitorEvent.Unmapped(1, 2,
+                new UnmappedMessage("X", "y", UnmappedMessage.Kind.COMMAND, "")),
                 null, AT), "an unmapped message goes to stderr, it is no JSON event");
     }
 }

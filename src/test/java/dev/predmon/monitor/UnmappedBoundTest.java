@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.LearnedModels;
 import dev.predmon.parse.LogRecord;
@@ -32,7 +33,7 @@ class UnmappedBoundTest {
 
     @Test
     void twoHundredThousandDistinctRepliesAreCountedInBoundedMemory() {
-        List<String> firstSightings = new ArrayList<>();
+        List<UnmappedMessage> firstSightings = new ArrayList<>();
         PredictiveMonitor m = new PredictiveMonitor(LearnedModels.modelSet(List.of(), THESIS), THESIS, 0, e -> {
             if (e instanceof MonitorEvent.Unmapped u) {
                 firstSightings.add(u.message());
@@ -47,11 +48,13 @@ class UnmappedBoundTest {
                 m.restart("replaced");
             }
         }
-        Map<String, Long> unmapped = m.unmapped();
+        Map<UnmappedMessage, Long> unmapped = m.unmapped();
         assertEquals(200_000, unmapped.values().stream().mapToLong(Long::longValue).sum(), "every message counted");
         assertTrue(unmapped.size() <= UnmappedCounts.KINDS + 1, "kinds kept: " + unmapped.size());
         assertEquals(UnmappedCounts.KINDS + 1, unmapped.size());
-        assertEquals(199_000, unmapped.get("GoTo/getStatus " + UnmappedCounts.OTHER));
+        UnmappedMessage other = new UnmappedMessage("GoTo", "getStatus", UnmappedMessage.Kind.OTHER_VALUES, "");
+        assertEquals("GoTo/getStatus (other values)", other.text());
+        assertEquals(199_000, unmapped.get(other));
         assertTrue(firstSightings.size() <= 4 * (UnmappedCounts.KINDS + 1), "first sightings: " + firstSightings.size());
         String line = UnmappedMessages.lines(unmapped).get(0);
         assertEquals("GoTo/getStatus (200000 messages): 1000 distinct replies no rule takes; more distinct messages "

@@ -239,4 +239,34 @@ class PropertyCheckerTest {
         assertEquals(new Verdict.Pending(2, 1, 2, Deadline.Unit.TICKS), c.verdict(1));
         assertTrue(Double.isNaN(c.reading(0)), "the last record was no reading");
     }
+
+    /**
+     * A value read by a scoped bound and by a condition is read once per record and shared: the condition sees every
+     * reading, the bound only those in its scope, and {@code value} (what the forecast follows) every reading whatever
+     * the scope, while {@code reading} is the bound's own, NaN outside its scope.
+     */
+    @Test
+    void aValueSharedByAScopedBoundAndAConditionKeepsEachAnswer() {
+        Scope navigating = new Scope(GOTO, event(command("GoTo", "halt")));
+        Bound floor = new Bound("battery", "level >= 20 while navigating", null, navigating, LEVEL, 20,
+                Double.POSITIVE_INFINITY);
+        Response charger = new Response("charger", "to the charger in time", null, Scope.GLOBAL, null,
+                new Condition(LEVEL, Condition.Op.BELOW, 30),
+                event(new RecordMatch(RecordKind.COMMAND, "GoTo", "goTo", null, null, List.of("charging_station"),
+                        null)), null, new Deadline(2, Deadline.Unit.TICKS, null));
+        PropertyChecker c = new PropertyChecker(List.of(floor, charger), (i, p, v) -> { });
+        new Trace().tick().level(15).records().forEach(c::accept);
+        assertEquals(15.0, c.value(0), "read outside the bound's scope");
+        assertTrue(Double.isNaN(c.reading(0)), "the bound itself did not read it: its scope is closed");
+        assertTrue(Double.isNaN(c.value(1)), "a response has no value of its own");
+        assertEquals(Verdict.HOLDS, c.verdict(0), "15 outside the scope violates nothing");
+        assertEquals(new Verdict.Pending(3, 1, 3, Deadline.Unit.TICKS), c.verdict(1),
+                "the condition read the same 15");
+        new Trace().goTo("kitchen").records().forEach(c::accept);
+        assertTrue(Double.isNaN(c.value(0)), "a command carries no value");
+        c.accept(new Trace().level(12).records().get(1));
+        assertEquals(12.0, c.value(0));
+        assertEquals(12.0, c.reading(0), "inside the scope the bound reads it too");
+        assertEquals("12 below the floor 20", violated(c.verdict(0)).what());
+    }
 }
