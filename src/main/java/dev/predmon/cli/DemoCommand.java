@@ -161,7 +161,10 @@ final class DemoCommand implements Callable<Integer> {
         writer.setUncaughtExceptionHandler((t, e) -> failed.set(e)); // rethrown below, not printed by the thread
         writer.start();
         try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> out.println("  " + p.format(log.toString())),
-                tile == null ? r -> { } : tile::record)) {
+                tile == null ? r -> { } : r -> {
+                    tile.record(r);
+                    tile.properties(monitor.properties());
+                })) {
             while (writer.isAlive()) {
                 if (!watcher.poll()) {
                     Thread.sleep(5);

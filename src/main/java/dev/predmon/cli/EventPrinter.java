@@ -112,7 +112,7 @@ final class EventPrinter implements Consumer<MonitorEvent> {
                     ForecastJson.of(w.forecast()), DeadlineJson.of(w.deadline()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             o = new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
-                    ForecastJson.of(f.forecast()), f.property());
+                    ForecastJson.of(f.forecast()), f.property(), DeadlineJson.of(f.deadline()));
         } else if (e instanceof MonitorEvent.Violation v) {
             o = new ViolationJson("violation", v.time(), v.clock().unit(), v.line(), v.run(), v.property(), v.name(),
                     v.value(), v.forecast() ? v.value() : null, v.before(), v.what());
@@ -126,8 +126,8 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         } else if (e instanceof MonitorEvent.Restarted r) {
             o = new RestartedJson("restarted", r.reason());
         } else if (e instanceof MonitorEvent.Recovered r) {
-            o = new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(), r.value(),
-                    r.reason());
+            o = new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(),
+                    Double.isNaN(r.value()) ? null : r.value(), r.reason(), r.property());
         } else if (e instanceof MonitorEvent.UnderWay u) {
             o = new UnderWayJson("under-way", u.time(), u.clock().unit(), u.line(), u.run(), u.by(), u.underWay());
         } else {
@@ -156,15 +156,17 @@ final class EventPrinter implements Consumer<MonitorEvent> {
         }
     }
 
-    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, double battery,
-                         String reason) {
+    /** A recovery: {@code battery} the property's value (null for a property without one), {@code property} its id. */
+    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, Double battery,
+                         String reason, String property) {
     }
 
     record UnderWayJson(String event, double time, String unit, long line, int run, String by, boolean underWay) {
     }
 
+    /** A forecast: the forecast property's ({@code forecast}), or a bounded response's deadline ({@code deadline}). */
     record ForecastEventJson(String event, double time, String unit, long line, int run, ForecastJson forecast,
-                             String property) {
+                             String property, DeadlineJson deadline) {
     }
 
     /**
@@ -197,6 +199,13 @@ final class EventPrinter implements Consumer<MonitorEvent> {
             warning = w;
             return String.format(Locale.ROOT, "%s line %d: WARNING: %s; battery %s", at(w.time(), w.clock()), w.line(),
                     w.reason(), battery(w.battery()));
+        }
+        if (e instanceof MonitorEvent.ForecastChanged f && f.deadline() != null) {
+            return verbose ? String.format(Locale.ROOT, "%s line %d: forecast of %s: %s", at(f.time(), f.clock()),
+                    f.line(), f.property(), f.deadline().novel() ? "pending longer than any training obligation, "
+                    + ForecastWords.fixed(f.deadline().timeLeft(), 0) + " left" : "P(miss) "
+                    + ForecastWords.fixed(f.deadline().probability(), 2) + ", "
+                    + ForecastWords.fixed(f.deadline().timeLeft(), 0) + " left") : null;
         }
         if (e instanceof MonitorEvent.ForecastChanged f) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast: %s", at(f.time(), f.clock()), f.line(),

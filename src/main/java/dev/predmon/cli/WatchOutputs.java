@@ -223,6 +223,7 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         Tile tile = outlets.get(log).tile;
         if (tile != null) {
             tile.record(ticks.record(r));
+            tile.properties(log.monitor().properties());
         }
     }
 
