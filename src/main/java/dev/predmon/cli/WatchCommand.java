@@ -239,14 +239,15 @@ final class WatchCommand implements Callable<Integer> {
         RunOutcome first = all.firstWarned().orElse(runs.get(0));
         long pairs = all.pairs();
         if (input.json) {
+            List<PropertyJson> latest = PropertyJson.latest(m.properties(), m.forecast().orElse(null));
             List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
                     r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
-                    ForecastJson.of(r.forecast()), PropertyJson.of(r.properties()))).toList();
+                    ForecastJson.of(r.forecast()), r.run() == runs.get(runs.size() - 1).run() ? latest
+                    : PropertyJson.of(r.properties()))).toList();
             End end = new End("end", stop, m.records(), pairs, m.warning().isPresent(),
                     m.violation().isPresent(), first.lead().orElse(null), m.clock().unit(), all.noMatch(), perRun,
                     all.runs(), all.dropped(), unmapped, m.rule().id(),
-                    ForecastJson.of(runs.get(runs.size() - 1).forecast()),
-                    PropertyJson.of(runs.get(runs.size() - 1).properties()));
+                    ForecastJson.of(runs.get(runs.size() - 1).forecast()), latest);
             out.println(Json.line(Json.stamped(end, several ? log.name() : null, Instant.now())));
         } else {
             if (all.dropped() > 0) {
@@ -264,7 +265,9 @@ final class WatchCommand implements Callable<Integer> {
                             + r.lead().map(l -> ", lead " + EventPrinter.span(l, m.clock())).orElse("")
                             + (r.forecast() == null ? "" : "; last forecast " + ForecastWords.line(r.forecast())));
                     if (judged) {
-                        PropertyJson.lines(r.properties()).forEach(l -> out.println(stamp(log, several) + l));
+                        (r.run() == runs.get(runs.size() - 1).run() ? PropertyJson.latestLines(m.properties(),
+                                m.forecast().orElse(null)) : PropertyJson.lines(r.properties()))
+                                .forEach(l -> out.println(stamp(log, several) + l));
                     }
                 }
             }
@@ -278,7 +281,8 @@ final class WatchCommand implements Callable<Integer> {
                     + stop + ")") + ": " + m.records() + " records, " + (all.runs() > 1 ? all.runs() + " runs, " : "")
                     + pairs + " compacted pairs; " + verdict);
             if (all.runs() == 1 && judged) {
-                PropertyJson.lines(runs.get(0).properties()).forEach(l -> out.println(stamp(log, several) + l));
+                PropertyJson.latestLines(m.properties(), m.forecast().orElse(null))
+                        .forEach(l -> out.println(stamp(log, several) + l));
             }
             RunOutcome last = runs.get(runs.size() - 1);
             if (all.runs() == 1 && last.forecast() != null) {

@@ -188,7 +188,7 @@ final class PropertyLights {
 
     private static String forecastWords(PropertyStatus s, Survival.Estimate e) {
         if (s == null || s.model() == PropertyStatus.Model.NONE) {
-            return "no forecast: nothing learned forecasts this property";
+            return "no forecast: no model of this property";
         }
         if (e == null) {
             return "no forecast: no obligation pending";
