@@ -3,7 +3,7 @@
 // elsewhere. Acknowledgements and the alert switches are kept in this browser (localStorage): the server only shows.
 'use strict';
 import {STATES, STATE_WORDS} from './words.js';
-import {NEEDS_ATTENTION, el, renderRow, renderTile} from './tile.js';
+import {NEEDS_ATTENTION, el, renderRow, renderTile, shownLight} from './tile.js';
 
 const tilesEl = document.getElementById('tiles');
 const emptyEl = document.getElementById('empty');
@@ -35,7 +35,8 @@ function store(key, value) {
 }
 
 // An acknowledgement holds for the state it was given in: any change of state (or run, or staleness) lifts it.
-const ackKey = (t) => t.run + '|' + t.state + '|' + t.stale;
+const worstState = (t) => (t.worst && t.worst.model !== 'forecast' ? t.worst.property + ' ' + t.worst.state : '');
+const ackKey = (t) => t.run + '|' + t.state + '|' + t.stale + '|' + worstState(t);
 let acks = stored('acks', {});
 
 const ui = {
@@ -54,8 +55,11 @@ const ui = {
 // ---- order and drawing ---------------------------------------------------------------------------------------
 /** Worst first; a log quiet mid-run sorts with the unknown ones; acknowledged after the others of their state. */
 function rank(t) {
-  const r = STATES.indexOf(t.state);
-  return t.stale && r > STATES.indexOf('unknown') ? STATES.indexOf('unknown') : r;
+  let r = STATES.indexOf(t.state);
+  r = t.stale && r > STATES.indexOf('unknown') ? STATES.indexOf('unknown') : r;
+  // another property violated or warned sorts the robot with the violations or the warnings
+  const w = t.worst ? t.worst.state : '';
+  return Math.min(r, w === 'violated' ? STATES.indexOf('violation') : w === 'warning' ? STATES.indexOf('warning') : r);
 }
 
 function compare(a, b) {
@@ -76,7 +80,7 @@ function node(t) {
     nodes.set(t.log, n);
   }
   n.dataset.state = t.state;
-  n.dataset.light = t.light;
+  n.dataset.light = shownLight(t);
   n.dataset.stale = String(t.stale);
   n.dataset.run = String(t.run);
   n.dataset.ack = String(ui.acked(t));
@@ -160,8 +164,10 @@ function beep() {
 
 function alert(t) {
   if (ui.acked(t)) return;
-  const title = t.name + ': ' + STATE_WORDS[t.state];
-  const body = (t.state === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
+  const other = worstState(t) && !NEEDS_ATTENTION.has(t.state) ? t.worst : null; // another property's alarm
+  const title = t.name + ': ' + (other ? other.property + ' ' + other.state : STATE_WORDS[t.state]);
+  const body = other ? other.words + (other.action ? '\nDo now: ' + other.action : '')
+    : (t.state === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
   if (notify && 'Notification' in window && Notification.permission === 'granted') {
     new Notification(title, {body: body, tag: t.log});
   }
@@ -222,6 +228,9 @@ function apply(s, full, request) {
     const before = logs.get(t.log);
     logs.set(t.log, t);
     if (before && before.state !== t.state && (t.state === 'warning' || t.state === 'violation')) alert(t);
+    else if (before && worstState(before) !== worstState(t) && ['violated', 'warning'].includes(t.worst.state)) {
+      alert(t);
+    }
   }
   if (full) {
     for (const log of [...logs.keys()]) if (!seen.has(log)) logs.delete(log);

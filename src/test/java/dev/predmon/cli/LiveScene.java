@@ -62,7 +62,10 @@ final class LiveScene implements AutoCloseable {
         LogWatcher w = watchers.get(log);
         if (w == null) {
             PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> event(tile, e));
-            w = LogWatcher.withRecords(log, monitor, p -> { }, tile::record);
+            w = LogWatcher.withRecords(log, monitor, p -> { }, r -> {
+                tile.record(r);
+                tile.properties(monitor.properties());
+            });
             watchers.put(log, w);
         }
         while (w.poll()) {
