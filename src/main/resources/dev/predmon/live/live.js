@@ -3,7 +3,7 @@
 // elsewhere. Acknowledgements and the alert switches are kept in this browser (localStorage): the server only shows.
 'use strict';
 import {STATES, STATE_WORDS} from './words.js';
-import {NEEDS_ATTENTION, el, renderRow, renderTile, shownLight} from './tile.js';
+import {NEEDS_ATTENTION, el, renderRow, renderTile, shownLight, shownState} from './tile.js';
 
 const tilesEl = document.getElementById('tiles');
 const emptyEl = document.getElementById('empty');
@@ -55,11 +55,9 @@ const ui = {
 // ---- order and drawing ---------------------------------------------------------------------------------------
 /** Worst first; a log quiet mid-run sorts with the unknown ones; acknowledged after the others of their state. */
 function rank(t) {
-  let r = STATES.indexOf(t.state);
-  r = t.stale && r > STATES.indexOf('unknown') ? STATES.indexOf('unknown') : r;
   // another property violated or warned sorts the robot with the violations or the warnings
-  const w = t.worst ? t.worst.state : '';
-  return Math.min(r, w === 'violated' ? STATES.indexOf('violation') : w === 'warning' ? STATES.indexOf('warning') : r);
+  const r = STATES.indexOf(shownState(t));
+  return t.stale && r > STATES.indexOf('unknown') ? STATES.indexOf('unknown') : r;
 }
 
 function compare(a, b) {
@@ -113,14 +111,14 @@ function show() {
 }
 
 function summary(all) {
-  const count = (s) => all.filter(t => t.state === s).length;
+  const count = (s) => all.filter(t => shownState(t) === s).length;
   const parts = STATES.filter(s => count(s) > 0).map(s => count(s) + ' ' + STATE_WORDS[s].toLowerCase());
   const stale = all.filter(t => t.stale).length;
   const acked = all.filter(t => ui.acked(t)).length;
   document.getElementById('summary').textContent = all.length + (all.length === 1 ? ' robot' : ' robots')
     + (parts.length ? ': ' + parts.join(', ') : '') + (stale ? ' \u00b7 ' + stale + ' stale' : '')
     + (acked ? ' \u00b7 ' + acked + ' acknowledged' : '');
-  const worst = all.length ? all[0].state : 'waiting';
+  const worst = all.length ? shownState(all[0]) : 'waiting';
   document.title = (NEEDS_ATTENTION.has(worst) && !ui.acked(all[0]) ? STATE_WORDS[worst] + ' \u2014 ' : '')
     + 'predmon live';
 }

@@ -23,7 +23,7 @@ function light(t, small) {
 }
 
 /** A property's light: its colour and glyph, its state in words for a screen reader. */
-function propertyLight(p) {
+export function propertyLight(p) {
   const l = el('span', 'light small ' + p.light, PROPERTY_GLYPHS[p.state] || '');
   l.setAttribute('role', 'img');
   l.setAttribute('aria-label', p.property + ' ' + (PROPERTY_WORDS[p.state] || p.state));
@@ -65,22 +65,36 @@ export function shownLight(t) {
   return t.light;
 }
 
-/** The compact view's chip of the worst property: its light and id, or that every property holds. */
+/**
+ * The robot's state as the page counts and sorts it: its own, unless another property is violated (a violation) or
+ * warned (a warning) while its own state is calmer.
+ */
+export function shownState(t) {
+  const light = shownLight(t);
+  return light === t.light ? t.state : light === 'red' ? 'violation' : 'warning';
+}
+
+/**
+ * The compact view's chip of the worst property beside the forecast's (whose light is the row's own): its light and
+ * id, its words in the tooltip; or that the others hold.
+ */
 function worstChip(t) {
-  const props = t.properties || [];
-  if (props.length === 0) return null;
-  const w = props[0];
+  const others = (t.properties || []).filter(p => p.model !== 'forecast');
+  if (others.length === 0) return null;
+  const w = others[0];
   const chip = el('span', 'worst');
   chip.dataset.state = w.state;
+  chip.dataset.property = w.property;
   const calm = w.state === 'holds' || w.state === 'pending';
-  chip.append(propertyLight(w), el('span', 'worst-text', calm ? 'all ' + props.length + ' hold'
-    : w.property + ' ' + PROPERTY_WORDS[w.state]));
-  chip.title = props.map(p => p.property + ': ' + p.words + ' \u2014 ' + propertyForecast(p)).join('\n');
+  chip.append(propertyLight(w), el('span', 'worst-text', calm ? (others.length === 1 ? w.property : others.length
+    + ' others') + ' ok' : w.property));
+  chip.title = (t.properties || []).map(p => p.property + ' (' + PROPERTY_WORDS[p.state] + '): ' + p.words + ' \u2014 '
+    + propertyForecast(p)).join('\n');
   return chip;
 }
 
 function ackButton(t, ui, compact) {
-  if (!NEEDS_ATTENTION.has(t.state) && !t.stale) return null;
+  if (!NEEDS_ATTENTION.has(shownState(t)) && !t.stale) return null;
   const acked = ui.acked(t);
   const b = el('button', 'ack', compact ? (acked ? 'acked' : 'ack') : acked ? 'acknowledged' : 'acknowledge');
   b.type = 'button';
@@ -286,7 +300,11 @@ export function renderRow(row, t, ui) {
   const line1 = el('div', 'line1');
   const chip = worstChip(t);
   line1.append(name, ...badges(t, true), ...(chip ? [chip] : []), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
-  const line2 = el('div', 'line2', rowWords(t, ui));
+  // another property's alarm first: which, and what to do
+  const w = shownState(t) !== t.state ? t.worst : null;
+  const alarm = w ? w.property + ' ' + PROPERTY_WORDS[w.state].toUpperCase() + (w.action ? ' \u2192 ' + w.action : '')
+    + ' \u00b7 ' : '';
+  const line2 = el('div', 'line2', alarm + rowWords(t, ui));
   line2.title = verdict(t) + (forecastWords(t.forecast) ? '\n' + forecastWords(t.forecast) : '');
   const text = el('div', 'text');
   text.append(line1, line2);

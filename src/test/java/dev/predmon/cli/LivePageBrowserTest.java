@@ -255,12 +255,12 @@ class LivePageBrowserTest {
             records.addAll(new Records().at(i + 1).call("/GoToDestination/BT_rpc/client",
                     "/GoToDestination/BT_rpc/server", "Skill_request", "send_stop", "", "").list());
         }
-        records.forEach(t::record);
+        scene.records(t, records);
         double p = 0.05 + (i % 30) / 100.0;
         Forecast f = new Forecast(p, 40.0 + i, 30.0 + i, 60.0 + i, Forecast.Basis.MATCHED, null, 20, 4, level, -0.9, "s");
         if (i % 25 == 0) {
             scene.event(t, new MonitorEvent.Violation(i, 900, "battery level >= 20%", 19.95, 20.3, Clock.SECONDS, 0));
-            t.record(new Records().at(i + 2).level(19.95).list().get(1));
+            scene.records(t, List.of(new Records().at(i + 2).level(19.95).list().get(1)));
         } else if (i % 9 == 0) {
             f = new Forecast(0.97, 6.5, 5.9, 7.4, Forecast.Basis.MATCHED, null, 10, 10, 31.2, -2.4, "s");
             scene.event(t, new MonitorEvent.Warning(i, 700, List.of(), 31.2, 12, Clock.SECONDS, 0, WarningRule.FORECAST,
