@@ -40,7 +40,7 @@ function propertyList(t) {
     const head = el('div', 'prop-head');
     head.append(el('b', 'prop-id', p.property), el('span', 'prop-name', p.name));
     const text = el('div', 'prop-text');
-    text.append(head, el('div', 'prop-words', p.words), el('div', 'prop-forecast', propertyForecast(p)));
+    text.append(head, el('div', 'prop-words', p.words), el('div', 'prop-forecast', propertyForecast(p, t)));
     if (p.recovery) text.append(el('div', 'prop-recovery', 'recovered: ' + p.recovery));
     if (p.action && (p.state === 'warning' || p.state === 'violated') && p.model !== 'forecast') {
       const a = el('div', 'prop-action');
@@ -89,7 +89,7 @@ function worstChip(t) {
   chip.append(propertyLight(w), el('span', 'worst-text', calm ? (others.length === 1 ? w.property : others.length
     + ' others') + ' ok' : w.property));
   chip.title = (t.properties || []).map(p => p.property + ' (' + PROPERTY_WORDS[p.state] + '): ' + p.words + ' \u2014 '
-    + propertyForecast(p)).join('\n');
+    + propertyForecast(p, t)).join('\n');
   return chip;
 }
 

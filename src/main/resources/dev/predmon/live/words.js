@@ -215,13 +215,18 @@ export function earlierText(r, unit) {
     + (r.lead !== null ? ', lead ' + span(r.lead, unit) : '') + (r.noMatch ? ', no model matched' : '');
 }
 
-/** A property's forecast in a few words, or that it has none: "P(miss) 12%, 40 ticks left". */
-export function propertyForecast(p) {
+/**
+ * A property's forecast in a few words, or that it has none: "P(miss) 12%, 40 ticks left". The forecast's property
+ * below the warning threshold says how far it is from a warning, with no countdown to a violation not expected.
+ */
+export function propertyForecast(p, t) {
   const f = p.forecast;
   if (p.model === 'forecast') {
     if (!f) return 'no forecast yet';
     if (p.skill === false) return 'no skill: the forecast did no better than the base rate';
-    return chance(f.probability) + ' chance of a violation, ' + whenWords(f);
+    if (f.basis === 'violated') return 'violated: no forecast to make';
+    const distance = t && t.state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+    return distance || chance(f.probability) + ' chance of a violation, ' + whenWords(f);
   }
   if (!f) return p.forecastWords;
   const left = num(f.timeLeft, 0) + ' ' + f.unit + ' left';
