@@ -76,8 +76,9 @@ record PropertyJson(String property, String name, String kind, String verdict, L
         if (s.model() == PropertyStatus.Model.FORECAST) {
             return last == null ? new LatestJson(model, null, null, null, false, "no forecast yet")
                     : new LatestJson(model, round(last.probability()), last.timeToViolation() == null ? null
-                    : round(last.timeToViolation()), last.unit(), last.novel(), "forecast: "
-                    + ForecastWords.probability(last) + ", " + ForecastWords.time(last));
+                    : round(last.timeToViolation()), last.unit(), last.novel(),
+                    last.basis() == Forecast.Basis.VIOLATED ? "no forecast: the property is violated"
+                            : "forecast: " + ForecastWords.probability(last) + ", " + ForecastWords.time(last));
         }
         Survival.Estimate e = s.deadline();
         if (s.model() == PropertyStatus.Model.NONE) {
