@@ -188,7 +188,8 @@ final class WatchOutputs implements Fleet.Listener, AutoCloseable {
         Instant at = Instant.now();
         o.printer.accept(e, at);
         boolean hook = hooks != null && live
-                && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
+                && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation
+                || e instanceof MonitorEvent.Recovered);
         if (hook || o.tile != null) {
             String tagged = EventPrinter.toJson(e, log.name(), at);
             if (o.tile != null) {

@@ -209,7 +209,8 @@ final class Metrics {
         } else if (e instanceof MonitorEvent.Violation v && v.property() != null) {
             propertyViolations.labelValues(tile.log(), tile.name(), v.property()).inc();
         }
-        if (e instanceof MonitorEvent.Warning) {
+        if (e instanceof MonitorEvent.Warning w && w.clause() != MonitorEvent.Clause.DEADLINE) {
+            // this label is the forecast's property; a deadline's warnings are its own property's
             warnings.labelValues(tile.log(), tile.name(), property).inc();
         } else if (e instanceof MonitorEvent.Violation v && v.forecast()) {
             // this label is the forecast's property; the other properties' violations are not its own
