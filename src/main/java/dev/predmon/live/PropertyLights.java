@@ -108,7 +108,11 @@ final class PropertyLights {
         }
         for (Property p : properties) {
             PropertyStatus s = byId.get(p.id());
-            lights.add(p.id().equals(forecastId) ? forecastLight(p, s, state, forecast, skill) : light(p, s));
+            if (state == TileState.NO_VERDICT && !p.id().equals(forecastId)) {
+                s = null; // models that do not fit the log: what its checks say of it is no verdict either
+            }
+            lights.add(p.id().equals(forecastId) ? forecastLight(p, s, state, forecast, skill) : light(p, s,
+                    state == TileState.NO_VERDICT));
         }
         // stable: the abstraction's order within a light
         lights.sort(Comparator.comparing(o -> Light.valueOf(o.get("state").asText().toUpperCase(Locale.ROOT))));
@@ -143,14 +147,14 @@ final class PropertyLights {
     }
 
     /** A property other than the forecast's. */
-    private ObjectNode light(Property p, PropertyStatus s) {
+    private ObjectNode light(Property p, PropertyStatus s, boolean noVerdict) {
         Verdict v = s == null ? null : s.verdict();
         Survival.Estimate e = s == null ? null : s.deadline();
         Light light;
         String words;
         if (v == null) {
             light = Light.UNKNOWN;
-            words = "no record of the run yet";
+            words = noVerdict ? "no verdict: the models cannot judge this log" : "no record of the run yet";
         } else if (v instanceof Verdict.Violated) {
             light = Light.VIOLATED;
             words = v.describe();

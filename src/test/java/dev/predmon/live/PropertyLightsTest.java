@@ -82,6 +82,19 @@ class PropertyLightsTest {
     }
 
     @Test
+    void modelsThatDoNotFitTheLogGiveNoGreenLight() {
+        Board b = board();
+        Tile t = b.tile("a.log");
+        t.record(level(1, 80));
+        t.properties(statuses(Map.of()));
+        assertEquals("green", lights(b).get(0).get("light").asText());
+        t.noVerdict("the models' abstraction does not fit this log");
+        JsonNode lights = lights(b);
+        lights.forEach(l -> assertEquals("grey", l.get("light").asText(), l.toString()));
+        assertEquals("no verdict: the models cannot judge this log", lights.get(1).get("words").asText());
+    }
+
+    @Test
     void anAbortIsARedLightOfNoAbortWithItsEventFirstWhileTheBatteryStaysGreen() {
         Board b = board();
         Tile t = b.tile("a.log");
