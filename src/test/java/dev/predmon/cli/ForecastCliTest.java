@@ -73,8 +73,8 @@ class ForecastCliTest {
         for (JsonNode e : events) {
             if (e.get("event").asText().equals("forecast") && e.get("forecast").isNull()) {
                 JsonNode d = e.get("deadline");
-                assertTrue(d.get("novel").asBoolean() || d.get("probability").asDouble() >= 0
-                        && d.get("probability").asDouble() <= 1, e.toString());
+                assertTrue(d.get("novel").asBoolean() || (d.get("probability").asDouble() >= 0
+                        && d.get("probability").asDouble() <= 1), e.toString());
             }
         }
         for (JsonNode e : forecasts) {
