@@ -76,7 +76,8 @@ export function shownState(t) {
 
 /**
  * The compact view's chip of the worst property beside the forecast's (whose light is the row's own): its light and
- * id, its words in the tooltip; or that the others hold.
+ * id when it is violated, warned or unknown, its light alone when the others are well; every property's words in
+ * the tooltip.
  */
 function worstChip(t) {
   const others = (t.properties || []).filter(p => p.model !== 'forecast');
@@ -86,8 +87,9 @@ function worstChip(t) {
   chip.dataset.state = w.state;
   chip.dataset.property = w.property;
   const calm = w.state === 'holds' || w.state === 'pending';
-  chip.append(propertyLight(w), el('span', 'worst-text', calm ? (others.length === 1 ? w.property : others.length
-    + ' others') + ' ok' : w.property));
+  // the others all well: their light alone, so that the robot's name keeps the room; the tooltip says which
+  chip.append(propertyLight(w));
+  if (!calm) chip.append(el('span', 'worst-text', w.property));
   chip.title = (t.properties || []).map(p => p.property + ' (' + PROPERTY_WORDS[p.state] + '): ' + p.words + ' \u2014 '
     + propertyForecast(p, t)).join('\n');
   return chip;
