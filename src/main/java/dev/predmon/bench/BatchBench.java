@@ -7,7 +7,9 @@ import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.monitor.PredictiveMonitor;
-import dev.predmon.parse.LogReader;
+import dev.predmon.parse.LogFormat;
+import dev.predmon.parse.RecordSink;
+import dev.predmon.parse.RecordSource;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -148,15 +150,16 @@ final class BatchBench {
         });
         double[] last = {Double.NEGATIVE_INFINITY};
         long[] records = {0};
-        LogReader.read(file, r -> {
+        try (RecordSource source = LogFormat.yarp().read(file, RecordSink.of(r -> {
             if (r.time() < last[0]) {
                 monitor.restart("next run");
             }
             last[0] = r.time();
             records[0]++;
             monitor.accept(r);
-        }, p -> {
-        });
+        }, p -> { }))) {
+            source.drain();
+        }
         monitor.endOfInput();
         return records[0];
     }

@@ -75,8 +75,7 @@ final class BenchData {
             Map<Path, LogTrace> traces = ScenarioLearner.read(specs.stream().flatMap(s -> s.logs().stream()).toList(),
                     abstraction);
             ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
-                    MealyAlphabet.inputs(abstraction), ForecastTraining.limit(abstraction),
-                    ForecastTraining.property(abstraction), abstraction.confirm());
+                    MealyAlphabet.inputs(abstraction), abstraction, abstraction.confirm());
             return LearnedModels.modelSet(learned, abstraction, forecast);
         } catch (BadInputException e) {
             throw new IOException(e.getMessage(), e);

@@ -1,19 +1,16 @@
 package dev.predmon.cli;
 
-import dev.predmon.BadInputException;
-import dev.predmon.abstraction.Abstraction;
-import dev.predmon.mealy.MealyTrace;
+import dev.predmon.Terminal;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
-import dev.predmon.monitor.LogWatcher;
-import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.pipeline.LogTrace;
+import dev.predmon.replay.ReplayedLog;
+import dev.predmon.replay.ReplayedRun;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
@@ -25,7 +22,7 @@ import java.util.concurrent.Callable;
                 + "the models eliminated (an input they cannot take, or more discrepancies than --threshold), the "
                 + "best match and whether it is faulty.",
                 "Then the verdict watch reaches at the end of the same log, from the same replay: its exit code is "
-                        + "classify's. Exit 6 when the property is violated with no warning before it, else 1 when a "
+                        + "classify's. Exit 6 when a property is violated with no warning before it, else 1 when a "
                         + "warning came, 5 when no model matches the run at its end, 0 otherwise; 3 when the log holds "
                         + "nothing to judge."})
 final class ClassifyCommand implements Callable<Integer> {
@@ -38,27 +35,29 @@ final class ClassifyCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
-        ModelSet set = in.models();
+        ModelSet set = input.models();
         PrintWriter out = spec.commandLine().getOut();
-        int code = watchCode(set, in.abstraction());
+        // One replay through watch's monitor, with its default rule and confirmation: its verdict is watch's, and
+        // Algorithm 7 scores the pairs it took.
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), input.tuned().confirm(), (r, run) -> { });
+        int code = ExitCodes.ofMonitor(replayed.monitor());
         // A log of several runs (the tick counter started again) is classified run by run.
-        List<MealyTrace> runs = in.trace().judgedRuns();
-        List<LogTrace.Run> inFull = in.trace().judgedRunsInFull();
+        List<ReplayedRun> runs = replayed.runs().size() > 1
+                ? replayed.runs().stream().filter(r -> !r.pairs().isEmpty()).toList() : replayed.runs();
         List<Result> results = new ArrayList<>();
-        for (int i = 0; i < runs.size(); i++) {
-            MealyTrace run = runs.get(i);
-            Classifier.Result r = Classifier.classify(set, run, input.threshold());
-            boolean violated = i < inFull.size() && inFull.get(i).violated();
+        for (ReplayedRun run : runs) {
+            String name = LogTrace.name(replayed.log(), run.run(), replayed.runs().size());
+            Classifier.Result r = Classifier.classify(set, run.pairs().stream().map(ReplayedRun.Pair::pair).toList(),
+                    input.threshold());
             if (input.json) {
                 List<Score> scores = r.scores().stream().map(s -> new Score(s.model().id(), s.model().scenario(),
                         s.model().faulty(), s.eliminated(), s.discrepancies(),
                         s.failure() == null ? null : s.failure().describe())).toList();
-                results.add(new Result(run.source(), run.pairs(), scores,
+                results.add(new Result(name, run.pairs().size(), scores,
                         r.best().map(s -> s.model().id()).orElse(null),
-                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty(), violated, code));
+                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty(), run.violated(), code));
             } else {
-                print(out, r, run);
+                print(out, r, name, run.pairs().size());
             }
         }
         if (input.json) {
@@ -70,30 +69,17 @@ final class ClassifyCommand implements Callable<Integer> {
         return code;
     }
 
-    /**
-     * The code {@code watch --no-follow} gives this log: the log replayed through watch's own monitor, with its
-     * default rule and confirmation, so that the two commands cannot disagree.
-     */
-    private int watchCode(ModelSet set, Abstraction abstraction) throws IOException, BadInputException {
-        PredictiveMonitor m = new PredictiveMonitor(set, abstraction, input.threshold(), abstraction.confirm(),
-                PredictiveMonitor.defaultRule(set), e -> { });
-        try (LogWatcher w = LogWatcher.withRecords(input.log(), m, p -> { }, r -> { })) {
-            w.drain();
-        }
-        return ExitCodes.ofMonitor(m);
-    }
-
     private static String words(int code) {
         return switch (code) {
-            case ExitCodes.UNWARNED_VIOLATION -> "the property was violated with no warning before it";
+            case ExitCodes.UNWARNED_VIOLATION -> "a property was violated with no warning before it";
             case ExitCodes.WARNING -> "a warning was raised";
             case ExitCodes.NO_MATCH -> "no learned model matches the run";
             default -> "no warning, and a nominal model matches";
         };
     }
 
-    private void print(PrintWriter out, Classifier.Result r, MealyTrace run) {
-        out.println(Terminal.line(run.source()) + ": " + run.pairs() + " compacted pairs");
+    private void print(PrintWriter out, Classifier.Result r, String run, int pairs) {
+        out.println(Terminal.line(run) + ": " + pairs + " compacted pairs");
         for (Classifier.Score s : r.scores()) {
             out.printf("  %-16s %-8s %s%n", s.model().id(), s.model().faulty() ? "faulty" : "nominal",
                     VerifyCommand.fate(s.failure(), s.discrepancies(), s.eliminated()));

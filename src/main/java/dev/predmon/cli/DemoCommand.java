@@ -6,17 +6,21 @@ import dev.predmon.files.AtomicFiles;
 import dev.predmon.learn.Learning;
 import dev.predmon.live.Board;
 import dev.predmon.live.LiveServer;
-import dev.predmon.live.Tile;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
-import dev.predmon.monitor.LogWatcher;
+import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.TickSeconds;
+import dev.predmon.monitor.WatchedLog;
 import dev.predmon.simulate.RealtimeWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
 import dev.predmon.simulate.SimRun;
 import dev.predmon.simulate.Simulator;
+import dev.predmon.watch.Stamp;
+import dev.predmon.watch.WatchSession;
+import dev.predmon.watch.WatchSettings;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -32,6 +36,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -129,8 +134,8 @@ final class DemoCommand implements Callable<Integer> {
     }
 
     /**
-     * Simulates one run into a file on a writer thread while following it; whether it behaved as expected. With a
-     * live view ({@code board} not null) the run's log gets a tile.
+     * Simulates one run into a file on a writer thread while a watch session follows it; whether it behaved as
+     * expected. With a live view ({@code board} not null) the run's log gets a tile.
      */
     private boolean live(PrintWriter out, ModelSet set, Abstraction abstraction, Path dir, Scenario scenario, long seed,
                          Board board) throws IOException, InterruptedException {
@@ -142,41 +147,28 @@ final class DemoCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "%nrun: a '%s' run (%s, seed %d), %.0f s of robot time played at %.1fx into %s%n",
                 scenario.id(), scenario.faulty() ? "faulty" : "nominal", seed, duration, speed, log);
         out.flush();
-        long start = System.nanoTime();
-        EventPrinter text = new EventPrinter(out, false, true);
-        Tile tile = board == null ? null : board.tile(log.toString());
-        PredictiveMonitor monitor = new PredictiveMonitor(set, abstraction, 0, e -> {
-            String line = text.toText(e);
-            if (line != null) {
-                out.printf(Locale.ROOT, "  [%5.1f s] %s%n", (System.nanoTime() - start) / 1e9, line);
-                out.flush();
-            }
-            if (tile != null) {
-                board.event(tile, e, EventPrinter.toJson(e, log.toString()));
-            }
-        });
+        // Followed as watch follows a log, its events printed with the seconds since the run began.
+        WatchSettings settings = new WatchSettings(false, true, false, false, Stamp.since(Instant.now()), 0,
+                TickSeconds.NONE);
         AtomicReference<Throwable> failed = new AtomicReference<>();
         Thread writer = new Thread(() -> write(run, log, speed), "predmon-demo-writer");
         writer.setDaemon(true);
         writer.setUncaughtExceptionHandler((t, e) -> failed.set(e)); // rethrown below, not printed by the thread
-        writer.start();
-        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> out.println("  " + p.format(log.toString())),
-                tile == null ? r -> { } : r -> {
-                    tile.record(r);
-                    tile.properties(monitor.properties());
-                })) {
+        try (WatchSession session = new WatchSession(out, spec.commandLine().getErr(), settings, null, board,
+                abstraction, p -> false);
+             Fleet fleet = new Fleet(set, abstraction, 0, abstraction.confirm(), session)) {
+            WatchedLog watched = fleet.add(log);
+            writer.start();
             while (writer.isAlive()) {
-                if (!watcher.poll()) {
+                if (!fleet.poll()) {
                     Thread.sleep(5);
-                } else if (tile != null) {
-                    board.grew(tile);
                 }
             }
             writer.join();
             rethrow(failed.get());
-            watcher.drain();
+            fleet.drain();
+            return verdict(out, scenario, watched.monitor());
         }
-        return verdict(out, scenario, monitor);
     }
 
     /** Writes the run's log in place as it goes (the watcher tails it); a failure names the log. */

@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
+import dev.predmon.Terminal;
 import picocli.CommandLine;
 import picocli.CommandLine.IExecutionExceptionHandler;
 import picocli.CommandLine.ParseResult;

@@ -1,10 +1,15 @@
 package dev.predmon.cli;
 
+import dev.predmon.Terminal;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
+import dev.predmon.event.ForecastJson;
 import dev.predmon.explain.Explanation;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.WarningRule;
+import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -20,7 +25,7 @@ import java.util.concurrent.Callable;
 @Command(name = "explain", mixinStandardHelpOptions = true,
         description = {"Explain a run: its abstract trace pair by pair and, for each model, where it stopped "
                 + "matching and why (the reply it expected versus the one seen), then what 'watch' concluded.",
-                "Exit as watch --no-follow would on this log: 6 when the property is violated with no warning "
+                "Exit as watch --no-follow would on this log: 6 when a property is violated with no warning "
                         + "before it, else 1 when it warns, 5 when no model matches the run, 0 otherwise; 3 when the "
                         + "log holds nothing to judge."})
 final class ExplainCommand implements Callable<Integer> {
@@ -37,9 +42,10 @@ final class ExplainCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        LogAgainstModels.Opened in = input.open(spec.commandLine().getErr());
-        List<Explanation> runs = Explanation.of(in.trace(), in.models(), in.abstraction(), input.threshold(),
-                confirm.value(in.abstraction()));
+        Abstraction abstraction = input.tuned();
+        Replay.Approach approach = Explanation.approach(input.models(), abstraction);
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), confirm.value(abstraction), approach::record);
+        List<Explanation> runs = Explanation.of(replayed, input.models(), abstraction, approach);
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.
             List<ExplanationJson> json = runs.stream().map(ExplanationJson::of).toList();
@@ -53,14 +59,7 @@ final class ExplainCommand implements Callable<Integer> {
             }
         }
         out.flush();
-        return ExitCodes.ofRuns(runs.stream().mapToInt(x -> code(x.run())));
-    }
-
-    /** The run's exit code as watch gives it: a violation is unwarned when no warning came strictly before it. */
-    private static int code(RunResult r) {
-        boolean unwarned = r.violationTime() != null
-                && (r.warningTime() == null || !(r.warningTime() < r.violationTime()));
-        return ExitCodes.of(unwarned, r.noMatch(), r.warningTime() != null);
+        return ExitCodes.ofMonitor(replayed.monitor()); // watch's rule, on the monitor watch would have run
     }
 
     private static void print(PrintWriter out, Explanation x) {
@@ -90,11 +89,13 @@ final class ExplainCommand implements Callable<Integer> {
         boolean nominal = x.models().stream().anyMatch(f -> !f.faulty() && f.matched());
         int lastNominal = x.models().stream().filter(f -> !f.faulty() && f.stoppedAt() != null)
                 .mapToInt(Explanation.ModelFate::stoppedAt).max().orElse(-1);
-        boolean outlived = x.models().stream().anyMatch(f -> f.faulty()
-                && (f.matched() || (f.stoppedAt() != null && f.stoppedAt() > lastNominal)));
+        boolean outlived = x.matchRuleAt() >= 0; // the monitor's own match rule, confirm included
         String matching = nominal ? "a nominal model matches the whole run"
                 : outlived ? "every nominal model was eliminated by pair " + lastNominal + " while a faulty one still "
-                + "matched" : "no faulty model was left when the last nominal one was eliminated";
+                + "matched (the thesis's rule holds from pair " + x.matchRuleAt() + ")"
+                : lastNominal < 0 ? "the models hold no nominal scenario"
+                : "every nominal model was eliminated by pair " + lastNominal + ", but no faulty one still matched "
+                + "as many pairs after it as the rule confirms with";
         if (x.warning() != null) {
             out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d), rule %s: %s%n", x.warning().time(),
                     x.warning().line(), x.rule().id(), x.warning().reason());

@@ -1,5 +1,7 @@
 package dev.predmon.cli;
 
+import dev.predmon.Terminal;
+
 import java.io.PrintStream;
 
 /**

@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.Terminal;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.learn.Conflict;
 import dev.predmon.learn.LearnedScenario;

@@ -4,9 +4,13 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.replay.LogReplay;
+import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
@@ -15,6 +19,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.function.ObjIntConsumer;
 
 /**
  * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
@@ -105,6 +110,33 @@ final class LogAgainstModels {
             throw new BadInputException(misfit);
         }
         return trace;
+    }
+
+    /**
+     * Checks {@code --log} and replays it once through {@code watch}'s monitor ({@link LogReplay}) with the models'
+     * default rule, {@code confirm} and the abstraction tuned for them; refuses, as {@link #readLog} does, a log that
+     * gives no evidence or that the abstraction does not fit, and prints its parse problems to {@code err}.
+     *
+     * @param taken gets every record with its run right after the monitor took it
+     */
+    ReplayedLog replay(PrintWriter err, int confirm, ObjIntConsumer<LogRecord> taken)
+            throws BadInputException, IOException {
+        checkLog();
+        ModelSet set = models();
+        Abstraction abstraction = tuned();
+        ReplayedLog replayed = LogReplay.replay(log(), set, abstraction, threshold(), confirm,
+                PredictiveMonitor.defaultRule(set), taken);
+        Evidence evidence = replayed.evidence(abstraction);
+        String missing = evidence.missing().or(evidence::fragment).orElse(null);
+        if (missing != null) {
+            throw new BadInputException(missing);
+        }
+        Problems.print(err, log(), replayed.problems(), replayed.monitor().unmapped());
+        String misfit = evidence.misfit().orElse(null);
+        if (misfit != null) { // after the unmapped messages by command, which show why
+            throw new BadInputException(misfit);
+        }
+        return replayed;
     }
 
     int threshold() {

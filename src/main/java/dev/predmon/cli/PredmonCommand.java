@@ -21,7 +21,7 @@ import java.util.concurrent.Callable;
                 + "monitor logs, and the odds of a violation from each state; while a robot runs it forecasts the "
                 + "violation of the safety property and warns before it.",
         footer = {"", "Exit codes: 0 ok / no warning, 1 warning raised (verify: mismatch), 2 usage, 3 bad input, "
-                + "4 internal error, 5 no model matches the run, 6 property violated with no warning before it."})
+                + "4 internal error, 5 no model matches the run, 6 a property violated with no warning before it."})
 public final class PredmonCommand implements Callable<Integer> {
 
     /**

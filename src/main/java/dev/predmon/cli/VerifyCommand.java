@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
+import dev.predmon.Terminal;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.mealy.MealyTrace;

@@ -2,21 +2,15 @@ package dev.predmon.evaluate;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.forecast.ForecastModel;
-import dev.predmon.learn.ForecastTraining;
-import dev.predmon.learn.LearnedModels;
-import dev.predmon.learn.LearnedScenario;
+import dev.predmon.learn.Folds;
 import dev.predmon.learn.Learning;
 import dev.predmon.learn.ScenarioLearner;
 import dev.predmon.learn.ScenarioSpec;
-import dev.predmon.mealy.MealyAlphabet;
-import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
-import net.automatalib.alphabet.Alphabet;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -30,7 +24,7 @@ import java.util.function.Predicate;
 
 /**
  * Measures how the predictive monitor would do on a user's own runs: models are learned in memory exactly as
- * {@code learn} learns them ({@link ScenarioLearner#learnSamples}), and every test log is replayed through
+ * {@code learn} learns them (one recipe: {@link Learning#learn}), and every test log is replayed through
  * {@code watch}'s code path ({@link Replay}). Either on a separate test set, or by K-fold cross-validation in
  * which a log is only ever judged by models learned without it ({@link Folds}).
  *
@@ -45,7 +39,6 @@ public final class Evaluator {
     /** Training traces read again with a learned hysteresis, by that hysteresis. */
     private final Map<Map<String, Double>, Map<Path, LogTrace>> retuned = new HashMap<>();
     private final Progress progress;
-    private final Alphabet<String> alphabet;
     private WarningRule rule;
 
     public Evaluator(Abstraction abstraction, int threshold, Progress progress) {
@@ -58,7 +51,6 @@ public final class Evaluator {
         this.abstraction = abstraction;
         this.threshold = threshold;
         this.progress = progress;
-        this.alphabet = MealyAlphabet.inputs(abstraction);
     }
 
     /** Judges by {@code rule} instead of the models' default ({@link PredictiveMonitor#defaultRule}). */
@@ -164,32 +156,22 @@ public final class Evaluator {
     private ModelSet learn(List<ScenarioSpec> specs, Map<Path, LogTrace> samples,
                            Predicate<Path> training, List<String> notes, String prefix)
             throws BadInputException {
-        List<ScenarioSpec> train = specs.stream().map(s -> new ScenarioSpec(s.name(), s.faulty(), s.description(),
-                s.logs().stream().filter(training).filter(samples::containsKey).toList(), s.runs())).toList();
-        Abstraction tuned = Learning.tuneToNoise(train, samples, abstraction);
-        Map<Path, LogTrace> traces = samples;
-        if (tuned != abstraction) {
-            traces = retuned.get(tuned.learnedHysteresis());
-            if (traces == null) {
-                traces = ScenarioLearner.read(samples.keySet(), tuned);
-                retuned.put(tuned.learnedHysteresis(), traces);
-            }
+        List<ScenarioSpec> train = specs.stream().map(s -> s.withLogs(s.logs().stream().filter(training).filter(samples::containsKey).toList())).toList();
+        List<String> said = new ArrayList<>();
+        Learning.Learned learned = Learning.learn(train, samples, abstraction, confirm,
+                tuned -> reread(samples, tuned), said, l -> { });
+        said.forEach(n -> notes.add(prefix + n));
+        return learned.modelSet();
+    }
+
+    /** The training logs read again with {@code tuned}, cached by hysteresis, since folds mostly agree. */
+    private Map<Path, LogTrace> reread(Map<Path, LogTrace> samples, Abstraction tuned) throws BadInputException {
+        Map<Path, LogTrace> traces = retuned.get(tuned.learnedHysteresis());
+        if (traces == null) {
+            traces = ScenarioLearner.read(samples.keySet(), tuned);
+            retuned.put(tuned.learnedHysteresis(), traces);
         }
-        List<LearnedScenario> learned = new ArrayList<>();
-        List<ScenarioSpec> learnedSpecs = new ArrayList<>();
-        for (ScenarioSpec s : train) {
-            Map<Path, LogTrace> read = traces;
-            List<MealyTrace> own = s.logs().stream().flatMap(log -> read.get(log).samples(s.runs()).stream()).toList();
-            if (own.isEmpty()) {
-                notes.add(prefix + "scenario '" + s.name() + "' has no training run; its runs can match no model of it");
-                continue;
-            }
-            learned.add(ScenarioLearner.learnSamples(s, own, alphabet));
-            learnedSpecs.add(s);
-        }
-        ForecastModel forecast = ForecastTraining.train(learnedSpecs, traces, LearnedModels.machines(learned), alphabet,
-                ForecastTraining.limit(tuned), ForecastTraining.property(tuned), confirm);
-        return LearnedModels.modelSet(learned, tuned, forecast);
+        return traces;
     }
 
     private WarningRule ruleFor(ModelSet models) {

@@ -1,9 +1,7 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.forecast.Forecast;
 import dev.predmon.model.ModelSet;
-import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
@@ -13,6 +11,9 @@ import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
+import dev.predmon.replay.LogReplay;
+import dev.predmon.replay.ReplayedLog;
+import dev.predmon.replay.ReplayedRun;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -24,9 +25,8 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * Judges one log exactly as {@code watch --no-follow} would: the {@link LogWatcher} reads the file through the
- * parser into a {@link PredictiveMonitor} (built-in safety monitor included), and the events are collected
- * instead of printed.
+ * Judges one log exactly as {@code watch --no-follow} would, run by run, from the one replay of it ({@link
+ * LogReplay}): the verdict, the lead, the forecasts before the violation and the raw-value baseline of each run.
  */
 public final class Replay {
 
@@ -50,114 +50,75 @@ public final class Replay {
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
                                       ModelSet models, Abstraction abstraction, int threshold, int confirm,
                                       WarningRule rule) throws IOException {
-        return run(log, scenario, faulty, label, fold, models, abstraction, threshold, confirm, rule, Trail.NONE);
+        Approach approach = new Approach(abstraction.safety().orElse(null),
+                models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
+        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, threshold, confirm, rule, approach::record);
+        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach);
     }
 
-    /** As above, also telling {@code trail} the forecast after each pair and the warnings as raised. */
-    public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
-                                      ModelSet models, Abstraction abstraction, int threshold, int confirm,
-                                      WarningRule rule, Trail trail) throws IOException {
-        List<MonitorEvent> events = new ArrayList<>();
-        int[] problems = {0};
-        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, rule, events::add);
-        Map<Integer, List<Double>> probabilities = new HashMap<>();
-        Map<Integer, List<Double>> times = new HashMap<>();
-        Set<Integer> violated = new HashSet<>();
-        // Forecasts are made while the monitor takes a record: each gets that record's time once it is taken.
-        List<List<Double>> untimed = new ArrayList<>();
-        double[] lastTime = {0};
-        monitor.onEveryForecast((f, run) -> {
-            trail.forecast(run, monitor.pairs(), f);
-            if (!violated.contains(run) && f.basis() != Forecast.Basis.VIOLATED) {
-                probabilities.computeIfAbsent(run, r -> new ArrayList<>()).add(f.probability());
-                List<Double> ts = times.computeIfAbsent(run, r -> new ArrayList<>());
-                ts.add(Double.NaN);
-                untimed.add(ts);
-            } else {
-                violated.add(run);
-            }
-        });
-        Approach approach = new Approach(abstraction.safety().orElse(null), monitor,
-                models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
-        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, p -> problems[0]++, r -> {
-            lastTime[0] = r.time();
-            timed(untimed, r.time());
-            approach.record(r);
-        })) {
-            watcher.drain();
-        }
-        timed(untimed, lastTime[0]); // what the end of the input flushed
-        List<RunOutcome> runs = monitor.runs();
+    /**
+     * As above, from the one replay of the log ({@link LogReplay}): each run's verdict, its forecasts before the
+     * violation with their times, its eliminations and its other properties come from that replay's stream.
+     */
+    public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
+                                     ModelSet models, Abstraction abstraction, Approach approach) {
+        List<ReplayedRun> runs = replayed.runs();
         List<RunResult> results = new ArrayList<>();
-        for (RunOutcome o : runs) {
+        for (ReplayedRun r : runs) {
+            RunOutcome o = r.outcome();
             if (!label.selects(o.violation() != null)) {
                 continue;
             }
             List<RunResult.Elimination> eliminations = new ArrayList<>();
             MonitorEvent.NoMatch noMatch = null;
-            for (MonitorEvent e : events) {
-                if (e instanceof MonitorEvent.Eliminated x && x.run() == o.run()) {
+            Map<String, Double> warnings = new HashMap<>();
+            Map<String, Double> violations = new HashMap<>();
+            for (MonitorEvent e : r.events()) {
+                if (e instanceof MonitorEvent.Eliminated x) {
                     eliminations.add(new RunResult.Elimination(x.model(), x.scenario(), x.faulty(), x.time(), x.line(),
                             x.reason()));
-                } else if (e instanceof MonitorEvent.NoMatch n && n.run() == o.run() && noMatch == null) {
+                } else if (e instanceof MonitorEvent.NoMatch n && noMatch == null) {
                     noMatch = n;
+                } else if (e instanceof MonitorEvent.Warning w && w.property() != null) {
+                    warnings.putIfAbsent(w.property(), w.time());
+                } else if (e instanceof MonitorEvent.Violation v) {
+                    violations.putIfAbsent(v.property(), v.time());
                 }
             }
             MonitorEvent.Warning warning = o.warning();
-            trail.warning(o.run(), warning);
             MonitorEvent.Violation violation = o.violation();
             Double warningTime = warning == null ? null : warning.time();
             Double violationTime = violation == null ? null : violation.time();
             Verdict verdict = Verdict.of(faulty, warningTime, violationTime);
             Double lead = verdict == Verdict.WARNED_BEFORE_VIOLATION ? violationTime - warningTime : null;
-            results.add(new RunResult(scenario, faulty, LogTrace.name(log, o.run(), runs.size()), fold, verdict,
-                    warningTime, warning == null ? null : warning.line(),
+            List<ReplayedRun.Timed> scored = r.beforeViolation();
+            results.add(new RunResult(scenario, faulty, LogTrace.name(replayed.log(), o.run(), runs.size()), fold,
+                    verdict, warningTime, warning == null ? null : warning.line(),
                     warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.battery(),
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
-                    runs.size() == 1 ? monitor.pipeline().records() : -1, o.pairs(), problems[0],
-                    List.copyOf(eliminations), o.safetyObserved(), monitor.clock().unit(),
+                    runs.size() == 1 ? replayed.records() : -1, o.pairs(), replayed.problems().size(),
+                    List.copyOf(eliminations), o.safetyObserved(), replayed.unit(),
                     violation != null && approach.near(o.run()) < RunResult.SUDDEN_READINGS, approach.start(o.run()),
                     approach.near(o.run()), violation == null ? null : violation.before(),
                     models.forecast() == null ? null : new RunResult.ForecastTrace(
-                            List.copyOf(probabilities.getOrDefault(o.run(), List.of())), o.forecast(),
+                            scored.stream().map(t -> t.forecast().probability()).toList(), o.forecast(),
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
-                            times.getOrDefault(o.run(), List.of())),
-                    others(abstraction, events, o.run())));
+                            scored.stream().map(ReplayedRun.Timed::time).toList()),
+                    others(abstraction, warnings, violations)));
         }
         return results;
     }
 
-    /** Gives the forecasts that wait for their time {@code time}. */
-    private static void timed(List<List<Double>> untimed, double time) {
-        for (List<Double> ts : untimed) {
-            for (int i = ts.size() - 1; i >= 0 && Double.isNaN(ts.get(i)); i--) {
-                ts.set(i, time);
-            }
-        }
-        untimed.clear();
-    }
-
-    /** Every property but the forecast's, with its first warning and violation in run {@code run}. */
-    private static List<RunResult.PropertyResult> others(Abstraction abstraction, List<MonitorEvent> events, int run) {
+    /** Every property but the forecast's, with its first warning and violation in the run. */
+    private static List<RunResult.PropertyResult> others(Abstraction abstraction, Map<String, Double> warnings,
+                                                         Map<String, Double> violations) {
         String forecast = abstraction.safety().map(Property::id).orElse(null);
         List<RunResult.PropertyResult> out = new ArrayList<>();
         for (Property p : abstraction.properties()) {
-            if (p.id().equals(forecast)) {
-                continue;
+            if (!p.id().equals(forecast)) {
+                out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id())));
             }
-            Double warning = null;
-            Double violation = null;
-            for (MonitorEvent e : events) {
-                if (e instanceof MonitorEvent.Warning w && w.run() == run && p.id().equals(w.property())
-                        && warning == null) {
-                    warning = w.time();
-                } else if (e instanceof MonitorEvent.Violation v && v.run() == run && p.id().equals(v.property())
-                        && violation == null) {
-                    violation = v.time();
-                }
-            }
-            out.add(new RunResult.PropertyResult(p.id(), warning, violation));
         }
         return out;
     }
@@ -169,9 +130,8 @@ public final class Replay {
      * Read with the safety monitor's own {@link Bound#valueOf}, so the violation counted up to is the one it
      * reported.
      */
-    private static final class Approach {
+    public static final class Approach {
         private final Bound rule;
-        private final PredictiveMonitor monitor;
         /** The lowest value a safe training run read: the raw-value baseline warns below it (NaN: never). */
         private final double floor;
         /** Per run, when the value first went below the floor, and when the current stretch below it began. */
@@ -182,14 +142,14 @@ public final class Replay {
         private final Map<Integer, Integer> near = new HashMap<>();
         private final Set<Integer> violated = new HashSet<>();
 
-        Approach(Bound rule, PredictiveMonitor monitor, double floor) {
+        /** @param floor the raw-value baseline's: the lowest value a safe training run read (NaN: never) */
+        public Approach(Bound rule, double floor) {
             this.rule = rule;
-            this.monitor = monitor;
             this.floor = floor;
         }
 
-        void record(LogRecord r) {
-            int run = monitor.run();
+        /** Takes record {@code r} of run {@code run}, after the monitor took it. */
+        public void record(LogRecord r, int run) {
             start.putIfAbsent(run, r.time());
             if (rule == null || violated.contains(run)) {
                 return;

@@ -4,7 +4,6 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
-import dev.predmon.evaluate.Trail;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.mealy.MealyMapping;
@@ -13,9 +12,10 @@ import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
-import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
-import dev.predmon.pipeline.Traces;
+import dev.predmon.replay.LogReplay;
+import dev.predmon.replay.ReplayedLog;
+import dev.predmon.replay.ReplayedRun;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -24,9 +24,9 @@ import java.util.List;
 
 /**
  * Why {@code watch} warned or did not: the run's abstract trace pair by pair and, for each model, where it stopped
- * matching and why (the symbol it expected versus the one seen). Each model is walked with the monitor's own
- * {@link ModelTracker} and threshold; the warning and violation come from replaying the log ({@link Replay}), so
- * the explanation and the monitor cannot disagree.
+ * matching and why (the symbol it expected versus the one seen). Everything is read off one replay of the log
+ * through {@code watch}'s monitor ({@link LogReplay}): the pairs, the forecasts, how its matching left each model,
+ * the warning and the verdict, so the explanation and the monitor cannot disagree.
  *
  * @param log    the run
  * @param steps  the compacted trace, one query/reply pair each
@@ -34,9 +34,11 @@ import java.util.List;
  * @param run    the monitor's verdict on the run (scenario unknown: judged as nominal)
  * @param rule   the rule the monitor warned by
  * @param warning the warning as the monitor raised it, with its reason, or null
+ * @param matchRuleAt the pair after which the thesis's match rule held ({@code confirm} included), warning or not, or
+ *                    -1
  */
 public record Explanation(String log, List<Step> steps, List<ModelFate> models, RunResult run, WarningRule rule,
-                          MonitorEvent.Warning warning) {
+                          MonitorEvent.Warning warning, long matchRuleAt) {
 
     /**
      * One compacted pair.
@@ -69,45 +71,46 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                             String input, String expected, String seen, int discrepancies, String reason) {
     }
 
-    /** Explains {@code log} against {@code models}: one explanation per run the log holds. */
+    /**
+     * Explains {@code log} against {@code models}: one explanation per run the log holds, from one replay of it
+     * ({@link LogReplay}) with the models' default rule.
+     */
     public static List<Explanation> of(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
             throws IOException {
-        return of(Traces.read(log, abstraction), models, abstraction, threshold, confirm);
+        Replay.Approach approach = approach(models, abstraction);
+        return of(LogReplay.replay(log, models, abstraction, threshold, confirm, PredictiveMonitor.defaultRule(models),
+                approach::record), models, abstraction, approach);
     }
 
-    /** Explains the log of a trace already read with {@code abstraction}: one explanation per run it holds. */
-    public static List<Explanation> of(LogTrace trace, ModelSet models, Abstraction abstraction, int threshold,
-                                       int confirm) throws IOException {
-        Path log = trace.log();
-        WarningRule rule = PredictiveMonitor.defaultRule(models);
-        Trail trail = new Trail();
-        List<RunResult> verdicts = Replay.run(log, "?", false, RunLabel.ALL, -1, models, abstraction, threshold, confirm,
-                rule, trail);
+    /** What the verdicts of an explanation need of each record as it is replayed ({@link Replay.Approach}). */
+    public static Replay.Approach approach(ModelSet models, Abstraction abstraction) {
+        return new Replay.Approach(abstraction.safety().orElse(null),
+                models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
+    }
+
+    /** Explains a log already replayed, {@code approach} having taken its records: one explanation per run. */
+    public static List<Explanation> of(ReplayedLog replayed, ModelSet models, Abstraction abstraction,
+                                       Replay.Approach approach) {
+        WarningRule rule = replayed.monitor().rule();
+        List<RunResult> verdicts = Replay.of(replayed, "?", false, RunLabel.ALL, -1, models, abstraction, approach);
         List<Explanation> all = new ArrayList<>();
-        for (LogTrace.Run r : trace.runs()) {
-            all.add(of(LogTrace.name(log, r.index(), trace.runs().size()), r.pairs(), models, threshold,
-                    verdicts.get(r.index()), rule, trail.afterPairs(r.index()), trail.warning(r.index()).orElse(null)));
+        for (int i = 0; i < replayed.runs().size(); i++) {
+            all.add(of(replayed.runs().get(i), verdicts.get(i), rule));
         }
         return List.copyOf(all);
     }
 
-    private static Explanation of(String name, List<IoPair> pairs, ModelSet models, int threshold, RunResult run,
-                                  WarningRule rule, List<Forecast> forecasts, MonitorEvent.Warning warning) {
+    private static Explanation of(ReplayedRun replayed, RunResult run, WarningRule rule) {
+        List<Forecast> forecasts = replayed.afterPairs();
         List<Step> steps = new ArrayList<>();
-        for (int i = 0; i < pairs.size(); i++) {
-            IoPair p = pairs.get(i);
+        for (int i = 0; i < replayed.pairs().size(); i++) {
+            IoPair p = replayed.pairs().get(i).pair();
             steps.add(new Step(i, p.reply().time(), p.reply().line(), p.input(), p.output(),
                     i < forecasts.size() ? forecasts.get(i) : null));
         }
         List<ModelFate> fates = new ArrayList<>();
-        for (LearnedModel m : models.models()) {
-            ModelTracker t = new ModelTracker(m, threshold);
-            for (IoPair p : pairs) {
-                t.pair(p.input(), p.output());
-                if (!t.alive()) {
-                    break;
-                }
-            }
+        for (ReplayedRun.Fate t : replayed.models()) {
+            LearnedModel m = t.model();
             ModelTracker.Failure f = t.elimination();
             if (f == null) {
                 fates.add(new ModelFate(m.id(), m.scenario(), m.faulty(), true, null, null, null, null,
@@ -127,6 +130,7 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                         t.discrepancies(), reason));
             }
         }
-        return new Explanation(name, List.copyOf(steps), List.copyOf(fates), run, rule, warning);
+        return new Explanation(run.log(), List.copyOf(steps), List.copyOf(fates), run, rule,
+                replayed.outcome().warning(), replayed.matchRuleAt());
     }
 }

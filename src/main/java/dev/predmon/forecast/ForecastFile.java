@@ -16,6 +16,20 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
+import static dev.predmon.forecast.ForecastFileSections.calibration;
+import static dev.predmon.forecast.ForecastFileSections.count;
+import static dev.predmon.forecast.ForecastFileSections.doubles;
+import static dev.predmon.forecast.ForecastFileSections.integer;
+import static dev.predmon.forecast.ForecastFileSections.number;
+import static dev.predmon.forecast.ForecastFileSections.numbers;
+import static dev.predmon.forecast.ForecastFileSections.readDeadlines;
+import static dev.predmon.forecast.ForecastFileSections.readObligations;
+import static dev.predmon.forecast.ForecastFileSections.readScorecards;
+import static dev.predmon.forecast.ForecastFileSections.required;
+import static dev.predmon.forecast.ForecastFileSections.writeCalibration;
+import static dev.predmon.forecast.ForecastFileSections.writeObligations;
+import static dev.predmon.forecast.ForecastFileSections.writeScorecards;
+
 /**
  * The text of {@code forecast.json}: a {@link ForecastModel} as JSON, numbers that are not known written as
  * {@code null} (JSON has no NaN), keys in a fixed order so that the same training runs give the same bytes.
@@ -52,21 +66,9 @@ public final class ForecastFile {
         root.put("threshold", m.threshold());
         root.put("thresholdNote", m.thresholdNote());
         root.put("thresholdValidated", m.validated());
-        if (m.calibration().runs() > 0) {
-            ObjectNode c = root.putObject("calibration");
-            c.put("slope", m.calibration().slope());
-            c.put("intercept", m.calibration().intercept());
-            c.put("runs", m.calibration().runs());
-        }
+        writeCalibration(root, m.calibration());
         writeScorecards(root, m.scorecards());
-        if (!m.obligations().isEmpty()) {
-            ObjectNode o = root.putObject("obligations");
-            new TreeMap<>(m.obligations()).forEach((id, survival) -> {
-                ObjectNode n = o.putObject(id);
-                numbers(n.putArray("discharged"), survival.discharged());
-                numbers(n.putArray("censored"), survival.censored());
-            });
-        }
+        writeObligations(root, m.obligations(), m.deadlines());
         ArrayNode starts = root.putArray("startInputs");
         m.startInputs().forEach(starts::add);
         lows(root, m.lows());
@@ -189,15 +191,7 @@ public final class ForecastFile {
         Calibration calibration = Calibration.IDENTITY;
         JsonNode c = root.get("calibration");
         if (c != null) {
-            double slope = number(c, "slope");
-            if (!(slope > 0)) {
-                throw new IllegalArgumentException("'calibration/slope': expected a positive number");
-            }
-            double intercept = number(c, "intercept");
-            if (Double.isNaN(intercept)) {
-                throw new IllegalArgumentException("'calibration/intercept': expected a number");
-            }
-            calibration = new Calibration(slope, intercept, count(c, "runs", "calibration"));
+            calibration = calibration(c, "calibration");
         }
         int runs = count(root, "runs", null);
         int violating = count(root, "violating", null);
@@ -212,84 +206,12 @@ public final class ForecastFile {
         return new ForecastModel(format, required(root, "unit").asText(), number(root, "limit"),
                 runs, violating, lows(root), threshold,
                 required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
-                starts, calibration, readScorecards(root), readObligations(root));
-    }
-
-    /** The optional {@code obligations}: per bounded-response property, the training obligations' durations. */
-    private static Map<String, Survival> readObligations(JsonNode root) {
-        Map<String, Survival> obligations = new TreeMap<>();
-        JsonNode o = root.get("obligations");
-        if (o == null) {
-            return obligations;
-        }
-        if (!o.isObject()) {
-            throw new IllegalArgumentException("'obligations': expected an object");
-        }
-        for (Iterator<Map.Entry<String, JsonNode>> it = o.fields(); it.hasNext(); ) {
-            Map.Entry<String, JsonNode> e = it.next();
-            try {
-                obligations.put(e.getKey(), new Survival(doubles(required(e.getValue(), "discharged")),
-                        doubles(required(e.getValue(), "censored"))));
-            } catch (IllegalArgumentException x) {
-                throw new IllegalArgumentException("'obligations/" + e.getKey() + "': " + x.getMessage(), x);
-            }
-        }
-        return obligations;
-    }
-
-    /** The optional {@code scorecards} list: one object per property, written only when there is one. */
-    private static void writeScorecards(ObjectNode root, List<Scorecard> cards) {
-        if (cards.isEmpty()) {
-            return;
-        }
-        ArrayNode a = root.putArray("scorecards");
-        cards.forEach(c -> a.add(scorecard(c)));
+                starts, calibration, readScorecards(root), readObligations(root), readDeadlines(root));
     }
 
     /** One scorecard as {@code forecast.json} holds it (and {@code /status} shows it). */
     public static ObjectNode scorecard(Scorecard c) {
-        ObjectNode n = JSON.createObjectNode();
-        n.put("property", c.property());
-        n.put("folds", c.folds());
-        n.put("runs", c.runs());
-        n.put("violating", c.violating());
-        n.put("warned", c.warned());
-        n.put("falseAlarms", c.falseAlarms());
-        number(n, "medianLead", c.medianLead());
-        n.put("unit", c.unit());
-        number(n, "brier", c.brier());
-        number(n, "baseBrier", c.baseBrier());
-        return n;
-    }
-
-    private static List<Scorecard> readScorecards(JsonNode root) {
-        JsonNode a = root.get("scorecards");
-        if (a == null) {
-            return List.of();
-        }
-        if (!a.isArray()) {
-            throw new IllegalArgumentException("'scorecards': expected an array");
-        }
-        List<Scorecard> cards = new ArrayList<>();
-        for (JsonNode n : a) {
-            if (!n.isObject()) {
-                throw new IllegalArgumentException("'scorecards': expected an array of objects");
-            }
-            Scorecard c = new Scorecard(required(n, "property").asText(), integer(n, "folds"), integer(n, "runs"),
-                    integer(n, "violating"), integer(n, "warned"), integer(n, "falseAlarms"), number(n, "medianLead"),
-                    required(n, "unit").asText(), number(n, "brier"), number(n, "baseBrier"));
-            if (c.runs() < 0 || c.violating() < 0 || c.violating() > c.runs() || c.warned() < 0
-                    || c.warned() > c.violating() || c.falseAlarms() < 0 || c.falseAlarms() > c.held()) {
-                throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected 0 <= warned <= "
-                        + "violating <= runs and 0 <= falseAlarms <= runs - violating");
-            }
-            if (!(c.brier() >= 0 && c.brier() <= 1) || !(c.baseBrier() >= 0 && c.baseBrier() <= 1)) {
-                throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected Brier scores "
-                        + "between 0 and 1");
-            }
-            cards.add(c);
-        }
-        return cards;
+        return ForecastFileSections.scorecard(c);
     }
 
     private static void lows(ObjectNode n, Lows lows) {
@@ -301,73 +223,4 @@ public final class ForecastFile {
         return new Lows(doubles(required(n, "safeLows")), doubles(required(n, "violatingLows")));
     }
 
-    private static void number(ObjectNode n, String key, double v) {
-        if (Double.isNaN(v) || Double.isInfinite(v)) {
-            n.putNull(key);
-        } else {
-            n.put(key, v);
-        }
-    }
-
-    private static void numbers(ArrayNode a, double[] values) {
-        for (double v : values) {
-            if (Double.isNaN(v) || Double.isInfinite(v)) {
-                a.addNull();
-            } else {
-                a.add(v);
-            }
-        }
-    }
-
-    private static JsonNode required(JsonNode n, String key) {
-        JsonNode v = n.get(key);
-        if (v == null) {
-            throw new IllegalArgumentException("'" + key + "' is missing");
-        }
-        return v;
-    }
-
-    private static int integer(JsonNode n, String key) {
-        JsonNode v = required(n, key);
-        if (!v.canConvertToInt() || !v.isIntegralNumber()) {
-            throw new IllegalArgumentException("'" + key + "': expected a whole number");
-        }
-        return v.intValue();
-    }
-
-    /** A count: a whole number, 0 or more; {@code at} says where, null at the top. */
-    private static int count(JsonNode n, String key, String at) {
-        int v = integer(n, key);
-        if (v < 0) {
-            throw new IllegalArgumentException("'" + (at == null ? "" : at + "/") + key + "': " + v
-                    + ", expected 0 or more");
-        }
-        return v;
-    }
-
-    private static double number(JsonNode n, String key) {
-        JsonNode v = required(n, key);
-        if (v.isNull()) {
-            return Double.NaN;
-        }
-        if (!v.isNumber()) {
-            throw new IllegalArgumentException("'" + key + "': expected a number or null");
-        }
-        return v.doubleValue();
-    }
-
-    private static double[] doubles(JsonNode a) {
-        if (!a.isArray()) {
-            throw new IllegalArgumentException("expected an array of numbers");
-        }
-        double[] out = new double[a.size()];
-        for (int i = 0; i < out.length; i++) {
-            JsonNode v = a.get(i);
-            if (!v.isNull() && !v.isNumber()) {
-                throw new IllegalArgumentException("expected an array of numbers");
-            }
-            out[i] = v.isNull() ? Double.NaN : v.doubleValue();
-        }
-        return out;
-    }
 }

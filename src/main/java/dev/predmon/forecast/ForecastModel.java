@@ -26,12 +26,14 @@ import java.util.Map;
  * @param scorecards  how well the forecast did in that cross-validation, per property (empty when it did not run)
  * @param obligations by bounded-response property id, how long its obligations stayed pending in the training runs:
  *                    the deadline forecast of that property ({@link Survival})
+ * @param deadlines   by bounded-response property id, when its deadline forecast warns, chosen by cross-validation
+ *                    over those obligations; a property without one has {@link DeadlineRule#DEFAULT}
  */
 public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
                             double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
                             Calibration calibration, List<Scorecard> scorecards,
-                            Map<String, Survival> obligations) {
+                            Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines) {
 
     /** Current format. */
     public static final int FORMAT = 1;
@@ -45,6 +47,27 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         startInputs = List.copyOf(startInputs);
         scorecards = List.copyOf(scorecards);
         obligations = Map.copyOf(obligations);
+        deadlines = Map.copyOf(deadlines);
+    }
+
+    /** A model whose deadline forecasts warn by the default rule. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold,
+                         String thresholdNote, boolean validated, Map<String, Map<Integer, StateStats>> states,
+                         List<String> startInputs, Calibration calibration, List<Scorecard> scorecards,
+                         Map<String, Survival> obligations) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, scorecards, obligations, Map.of());
+    }
+
+    /** When the deadline forecast of property {@code id} warns: its learned rule, else the default. */
+    public DeadlineRule deadlineRule(String id) {
+        return deadlines.getOrDefault(id, DeadlineRule.DEFAULT);
+    }
+
+    /** This model with {@code rules} as its deadline rules, by property id. */
+    public ForecastModel withDeadlines(Map<String, DeadlineRule> rules) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, obligations, rules);
     }
 
     /** A model without deadline forecasts. */
@@ -123,19 +146,19 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs, calibration, scorecards, obligations);
+                startInputs, calibration, scorecards, obligations, deadlines);
     }
 
     /** This model with another calibration (the threshold is left as it is). */
     public ForecastModel withCalibration(Calibration c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, c, scorecards, obligations);
+                states, startInputs, c, scorecards, obligations, deadlines);
     }
 
     /** This model with {@code cards} as its scorecards. */
     public ForecastModel withScorecards(List<Scorecard> cards) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, cards, obligations);
+                states, startInputs, calibration, cards, obligations, deadlines);
     }
 
     @Override
@@ -145,7 +168,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && lows.equals(m.lows)
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
                 && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration)
-                && scorecards.equals(m.scorecards) && obligations.equals(m.obligations);
+                && scorecards.equals(m.scorecards) && obligations.equals(m.obligations) && deadlines.equals(m.deadlines);
     }
 
     @Override

@@ -21,9 +21,28 @@ import java.util.Locale;
  * @param brier       the Brier score of the calibrated forecast (each run weighs the same, its forecasts sharing one
  *                    unit of weight; 0 is perfect)
  * @param baseBrier   the same for always saying the training runs' share of violations
+ * @param counted     what {@code runs} counts: {@value #RUNS}, or {@value #OBLIGATIONS} for a deadline forecast,
+ *                    where each obligation is judged (it missed its deadline or it was met)
  */
 public record Scorecard(String property, int folds, int runs, int violating, int warned, int falseAlarms,
-                        double medianLead, String unit, double brier, double baseBrier) {
+                        double medianLead, String unit, double brier, double baseBrier, String counted) {
+
+    /** A scorecard over runs. */
+    public static final String RUNS = "runs";
+    /** A scorecard over the obligations of a bounded-response property. */
+    public static final String OBLIGATIONS = "obligations";
+
+    public Scorecard {
+        if (!RUNS.equals(counted) && !OBLIGATIONS.equals(counted)) {
+            throw new IllegalArgumentException("a scorecard counts runs or obligations, not " + counted);
+        }
+    }
+
+    /** A scorecard over runs. */
+    public Scorecard(String property, int folds, int runs, int violating, int warned, int falseAlarms,
+                     double medianLead, String unit, double brier, double baseBrier) {
+        this(property, folds, runs, violating, warned, falseAlarms, medianLead, unit, brier, baseBrier, RUNS);
+    }
 
     /** The runs that held. */
     public int held() {
@@ -47,11 +66,15 @@ public record Scorecard(String property, int folds, int runs, int violating, int
 
     /** The scorecard in two lines, as {@code learn} and {@code watch} print it. */
     public List<String> lines() {
-        String first = String.format(Locale.ROOT, "scorecard of '%s' (%d-fold cross-validation on %d runs): warned "
-                + "%d of %d violations, %d false alarm(s) in %d safe runs, %s", property, folds, runs, warned,
-                violating, falseAlarms, held(), leadWords());
-        String second = String.format(Locale.ROOT, "  Brier score %.3f vs %.3f for the base rate: %s", brier,
-                baseBrier, skill() ? "the forecast knows more than how often runs violate"
+        boolean runsCounted = RUNS.equals(counted);
+        String first = String.format(Locale.ROOT, "scorecard of '%s' (%d-fold cross-validation on %d %s): warned "
+                + "%d of %d %s, %d false alarm(s) in %d %s, %s", property, folds, runs, counted, warned,
+                violating, runsCounted ? "violations" : "missed deadlines", falseAlarms, held(),
+                runsCounted ? "safe runs" : "met in time", leadWords());
+        String often = runsCounted ? "runs violate" : "deadlines are missed";
+        String second = Double.isNaN(brier) ? "  no Brier score: no held-out forecast had evidence (the forecast has"
+                + " no skill to show)" : String.format(Locale.ROOT, "  Brier score %.3f vs %.3f for the base rate: %s",
+                brier, baseBrier, skill() ? "the forecast knows more than how often " + often
                         : "the forecast has no skill on these models (it does no better than the base rate)");
         return List.of(first, second);
     }
@@ -61,16 +84,18 @@ public record Scorecard(String property, int folds, int runs, int violating, int
      * 32 safe runs; Brier 0.193 vs base rate 0.191".
      */
     public String summary() {
-        return String.format(Locale.ROOT, "these models warned %d of %d violations in cross-validation, %d false "
-                + "alarm(s) in %d safe runs; Brier %.3f vs base rate %.3f", warned, violating, falseAlarms, held(),
-                brier, baseBrier);
+        boolean runsCounted = RUNS.equals(counted);
+        return String.format(Locale.ROOT, "these models warned %d of %d %s in cross-validation, %d false "
+                + "alarm(s) in %d %s; Brier %.3f vs base rate %.3f", warned, violating,
+                runsCounted ? "violations" : "missed deadlines", falseAlarms, held(),
+                runsCounted ? "safe runs" : "obligations met in time", brier, baseBrier);
     }
 
     private String leadWords() {
         if (Double.isNaN(medianLead)) {
             return "no lead";
         }
-        return "ticks".equals(unit) ? String.format(Locale.ROOT, "median lead %.0f ticks", medianLead)
-                : String.format(Locale.ROOT, "median lead %.1f s", medianLead);
+        return "s".equals(unit) ? String.format(Locale.ROOT, "median lead %.1f s", medianLead)
+                : String.format(Locale.ROOT, "median lead %.0f %s", medianLead, unit);
     }
 }

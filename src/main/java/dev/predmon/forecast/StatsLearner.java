@@ -64,7 +64,7 @@ public final class StatsLearner {
     }
 
     /** Per bounded-response property, how long the runs' obligations stayed pending, discharged or censored. */
-    static Map<String, Survival> obligations(List<LogTrace.Run> runs) {
+    public static Map<String, Survival> obligations(List<LogTrace.Run> runs) {
         Map<String, List<Double>> discharged = new TreeMap<>();
         Map<String, List<Double>> censored = new TreeMap<>();
         for (LogTrace.Run r : runs) {

@@ -45,13 +45,21 @@ public final class ThresholdChoice {
     public record Choice(double threshold, String note, boolean validated) {
     }
 
-    /** Chooses from {@code peaks}. */
+    /** Chooses from {@code peaks}, held-out runs. */
     public static Choice choose(List<Peak> peaks) {
+        return choose(peaks, "runs");
+    }
+
+    /**
+     * Chooses from {@code peaks}; {@code what} names what each peak is the peak of, for the note ({@code runs},
+     * {@code obligations}).
+     */
+    public static Choice choose(List<Peak> peaks, String what) {
         long bad = peaks.stream().filter(Peak::violated).count();
         long good = peaks.size() - bad;
         if (bad == 0 || good == 0) {
-            return new Choice(DEFAULT, String.format(Locale.ROOT, "default %.2f: the %d held-out run(s) %s",
-                    DEFAULT, peaks.size(), bad == 0 ? "all held" : "all violated"), false);
+            return new Choice(DEFAULT, String.format(Locale.ROOT, "default %.2f: the %d held-out %s %s",
+                    DEFAULT, peaks.size(), what, bad == 0 ? "all held" : "all violated"), false);
         }
         TreeSet<Double> distinct = new TreeSet<>();
         peaks.forEach(p -> distinct.add(p.probability()));
@@ -85,8 +93,8 @@ public final class ThresholdChoice {
             }
         }
         return new Choice(best, String.format(Locale.ROOT,
-                "by cross-validation on %d held-out runs: warned %d of %d violations, %d false alarm(s) in %d",
-                peaks.size(), hits, bad, alarms, good), true);
+                "by cross-validation on %d held-out %s: warned %d of %d violations, %d false alarm(s) in %d",
+                peaks.size(), what, hits, bad, alarms, good), true);
     }
 
     private static int errors(List<Peak> peaks, double t) {

@@ -1,5 +1,6 @@
 package dev.predmon.hooks;
 
+import dev.predmon.event.LogEvent;
 import dev.predmon.monitor.MonitorEvent;
 
 import java.io.IOException;
@@ -85,15 +86,17 @@ public final class CommandHooks implements AutoCloseable {
         pool.allowCoreThreadTimeOut(true);
     }
 
-    /** Queues the command for {@code event} of {@code log}, if it has one; returns at once. */
-    public void event(String log, MonitorEvent event, String json) {
+    /** Queues the command for {@code sent}, if its event has one (a warning, a violation); returns at once. */
+    public void event(LogEvent sent) {
+        String log = sent.log();
+        MonitorEvent event = sent.event();
         String command = event instanceof MonitorEvent.Warning ? onWarning
                 : event instanceof MonitorEvent.Violation ? onViolation
                 : event instanceof MonitorEvent.Recovered ? onRecovered : null;
         if (command == null) {
             return;
         }
-        Run run = new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound), json);
+        Run run = new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound), sent.line());
         try {
             pool.execute(run);
         } catch (RejectedExecutionException full) {

@@ -37,7 +37,7 @@ public final class LearnedModels {
                 samples += m.samples().size();
             }
             entries.add(new ModelIndex.Scenario(s.spec().name(), s.spec().faulty(), s.spec().description(), samples,
-                    List.copyOf(models)));
+                    List.copyOf(models), s.spec().violates()));
         }
         try {
             ModelIndex.AbstractionInfo info = new ModelIndex.AbstractionInfo(abstraction.name(),

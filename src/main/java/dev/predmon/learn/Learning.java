@@ -5,8 +5,10 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.mealy.MealyAlphabet;
 import dev.predmon.model.ModelIndex;
+import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.pipeline.LogTrace;
+import net.automatalib.alphabet.Alphabet;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -50,25 +52,66 @@ public final class Learning {
     public static Result learnAndWrite(Path logs, Path models, Abstraction abstraction, Consumer<LearnedScenario> each,
                                        Consumer<String> step) throws BadInputException, IOException {
         ModelStore.checkWritable(models, logs);
-        List<LearnedScenario> learned = new ArrayList<>();
         List<ScenarioSpec> specs = ScenarioLayout.scan(logs, abstraction);
         List<Path> all = specs.stream().flatMap(s -> s.logs().stream()).toList();
         Map<Path, LogTrace> traces = ScenarioLearner.read(all, abstraction);
-        Abstraction tuned = tuneToNoise(specs, traces, abstraction);
-        if (tuned != abstraction) {
-            traces = ScenarioLearner.read(all, tuned); // the hysteresis changes the traces
+        Learned learned = learn(specs, traces, abstraction, abstraction.confirm(),
+                tuned -> ScenarioLearner.read(all, tuned), null, each);
+        List<String> notes = ModelStore.write(models, LearnedModels.index(learned.scenarios(), learned.tuned()),
+                LearnedModels.dots(learned.scenarios(), MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(),
+                learned.forecast(), step);
+        return new Result(learned.scenarios(), notes, learned.forecast());
+    }
+
+    /**
+     * What the recipe made: every scenario's machines, the abstraction tuned to the training runs' noise, and the
+     * forecast.
+     */
+    public record Learned(List<LearnedScenario> scenarios, Abstraction tuned, ForecastModel forecast) {
+
+        /** The models in memory, as {@code watch} would load them from the directory {@code learn} writes. */
+        public ModelSet modelSet() {
+            return LearnedModels.modelSet(scenarios, tuned, forecast);
         }
+    }
+
+    /** Reads the training logs again with a tuned abstraction. */
+    @FunctionalInterface
+    public interface Reread {
+        Map<Path, LogTrace> read(Abstraction tuned) throws BadInputException;
+    }
+
+    /**
+     * The one recipe of {@code learn} and {@code evaluate}: the sensor noise estimated from the runs of {@code specs}
+     * ({@link #tuneToNoise}), their logs read again with the hysteresis that absorbs it ({@code reread}), each
+     * scenario learned ({@link ScenarioLearner#learn}), then its forecast, threshold and scorecard
+     * ({@link ForecastTraining#train}).
+     *
+     * @param traces  the logs of {@code specs} read with {@code abstraction}
+     * @param notes   where a scenario without a training run is noted and left out; null: such a scenario is an error
+     * @param each    receives each scenario as soon as it is learned
+     */
+    public static Learned learn(List<ScenarioSpec> specs, Map<Path, LogTrace> traces, Abstraction abstraction,
+                                int confirm, Reread reread, List<String> notes, Consumer<LearnedScenario> each)
+            throws BadInputException {
+        Abstraction tuned = tuneToNoise(specs, traces, abstraction);
+        Map<Path, LogTrace> read = tuned == abstraction ? traces : reread.read(tuned); // the hysteresis changes them
+        List<LearnedScenario> learned = new ArrayList<>();
+        List<ScenarioSpec> learnedSpecs = new ArrayList<>();
         for (ScenarioSpec s : specs) {
-            LearnedScenario l = ScenarioLearner.learn(s, tuned, traces);
+            if (notes != null && s.logs().stream().allMatch(log -> read.get(log).samples(s.runs()).isEmpty())) {
+                notes.add("scenario '" + s.name() + "' has no training run; its runs can match no model of it");
+                continue;
+            }
+            LearnedScenario l = ScenarioLearner.learn(s, tuned, read);
             each.accept(l);
             learned.add(l);
+            learnedSpecs.add(s);
         }
-        ForecastModel forecast = ForecastTraining.train(specs, traces, LearnedModels.machines(learned),
-                MealyAlphabet.inputs(abstraction), ForecastTraining.limit(tuned), ForecastTraining.property(tuned),
-                tuned.confirm());
-        List<String> notes = ModelStore.write(models, LearnedModels.index(learned, tuned),
-                LearnedModels.dots(learned, MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(), forecast, step);
-        return new Result(List.copyOf(learned), notes, forecast);
+        Alphabet<String> alphabet = MealyAlphabet.inputs(abstraction);
+        ForecastModel forecast = DeadlineTraining.train(ForecastTraining.train(learnedSpecs, read,
+                LearnedModels.machines(learned), alphabet, tuned, confirm), learnedSpecs, read, tuned);
+        return new Learned(List.copyOf(learned), tuned, forecast);
     }
 
     /**

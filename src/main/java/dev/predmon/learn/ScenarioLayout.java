@@ -3,6 +3,8 @@ package dev.predmon.learn;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelIndex;
+import dev.predmon.pipeline.RunLabel;
+import dev.predmon.property.Property;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -14,7 +16,8 @@ import java.util.stream.Stream;
 
 /**
  * The layout of a log directory: one subdirectory per scenario, holding its {@code *.log} files and a
- * {@code scenario.json}, {@code {"faulty": true|false, "description": "..."}} ({@link ScenarioFile}).
+ * {@code scenario.json}, {@code {"faulty": true|false, "description": "...", "violates": "<property id>"}}
+ * ({@link ScenarioFile}).
  */
 public final class ScenarioLayout {
 
@@ -49,19 +52,28 @@ public final class ScenarioLayout {
             return labelled;
         }
         List<ScenarioSpec> specs = new ArrayList<>();
+        List<String> properties = abstraction.properties().stream().map(Property::id).toList();
         for (Path dir : dirs) {
-            specs.add(read(dir));
+            specs.add(read(dir, properties));
         }
         return specs;
     }
 
-    /** Reads one scenario directory. */
+    /** Reads one scenario directory, whatever property its {@code scenario.json} names. */
     public static ScenarioSpec read(Path dir) throws BadInputException {
+        return read(dir, null);
+    }
+
+    /**
+     * Reads one scenario directory; the property its {@code scenario.json} says its runs violate must be one of
+     * {@code properties} (ids; null to accept any).
+     */
+    static ScenarioSpec read(Path dir, List<String> properties) throws BadInputException {
         String name = dir.getFileName().toString();
         if (!NAME.matcher(name).matches()) {
             throw new BadInputException(dir + ": scenario names may hold only letters, digits, '_', '-' and '.'");
         }
-        ScenarioFile file = ScenarioFile.read(dir.resolve(ScenarioFile.NAME));
+        ScenarioFile file = ScenarioFile.read(dir.resolve(ScenarioFile.NAME), properties);
         List<Path> logs;
         try (Stream<Path> s = Files.list(dir)) {
             logs = s.filter(p -> p.getFileName().toString().endsWith(".log") && Files.isRegularFile(p)).sorted().toList();
@@ -71,6 +83,6 @@ public final class ScenarioLayout {
         if (logs.isEmpty()) {
             throw new BadInputException(dir + ": no *.log files for scenario '" + name + "'");
         }
-        return new ScenarioSpec(name, file.faulty(), file.description(), logs);
+        return new ScenarioSpec(name, file.faulty(), file.description(), logs, RunLabel.ALL, file.violates());
     }
 }

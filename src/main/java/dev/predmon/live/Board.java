@@ -3,11 +3,11 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
-import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.property.Bound;
@@ -113,10 +113,10 @@ public final class Board {
     }
 
     /** An event of {@code tile}'s log: the tile takes it, and {@code /events} sends its JSON (which names the log). */
-    public void event(Tile tile, MonitorEvent e, String json) {
-        tile.event(e, json);
-        metrics.event(tile, e);
-        stream.publish(json);
+    public void event(Tile tile, LogEvent e) {
+        tile.event(e);
+        metrics.event(tile, e.event());
+        stream.publish(e.line());
     }
 
     /** {@code tile}'s log grew now. */
@@ -142,11 +142,13 @@ public final class Board {
         String property = safety.map(Bound::name).orElse(null);
         Boolean skill = scorecards.stream().filter(c -> c.property().equals(property)).findFirst()
                 .map(Scorecard::skill).orElse(null);
+        Map<String, Boolean> skills = new HashMap<>(); // every scorecard's, by the property's name
+        scorecards.forEach(c -> skills.putIfAbsent(c.property(), c.skill()));
         List<ObjectNode> snapshots = new ArrayList<>();
         for (Tile t : all) {
             String name = shown.getOrDefault(t, t.name());
             snapshots.add(t.snapshot(now, staleMillis, new Tile.Shown(name, action, warnsAt, !t.empty() || exists(t),
-                    skill)));
+                    skill, skills)));
         }
         snapshots.sort(Comparator.comparingInt(Board::rank).thenComparing(s -> s.get("name").asText())
                 .thenComparing(s -> s.get("log").asText()));

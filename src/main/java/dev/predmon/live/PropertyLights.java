@@ -99,8 +99,9 @@ final class PropertyLights {
      * @param state    the tile's state: the forecast property's light
      * @param forecast the forecast property's latest forecast as JSON, or null
      * @param skill    whether the forecast has skill on these models (null when it was not measured)
+     * @param skills   whether each property's forecast has skill, by the property's name, as its scorecard says
      */
-    ArrayNode json(TileState state, JsonNode forecast, Boolean skill) {
+    ArrayNode json(TileState state, JsonNode forecast, Boolean skill, Map<String, Boolean> skills) {
         List<ObjectNode> lights = new ArrayList<>();
         Map<String, PropertyStatus> byId = new HashMap<>();
         for (PropertyStatus s : now) {
@@ -112,7 +113,7 @@ final class PropertyLights {
                 s = null; // models that do not fit the log: what its checks say of it is no verdict either
             }
             lights.add(p.id().equals(forecastId) ? forecastLight(p, s, state, forecast, skill) : light(p, s,
-                    state == TileState.NO_VERDICT));
+                    state == TileState.NO_VERDICT, skills.get(p.name())));
         }
         // stable: the abstraction's order within a light
         lights.sort(Comparator.comparing(o -> Light.valueOf(o.get("state").asText().toUpperCase(Locale.ROOT))));
@@ -147,7 +148,7 @@ final class PropertyLights {
     }
 
     /** A property other than the forecast's. */
-    private ObjectNode light(Property p, PropertyStatus s, boolean noVerdict) {
+    private ObjectNode light(Property p, PropertyStatus s, boolean noVerdict, Boolean skill) {
         Verdict v = s == null ? null : s.verdict();
         Survival.Estimate e = s == null ? null : s.deadline();
         Light light;
@@ -182,15 +183,19 @@ final class PropertyLights {
         } else {
             o.putNull("forecast");
         }
-        // a deadline forecast's skill is not measured by cross-validation: the page says so beside its number
-        o.putNull("skill");
-        o.put("forecastWords", forecastWords(s, e));
+        // a deadline forecast's skill, as its scorecard says: where none measured it, the page says so beside it
+        if (skill == null || e == null) {
+            o.putNull("skill");
+        } else {
+            o.put("skill", skill);
+        }
+        o.put("forecastWords", forecastWords(s, e, skill));
         String recovery = recoveries.get(p.id());
         o.put("recovery", light == Light.WARNING ? null : recovery);
         return o;
     }
 
-    private static String forecastWords(PropertyStatus s, Survival.Estimate e) {
+    private static String forecastWords(PropertyStatus s, Survival.Estimate e, Boolean skill) {
         if (s == null || s.model() == PropertyStatus.Model.NONE) {
             return "no forecast: no model of this property";
         }
@@ -198,8 +203,15 @@ final class PropertyLights {
             return "no forecast: no obligation pending";
         }
         String left = ForecastWords.fixed(e.timeLeft(), 0) + " " + s.unit() + " left";
-        return e.novel() ? "no forecast: pending longer than any training obligation; " + left
-                : "P(miss) " + Math.round(e.probability() * 100) + "%, " + left + " (skill not measured)";
+        if (e.novel()) {
+            return "no forecast: pending longer than any training obligation; " + left;
+        }
+        if (Boolean.FALSE.equals(skill)) {
+            // no headline: the number would look like knowledge the models showed they lack
+            return "no skill: the deadline forecast did no better than the base rate; " + left;
+        }
+        return "P(miss) " + Math.round(e.probability() * 100) + "%, " + left + (skill == null ? " (skill not measured)"
+                : "");
     }
 
     /** The forecast's property: its light is the tile's. */

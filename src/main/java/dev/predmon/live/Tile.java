@@ -3,6 +3,7 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
@@ -86,8 +87,9 @@ public final class Tile {
     }
 
     /** An event of this log's monitor, with its JSON. */
-    public synchronized void event(MonitorEvent e, String json) {
-        JsonNode node = TileJson.parse(json);
+    public synchronized void event(LogEvent sent) {
+        MonitorEvent e = sent.event();
+        JsonNode node = sent.json();
         if (e instanceof MonitorEvent.ForecastChanged f) {
             // Forecasts change often: the tile shows the latest, and the last events keep room for the rest. A
             // deadline's forecast is its property's light's, from the monitor's statuses.
@@ -228,7 +230,8 @@ public final class Tile {
      * not), whether the log's file exists, and whether the forecast has skill on these models (null when not
      * measured).
      */
-    record Shown(String name, String action, Double warnsAt, boolean exists, Boolean skill) {
+    record Shown(String name, String action, Double warnsAt, boolean exists, Boolean skill,
+                 Map<String, Boolean> skills) {
     }
 
     /** Whether the log has had no record since the start (so that whether its file exists is worth asking). */
@@ -270,7 +273,8 @@ public final class Tile {
             o.put("warnsAt", shown.warnsAt());
         }
         alarm.snapshot(o);
-        ArrayNode props = lights.json(state, noVerdict == null ? forecastJson : null, shown.skill());
+        ArrayNode props = lights.json(state, noVerdict == null ? forecastJson : null, shown.skill(),
+                shown.skills());
         o.set("properties", props);
         // the worst property's light, for the compact view and the order of the tiles
         o.set("worst", props.isEmpty() ? null : props.get(0));

@@ -1,6 +1,5 @@
 package dev.predmon.live;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
@@ -76,14 +75,6 @@ final class TileJson {
     static JsonNode forecastOf(JsonNode event) {
         JsonNode f = event == null ? null : event.get("forecast");
         return f == null || f.isNull() ? null : f;
-    }
-
-    static JsonNode parse(String json) {
-        try {
-            return JSON.readTree(json);
-        } catch (JsonProcessingException e) {
-            throw new IllegalArgumentException("an event's JSON does not parse: " + json, e);
-        }
     }
 
     static void number(ObjectNode o, String key, double value) {

@@ -103,7 +103,7 @@ final class IndexReader {
     }
 
     private ModelIndex.Scenario scenario(JsonNode n, String at) throws BadInputException {
-        keys(n, at, "name", "faulty", "description", "samples", "models");
+        keys(n, at, "name", "faulty", "description", "samples", "models", "violates");
         JsonNode models = array(n, at, "models");
         List<ModelIndex.Model> list = null;
         if (models != null) {
@@ -112,8 +112,12 @@ final class IndexReader {
                 list.add(model(models.get(i), at + "/models/" + i));
             }
         }
+        JsonNode violates = n.get("violates");
+        if (violates != null && !violates.isTextual()) {
+            throw problem(at + "/violates", "expected the id of a property, as a string");
+        }
         return new ModelIndex.Scenario(string(n, at, "name"), bool(n, at, "faulty"), string(n, at, "description"),
-                integer(n, at, "samples"), list);
+                integer(n, at, "samples"), list, violates == null ? null : violates.textValue());
     }
 
     private ModelIndex.Model model(JsonNode n, String at) throws BadInputException {

@@ -64,8 +64,19 @@ public record ModelIndex(int format, AbstractionInfo abstraction, List<String> a
         }
     }
 
-    /** One scenario and its machines. */
-    public record Scenario(String name, boolean faulty, String description, int samples, List<Model> models) {
+    /**
+     * One scenario and its machines.
+     *
+     * @param violates the id of the property a faulty scenario's runs violate, as its {@code scenario.json} names it;
+     *                 absent (null) for the property the forecast follows, so that such an index is unchanged
+     */
+    public record Scenario(String name, boolean faulty, String description, int samples, List<Model> models,
+                           @JsonInclude(JsonInclude.Include.NON_NULL) String violates) {
+
+        /** A scenario about the property the forecast follows. */
+        public Scenario(String name, boolean faulty, String description, int samples, List<Model> models) {
+            this(name, faulty, description, samples, models, null);
+        }
     }
 
     /**

@@ -1,8 +1,8 @@
 package dev.predmon.monitor;
 
+import dev.predmon.compact.IoPair;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.mealy.MealyMapping;
-import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 
@@ -81,13 +81,23 @@ public final class Classifier {
     private Classifier() {
     }
 
-    /** Classifies a complete trace. {@code threshold}: most discrepancies a match may have. */
-    public static Result classify(ModelSet models, MealyTrace trace, int threshold) {
+    /**
+     * Classifies a complete run given as its compacted pairs (as the replay of its log took them, so that the log is
+     * read once). {@code threshold}: most discrepancies a match may have.
+     */
+    public static Result classify(ModelSet models, List<IoPair> pairs, int threshold) {
         List<Score> scores = new ArrayList<>();
         for (LearnedModel m : models.models()) {
-            Verification v = Verification.of(m, trace);
-            boolean eliminated = v.verdict() == Verification.Verdict.INPUT_UNDEFINED || v.discrepancies() > threshold;
-            scores.add(new Score(m, eliminated, v.discrepancies(), v.failure()));
+            ModelTracker t = new ModelTracker(m, Integer.MAX_VALUE); // every discrepancy counted, as Algorithm 7 does
+            for (IoPair p : pairs) {
+                if (!t.pair(p.input(), p.output())) {
+                    break;
+                }
+            }
+            boolean undefined = !t.alive();
+            boolean eliminated = undefined || t.discrepancies() > threshold;
+            scores.add(new Score(m, eliminated, t.discrepancies(), undefined ? t.elimination()
+                    : t.firstDiscrepancy()));
         }
         // A nominal model that still matches is not evidence of a fault, even with more discrepancies: prefer it.
         Optional<Score> best = scores.stream()

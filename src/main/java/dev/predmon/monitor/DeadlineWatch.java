@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Survival;
@@ -19,19 +20,17 @@ import java.util.Locale;
  * runs' obligations of the same property took ({@link Survival}, Kaplan-Meier with the runs that stopped early
  * censored).
  *
- * <p>It warns once per obligation, when the odds are even or worse ({@value #EVEN_ODDS}, the floor of the forecast
- * rule's threshold), or when the obligation has been pending longer than every training obligation (no evidence
- * either way) and half of the time from the longest of them to the deadline has passed too: a robot stuck in a way
- * no training run was is warned with that half of the margin left. A warned obligation that is discharged in time
- * ends its warning ({@link Listener#recovered}); one that misses its deadline is the property's violation, told by
- * the checker. While an obligation is pending its forecast is told when it changes as the page shows it: the
- * probability of a miss in whole percent, or that the obligation is past every training one. A property without a
- * training obligation gets no forecast and no warning: no verdict on no evidence. Constant state per property.
+ * <p>It warns once per obligation, by the property's {@link DeadlineRule}: when the calibrated P(miss) reaches the
+ * threshold learned by cross-validation (even odds when the training obligations could not choose one), or when the
+ * obligation has been pending longer than every training obligation (no evidence either way) and half of the time
+ * from the longest of them to the deadline has passed too: a robot stuck in a way no training run was is warned with
+ * that half of the margin left. A warned obligation that is discharged in time ends its warning
+ * ({@link Listener#recovered}); one that misses its deadline is the property's violation, told by the checker. While
+ * an obligation is pending its (calibrated) forecast is told when it changes as the page shows it: the probability of
+ * a miss in whole percent, or that the obligation is past every training one. A property without a training
+ * obligation gets no forecast and no warning: no verdict on no evidence. Constant state per property.
  */
 final class DeadlineWatch {
-
-    /** The probability of a miss at which it warns. */
-    static final double EVEN_ODDS = 0.5;
 
     /**
      * A deadline warning.
@@ -58,6 +57,7 @@ final class DeadlineWatch {
 
     private final Response[] properties;
     private final Survival[] survival;
+    private final DeadlineRule[] rules;
     private final boolean[] warned;
     /** The forecast of each obligation pending now, or null. */
     private final Survival.Estimate[] current;
@@ -72,6 +72,7 @@ final class DeadlineWatch {
         int n = properties.size();
         this.properties = new Response[n];
         this.survival = new Survival[n];
+        this.rules = new DeadlineRule[n];
         this.warned = new boolean[n];
         this.current = new Survival.Estimate[n];
         this.told = new String[n];
@@ -83,6 +84,7 @@ final class DeadlineWatch {
                 if (s != null && s.size() > 0) {
                     this.properties[i] = r;
                     this.survival[i] = s;
+                    this.rules[i] = model.deadlineRule(r.id());
                 }
             }
         }
@@ -132,7 +134,8 @@ final class DeadlineWatch {
             }
             Deadline d = properties[i].within();
             Survival s = survival[i];
-            Survival.Estimate e = s.estimate(elapsed, d.amount());
+            Survival.Estimate raw = s.estimate(elapsed, d.amount());
+            Survival.Estimate e = rules[i].calibrated(raw);
             current[i] = e;
             String shown = shown(e);
             if (!shown.equals(told[i])) {
@@ -142,9 +145,7 @@ final class DeadlineWatch {
             if (warned[i]) {
                 continue;
             }
-            boolean warns = e.novel() ? elapsed >= (s.longest() + d.amount()) / 2
-                    : e.probability() >= EVEN_ODDS;
-            if (warns) {
+            if (rules[i].warns(raw, elapsed, d.amount(), s)) {
                 warned[i] = true;
                 out.due(r, new Due(properties[i], e, elapsed, reason(properties[i], e, elapsed, s)));
             }

@@ -1,10 +1,11 @@
 package dev.predmon.monitor;
 
-import dev.predmon.parse.LineSink;
 import dev.predmon.parse.LogFollower;
-import dev.predmon.parse.LogParser;
+import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
+import dev.predmon.parse.RecordSink;
+import dev.predmon.parse.RecordSource;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -13,10 +14,10 @@ import java.util.Optional;
 import java.util.function.Consumer;
 
 /**
- * Wires a followed log file to the predictive monitor: {@link LogFollower} (tail -F) feeds lines to the
- * {@link LogParser}, whose records go to the {@link PredictiveMonitor}; rotation restarts both. The caller owns
- * the loop and its pace ({@link #poll()} never sleeps), so the same wiring serves {@code watch}, the demo and
- * replayed evaluation.
+ * Wires a followed log to the predictive monitor: the log's {@link RecordSource} (for YARP logs, tail -F and a parser
+ * per file, see {@link LogFormat#yarp()}) delivers records to the {@link PredictiveMonitor}, and a rotation restarts it
+ * (a new run). The caller owns the loop and its pace ({@link #poll()} never sleeps), so the same wiring serves
+ * {@code watch}, the demo and replayed evaluation.
  */
 public final class LogWatcher implements AutoCloseable {
 
@@ -24,12 +25,10 @@ public final class LogWatcher implements AutoCloseable {
     static final Duration DEFAULT_RELEASE = Duration.ofMillis(LogFollower.RELEASE_MILLIS);
 
     private final PredictiveMonitor monitor;
-    private final LogParser parser;
-    private final LogFollower follower;
-    private long lines;
+    private final RecordSource source;
 
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
-        this(log, monitor, problems, record -> { }, record -> { }, DEFAULT_QUIET, DEFAULT_RELEASE);
+        this(LogFormat.yarp(), log, monitor, problems, record -> { }, record -> { }, DEFAULT_QUIET, DEFAULT_RELEASE);
     }
 
     /**
@@ -38,7 +37,7 @@ public final class LogWatcher implements AutoCloseable {
      */
     LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
                Duration quiet) {
-        this(log, monitor, problems, seen, record -> { }, quiet, DEFAULT_RELEASE);
+        this(LogFormat.yarp(), log, monitor, problems, seen, record -> { }, quiet, DEFAULT_RELEASE);
     }
 
     /**
@@ -47,52 +46,34 @@ public final class LogWatcher implements AutoCloseable {
      */
     public static LogWatcher withRecords(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
                                          Consumer<LogRecord> taken) {
-        return new LogWatcher(log, monitor, problems, record -> { }, taken, DEFAULT_QUIET, DEFAULT_RELEASE);
+        return new LogWatcher(LogFormat.yarp(), log, monitor, problems, record -> { }, taken, DEFAULT_QUIET,
+                DEFAULT_RELEASE);
     }
 
     /** As {@link #withRecords}; a file gone from the path is closed once it has not grown for {@code release}. */
     static LogWatcher withRelease(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
                                   Consumer<LogRecord> taken, Duration release) {
-        return new LogWatcher(log, monitor, problems, record -> { }, taken, DEFAULT_QUIET, release);
+        return new LogWatcher(LogFormat.yarp(), log, monitor, problems, record -> { }, taken, DEFAULT_QUIET, release);
     }
 
-    private LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
-                       Consumer<LogRecord> taken, Duration quiet, Duration release) {
+    private LogWatcher(LogFormat format, Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
+                       Consumer<LogRecord> seen, Consumer<LogRecord> taken, Duration quiet, Duration release) {
         this.monitor = monitor;
-        this.parser = new LogParser(record -> {
-            seen.accept(record);
-            monitor.accept(record);
-            taken.accept(record);
-        }, problems);
-        LineSink lines = parser.lineSink();
-        this.follower = LogFollower.withTimes(log, new LineSink() {
+        this.source = format.follow(log, new RecordSink() {
             @Override
-            public void line(String line) {
-                LogWatcher.this.lines++;
-                lines.line(line);
+            public void record(LogRecord record) {
+                seen.accept(record);
+                monitor.accept(record);
+                taken.accept(record);
             }
 
             @Override
-            public void line(byte[] bytes, int offset, int length) {
-                LogWatcher.this.lines++;
-                lines.line(bytes, offset, length);
-            }
-
-            @Override
-            public void overlongLine(long bytes) {
-                LogWatcher.this.lines++;
-                lines.overlongLine(bytes);
-            }
-
-            @Override
-            public void lastLine(byte[] bytes, int offset, int length) {
-                lines.lastLine(bytes, offset, length);
+            public void problem(ParseProblem problem) {
+                problems.accept(problem);
             }
 
             @Override
             public void restarted(String reason) {
-                LogWatcher.this.lines = 0;
-                lines.restarted(reason); // reports a record the rotation cut, then starts the parser over
                 monitor.restart(reason);
             }
         }, quiet, release);
@@ -100,44 +81,48 @@ public final class LogWatcher implements AutoCloseable {
 
     /** Processes whatever was appended since the last call; whether anything was. */
     public boolean poll() throws IOException {
-        return follower.poll();
+        return source.poll();
     }
 
-    /** Reads to the end of the file, completes the trace and stops (for {@code --no-follow} and replay). */
+    /** Reads to the end of the log, completes the trace and stops (for {@code --no-follow} and replay). */
     public void drain() throws IOException {
-        follower.drainToEnd();
-        parser.endOfInput();
+        source.drain();
         monitor.endOfInput();
     }
 
-    /** Whether a replaced file waits for a later {@link #poll()} to be finished ({@link LogFollower#replacing()}). */
+    /** Whether a replaced file waits for a later {@link #poll()} to be finished ({@link RecordSource#replacing()}). */
     public boolean replacing() {
-        return follower.replacing();
+        return source.replacing();
     }
 
-    /** What is at the log's path when it is not a regular file ({@link LogFollower#obstacle()}), if so. */
+    /** Whether a file renamed away at a rotation is still read ({@link RecordSource#readingRenamed()}). */
+    public boolean readingRenamed() {
+        return source.readingRenamed();
+    }
+
+    /** What is at the log's path when it is not a regular file ({@link RecordSource#obstacle()}), if so. */
     public Optional<String> obstacle() {
-        return follower.obstacle();
+        return source.obstacle();
     }
 
-    /** What the user should be told of this log once, if anything ({@link LogFollower#takeNotice()}). */
+    /** What the user should be told of this log once, if anything ({@link RecordSource#takeNotice()}). */
     public Optional<String> takeNotice() {
-        return follower.takeNotice();
+        return source.takeNotice();
     }
 
     /** How many files are held open for this log now. */
     public int openFiles() {
-        return follower.openFiles();
+        return source.openFiles();
     }
 
-    /** Closes the log's file to spare a descriptor ({@link LogFollower#release()}); whether one was closed. */
+    /** Closes the log's files to spare descriptors ({@link RecordSource#release()}); whether one was closed. */
     public boolean release() throws IOException {
-        return follower.release();
+        return source.release();
     }
 
-    /** Lines read since the start or the last rotation. */
+    /** Lines read since the start or the last rotation (a renamed file's read on since then included). */
     public long lines() {
-        return lines;
+        return source.lines();
     }
 
     public PredictiveMonitor monitor() {
@@ -146,6 +131,6 @@ public final class LogWatcher implements AutoCloseable {
 
     @Override
     public void close() throws IOException {
-        follower.close();
+        source.close();
     }
 }

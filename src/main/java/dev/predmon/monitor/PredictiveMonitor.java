@@ -3,7 +3,6 @@ package dev.predmon.monitor;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
-import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Survival;
 import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
@@ -34,7 +33,8 @@ import java.util.function.ObjIntConsumer;
  * <p>The forecast ({@link ForecastTracker}) follows the same pairs when the models carry one: a probability of
  * violation and a time to it after every pair, also through behaviour no model has seen. With the default
  * {@link WarningRule#FORECAST} rule the monitor warns when that probability reaches the threshold learned with the
- * models; the thesis's rule below stays available as {@link WarningRule#MATCH}.
+ * models; the thesis's rule below stays available as {@link WarningRule#MATCH}. Whether to warn is decided in one
+ * place, {@link WarningPolicy}: the monitor feeds it and tells its warnings.
  *
  * The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
  * {@code confirm} more pairs ({@link Abstraction#confirm()}). Per record the work and the state are constant.
@@ -51,11 +51,15 @@ public final class PredictiveMonitor implements PipelineListener {
     private final Consumer<MonitorEvent> events;
     private final TracePipeline pipeline;
     private MonitorEvent.Warning warning;
+    /** The run's first warning of any property: the forecast's {@link #warning}, or a deadline's. */
+    private MonitorEvent.Warning anyWarning;
     private MonitorEvent.Violation violation;
     private boolean noMatch;
     private Double battery;
     private Clock clock = Clock.SECONDS;
     private long pairs;
+    /** The pair of the current run at which the thesis's match rule first held (confirm included), or -1. */
+    private long matchRuleAt = -1;
     private int run;
     private long runLine = 1;
     private final RunHistory finished = new RunHistory();
@@ -67,8 +71,11 @@ public final class PredictiveMonitor implements PipelineListener {
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private final Alarm alarm;
+    private final WarningPolicy policy;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
     private TickSeconds ticks = TickSeconds.NONE;
+    /** Sees what the pipeline gives the monitor, each just before the monitor takes it (the replay's stream). */
+    private PipelineListener tee = (pair, trigger) -> { };
 
     /** As below, confirming as the abstraction says ({@link Abstraction#confirm()}). */
     public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, Consumer<MonitorEvent> events) {
@@ -99,6 +106,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.safety = abstraction.safety();
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety.orElse(null), forecast, this.events);
+        this.policy = new WarningPolicy(rule, forecast, alarm);
         this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
                 ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, new Deadlines());
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
@@ -141,6 +149,7 @@ public final class PredictiveMonitor implements PipelineListener {
     /** A new run begins in the log: its outcome is kept and every model starts over. */
     @Override
     public void runStarted(int number, LogRecord first) {
+        tee.runStarted(number, first);
         finished.add(current());
         startRun(runsBefore + number, first.line());
         events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
@@ -156,10 +165,12 @@ public final class PredictiveMonitor implements PipelineListener {
         runLine = line;
         matching.reset();
         warning = null;
+        anyWarning = null;
         violation = null;
         noMatch = false;
         battery = null;
         pairs = 0;
+        matchRuleAt = -1;
         alarm.reset();
         properties.reset();
         if (forecast != null) {
@@ -170,7 +181,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private RunOutcome current() {
         return new RunOutcome(run, runLine, (MonitorEvent.Warning) ticks.event(warning),
                 (MonitorEvent.Violation) ticks.event(violation), noMatch, pairs, battery != null,
-                forecast == null ? null : forecast.last(), properties.verdicts());
+                forecast == null ? null : forecast.last(), properties.verdicts(),
+                (MonitorEvent.Warning) ticks.event(anyWarning));
     }
 
     /**
@@ -202,6 +214,7 @@ public final class PredictiveMonitor implements PipelineListener {
     /** A record: the action under way; a reading's violation, recovery, forecast and warning ({@link Alarm}). */
     @Override
     public void record(LogRecord record) {
+        tee.record(record);
         clock = ticks.clock(record.clock());
         properties.accept(record, run);
         alarm.record(record, run);
@@ -223,11 +236,10 @@ public final class PredictiveMonitor implements PipelineListener {
         alarm.holdsAgain(record, v, run);
         if (forecast != null && (before == null || before != v)) {
             Forecast f = told(forecast.reading(record.time(), v), record);
-            boolean warns = rule == WarningRule.FORECAST && forecast.warns(f, !matching.nominalAlive());
-            alarm.reading(record, v, f, warns, run);
-            if (warns && !alarm.violated() && alarm.mayWarn(forecast.clause(f))) {
-                warn(record, matching.faultyAlive(), forecast.reason(f, "at the new reading "
-                        + ForecastWords.fixed(v, 2)), f, forecast.clause(f));
+            alarm.reading(record, v, f, policy.forecastWarns(f, !matching.nominalAlive()), run);
+            WarningPolicy.Decision d = policy.atReading(f, v, !matching.nominalAlive());
+            if (d != null) {
+                warn(record, matching.faultyAlive(), d.reason(), f, d.clause());
             }
         } else if (forecast == null) {
             alarm.reading(record, v, null, false, run); // models without a forecast: recovered by the action alone
@@ -238,8 +250,10 @@ public final class PredictiveMonitor implements PipelineListener {
     private final class Deadlines implements DeadlineWatch.Listener {
         @Override
         public void due(LogRecord r, DeadlineWatch.Due d) {
-            events.accept(new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(), run, rule,
-                    null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate()));
+            MonitorEvent.Warning w = new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(),
+                    run, rule, null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate());
+            anyWarning = anyWarning == null ? w : anyWarning;
+            events.accept(w);
         }
 
         @Override
@@ -271,6 +285,7 @@ public final class PredictiveMonitor implements PipelineListener {
                 trigger.clock(), run, rule, f, reason, clause, matching.likeliestFaulty(faultyAlive),
                 properties.forecastId());
         warning = warning == null ? w : warning; // the run's outcome keeps its first warning
+        anyWarning = anyWarning == null ? w : anyWarning;
         firstWarning = firstWarning == null ? w : firstWarning;
         alarm.warned(w);
         events.accept(w);
@@ -278,11 +293,13 @@ public final class PredictiveMonitor implements PipelineListener {
 
     @Override
     public void unmapped(String key, LogRecord record) {
+        tee.unmapped(key, record);
         events.accept(new MonitorEvent.Unmapped(record.time(), record.line(), key));
     }
 
     @Override
     public void gap(LogRecord record) {
+        tee.gap(record);
         if (forecast != null) {
             forecast.unseen(record.line());
         }
@@ -290,8 +307,12 @@ public final class PredictiveMonitor implements PipelineListener {
 
     @Override
     public void pair(IoPair pair, LogRecord trigger) {
+        tee.pair(pair, trigger);
         pairs++;
         Matching.Step step = matching.pair(pair);
+        if (step.ruleWarns() && matchRuleAt < 0) {
+            matchRuleAt = pairs - 1;
+        }
         for (ModelTracker t : step.eliminated()) {
             LearnedModel m = t.model();
             events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
@@ -299,20 +320,9 @@ public final class PredictiveMonitor implements PipelineListener {
         }
         Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
                 battery == null ? Double.NaN : battery, trigger.line()), trigger);
-        if (alarm.quiet() && (rule == WarningRule.MATCH || !alarm.violated())) {
-            String reason = null;
-            MonitorEvent.Clause clause = MonitorEvent.Clause.MATCHING;
-            if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f, step))
-                    && alarm.mayWarn(clause)) {
-                reason = MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
-                        + (f == null ? "" : "; " + ForecastWords.line(f));
-            } else if (rule == WarningRule.FORECAST && f != null && forecast.warns(f, !step.nominalAlive())) {
-                reason = forecast.reason(f, "after " + pair.input() + " -> " + pair.output());
-                clause = forecast.clause(f);
-            }
-            if (reason != null) {
-                warn(trigger, step.faultyAlive(), reason, f, clause);
-            }
+        WarningPolicy.Decision d = policy.atPair(pair, step, f);
+        if (d != null) {
+            warn(trigger, step.faultyAlive(), d.reason(), f, d.clause());
         }
         if (!noMatch && step.noMatch()) {
             noMatch = true;
@@ -341,6 +351,14 @@ public final class PredictiveMonitor implements PipelineListener {
      */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
         this.everyForecast = each;
+    }
+
+    /**
+     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before the
+     * monitor takes it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
+     */
+    public void tee(PipelineListener also) {
+        this.tee = also;
     }
 
     /** The rule this monitor warns by. */
@@ -391,6 +409,14 @@ public final class PredictiveMonitor implements PipelineListener {
     /** What the log's times count: seconds, or ticks in a log without time stamps (seconds until a record says). */
     public Clock clock() {
         return clock;
+    }
+
+    /**
+     * The pair (0-based) of the current run after which the thesis's match rule first held, {@code confirm} pairs
+     * included, whether or not the rule in force warned there; -1 while it has not.
+     */
+    public long matchRuleAt() {
+        return matchRuleAt;
     }
 
     /** Compacted pairs matched so far. */

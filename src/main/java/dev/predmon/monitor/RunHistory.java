@@ -8,7 +8,7 @@ import java.util.Optional;
 /**
  * The outcomes of the runs a monitor has finished, in bounded memory: the latest {@link #KEPT} in full, and over all
  * of them since the start what the log's verdict needs (how many, their pairs, the first warned, whether any lost
- * every model, observed the property or violated it unwarned). A watch that follows a robot for months, a run every
+ * every model, were warned, observed a property or violated one unwarned). A watch that follows a robot for months, a run every
  * few minutes, stays the same size.
  */
 final class RunHistory {
@@ -21,15 +21,15 @@ final class RunHistory {
 
     /** What a number of runs add up to; {@link #plus} counts one more. */
     private record Totals(int count, long pairs, boolean noMatch, boolean safetyObserved, boolean warnedMatching,
-                          RunOutcome firstWarned, boolean unwarnedViolation) {
+                          RunOutcome firstWarned, boolean unwarnedViolation, boolean warned) {
 
-        static final Totals NONE = new Totals(0, 0, false, false, false, null, false);
+        static final Totals NONE = new Totals(0, 0, false, false, false, null, false, false);
 
         Totals plus(RunOutcome o) {
             return new Totals(count + 1, pairs + o.pairs(), noMatch || o.noMatch(),
-                    safetyObserved || o.safetyObserved(), warnedMatching || (o.warning() != null && !o.noMatch()),
+                    safetyObserved || o.safetyObserved(), warnedMatching || (o.warned() && !o.noMatch()),
                     firstWarned != null || o.warning() == null ? firstWarned : o,
-                    unwarnedViolation || o.unwarnedViolation());
+                    unwarnedViolation || o.unwarnedViolation(), warned || o.warned());
         }
     }
 
@@ -68,6 +68,7 @@ final class RunHistory {
     RunsSummary summary(RunOutcome current) {
         Totals all = finished.plus(current);
         return new RunsSummary(all.count(), dropped(), all.pairs(), all.noMatch(), all.safetyObserved(),
-                all.warnedMatching(), Optional.ofNullable(all.firstWarned()), all.unwarnedViolation());
+                all.warnedMatching(), Optional.ofNullable(all.firstWarned()), all.unwarnedViolation(),
+                all.warned());
     }
 }

@@ -2,6 +2,7 @@ package dev.predmon.monitor;
 
 import dev.predmon.forecast.Forecast;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
+import dev.predmon.property.Verdict;
 
 import java.util.List;
 import java.util.Optional;
@@ -19,13 +20,22 @@ import java.util.Optional;
  *                       verdict on no evidence)
  * @param forecast  the run's last forecast (for its last state), or null without one
  * @param properties every property of the abstraction with its verdict on the run, in file order
+ * @param firstWarning the run's first warning of any property (the forecast's, or a bounded response's deadline),
+ *                     or null
  */
 public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
                          boolean noMatch, long pairs, boolean safetyObserved, Forecast forecast,
-                         List<PropertyVerdict> properties) {
+                         List<PropertyVerdict> properties, MonitorEvent.Warning firstWarning) {
 
     public RunOutcome {
         properties = List.copyOf(properties);
+    }
+
+    /** An outcome whose only warnings are the forecast property's. */
+    public RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, MonitorEvent.Violation violation,
+                      boolean noMatch, long pairs, boolean safetyObserved, Forecast forecast,
+                      List<PropertyVerdict> properties) {
+        this(run, firstLine, warning, violation, noMatch, pairs, safetyObserved, forecast, properties, warning);
     }
 
     /** An outcome without a forecast. */
@@ -34,12 +44,30 @@ public record RunOutcome(int run, long firstLine, MonitorEvent.Warning warning, 
         this(run, firstLine, warning, violation, noMatch, pairs, safetyObserved, null, List.of());
     }
 
+    /** Whether a warning of some property was raised in the run. */
+    public boolean warned() {
+        return firstWarning != null;
+    }
+
     /**
-     * Whether the property was violated with no warning before it in the log: the run was missed (a warning at the
-     * violating record or after it predicts nothing). The log's order, not its times, which may run backwards.
+     * Whether some property was violated with no warning of any property before that violation: the run was missed
+     * (a warning at the violating record or after it predicts nothing). The log's order, not its times, which may run
+     * backwards. A warning before the run's first violation comes before every later one, so that one decides.
      */
     public boolean unwarnedViolation() {
-        return violation != null && (warning == null || warning.line() >= violation.line());
+        long first = firstViolationLine();
+        return first > 0 && (firstWarning == null || firstWarning.line() >= first);
+    }
+
+    /** The line of the run's first violation of any property, 0 without one. */
+    private long firstViolationLine() {
+        long first = violation == null ? Long.MAX_VALUE : violation.line();
+        for (PropertyVerdict pv : properties) {
+            if (pv.verdict() instanceof Verdict.Violated v) {
+                first = Math.min(first, v.line());
+            }
+        }
+        return first == Long.MAX_VALUE ? 0 : first;
     }
 
     /** Violation time minus warning time when both happened, in the log's unit. */

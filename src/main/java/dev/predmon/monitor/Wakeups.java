@@ -31,7 +31,8 @@ import java.util.function.BiConsumer;
  * hold the old file, whose writes are then announced under its new name (or its last one, once deleted), so every
  * change in its directory polls it, and the follower drains the old file. Once a new file is at the path, the
  * follower finishes the old one only after it has been quiet for a while, a moment no event marks: such a log is
- * also polled every {@link #REPLACING_NANOS} until the follower has moved to the new file.
+ * also polled every {@link #REPLACING_NANOS} until the follower has moved to the new file, and after that for as long
+ * as it reads on in the renamed file (until that file has been quiet for the release time).
  */
 final class Wakeups implements AutoCloseable {
 
@@ -164,10 +165,11 @@ final class Wakeups implements AutoCloseable {
     /**
      * After {@code log} was polled: while a replacement of its file waits for the old file to be quiet, nothing may
      * be written that would announce the moment to finish it, so the log is polled again every
-     * {@link #REPLACING_NANOS} until its follower has moved on.
+     * {@link #REPLACING_NANOS} until its follower has moved on. So is a log whose renamed file is still read after the
+     * turn: its writer's writes are announced under a name no log has, or in a directory not watched.
      */
     void polled(WatchedLog log) {
-        if (log.watcher().replacing()) {
+        if (log.watcher().replacing() || log.watcher().readingRenamed()) {
             replacing.putIfAbsent(log, System.nanoTime() + REPLACING_NANOS);
         }
     }

@@ -37,6 +37,13 @@ public interface LineSink {
     void restarted(String reason);
 
     /**
+     * The file these lines came from is done with: no line of it follows (a file renamed away at a rotation that is
+     * let go, or the end of a single pass). Its unterminated last line was delivered before. The default does nothing.
+     */
+    default void ended() {
+    }
+
+    /**
      * A line longer than the cap was skipped without being held in memory. It still counts as a line.
      * The default delivers an empty line in its place so that line numbers stay right;
      * {@link LogParser#lineSink()} reports it as an error instead.

@@ -1,7 +1,6 @@
 package dev.predmon.parse;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
@@ -15,6 +14,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
+import java.util.function.Supplier;
 
 /**
  * Follows a log file as {@code tail -F} does, for the live monitor: each {@link #poll()} delivers the complete
@@ -29,25 +29,30 @@ import java.util.function.LongSupplier;
  *   <li>Replacement (the path names another file: rename rotation, delete and recreate): the new file is opened at
  *       once, so that nothing written to it is lost, but the old file is read on as long as its writer may still
  *       write to it. logrotate's default ({@code create}) renames the log and creates an empty one, and the
- *       program goes on writing to the renamed file until it reopens its log, if it ever does. The old file is
- *       therefore finished (its unterminated last line included) only once a file after it holds something and
- *       the old one has not grown for {@value #QUIET_MILLIS} ms; then {@code restarted("replaced")}, then the new
- *       file is read from 0. A file replaced again before that waits its turn, held open too; one that is still
+ *       program goes on writing to the renamed file until it reopens its log, if it ever does. The follower turns to
+ *       the new file only once a file after it holds something and the old one has not grown for
+ *       {@value #QUIET_MILLIS} ms: the new file gets a sink of its own, which hears {@code restarted("replaced")}
+ *       first, and is read from 0. A file replaced again before that waits its turn, held open too; one that is still
  *       empty when a later one holds something is passed over (rotated twice before the logger reopened).</li>
+ *   <li>After the turn the renamed file is still read, with its own partial line and sink, for as long as it grows
+ *       ({@link RenamedFiles}): a logger that paused longer than the quiet time goes on there. Each poll reads the
+ *       renamed files before the file at the path. One that has not grown for {@link #RELEASE_MILLIS} ms, or is
+ *       truncated or deleted, is let go: its unterminated last line is delivered, then {@link LineSink#ended()}.</li>
  *   <li>Deletion: the old handle keeps being drained, since a writer may still hold it, until a new file
  *       appears at the path, or until it has not grown for {@link #RELEASE_MILLIS} ms: then it is closed.</li>
  *   <li>Something at the path that is not a regular file (a FIFO, a directory, a socket) is never opened: opening
  *       a FIFO blocks until a writer comes. It is as if the path were empty, and {@link #obstacle()} says what is
  *       there; a regular file at the path later is read as a replacement.</li>
- *   <li>{@link #release()} closes the file being read to spare a descriptor; the next {@code poll()} that finds it
- *       changed reopens it where reading stopped.</li>
+ *   <li>{@link #release()} closes the file being read to spare a descriptor (and lets renamed files go); the next
+ *       {@code poll()} that finds it changed reopens it where reading stopped.</li>
  * </ul>
  * Files are told apart by {@link BasicFileAttributes#fileKey()} (device and inode on Unix), or by creation time
  * where the file system has no keys. Unlike {@code tail -F}, a truncation followed by a rewrite longer than the
  * old read position before the next poll is seen too: the last bytes read are kept and compared with what the
  * file now holds before the read position; if they differ, the file was rewritten and is read from 0. (A
  * rewrite with the very same bytes there cannot be told apart.) Lines are decoded and capped as by {@link LogReader}.
- * Memory is constant: at most one partial line, and one read buffer per thread shared by all followers.
+ * Memory is constant: at most one partial line per file read, and one read buffer per thread shared by all
+ * followers.
  */
 public final class LogFollower implements AutoCloseable {
 
@@ -55,26 +60,17 @@ public final class LogFollower implements AutoCloseable {
     public static final long QUIET_MILLIS = 1000;
     /** How long a file no longer at the path (deleted, renamed away) is held open after it last grew. */
     public static final long RELEASE_MILLIS = 60_000;
-    private static final int BUFFER_BYTES = 64 * 1024;
-    /** One read buffer per thread: a fleet of thousands of logs polled by one thread holds one. */
-    private static final ThreadLocal<byte[]> BUFFER = ThreadLocal.withInitial(() -> new byte[BUFFER_BYTES]);
 
     private final Path file;
-    private final LineSink sink;
-    private final LineSplitter splitter;
+    /** A sink for each file read: the first one's at construction, each replacement's at its turn. */
+    private final Supplier<? extends LineSink> sinks;
+    private final int maxLineBytes;
     private final long quietNanos;
     private final long releaseNanos;
     private final LongSupplier clock;
-    /** The last bytes read, to notice a rewrite. */
-    private final ReadTail tail = new ReadTail();
 
-    /** The file being read; {@code null} until one was found at the path, once released, or once gone. */
-    private FileChannel channel;
-    /** The identity of the file being read (kept while it is released); null before the first and once gone. */
-    private Object identity;
-    private long position;
-    /** {@link #clock} when the file being read last grew (or was opened). */
-    private long lastGrowth;
+    /** The file being read: null until one was found at the path, and once gone; its channel is null once released. */
+    private FileReading reading;
     /** Whether some file was read: the next one is then a replacement. */
     private boolean started;
     /** Whether the file being read was closed by {@link #release()}, and when it had last changed then. */
@@ -82,14 +78,14 @@ public final class LogFollower implements AutoCloseable {
     private FileTime releasedModified;
     /** What is at the path when it is not a regular file ({@code a FIFO}), else null. */
     private String obstacle;
-    /** What the user should be told once, or null. */
-    private String notice;
     /** Files found at the path after the one being read, each held open until its turn. */
     private final Replacements waiting = new Replacements();
+    /** Files turned away from, read on while they grow. */
+    private final RenamedFiles renamed;
 
     /**
      * @param file the log to follow; it need not exist yet
-     * @param sink receives the lines and the restarts
+     * @param sink receives the lines and the restarts of every file read, the renamed files' too
      */
     public LogFollower(Path file, LineSink sink) {
         this(file, sink, LineSplitter.DEFAULT_MAX_LINE_BYTES);
@@ -109,12 +105,23 @@ public final class LogFollower implements AutoCloseable {
 
     /** @param releaseNanos how long a file gone from the path is held open after it last grew */
     LogFollower(Path file, LineSink sink, int maxLineBytes, long quietNanos, long releaseNanos, LongSupplier clock) {
+        this(file, () -> sink, maxLineBytes, quietNanos, releaseNanos, clock);
+        Objects.requireNonNull(sink, "sink");
+    }
+
+    /** @param sinks gives the sink of each file read, when the follower takes the file up */
+    LogFollower(Path file, Supplier<? extends LineSink> sinks, int maxLineBytes, long quietNanos, long releaseNanos,
+                LongSupplier clock) {
         this.file = Objects.requireNonNull(file, "file");
-        this.sink = Objects.requireNonNull(sink, "sink");
-        this.splitter = new LineSplitter(maxLineBytes, sink);
+        this.sinks = Objects.requireNonNull(sinks, "sinks");
+        this.maxLineBytes = maxLineBytes;
+        if (maxLineBytes < 1) {
+            throw new IllegalArgumentException("maxLineBytes must be positive, got " + maxLineBytes);
+        }
         this.quietNanos = quietNanos;
         this.releaseNanos = releaseNanos;
         this.clock = Objects.requireNonNull(clock, "clock");
+        this.renamed = new RenamedFiles(file);
     }
 
     /** A follower that finishes a replaced file once it has been quiet for {@code quiet} ({@code watch}'s is 1 s). */
@@ -129,41 +136,42 @@ public final class LogFollower implements AutoCloseable {
     }
 
     /**
-     * Reads whatever is new since the last call, without blocking.
+     * As {@link #withTimes}, each file read with a sink of its own from {@code sinks}: the lines of a renamed file
+     * still written and those of the file at the path, read alternately, then never meet in one sink (a parser).
+     */
+    public static LogFollower perFile(Path file, Supplier<? extends LineSink> sinks, Duration quiet, Duration release) {
+        return new LogFollower(file, sinks, LineSplitter.DEFAULT_MAX_LINE_BYTES, quiet.toNanos(), release.toNanos(),
+                System::nanoTime);
+    }
+
+    /**
+     * Reads whatever is new since the last call, without blocking: the renamed files first, then the file at the path.
      *
      * @return whether anything was consumed (bytes read or a restart signalled)
      * @throws IOException when the file exists but cannot be read
      */
     public boolean poll() throws IOException {
-        if (channel == null) {
-            return pollClosed();
+        boolean progress = renamed.poll(clock.getAsLong(), releaseNanos);
+        if (reading == null || reading.channel == null) {
+            return pollClosed() || progress;
         }
         // The open file may have been truncated (and written again) even if it is no longer at the path.
-        boolean progress = false;
-        if (channel.size() < position || tail.rewritten(channel, position)) {
-            splitter.finish();
-            sink.restarted("truncated");
-            position = 0;
-            tail.clear();
+        if (reading.truncated()) {
+            reading.splitter.finish();
+            reading.sink.restarted("truncated");
+            reading.rewind();
             progress = true;
         }
-        progress |= readAvailable();
+        progress |= reading.read(clock.getAsLong());
         FileAt at = lookForReplacement();
         while (!waiting.isEmpty() && (waiting.full() || (quiet(quietNanos) && waiting.anyHolds()))) {
-            finishAndTakeNext();
-            readAvailable();
+            finishAndTakeNext(false);
             progress = true;
         }
-        long lost = waiting.retiredGrowth(clock.getAsLong(), releaseNanos);
-        if (lost > 0) {
-            notice = "the file renamed away at the last rotation grew by " + lost + " bytes after the file now at "
-                    + "the path was taken up: a writer went on in it, and what it wrote there is not read";
-        }
-        if (waiting.isEmpty() && (at == null || !at.identity().equals(identity)) && quiet(releaseNanos)) {
-            splitter.finish(); // gone from the path and quiet for long: its writer is done with it
-            channel.close();
-            channel = null;
-            identity = null;
+        if (waiting.isEmpty() && (at == null || !at.identity().equals(reading.identity)) && quiet(releaseNanos)) {
+            reading.end(); // gone from the path and quiet for long: its writer is done with it
+            reading.close();
+            reading = null;
         }
         return progress;
     }
@@ -174,15 +182,15 @@ public final class LogFollower implements AutoCloseable {
         if (at == null) {
             return false;
         }
-        if (released && at.identity().equals(identity)) {
-            if (at.size() == position && at.modified().equals(releasedModified)) {
+        if (released && reading != null && at.identity().equals(reading.identity)) {
+            if (at.size() == reading.position && at.modified().equals(releasedModified)) {
                 return false; // unchanged since it was released: no need to open it
             }
             FileChannel opened = at.open();
             if (opened == null) {
                 return false;
             }
-            channel = opened;
+            reading.channel = opened;
             released = false;
             return poll();
         }
@@ -190,16 +198,12 @@ public final class LogFollower implements AutoCloseable {
         if (opened == null) {
             return false;
         }
-        if (started) { // the file read before was released or is gone: this one replaces it
-            splitter.finish();
-            take(opened, at.identity());
-            sink.restarted("replaced");
-            readAvailable();
-            return true;
+        boolean replacement = started;
+        if (reading != null) { // the file read before was released: this one replaces it
+            reading.end();
         }
-        started = true;
-        take(opened, at.identity());
-        return readAvailable();
+        take(opened, at.identity(), replacement);
+        return reading.read(clock.getAsLong()) || replacement;
     }
 
     /**
@@ -210,79 +214,78 @@ public final class LogFollower implements AutoCloseable {
         return !waiting.isEmpty();
     }
 
+    /** Whether a file renamed away from the path is still read: its writer's next write is announced under its name. */
+    public boolean readingRenamed() {
+        return !renamed.isEmpty();
+    }
+
     /** What is at the path when it is not a regular file ({@code is a FIFO, not a regular file}), if so. */
     public Optional<String> obstacle() {
         return Optional.ofNullable(obstacle).map(k -> "is " + k + ", not a regular file");
     }
 
-    /** What the user should be told of this log once since the last call, if anything: writes that are not read. */
-    public Optional<String> takeNotice() {
-        Optional<String> out = Optional.ofNullable(notice);
-        notice = null;
-        return out;
-    }
-
     /** How many files this follower holds open now. */
     public int openFiles() {
-        return (channel == null ? 0 : 1) + waiting.open();
+        return (reading == null || reading.channel == null ? 0 : 1) + waiting.open() + renamed.open();
     }
 
     /**
      * Closes the file being read to spare a descriptor, unless a replacement waits; a later {@link #poll()} reopens
-     * it where reading stopped once it changed. Whatever a writer adds to a file renamed or deleted meanwhile is not
-     * seen.
+     * it where reading stopped once it changed. Renamed files still read are read to their end and let go: whatever
+     * a writer adds to them, or to a file renamed or deleted meanwhile, is not seen.
      *
      * @return whether a file was closed
      */
     public boolean release() throws IOException {
-        if (channel == null || !waiting.isEmpty()) {
+        if (reading == null || reading.channel == null || !waiting.isEmpty()) {
             return false;
         }
-        waiting.closeRetired();
+        renamed.letGoAll(clock.getAsLong());
         FileAt at = FileAt.look(file);
-        releasedModified = at != null && at.identity().equals(identity) ? at.modified() : null;
-        channel.close();
-        channel = null;
+        releasedModified = at != null && at.identity().equals(reading.identity) ? at.modified() : null;
+        reading.close();
         released = true;
         return true;
     }
 
     /**
      * Reads to the end of the file and delivers an unterminated last line too (for a single pass over a file
-     * that is no longer written); a replacement found meanwhile is read to its end after it. A later
-     * {@link #poll()} goes on from there.
+     * that is no longer written), then {@link LineSink#ended()}; a replacement found meanwhile is read to its end
+     * after it, and renamed files still read are read to their end and let go first. A later {@link #poll()} goes on
+     * from there.
      *
      * @throws NoSuchFileException when the file does not exist and none was ever opened
      * @throws IOException         when the file cannot be read
      */
     public void drainToEnd() throws IOException {
         poll();
-        if (channel == null) {
+        if (reading == null || reading.channel == null) {
             if (obstacle != null) {
                 throw new FileSystemException(file.toString(), null, obstacle().orElseThrow());
             }
             throw new NoSuchFileException(file.toString());
         }
+        renamed.letGoAll(clock.getAsLong());
         while (!waiting.isEmpty()) {
-            finishAndTakeNext();
-            readAvailable();
+            finishAndTakeNext(true);
         }
-        splitter.finish();
+        reading.end();
     }
 
     @Override
     public void close() throws IOException {
-        List<FileChannel> all = new ArrayList<>(waiting.channels());
-        if (channel != null) {
-            all.add(0, channel);
+        List<FileChannel> all = new ArrayList<>(renamed.channels());
+        all.addAll(waiting.channels());
+        if (reading != null && reading.channel != null) {
+            all.add(0, reading.channel);
+            reading.channel = null;
         }
-        channel = null;
         waiting.clear();
         FileAt.closeAll(all);
     }
 
     private boolean quiet(long nanos) {
-        return clock.getAsLong() - lastGrowth >= nanos;
+        return clock.getAsLong() - reading.lastGrowth >= nanos;
     }
 
     /** The file at the path, noting what is there when it is not a regular file. */
@@ -295,7 +298,7 @@ public final class LogFollower implements AutoCloseable {
     /** Opens a regular file found at the path that is neither the one read nor one waiting, and queues it. */
     private FileAt lookForReplacement() throws IOException {
         FileAt at = look();
-        if (at == null || at.identity().equals(identity) || waiting.full()
+        if (at == null || at.identity().equals(reading.identity) || waiting.full()
                 || waiting.holds(at.identity())) {
             return at; // deleted (the old handle is drained on), unchanged, or known
         }
@@ -307,44 +310,31 @@ public final class LogFollower implements AutoCloseable {
     }
 
     /**
-     * The file being read is done: its last line goes out, then the restart, then the next file from 0. A next file
-     * that is still empty while one after it holds something is passed over: it was rotated away before its turn.
+     * The file being read is turned away from: it is read on while it grows (or, in a single pass, ended now), and the
+     * next file is read from 0 with a sink of its own. A next file that is still empty while one after it holds
+     * something is passed over: it was rotated away before its turn.
      */
-    private void finishAndTakeNext() throws IOException {
-        splitter.finish();
-        FileChannel done = channel;
+    private void finishAndTakeNext(boolean draining) throws IOException {
+        FileReading done = reading;
         Replacements.Waiting next = waiting.next();
-        take(next.channel(), next.identity());
-        waiting.retire(done, clock.getAsLong());
-        sink.restarted("replaced");
+        if (draining) {
+            done.end();
+            done.close();
+        } else {
+            renamed.add(done);
+        }
+        take(next.channel(), next.identity(), true);
+        reading.read(clock.getAsLong());
     }
 
-    private void take(FileChannel opened, Object id) {
-        channel = opened;
-        identity = id;
-        position = 0;
-        tail.clear();
+    /** Reads {@code opened} from 0 from now on, with a new sink; a replacement's sink hears so first. */
+    private void take(FileChannel opened, Object id, boolean replacement) {
+        LineSink sink = sinks.get();
+        started = true;
+        reading = new FileReading(opened, id, sink, maxLineBytes, clock.getAsLong());
         released = false;
-        lastGrowth = clock.getAsLong();
-    }
-
-    private boolean readAvailable() throws IOException {
-        byte[] bytes = BUFFER.get();
-        ByteBuffer buffer = ByteBuffer.wrap(bytes);
-        boolean progress = false;
-        while (true) {
-            buffer.clear();
-            int n = channel.read(buffer, position);
-            if (n <= 0) {
-                if (progress) {
-                    lastGrowth = clock.getAsLong();
-                }
-                return progress;
-            }
-            position += n;
-            progress = true;
-            tail.remember(bytes, n);
-            splitter.feed(bytes, 0, n);
+        if (replacement) {
+            sink.restarted("replaced");
         }
     }
 }

@@ -182,7 +182,8 @@ public final class LogParser {
 
     /**
      * This parser as a {@link LineSink}: lines are {@link #acceptLine accepted}, overlong lines reported, and a
-     * restart first reports a record left in progress (as {@link #endOfInput()} does) then {@link #reset()}s.
+     * restart first reports a record left in progress (as {@link #endOfInput()} does) then {@link #reset()}s, and
+     * the end of the file is {@link #endOfInput()}.
      */
     public LineSink lineSink() {
         return new LineSink() {
@@ -210,6 +211,11 @@ public final class LogParser {
             @Override
             public void overlongLine(long bytes) {
                 acceptOverlongLine(bytes);
+            }
+
+            @Override
+            public void ended() {
+                endOfInput();
             }
         };
     }

@@ -21,10 +21,6 @@ final class Replacements {
     }
 
     private final ArrayDeque<Waiting> waiting = new ArrayDeque<>();
-    /** The file turned away from at the last replacement, kept open a while to notice a writer that went on in it. */
-    private FileChannel retired;
-    private long retiredSize;
-    private long retiredAt;
 
     boolean isEmpty() {
         return waiting.isEmpty();
@@ -71,53 +67,17 @@ final class Replacements {
         return next;
     }
 
-    /** The file read until now is done: it is kept open (the one kept before is closed) to see whether it grows. */
-    void retire(FileChannel done, long now) throws IOException {
-        closeRetired();
-        retired = done;
-        retiredSize = done.size();
-        retiredAt = now;
-    }
-
-    /**
-     * How many bytes were written to the retired file since it was retired; once it grew, or once it was kept for
-     * {@code keepNanos}, it is closed.
-     */
-    long retiredGrowth(long now, long keepNanos) throws IOException {
-        if (retired == null) {
-            return 0;
-        }
-        long grown = retired.size() - retiredSize;
-        if (grown > 0 || now - retiredAt >= keepNanos) {
-            closeRetired();
-        }
-        return Math.max(0, grown);
-    }
-
-    /** Files held open: those waiting and the retired one. */
+    /** Files held open. */
     int open() {
-        return waiting.size() + (retired == null ? 0 : 1);
+        return waiting.size();
     }
 
-    void closeRetired() throws IOException {
-        if (retired != null) {
-            FileChannel r = retired;
-            retired = null;
-            r.close();
-        }
-    }
-
-    /** The files held, the retired one included, for closing them. */
+    /** The files held, for closing them. */
     List<FileChannel> channels() {
-        List<FileChannel> all = new ArrayList<>(waiting.stream().map(Waiting::channel).toList());
-        if (retired != null) {
-            all.add(retired);
-        }
-        return all;
+        return new ArrayList<>(waiting.stream().map(Waiting::channel).toList());
     }
 
     void clear() {
         waiting.clear();
-        retired = null;
     }
 }

@@ -45,6 +45,15 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
         public Run(int index, long firstLine, List<IoPair> pairs, boolean violated, Map<String, List<Double>> readings) {
             this(index, firstLine, pairs, violated, readings, RunTiming.none(pairs.size()));
         }
+
+        /**
+         * Whether the run violated the property {@code id} (its outcome is the set of properties it violated,
+         * {@link RunTiming#violations}); when {@code id} is null, the property the forecast follows
+         * ({@link #violated()}).
+         */
+        public boolean violated(String id) {
+            return id == null ? violated : timing.violated(id);
+        }
     }
 
     /** The trace as one Mealy sample (a log of one run). */

@@ -2,6 +2,7 @@ package dev.predmon.pipeline;
 
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 
 /**
  * When the pairs of one run came and what the safety property's channel read then: the forecast learns from it how
@@ -21,12 +22,20 @@ import java.util.List;
  *                      as {@code watch} does
  * @param obligations   how each obligation of the abstraction's bounded-response properties ended in the run, in
  *                      order: what the deadline forecast learns from
+ * @param violations    the run's outcome: by property id, when the safety monitor first saw each property it violated
+ *                      (in the log's unit; NaN for a record without a time), the properties it held absent
  */
 // Arrays: one number per pair, read by index; a run's timing is never compared or hashed.
 @SuppressWarnings("ArrayRecordComponent")
 public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
                         double lowestSafeValue, String unit, List<Reading> readings, List<Gap> gaps,
-                        List<Obligation> obligations) {
+                        List<Obligation> obligations, Map<String, Double> violations) {
+
+    /** As above, without the outcome per property. */
+    public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
+                     String unit, List<Reading> readings, List<Gap> gaps, List<Obligation> obligations) {
+        this(times, values, violationTime, endTime, lowestSafeValue, unit, readings, gaps, obligations, Map.of());
+    }
 
     /** As above, without obligations. */
     public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
@@ -46,8 +55,50 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
      * @param property   the property's id
      * @param duration   how long it was pending, in the deadline's unit
      * @param discharged whether its response came (else it was let go still pending: a censored duration)
+     * @param deadline   the property's deadline, in the same unit: the obligation missed it when {@code duration}
+     *                   is past it
+     * @param steps      how long it had been pending after each record while it was, in order: where a monitor
+     *                   following the log forecast it
      */
-    public record Obligation(String property, double duration, boolean discharged) {
+    // An array: one number per record, read in order; an obligation is compared by its outcome only.
+    @SuppressWarnings("ArrayRecordComponent")
+    public record Obligation(String property, double duration, boolean discharged, double deadline, double[] steps) {
+
+        /** An obligation whose steps are not known, against no deadline. */
+        public Obligation(String property, double duration, boolean discharged) {
+            this(property, duration, discharged, Double.POSITIVE_INFINITY, new double[0]);
+        }
+
+        public Obligation {
+            steps = steps.clone();
+        }
+
+        /** Whether it was still pending past its deadline: the deadline was missed. */
+        public boolean missed() {
+            return duration > deadline;
+        }
+
+        @Override
+        public double[] steps() {
+            return steps.clone();
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Obligation b && property.equals(b.property) && Double.compare(duration, b.duration) == 0
+                    && discharged == b.discharged && Double.compare(deadline, b.deadline) == 0;
+        }
+
+        @Override
+        public int hashCode() {
+            return property.hashCode() * 31 + Double.hashCode(duration);
+        }
+
+        @Override
+        public String toString() {
+            return "Obligation[" + property + ", " + duration + (discharged ? " discharged" : " censored") + ", deadline "
+                    + deadline + ", " + steps.length + " steps]";
+        }
     }
 
     /**
@@ -79,6 +130,12 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
         readings = List.copyOf(readings);
         gaps = List.copyOf(gaps);
         obligations = List.copyOf(obligations);
+        violations = Map.copyOf(violations);
+    }
+
+    /** Whether the run violated the property {@code id} (its outcome as the safety monitor saw it). */
+    public boolean violated(String id) {
+        return violations.containsKey(id);
     }
 
     /** No timing known for {@code pairs} pairs (every time and value NaN). */

@@ -3,11 +3,15 @@ package dev.predmon.pipeline;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.IoPair;
-import dev.predmon.parse.LogReader;
+import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
+import dev.predmon.parse.RecordSink;
+import dev.predmon.parse.RecordSource;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.Response;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -43,14 +47,17 @@ public final class Traces {
         List<ParseProblem> problems = new ArrayList<>();
         RunCollector runs = new RunCollector(abstraction, pairs);
         TracePipeline pipeline = new TracePipeline(abstraction, runs);
-        long[] lines = {0};
-        LogReader.read(log, pipeline::accept, p -> {
+        long lines;
+        try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(pipeline::accept, p -> {
             if (problems.size() < MAX_PROBLEMS) {
                 problems.add(p);
             }
-        }, n -> lines[0] = n);
+        }))) {
+            source.drain();
+            lines = source.lines();
+        }
         pipeline.endOfInput();
-        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), lines[0], pipeline.records(),
+        return new LogTrace(log, List.copyOf(pairs), List.copyOf(problems), lines, pipeline.records(),
                 pipeline.interfaceRecords(), pipeline.unmapped(), runs.runs(), pipeline.span());
     }
 
@@ -168,19 +175,40 @@ public final class Traces {
         /** The safety monitor's obligations, for the deadline forecast. */
         private final PropertyChecker checker;
         private List<RunTiming.Obligation> obligations = new ArrayList<>();
+        /** By property index, the bounded-response ones: how long the pending obligation was after each record. */
+        private final Steps[] steps;
+        /** The run's outcome: when each property was first violated. */
+        private Map<String, Double> violations = new TreeMap<>();
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
             this.abstraction = abstraction;
             this.safety = abstraction.safety();
             this.all = all;
-            this.checker = new PropertyChecker(abstraction.properties(), (i, p, v) -> { });
-            checker.onObligations((i, p, duration, discharged) ->
-                    obligations.add(new RunTiming.Obligation(p.id(), duration, discharged)));
+            this.checker = new PropertyChecker(abstraction.properties(),
+                    (i, p, v) -> violations.putIfAbsent(p.id(), v.time()));
+            List<Property> properties = abstraction.properties();
+            this.steps = new Steps[properties.size()];
+            for (int i = 0; i < steps.length; i++) {
+                if (properties.get(i) instanceof Response) {
+                    steps[i] = new Steps();
+                }
+            }
+            checker.onObligations((i, p, duration, discharged) -> {
+                double deadline = p instanceof Response r ? r.within().amount() : Double.POSITIVE_INFINITY;
+                obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, deadline,
+                        steps[i] == null ? new double[0] : steps[i].take()));
+            });
         }
 
         @Override
         public void record(LogRecord record) {
             checker.accept(record);
+            for (int i = 0; i < steps.length; i++) {
+                double elapsed = steps[i] == null ? Double.NaN : checker.elapsed(i);
+                if (!Double.isNaN(elapsed)) {
+                    steps[i].add(elapsed); // where watch forecasts the obligation: after each record while pending
+                }
+            }
             if (!Double.isNaN(record.time())) {
                 endTime = record.time();
             }
@@ -250,10 +278,11 @@ public final class Traces {
             checker.finish();
             checker.reset();
             RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
-                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations);
+                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations, violations);
             changes = new ArrayList<>();
             gaps = new ArrayList<>();
             obligations = new ArrayList<>();
+            violations = new TreeMap<>();
             done.add(new LogTrace.Run(done.size(), firstLine, List.copyOf(pairs), violated,
                     Collections.unmodifiableMap(frozen), timing));
             pairs = new ArrayList<>();
@@ -268,6 +297,25 @@ public final class Traces {
         List<LogTrace.Run> runs() {
             finish();
             return List.copyOf(done);
+        }
+    }
+
+    /** A growing list of numbers, taken and emptied when its obligation ends. */
+    private static final class Steps {
+        private double[] values = new double[16];
+        private int size;
+
+        void add(double v) {
+            if (size == values.length) {
+                values = Arrays.copyOf(values, size * 2);
+            }
+            values[size++] = v;
+        }
+
+        double[] take() {
+            double[] out = Arrays.copyOf(values, size);
+            size = 0;
+            return out;
         }
     }
 

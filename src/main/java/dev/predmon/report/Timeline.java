@@ -4,8 +4,10 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
-import dev.predmon.parse.LogReader;
+import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordSink;
+import dev.predmon.parse.RecordSource;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
@@ -72,8 +74,9 @@ public record Timeline(double start, double[] times, double[] values, Clock cloc
             public void pair(IoPair pair, LogRecord trigger) {
             }
         });
-        LogReader.read(log, pipeline[0]::accept, p -> {
-        });
+        try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(pipeline[0]::accept, p -> { }))) {
+            source.drain();
+        }
         return thinned(points, first[0], maxPoints, clock[0]);
     }
 

@@ -231,5 +231,6 @@ export function propertyForecast(p, t) {
   if (!f) return p.forecastWords;
   const left = num(f.timeLeft, 0) + ' ' + f.unit + ' left';
   if (f.novel) return 'no forecast: pending longer than any training obligation; ' + left;
-  return 'P(miss) ' + chance(f.probability) + ', ' + left + ' \u00b7 skill not measured';
+  if (p.skill === false) return 'no skill: the deadline forecast did no better than the base rate; ' + left;
+  return 'P(miss) ' + chance(f.probability) + ', ' + left + (p.skill === true ? '' : ' \u00b7 skill not measured');
 }

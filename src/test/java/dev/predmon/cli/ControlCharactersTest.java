@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import dev.predmon.Terminal;
 import dev.predmon.support.HandRuns;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;

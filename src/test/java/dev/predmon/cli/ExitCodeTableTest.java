@@ -98,6 +98,31 @@ class ExitCodeTableTest {
         judged(log, ExitCodes.UNWARNED_VIOLATION);
     }
 
+    /**
+     * Every property counts, not only the battery's: a nominal run whose navigation aborts once (the absence property
+     * {@code no-abort}) while its battery stays high. No warning of any property came before: 6, from each command.
+     */
+    @Test
+    void row6AlsoForAnotherPropertyViolatedWithoutAWarning() throws Exception {
+        Path log = log("aborted.log", HandRuns.recharge().at(75).status("kitchen", 3));
+        Cli watch = Cli.run("watch", "--no-follow", "--log", log.toString(), "--models", models.toString());
+        assertTrue(watch.out().contains("VIOLATION of 'navigation never aborts' (no-abort)"), watch.out());
+        judged(log, ExitCodes.UNWARNED_VIOLATION);
+    }
+
+    /**
+     * The same abort after the depleted run's warning: the warning came before every violation, so not 6; the abort's
+     * reply is one no model knows, so 5.
+     */
+    @Test
+    void notSixWhenTheWarningCameBeforeEveryViolation() throws Exception {
+        Path log = log("depleted-aborted.log", HandRuns.depleted().at(95).status("charging_station", 3));
+        Cli watch = Cli.run("watch", "--no-follow", "--log", log.toString(), "--models", models.toString());
+        assertTrue(watch.out().indexOf("WARNING") < watch.out().indexOf("VIOLATION of 'navigation never aborts'"),
+                watch.out());
+        judged(log, ExitCodes.NO_MATCH);
+    }
+
     /** A run that starts as both scenarios do and whose battery then reads 15, below the property's 20. */
     static Records suddenDrop() {
         return new Records().at(0).level(80).charging(false).isAt("kitchen", false).goTo("kitchen")

@@ -43,7 +43,7 @@ class InputFilesCliTest {
     void aMisspelledKeyInScenarioJsonIsRejectedWhereItIs() throws Exception {
         Path logs = logsWithScenarioJson("{\n  \"faulty\": false,\n  \"descripton\": \"charges on the way\"\n}\n");
         Path json = logs.resolve("recharge/scenario.json");
-        String expected = json + ":3:3: unknown key 'descripton' (allowed: description, faulty)";
+        String expected = json + ":3:3: unknown key 'descripton' (allowed: description, faulty, violates)";
         oneLine(Cli.run("learn", "--logs", logs.toString(), "--models", tmp.resolve("models").toString()), expected);
         oneLine(Cli.run("evaluate", "--logs", logs.toString(), "--folds", "2", "--quiet"), expected);
         oneLine(Cli.run("export-samples", "--logs", logs.toString(), "--out", tmp.resolve("samples").toString()), expected);

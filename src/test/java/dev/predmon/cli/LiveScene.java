@@ -2,6 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.event.LogEvent;
 import dev.predmon.live.Board;
 import dev.predmon.live.HttpAddress;
 import dev.predmon.live.LiveServer;
@@ -103,7 +104,7 @@ final class LiveScene implements AutoCloseable {
     /** {@code e} of {@code tile}'s log, as watch gives it to the live view. */
     void event(Tile tile, MonitorEvent e) {
         if (!(e instanceof MonitorEvent.Unmapped)) {
-            board.event(tile, e, EventPrinter.toJson(e, tile.log()));
+            board.event(tile, LogEvent.of(tile.log(), e));
         }
     }
 

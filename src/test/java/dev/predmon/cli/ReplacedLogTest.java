@@ -96,13 +96,79 @@ class ReplacedLogTest {
     }
 
     /**
-     * A logger that pauses for more than the quiet time after a rename rotation and then goes on in the renamed file,
-     * after watch took up the new file: what it writes there is not read, and one line says so (it was lost
-     * silently).
+     * The recipe of a logger that pauses after a rename rotation: the log is renamed and an empty one created, a little
+     * is written to the new file, and 1.5 s later (watch has turned to the new file) the old writer goes on in the
+     * renamed file with the rest of a faulty run. Its warning and violation arrive, and the exit code is the whole
+     * run's (1).
      */
     @Test
     @Timeout(90)
-    void aLoggerGoingOnInTheRenamedFileAfterTheTurnIsToldOf() throws Exception {
+    void aLoggerGoingOnInTheRenamedFileAfterTheTurnIsRead() throws Exception {
+        Path log = dir.resolve("live.log");
+        String run = FleetWatchTest.run(Scenario.DEPLETED, 9001);
+        int half = run.indexOf("intercepted", run.length() / 8); // inside a record, before the warning
+        Cli.Running w;
+        try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
+            held.write(run.substring(0, half).getBytes(StandardCharsets.UTF_8));
+            held.flush();
+            w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
+            FleetWatchTest.await(() -> w.err().toString().contains("following " + log), "watch follows: " + w.err());
+            Files.move(log, dir.resolve("live.log.1"));
+            Files.writeString(log, "yarprun: starting\n");
+            Thread.sleep(1500);
+            assertTrue(!w.out().toString().contains("WARNING"), "nothing to warn of yet: " + w.out());
+            held.write(run.substring(half).getBytes(StandardCharsets.UTF_8));
+            held.flush();
+            FleetWatchTest.await(() -> w.out().toString().contains("VIOLATION"), "the rest of the run is read: "
+                    + w.out() + w.err());
+        }
+        w.stop();
+        assertEquals(ExitCodes.WARNING, w.code().get(), w.out() + "\n" + w.err());
+        assertTrue(w.out().toString().contains("WARNING"), w.out().toString());
+    }
+
+    /**
+     * A fleet ({@code watch --log DIR}): robot-1's logger goes on in its renamed file after watch turned to the new
+     * one, and its warning arrives; robot-2's faulty run, written meanwhile, is warned of too.
+     */
+    @Test
+    @Timeout(90)
+    void inAFleetTheRenamedFileIsReadAndTheOtherRobotsAreStillWarned() throws Exception {
+        Path robots = Files.createDirectories(dir.resolve("robots"));
+        Path one = robots.resolve("robot-1.log");
+        // robot-2's log begins with a message no rule maps, which watch names once it has read it (after robot-1)
+        Path two = Files.writeString(robots.resolve("robot-2.log"), probe("first"));
+        String run = FleetWatchTest.run(Scenario.DEPLETED, 9001);
+        int half = run.indexOf("intercepted", run.length() / 8);
+        Cli.Running w;
+        try (OutputStream held = Files.newOutputStream(one, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
+            held.write(run.substring(0, half).getBytes(StandardCharsets.UTF_8));
+            held.flush();
+            w = Cli.start("watch", "--log", robots.toString(), "--models", MODELS.toString());
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/first"), "watch follows: " + w.err());
+            Files.move(one, robots.resolve("robot-1.log.1"));
+            Files.writeString(one, "yarprun: starting\n");
+            Thread.sleep(1500);
+            held.write(run.substring(half).getBytes(StandardCharsets.UTF_8));
+            held.flush();
+            Files.writeString(two, FleetWatchTest.run(Scenario.DEPLETED, 9002), StandardOpenOption.APPEND);
+            FleetWatchTest.await(() -> warned(w, one) && warned(w, two), "both robots warned: " + w.out() + w.err());
+        }
+        w.stop();
+        assertEquals(ExitCodes.WARNING, w.code().get(), w.out() + "\n" + w.err());
+    }
+
+    private static boolean warned(Cli.Running w, Path log) {
+        return w.out().toString().lines().anyMatch(l -> l.startsWith(log + ": ") && l.contains("WARNING"));
+    }
+
+    /**
+     * Two writers: the new file gets records, and then the old logger goes on in the renamed file. Its records are
+     * read too, and one line says that the two are read as one run.
+     */
+    @Test
+    @Timeout(90)
+    void twoWritersAfterARenameAreReadAndToldOf() throws Exception {
         Path log = Files.writeString(dir.resolve("live.log"), probe("first"));
         Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
         try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.APPEND)) {
@@ -112,11 +178,12 @@ class ReplacedLogTest {
             FleetWatchTest.await(() -> w.err().toString().contains("Probe/second"), "the new file is taken up");
             held.write(probe("third").getBytes(StandardCharsets.UTF_8));
             held.flush();
-            FleetWatchTest.await(() -> w.err().toString().contains(log + ": the file renamed away at the last rotation "
-                    + "grew by "), "says that the renamed file is written on: " + w.err());
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/third"), "the renamed file is read on: "
+                    + w.err());
+            FleetWatchTest.await(() -> w.err().toString().contains(log + ": the file renamed away at a rotation is "
+                    + "still written after the file now at the path gave records"), "told: " + w.err());
         }
         w.stop();
-        assertTrue(!w.err().toString().contains("Probe/third"), w.err().toString());
     }
 
     /** An interface message no rule maps: watch says so when it reads it. */

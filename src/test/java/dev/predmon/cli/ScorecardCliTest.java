@@ -55,15 +55,17 @@ class ScorecardCliTest {
     @Test
     void learnPrintsTheScorecardInTwoLinesAndStoresIt() throws Exception {
         List<String> lines = learned.out().lines().toList();
-        String first = lines.get(lines.size() - 2);
-        String second = lines.get(lines.size() - 1);
+        int at = lines.indexOf(lines.stream().filter(l -> l.startsWith("scorecard of 'battery")).findFirst()
+                .orElseThrow());
+        String first = lines.get(at);
+        String second = lines.get(at + 1);
         Matcher m = FIRST.matcher(first);
         assertTrue(m.matches(), first);
         assertTrue(second.matches("  Brier score 0\\.\\d{3} vs 0\\.\\d{3} for the base rate: .+"), second);
 
         JsonNode f = JSON.readTree(models.resolve("forecast.json").toFile());
         JsonNode cards = f.get("scorecards");
-        assertEquals(1, cards.size(), "one property, one scorecard: " + cards);
+        assertEquals(1, cards.size(), "the battery's; no navigation missed its deadline, so it has none: " + cards);
         JsonNode c = cards.get(0);
         assertEquals("battery level >= 20% (thesis 3.3.1)", c.get("property").asText());
         assertEquals(m.group(1), c.get("property").asText());
@@ -85,6 +87,11 @@ class ScorecardCliTest {
         assertTrue(c.get("medianLead").asDouble() > 2, c.toString());
         assertTrue(c.get("brier").asDouble() < c.get("baseBrier").asDouble(), c.toString());
         assertTrue(second.endsWith("the forecast knows more than how often runs violate"), second);
+
+        // the deadline's rule says it was not validated, and why
+        JsonNode rule = f.get("obligations").get("navigation-in-time");
+        assertFalse(rule.get("validated").asBoolean(), rule.toString());
+        assertTrue(rule.get("note").asText().contains("all held"), rule.toString());
     }
 
     /** watch says how far to trust its models once, on stderr, before following; stdout stays the events'. */

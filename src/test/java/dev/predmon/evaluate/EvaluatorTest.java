@@ -3,6 +3,7 @@ package dev.predmon.evaluate;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.learn.Folds;
 import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.learn.ScenarioSpec;
 import dev.predmon.support.SimulatedSets;

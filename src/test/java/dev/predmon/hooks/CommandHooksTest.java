@@ -1,5 +1,6 @@
 package dev.predmon.hooks;
 
+import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.WarningRule;
@@ -30,7 +31,7 @@ class CommandHooksTest {
             List.of("depleted", "late"), 27.83, 14, Clock.SECONDS, 1);
     private static final MonitorEvent.Violation VIOLATION = new MonitorEvent.Violation(34.6077, 8219,
             "battery level >= 20%", 15.86, 20.85, Clock.SECONDS, 1);
-    private static final String JSON = "{\"event\":\"warning\",\"log\":\"robot-1.log\"}";
+    private static final LogEvent SENT = LogEvent.of("robot-1.log", WARNING);
 
     @TempDir
     Path dir;
@@ -50,9 +51,11 @@ class CommandHooksTest {
     void theCommandGetsTheJsonOnStdinAndTheMainFieldsInItsEnvironment() throws Exception {
         try (CommandHooks h = hooks("cat > '" + dir.resolve("in.json") + "'; env > '" + dir.resolve("env") + "'",
                 null, Duration.ofSeconds(10))) {
-            h.event("robot-1.log", WARNING, JSON);
+            h.event(SENT);
         }
-        assertEquals(JSON + "\n", Files.readString(dir.resolve("in.json")));
+        assertEquals(SENT.line() + "\n", Files.readString(dir.resolve("in.json")), "the event as watch --json gives it");
+        assertTrue(SENT.line().startsWith("{\"event\":\"warning\",\"log\":\"robot-1.log\",\"time\":29.581942,"),
+                SENT.line());
         assertEquals(Map.of("PREDMON_EVENT", "warning", "PREDMON_LOG", "robot-1.log", "PREDMON_RUN", "1",
                 "PREDMON_TIME", "29.581942", "PREDMON_UNIT", "s", "PREDMON_LINE", "7127", "PREDMON_PROPERTY", "",
                 "PREDMON_VALUE", "27.83", "PREDMON_BATTERY", "27.83", "PREDMON_SCENARIO", "depleted"),
@@ -78,9 +81,9 @@ class CommandHooksTest {
                 Clock.SECONDS, 0);
         try (CommandHooks h = new CommandHooks("env > '" + dir.resolve("warning") + "'",
                 "env > '" + dir.resolve("violation") + "'", Duration.ofSeconds(10), 20.0, reports::add)) {
-            h.event("robot-1.log", w, JSON);
+            h.event(LogEvent.of("robot-1.log", w));
             Thread.sleep(300);
-            h.event("robot-1.log", v, JSON);
+            h.event(LogEvent.of("robot-1.log", v));
         }
         Map<String, String> warning = env("warning");
         assertEquals("battery level >= 20%", warning.get("PREDMON_PROPERTY"));
@@ -123,11 +126,11 @@ class CommandHooksTest {
         try (CommandHooks h = hooks("echo warning $PREDMON_LINE >> '" + calls + "'",
                 "echo violation $PREDMON_LINE $PREDMON_BEFORE $PREDMON_PROPERTY >> '" + calls + "'",
                 Duration.ofSeconds(10))) {
-            h.event("a.log", new MonitorEvent.Eliminated(1, 2, "direct", "direct", false, "why", Clock.SECONDS, 0), "{}");
-            h.event("a.log", new MonitorEvent.NoMatch(1, 2, Clock.SECONDS, 0), "{}");
-            h.event("a.log", WARNING, JSON);
+            h.event(LogEvent.of("a.log", new MonitorEvent.Eliminated(1, 2, "direct", "direct", false, "why", Clock.SECONDS, 0)));
+            h.event(LogEvent.of("a.log", new MonitorEvent.NoMatch(1, 2, Clock.SECONDS, 0)));
+            h.event(LogEvent.of("a.log", WARNING));
             Thread.sleep(300); // the violation comes later, as in a run
-            h.event("a.log", VIOLATION, "{}");
+            h.event(LogEvent.of("a.log", VIOLATION));
         }
         assertEquals(List.of("warning 7127", "violation 8219 20.85 battery level >= 20%"), Files.readAllLines(calls));
     }
@@ -136,7 +139,7 @@ class CommandHooksTest {
     void theMonitorIsNotHeldUpWhileTheCommandRuns() throws Exception {
         Path marker = dir.resolve("done");
         try (CommandHooks h = hooks("sleep 1; touch '" + marker + "'", null, Duration.ofSeconds(10))) {
-            h.event("a.log", WARNING, JSON);
+            h.event(LogEvent.of("a.log", WARNING));
             assertFalse(Files.exists(marker), "event() returned before the command ended");
         }
         assertTrue(Files.exists(marker), "close() let the command finish");
@@ -146,8 +149,8 @@ class CommandHooksTest {
     void aFailingCommandIsReportedWithItsExitCode() {
         // The shell's "not found" message goes to /dev/null: the exit code (127) is what is checked, not the log noise.
         try (CommandHooks h = hooks("exit 3", "no-such-command-predmon 2>/dev/null", Duration.ofSeconds(10))) {
-            h.event("robot-1.log", WARNING, JSON);
-            h.event("robot-1.log", VIOLATION, JSON);
+            h.event(LogEvent.of("robot-1.log", WARNING));
+            h.event(LogEvent.of("robot-1.log", VIOLATION));
         }
         assertEquals(2, reports.size(), reports.toString());
         assertTrue(reports.contains("--on-warning: warning of robot-1.log line 7127: failed with exit code 3"),
@@ -161,7 +164,7 @@ class CommandHooksTest {
     void aSlowCommandIsKilledAtTheTimeoutAndReported() throws Exception {
         Path pid = dir.resolve("pid");
         try (CommandHooks h = hooks("echo $$ > '" + pid + "'; sleep 30; echo late", null, Duration.ofMillis(500))) {
-            h.event("robot-1.log", WARNING, JSON);
+            h.event(LogEvent.of("robot-1.log", WARNING));
         }
         assertEquals(List.of("--on-warning: warning of robot-1.log line 7127: timed out after 0.5 s, killed"), reports);
         long shell = Long.parseLong(Files.readString(pid).strip());
@@ -180,7 +183,7 @@ class CommandHooksTest {
         int events = CommandHooks.THREADS + CommandHooks.QUEUE + 2;
         try (CommandHooks h = hooks("echo $PREDMON_LINE >> '" + calls + "'; sleep 5", null, Duration.ofSeconds(1))) {
             for (int i = 0; i < events; i++) {
-                h.event("a.log", new MonitorEvent.Warning(i, i, List.of("depleted"), null, i, Clock.SECONDS, 0), "{}");
+                h.event(LogEvent.of("a.log", new MonitorEvent.Warning(i, i, List.of("depleted"), null, i, Clock.SECONDS, 0)));
             }
         }
         long rejected = reports.stream().filter(r -> r.endsWith("commands are already waiting")).count();

@@ -2,6 +2,7 @@ package dev.predmon.live;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
@@ -67,11 +68,6 @@ class MetricsTest {
         return b.append('}').toString();
     }
 
-    private static String forecastJson(double p, double ttv, String unit) {
-        return "{\"event\":\"forecast\",\"forecast\":{\"probability\":" + p + ",\"timeToViolation\":" + ttv
-                + ",\"unit\":\"" + unit + "\"}}";
-    }
-
     private static Forecast forecast(double p, double ttv, String unit) {
         return new Forecast(p, ttv, ttv * 0.8, ttv * 1.5, Forecast.Basis.MATCHED, null, 20, 8, 40.0, -0.9, unit);
     }
@@ -97,8 +93,7 @@ class MetricsTest {
         Tile t = b.tile("robots/r1.log");
         b.tile("robots/r2.log");
         t.record(new Records().at(1).level(80).list().get(1));
-        b.event(t, new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0),
-                forecastJson(0.42, 75.5, "s"));
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0)));
         Map<String, Double> s = samples(b);
         assertEquals(0.42, s.get(series("predmon_violation_probability", "robots/r1.log", "r1")));
         assertEquals(75.5, s.get(series("predmon_time_to_violation_seconds", "robots/r1.log", "r1")));
@@ -106,20 +101,17 @@ class MetricsTest {
         assertEquals(1.0, s.get(series("predmon_state", "robots/r1.log", "r1", "state", "ok")));
         assertFalse(s.containsKey(series("predmon_violation_probability", "robots/r2.log", "r2")), "no forecast yet");
 
-        b.event(t, new MonitorEvent.Warning(30, 70, List.of("depleted"), 27.8, 14, Clock.SECONDS, 0),
-                "{\"event\":\"warning\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Warning(30, 70, List.of("depleted"), 27.8, 14, Clock.SECONDS, 0)));
         t.record(new Records().at(35).level(18).list().get(1));
-        b.event(t, new MonitorEvent.Violation(35, 90, PROPERTY, 18.0, 21.0, Clock.SECONDS, 0),
-                "{\"event\":\"violation\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(35, 90, PROPERTY, 18.0, 21.0, Clock.SECONDS, 0)));
         s = samples(b);
         assertEquals(1.0, s.get(series("predmon_state", "robots/r1.log", "r1", "state", "violation")));
         assertEquals(0.0, s.get(series("predmon_state", "robots/r1.log", "r1", "state", "ok")));
         assertEquals(18.0, s.get(series("predmon_value", "robots/r1.log", "r1")));
 
         // a second run warns again: the counters go on across runs, the state starts over
-        b.event(t, new MonitorEvent.RunStarted(1, 100, 500, Clock.SECONDS), "{\"event\":\"run\"}");
-        b.event(t, new MonitorEvent.Warning(530, 170, List.of("depleted"), 30.1, 14, Clock.SECONDS, 1),
-                "{\"event\":\"warning\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.RunStarted(1, 100, 500, Clock.SECONDS)));
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Warning(530, 170, List.of("depleted"), 30.1, 14, Clock.SECONDS, 1)));
         s = samples(b);
         assertEquals(2.0, s.get(series("predmon_warnings_total", "robots/r1.log", "r1")));
         assertEquals(1.0, s.get(series("predmon_violations_total", "robots/r1.log", "r1")));
@@ -136,8 +128,7 @@ class MetricsTest {
     void aLogCountedInTicksHasItsTimeInTicks() {
         Board b = board();
         Tile t = b.tile("console.txt");
-        b.event(t, new MonitorEvent.ForecastChanged(3, 10, forecast(0.3, 412, "ticks"), Clock.TICKS, 0),
-                forecastJson(0.3, 412, "ticks"));
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(3, 10, forecast(0.3, 412, "ticks"), Clock.TICKS, 0)));
         Map<String, Double> s = samples(b);
         assertEquals(412.0, s.get(series("predmon_time_to_violation_ticks", "console.txt", "console")));
         assertFalse(s.keySet().stream().anyMatch(k -> k.startsWith("predmon_time_to_violation_seconds{")));
@@ -171,8 +162,7 @@ class MetricsTest {
         Board b = board();
         Tile t = b.tile("r.log");
         t.record(new Records().at(1).level(80).list().get(1));
-        b.event(t, new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0),
-                forecastJson(0.42, 75.5, "s"));
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0)));
         try (LiveServer server = LiveServer.start(HttpAddress.parse("0"), b)) {
             URI url = server.url().resolve("/metrics");
             HttpResponse<String> r = HttpClient.newHttpClient().send(HttpRequest.newBuilder(url).build(),

@@ -3,6 +3,8 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.event.LogEvent;
+import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.Survival;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
@@ -105,9 +107,8 @@ class PropertyLightsTest {
         Verdict.Violated abort = new Verdict.Violated(157, 5, null, null, "GoTo/getStatus reply 3");
         t.properties(statuses(Map.of("no-abort", new PropertyStatus(property("no-abort"), abort,
                 PropertyStatus.Model.NONE, false, null, null))));
-        b.event(t, new MonitorEvent.Violation(5, 157, "no-abort", "navigation never aborts", null, null,
-                "GoTo/getStatus reply 3", Clock.SECONDS, 0, false), "{\"event\":\"violation\",\"property\":"
-                + "\"no-abort\",\"line\":157}");
+        b.event(t, LogEvent.of("a.log", new MonitorEvent.Violation(5, 157, "no-abort", "navigation never aborts", null, null,
+                "GoTo/getStatus reply 3", Clock.SECONDS, 0, false)));
 
         JsonNode lights = lights(b);
         assertEquals("no-abort violated, battery holds, charger-in-time holds, navigation-in-time holds, "
@@ -176,6 +177,23 @@ class PropertyLightsTest {
     }
 
     @Test
+    void aDeadlineForecastWithoutSkillIsNoHeadline() {
+        // the navigation's scorecard: Brier 0.30 against 0.20 for the base rate, no skill
+        Scorecard none = new Scorecard("a navigation ends within 400 ticks", 5, 50, 3, 1, 2, 12, "ticks", 0.30, 0.20);
+        Board b = new Board(List.<LearnedModel>of(), A.safety(), A.properties(), Duration.ofSeconds(10), now::get,
+                RobotNames.byFile(), List.of(none));
+        Tile t = b.tile("a.log");
+        t.record(level(1, 80));
+        t.properties(statuses(Map.of("navigation-in-time", new PropertyStatus(property("navigation-in-time"),
+                new Verdict.Pending(24, 1, 401, Deadline.Unit.TICKS), PropertyStatus.Model.DEADLINE, false,
+                new Survival.Estimate(0.12, 300, 8, 1, false), "ticks"))));
+        JsonNode nav = lights(b).get(0);
+        assertEquals(false, nav.get("skill").asBoolean(true), nav.toString());
+        assertEquals("no skill: the deadline forecast did no better than the base rate; 300 ticks left",
+                nav.get("forecastWords").asText());
+    }
+
+    @Test
     void aDeadlineWarnedThenDischargedIsYellowThenGreenWithItsRecoveryAndTheBatteryAlarmIsUntouched() {
         Board b = board();
         Tile t = b.tile("a.log");
@@ -185,9 +203,8 @@ class PropertyLightsTest {
         Survival.Estimate e = new Survival.Estimate(0.62, 20, 5, 2, false);
         String reason = "'a navigation ends within 400 ticks' (navigation-in-time) pending 380 ticks; 2 of the 5 "
                 + "training obligations pending that long took longer than 400 ticks; P(miss) 0.62; 20 ticks left";
-        b.event(t, new MonitorEvent.Warning(381, 900, List.of(), 80.0, 3, Clock.TICKS, 0, WarningRule.FORECAST, null,
-                reason, MonitorEvent.Clause.DEADLINE, null, "navigation-in-time", e),
-                "{\"event\":\"warning\",\"clause\":\"deadline\",\"property\":\"navigation-in-time\"}");
+        b.event(t, LogEvent.of("a.log", new MonitorEvent.Warning(381, 900, List.of(), 80.0, 3, Clock.TICKS, 0, WarningRule.FORECAST, null,
+                reason, MonitorEvent.Clause.DEADLINE, null, "navigation-in-time", e)));
         t.properties(statuses(Map.of("navigation-in-time", new PropertyStatus(nav, pending,
                 PropertyStatus.Model.DEADLINE, true, e, "ticks"))));
         JsonNode yellow = lights(b).get(0);
@@ -197,9 +214,9 @@ class PropertyLightsTest {
         assertEquals(reason, yellow.get("words").asText());
         assertEquals("warning", b.status("a.log").get("logs").get(0).get("worst").get("state").asText());
 
-        b.event(t, new MonitorEvent.Recovered(390, 950, "discharged", Double.NaN, "'a navigation ends within 400 "
-                + "ticks' (navigation-in-time): the response came in time; the deadline warning is over",
-                Clock.TICKS, 0, "navigation-in-time"), "{\"event\":\"recovered\",\"property\":\"navigation-in-time\"}");
+        b.event(t, LogEvent.of("a.log", new MonitorEvent.Recovered(390, 950, "discharged", Double.NaN, "'a navigation "
+                + "ends within 400 ticks' (navigation-in-time): the response came in time; the deadline warning is over",
+                Clock.TICKS, 0, "navigation-in-time")));
         t.properties(statuses(Map.of("navigation-in-time", new PropertyStatus(nav, Verdict.HOLDS,
                 PropertyStatus.Model.DEADLINE, false, null, "ticks"))));
         JsonNode tile = b.status("a.log").get("logs").get(0);

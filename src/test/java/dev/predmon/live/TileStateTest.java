@@ -5,7 +5,9 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastWords;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.WarningRule;
@@ -58,20 +60,13 @@ class TileStateTest {
                 12, 9, 31.5, -2.4, "s");
     }
 
-    /** The event's JSON as {@code watch --json} prints its forecast object (the fields of cli.ForecastJson). */
-    private static String forecastEvent(double time, long line, Forecast f) {
-        ObjectNode o = JSON.createObjectNode().put("event", "forecast").put("log", "x").put("time", time)
-                .put("line", line);
-        o.set("forecast", forecastJson(f));
-        return o.toString();
-    }
-
+    /** A forecast object as {@code watch --json} prints it (the fields of event.ForecastJson). */
     private static ObjectNode forecastJson(Forecast f) {
         ObjectNode j = JSON.createObjectNode().put("probability", f.probability());
         j.put("timeToViolation", f.timeToViolation()).put("low", f.low()).put("high", f.high()).put("unit", f.unit())
                 .put("basis", f.basis().label()).put("novelSince", f.novelSince()).put("runs", f.runs())
                 .put("violated", f.violated()).put("value", f.value()).put("drift", f.drift())
-                .put("explanation", "P(violation) " + f.probability());
+                .put("explanation", ForecastWords.line(f));
         return j;
     }
 
@@ -90,7 +85,7 @@ class TileStateTest {
         t.record(level(1, 80));
         assertEquals("ok", state(b, "a.log"));
         assertEquals("green", snap(b, "a.log").get("light").asText());
-        b.event(t, new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0), "{\"event\":\"no-match\",\"line\":40}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0)));
         JsonNode s = snap(b, "a.log");
         assertEquals("unknown", s.get("state").asText());
         assertEquals("blue", s.get("light").asText());
@@ -99,13 +94,13 @@ class TileStateTest {
         Tile n = b.tile("b.log");
         n.record(level(1, 80));
         Forecast novel = forecast(0.4, 60.0, Forecast.Basis.RESYNCHRONISED, 33L);
-        b.event(n, new MonitorEvent.ForecastChanged(2, 50, novel, Clock.SECONDS, 0), forecastEvent(2, 50, novel));
+        b.event(n, LogEvent.of(n.log(), new MonitorEvent.ForecastChanged(2, 50, novel, Clock.SECONDS, 0)));
         assertEquals("unknown", state(b, "b.log"), "novel behaviour: matching resumed, but on less evidence");
         Forecast valueOnly = forecast(0.4, 60.0, Forecast.Basis.VALUE_ONLY, null);
-        b.event(n, new MonitorEvent.ForecastChanged(3, 60, valueOnly, Clock.SECONDS, 0), forecastEvent(3, 60, valueOnly));
+        b.event(n, LogEvent.of(n.log(), new MonitorEvent.ForecastChanged(3, 60, valueOnly, Clock.SECONDS, 0)));
         assertEquals("unknown", state(b, "b.log"));
         Forecast matched = forecast(0.4, 60.0, Forecast.Basis.MATCHED, null);
-        b.event(n, new MonitorEvent.ForecastChanged(4, 70, matched, Clock.SECONDS, 0), forecastEvent(4, 70, matched));
+        b.event(n, LogEvent.of(n.log(), new MonitorEvent.ForecastChanged(4, 70, matched, Clock.SECONDS, 0)));
         assertEquals("ok", state(b, "b.log"), "matched again: the forecast is trusted again");
         assertEquals(0, snap(b, "b.log").get("events").size(), "forecasts are shown, not listed as events");
 
@@ -114,9 +109,7 @@ class TileStateTest {
         String reason = "P(violation) 0.97 reaches the warning threshold 0.92; about 5.00 s to the violation";
         MonitorEvent.Warning w = new MonitorEvent.Warning(6, 80, List.of(), 31.5, 9, Clock.SECONDS, 0,
                 WarningRule.FORECAST, high, reason);
-        ObjectNode wj = JSON.createObjectNode().put("event", "warning").put("reason", reason);
-        wj.set("forecast", forecastJson(high));
-        b.event(t, w, wj.toString());
+        b.event(t, LogEvent.of(t.log(), w));
         s = snap(b, "a.log");
         assertEquals("warning", s.get("state").asText());
         assertEquals(reason, s.get("warning").get("reason").asText());
@@ -132,7 +125,7 @@ class TileStateTest {
         Tile t = b.tile("r.log");
         t.record(level(1, 35));
         Forecast f = forecast(0.71, 6.88, Forecast.Basis.MATCHED, null);
-        b.event(t, new MonitorEvent.ForecastChanged(2, 90, f, Clock.SECONDS, 0), forecastEvent(2, 90, f));
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(2, 90, f, Clock.SECONDS, 0)));
         JsonNode fj = snap(b, "r.log").get("forecast");
         assertEquals(forecastJson(f), fj, "the same object, field for field");
         List<String> fields = new ArrayList<>();
@@ -140,7 +133,7 @@ class TileStateTest {
         assertEquals(List.of("probability", "timeToViolation", "low", "high", "unit", "basis", "novelSince", "runs",
                 "violated", "value", "drift", "explanation"), fields);
 
-        b.event(t, new MonitorEvent.RunStarted(1, 100, 500, Clock.SECONDS), "{\"event\":\"run\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.RunStarted(1, 100, 500, Clock.SECONDS)));
         JsonNode s = snap(b, "r.log");
         assertTrue(s.get("forecast").isNull(), "a new run has no forecast yet");
         assertEquals(0.71, s.get("earlierRuns").get(0).get("probability").asDouble(), "the run's last forecast");
@@ -183,13 +176,12 @@ class TileStateTest {
         Board b = board();
         Tile t = b.tile("r.log");
         t.record(level(1, 25));
-        b.event(t, new MonitorEvent.Violation(2, 20, "battery", 19.95, 20.1, Clock.SECONDS, 0), "{\"event\":\"violation\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(2, 20, "battery", 19.95, 20.1, Clock.SECONDS, 0)));
         t.record(level(2, 19.95));
         assertEquals("violation", state(b, "r.log"));
         t.record(level(30, 96.7));
         assertEquals("violation", state(b, "r.log"), "the monitor decides when it holds again, not the tile");
-        b.event(t, new MonitorEvent.Recovered(30, 40, "property", 96.7, "the property holds again", Clock.SECONDS, 0),
-                "{\"event\":\"recovered\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Recovered(30, 40, "property", 96.7, "the property holds again", Clock.SECONDS, 0)));
         JsonNode s = snap(b, "r.log");
         assertEquals("ok", s.get("state").asText(), "it holds again");
         assertTrue(s.get("recovered").asBoolean());
@@ -198,7 +190,7 @@ class TileStateTest {
         assertEquals(List.of("violation", "recovered"), moments(s));
         assertEquals(96.7, s.get("history").get(1).get("battery").asDouble());
         t.record(level(40, 12));
-        b.event(t, new MonitorEvent.Violation(40, 50, "battery", 12, 96.7, Clock.SECONDS, 0), "{\"event\":\"violation\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(40, 50, "battery", 12, 96.7, Clock.SECONDS, 0)));
         s = snap(b, "r.log");
         assertEquals("violation", s.get("state").asText());
         assertEquals(List.of("violation", "recovered", "violated again"), moments(s));
@@ -209,15 +201,13 @@ class TileStateTest {
         Board b = board();
         Tile t = b.tile("r.log");
         t.record(level(1, 40));
-        b.event(t, new MonitorEvent.UnderWay(5, 30, "skill GoToChargingStation", true, Clock.SECONDS, 0),
-                "{\"event\":\"under-way\"}");
-        b.event(t, new MonitorEvent.Warning(6, 35, List.of(), 29.6, 3, Clock.SECONDS, 0), "{\"event\":\"warning\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.UnderWay(5, 30, "skill GoToChargingStation", true, Clock.SECONDS, 0)));
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Warning(6, 35, List.of(), 29.6, 3, Clock.SECONDS, 0)));
         JsonNode s = snap(b, "r.log");
         assertEquals("warning", s.get("state").asText());
         assertEquals(5.0, s.get("underWay").get("since").asDouble());
         assertEquals("matching", s.get("warning").get("clause").asText());
-        b.event(t, new MonitorEvent.Recovered(9, 60, "action", 45, "recovered by the action", Clock.SECONDS, 0),
-                "{\"event\":\"recovered\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Recovered(9, 60, "action", 45, "recovered by the action", Clock.SECONDS, 0)));
         s = snap(b, "r.log");
         assertEquals("ok", s.get("state").asText(), "no warning state after the recovery");
         assertEquals(List.of("warning", "recovered"), moments(s), "the warning's time stays in this run");
@@ -249,14 +239,13 @@ class TileStateTest {
         ok.record(level(1, 80));
         Tile warned = b.tile("/robots/r2/monitor.log");
         warned.record(level(1, 40));
-        b.event(warned, new MonitorEvent.Warning(3, 30, List.of("depleted"), 40.0, 4, Clock.SECONDS, 0),
-                "{\"event\":\"warning\"}");
+        b.event(warned, LogEvent.of(warned.log(), new MonitorEvent.Warning(3, 30, List.of("depleted"), 40.0, 4, Clock.SECONDS, 0)));
         b.tile("/robots/r3/monitor.log");
         Tile red = b.tile("/robots/r4/monitor.log");
-        b.event(red, new MonitorEvent.Violation(2, 20, "battery", 12, 20.1, Clock.SECONDS, 0), "{\"event\":\"violation\"}");
+        b.event(red, LogEvent.of(red.log(), new MonitorEvent.Violation(2, 20, "battery", 12, 20.1, Clock.SECONDS, 0)));
         Tile unknown = b.tile("/robots/r5/monitor.log");
         unknown.record(level(1, 80));
-        b.event(unknown, new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0), "{\"event\":\"no-match\"}");
+        b.event(unknown, LogEvent.of(unknown.log(), new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0)));
         List<String> names = new ArrayList<>();
         List<String> states = new ArrayList<>();
         b.status(null).get("logs").forEach(s -> {

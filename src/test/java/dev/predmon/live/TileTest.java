@@ -3,6 +3,7 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.event.LogEvent;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
@@ -63,12 +64,12 @@ class TileTest {
         assertEquals("grey", snap(b, "robot.log").get("light").asText(), "no data yet");
         t.record(level(1, 80));
         assertEquals("green", snap(b, "robot.log").get("light").asText());
-        b.event(t, warning(30, 0), "{\"event\":\"warning\"}");
+        b.event(t, LogEvent.of(t.log(), warning(30, 0)));
         JsonNode s = snap(b, "robot.log");
         assertEquals("yellow", s.get("light").asText());
         assertTrue(s.get("lead").isNull(), "no lead before the violation");
         t.record(level(35, 18));
-        b.event(t, violation(35, 0), "{\"event\":\"violation\"}");
+        b.event(t, LogEvent.of(t.log(), violation(35, 0)));
         s = snap(b, "robot.log");
         assertEquals("red", s.get("light").asText());
         assertEquals(5.0, s.get("lead").asDouble(), 1e-9);
@@ -83,16 +84,16 @@ class TileTest {
         Tile t = b.tile("day.log");
         LearnedModel first = models.models().get(0);
         t.record(level(1, 80));
-        b.event(t, new MonitorEvent.Eliminated(2, 12, first.id(), first.scenario(), first.faulty(),
-                "cannot take input x at step 3", Clock.SECONDS, 0), "{\"event\":\"eliminated\"}");
-        b.event(t, warning(30, 0), "{\"event\":\"warning\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Eliminated(2, 12, first.id(), first.scenario(), first.faulty(),
+                "cannot take input x at step 3", Clock.SECONDS, 0)));
+        b.event(t, LogEvent.of(t.log(), warning(30, 0)));
         JsonNode s = snap(b, "day.log");
         JsonNode m = s.get("models").get(0);
         assertFalse(m.get("alive").asBoolean());
         assertEquals("line 12: cannot take input x at step 3", m.get("reason").asText());
         assertEquals(models.models().size() - 1, count(s.get("models"), true));
 
-        b.event(t, new MonitorEvent.RunStarted(1, 100, 500, Clock.SECONDS), "{\"event\":\"run\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.RunStarted(1, 100, 500, Clock.SECONDS)));
         s = snap(b, "day.log");
         assertEquals(1, s.get("run").asInt());
         assertEquals("grey", s.get("light").asText(), "the new run has no reading yet");
@@ -104,7 +105,7 @@ class TileTest {
         assertEquals("yellow", earlier.get("light").asText());
         assertEquals(3, s.get("events").size(), "the last events go on across runs");
 
-        b.event(t, new MonitorEvent.Restarted("truncated"), "{\"event\":\"restarted\"}");
+        b.event(t, LogEvent.of(t.log(), new MonitorEvent.Restarted("truncated")));
         s = snap(b, "day.log");
         assertEquals(2, s.get("run").asInt(), "a rotated log goes on in a new run, as the monitor numbers it");
         assertEquals(2, s.get("earlierRuns").size(), "the runs before the rotation stay, as in watch's summary");
@@ -135,7 +136,7 @@ class TileTest {
         LogRecord latest = null;
         for (int run = 0; run < 50; run++) {
             if (run > 0) {
-                b.event(t, new MonitorEvent.RunStarted(run, run * 1000.0, run * 100_000L, Clock.SECONDS), "{\"e\":1}");
+                b.event(t, LogEvent.of(t.log(), new MonitorEvent.RunStarted(run, run * 1000.0, run * 100_000L, Clock.SECONDS)));
             }
             for (int i = 0; i < 2_000; i++) {
                 latest = level(run * 1000.0 + i * 0.5, 100 - i * 0.04);

@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
+import dev.predmon.parse.LogFollower;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
@@ -41,7 +42,8 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 /**
  * Chaos soak: {@value #LOGS} robots' logs in one watched directory, each appended at {@value #SPEED}x robot pace with
  * simulated runs from a pool whose verdicts are known (each run watched alone), and between runs renamed (also twice
- * before the logger reopens, the middle file left empty), renamed while the logger goes on writing the renamed file,
+ * before the logger reopens, the middle file left empty), renamed while the logger goes on writing the renamed file
+ * (also after a pause past the turn to the new file, which another program wrote a line to),
  * copytruncated, truncated, deleted, replaced by a FIFO or by a directory. Every warning and violation that watching
  * each run alone gives must arrive, and once the logs are gone the process holds the descriptors it held before.
  */
@@ -54,7 +56,10 @@ class ChaosSoakTest {
     private static final Path FDS = Path.of("/proc/self/fd");
 
     /** What is done to a log before its next run is written. */
-    private enum Chaos { RENAME, RENAME_TWICE_EMPTY, RENAME_WHILE_WRITTEN, COPYTRUNCATE, TRUNCATE, DELETE, FIFO, DIRECTORY }
+    private enum Chaos {
+        RENAME, RENAME_TWICE_EMPTY, RENAME_WHILE_WRITTEN, RENAME_PAUSED_WRITTEN, COPYTRUNCATE, TRUNCATE, DELETE, FIFO,
+        DIRECTORY
+    }
 
     /** A run of the pool: its text, its records, and how many warnings and violations it gives watched alone. */
     private record PoolRun(String text, long records, int warnings, int violations) {
@@ -91,7 +96,8 @@ class ChaosSoakTest {
                 count(records, log);
             }
         });
-        fleet.limits(Duration.ofMillis(500), Integer.MAX_VALUE);
+        // a file gone from its path is let go 3 s after it last grew: past the paused logger's 1.5 s
+        fleet.limits(Duration.ofSeconds(3), Integer.MAX_VALUE);
         AtomicReference<Throwable> failed = new AtomicReference<>();
         Thread following = new Thread(() -> {
             try {
@@ -172,14 +178,18 @@ class ChaosSoakTest {
             Chaos chaos = n == 0 ? null : kinds[(index + n) % kinds.length];
             if (chaos != null) {
                 apply(chaos, log, name, n);
-                done.computeIfAbsent(chaos, k -> new AtomicLong()).incrementAndGet();
+                // (the paused writer is a way of writing, counted below; applied before a run it is a rename)
+                done.computeIfAbsent(chaos == Chaos.RENAME_PAUSED_WRITTEN ? Chaos.RENAME : chaos,
+                        k -> new AtomicLong()).incrementAndGet();
             }
             long before = got(records, name);
             if (chaos == null || n % 3 != 0 || !Files.exists(log)) {
-                write(log, run.text(), null);
+                write(log, run.text(), null, false);
             } else { // logrotate's create while the logger writes: it goes on in the renamed file
-                write(log, run.text(), log.resolveSibling(name + ".w" + n));
-                done.computeIfAbsent(Chaos.RENAME_WHILE_WRITTEN, k -> new AtomicLong()).incrementAndGet();
+                boolean paused = (index + n) % 2 == 0; // and pauses first, past the turn to the new file
+                write(log, run.text(), log.resolveSibling(name + ".w" + n), paused);
+                done.computeIfAbsent(paused ? Chaos.RENAME_PAUSED_WRITTEN : Chaos.RENAME_WHILE_WRITTEN,
+                        k -> new AtomicLong()).incrementAndGet();
             }
             sum[0] += run.warnings();
             sum[1] += run.violations();
@@ -191,7 +201,7 @@ class ChaosSoakTest {
     private static void apply(Chaos chaos, Path log, String name, int n) throws Exception {
         Path rotated = log.resolveSibling(name + "." + n);
         switch (chaos) {
-            case RENAME -> {
+            case RENAME, RENAME_PAUSED_WRITTEN -> {
                 Files.move(log, rotated);
                 Files.writeString(log, "");
             }
@@ -236,9 +246,10 @@ class ChaosSoakTest {
     /**
      * Appends {@code text} at {@value #SPEED}x the pace of its time stamps, in slices of 0.1 s of robot time. With
      * {@code renameTo}, halfway the log is renamed there and an empty one created, and the rest still goes to the
-     * renamed file (the logger's handle).
+     * renamed file (the logger's handle); with {@code pause}, another program writes a line to the new file first and
+     * the logger pauses past the quiet time, so that watch has turned to the new file when the rest comes.
      */
-    private static void write(Path log, String text, Path renameTo) throws Exception {
+    private static void write(Path log, String text, Path renameTo, boolean pause) throws Exception {
         String[] lines = text.split("(?<=\n)", -1);
         try (OutputStream out = Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
             StringBuilder slice = new StringBuilder();
@@ -255,8 +266,11 @@ class ChaosSoakTest {
                 }
                 if (renameTo != null && i == lines.length / 2 && !Double.isNaN(t)) {
                     Files.move(log, renameTo);
-                    Files.writeString(log, "");
+                    Files.writeString(log, pause ? "yarprun: starting\n" : "");
                     renameTo = null;
+                    if (pause) {
+                        Thread.sleep(LogFollower.QUIET_MILLIS * 3 / 2);
+                    }
                 }
                 slice.append(line);
             }

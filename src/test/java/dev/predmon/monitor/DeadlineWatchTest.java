@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.forecast.Calibration;
+import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Lows;
 import dev.predmon.forecast.Survival;
@@ -194,6 +195,54 @@ class DeadlineWatchTest {
         step(c, w, arrived(), told);
         assertEquals(List.of("forecast 0% 10.0", "forecast novel 6.0", "warning novel"), told.said,
                 "a missed deadline is the property's violation: no recovery");
+    }
+
+    /**
+     * Training navigations took 2, 3, 3 and 4 ticks, and two were still pending at 12 (censored), so S(10) = 1/3:
+     * with the prior of 2 runs, P(miss) is (6 * 1/3 + 2/3) / 8 = 1/3 at first, (3 * 2/3 + 2/3) / 5 = 0.53 after
+     * tick 3 and (2 * 1 + 2/3) / 4 = 0.67 after tick 4. The default rule warns at even odds (tick 3); a learned
+     * threshold of 0.6 waits for tick 4; one of 0.7 never warns (never past every training navigation), unless the
+     * calibration lifts the estimate: then it warns at tick 3, with the calibrated probability.
+     */
+    @Test
+    void itWarnsAtTheLearnedThresholdOnTheCalibratedScale() {
+        Survival s = new Survival(new double[] {2, 3, 3, 4}, new double[] {12, 12});
+        assertEquals(3, warnedAt(model(s)).tick());
+        Warned at06 = warnedAt(model(s, new DeadlineRule(0.6, "learned", true, Calibration.IDENTITY)));
+        assertEquals(4, at06.tick());
+        assertEquals(2.0 / 3, at06.due().estimate().probability(), 1e-12);
+        assertEquals(-1, warnedAt(model(s, new DeadlineRule(0.7, "learned", true, Calibration.IDENTITY))).tick());
+        Calibration lift = new Calibration(1, 1, 5);
+        Warned lifted = warnedAt(model(s, new DeadlineRule(0.7, "learned", true, lift)));
+        assertEquals(3, lifted.tick());
+        assertEquals(lift.apply(8.0 / 15), lifted.due().estimate().probability(), 1e-12);
+        assertTrue(lifted.due().reason().contains("P(miss) 0.76"), lifted.due().reason());
+    }
+
+    private record Warned(int tick, DeadlineWatch.Due due) {
+    }
+
+    /** When a navigation that never arrives is first warned, in ticks (-1 when not before its deadline). */
+    private Warned warnedAt(ForecastModel model) {
+        PropertyChecker c = new PropertyChecker(List.<Property>of(NAVIGATION), (i, p, v) -> { });
+        DeadlineWatch w = new DeadlineWatch(List.of(NAVIGATION), model);
+        List<DeadlineWatch.Due> due = new ArrayList<>();
+        c.accept(goTo());
+        w.step(c, null, told(due));
+        for (int t = 1; t <= 10; t++) {
+            c.accept(tick());
+            w.step(c, null, told(due));
+            if (!due.isEmpty()) {
+                return new Warned(t, due.get(0));
+            }
+        }
+        return new Warned(-1, null);
+    }
+
+    private static ForecastModel model(Survival s, DeadlineRule rule) {
+        return new ForecastModel(ForecastModel.FORMAT, "ticks", 20, 4, 0, new Lows(new double[] {30}, new double[0]),
+                0.9, "test", true, Map.of(), List.of(), Calibration.IDENTITY, List.of(), Map.of(NAVIGATION.id(), s),
+                Map.of(NAVIGATION.id(), rule));
     }
 
     private static ForecastModel model(Survival s) {

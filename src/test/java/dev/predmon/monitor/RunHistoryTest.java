@@ -1,6 +1,11 @@
 package dev.predmon.monitor;
 
 import dev.predmon.parse.Clock;
+import dev.predmon.property.Absence;
+import dev.predmon.property.Property;
+import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.Scope;
+import dev.predmon.property.Verdict;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;
@@ -47,5 +52,41 @@ class RunHistoryTest {
         assertFalse(s.warnedMatching(), "a run warned and then lost by every model is a no-match run");
         assertEquals(1, s.firstWarned().orElseThrow().run());
         assertEquals(0, s.dropped());
+    }
+
+    /** A violation of {@code property} at {@code line}, as the safety monitor's verdict on the run gives it. */
+    private static PropertyChecker.PropertyVerdict violated(String property, long line) {
+        Property p = new Absence(property, property, null, Scope.GLOBAL, null);
+        return new PropertyChecker.PropertyVerdict(p, new Verdict.Violated(line, line, null, null, "aborted"));
+    }
+
+    private static MonitorEvent.Warning deadlineWarning(long line) {
+        return new MonitorEvent.Warning(line, line, List.of(), 60.0, 3, Clock.TICKS, 0, WarningRule.FORECAST, null,
+                "navigation pending long", MonitorEvent.Clause.DEADLINE, null, "navigation-in-time");
+    }
+
+    /** Every property's warnings and violations count: a deadline's warning is a warning, an abort a violation. */
+    @Test
+    void theVerdictCountsEveryPropertyNotOnlyTheForecasts() {
+        RunOutcome abortedUnwarned = new RunOutcome(0, 1, null, null, false, 7, true, null,
+                List.of(violated("no-abort", 40)));
+        assertTrue(abortedUnwarned.unwarnedViolation(), "an abort with no warning of any property before it");
+        assertFalse(abortedUnwarned.warned());
+
+        RunOutcome deadlineFirst = new RunOutcome(0, 1, null, null, false, 7, true, null,
+                List.of(violated("no-abort", 40)), deadlineWarning(30));
+        assertFalse(deadlineFirst.unwarnedViolation(), "a deadline's warning at line 30 came before the abort");
+        assertTrue(deadlineFirst.warned());
+
+        RunOutcome deadlineAtTheAbort = new RunOutcome(0, 1, null, null, false, 7, true, null,
+                List.of(violated("no-abort", 40)), deadlineWarning(40));
+        assertTrue(deadlineAtTheAbort.unwarnedViolation(), "a warning at the violating record predicts nothing");
+
+        RunHistory h = new RunHistory();
+        h.add(deadlineFirst);
+        RunsSummary s = h.summary(run(1, false, false));
+        assertTrue(s.warned() && s.warnedMatching(), "the deadline's warning is the log's");
+        assertFalse(s.unwarnedViolation());
+        assertTrue(h.summary(abortedUnwarned).unwarnedViolation());
     }
 }

@@ -6,6 +6,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -70,12 +71,11 @@ class FollowerChainTest {
             Files.writeString(file, "c3\n", StandardOpenOption.APPEND);
             f.poll();
             assertEquals(2, f.openFiles(), "the empty files passed over are closed; the first is kept a while");
-            logger.write('x'); // the first logger's handle is still open: what it writes now is told, not read
+            logger.write("a2\n".getBytes(StandardCharsets.UTF_8)); // the first logger's handle is still open: read on
             logger.flush();
             f.poll();
-            assertTrue(f.takeNotice().isPresent());
         }
-        assertEquals(List.of("a1", "<restarted replaced>", "c1", "c2", "c3"), events);
+        assertEquals(List.of("a1", "<restarted replaced>", "c1", "c2", "c3", "a2"), events);
     }
 
     /** An empty file rotated in, then deleted before anything was written to it, and a new file at the path. */
@@ -177,11 +177,11 @@ class FollowerChainTest {
 
     /**
      * A logger that pauses after a rename rotation for longer than the quiet time, then goes on writing to the renamed
-     * file after the follower took up the new one: what it writes there is not read, and the follower says so once,
-     * instead of losing it silently. A renamed file that stays quiet is closed after the release time.
+     * file after the follower took up the new one: what it writes there is read, for as long as it grows, and
+     * the renamed file is let go once it has not grown for the release time (its unterminated last line delivered).
      */
     @Test
-    void aRenamedFileWrittenAgainAfterTheTurnIsToldOfOnce() throws IOException {
+    void aRenamedFileWrittenAgainAfterTheTurnIsReadOnAndLetGoOnceQuiet() throws IOException {
         Path file = Files.writeString(dir.resolve("live.log"), "a1\n");
         Path rotated = dir.resolve("live.log.1");
         try (LogFollower f = follower(file)) {
@@ -192,27 +192,97 @@ class FollowerChainTest {
             now[0] += QUIET;
             f.poll();
             assertEquals(List.of("a1", "<restarted replaced>", "b1"), events);
-            assertEquals(2, f.openFiles(), "the renamed file is kept open a while");
-            assertEquals(Optional.empty(), f.takeNotice());
+            assertEquals(2, f.openFiles(), "the renamed file is kept open");
+            assertTrue(f.readingRenamed());
             Files.writeString(rotated, "a2 warning\n", StandardOpenOption.APPEND);
+            Files.writeString(file, "b2\n", StandardOpenOption.APPEND);
+            assertTrue(f.poll());
+            assertEquals(List.of("a1", "<restarted replaced>", "b1", "a2 warning", "b2"), events,
+                    "the renamed file is read before the file at the path");
+            now[0] += RELEASE - 1;
+            Files.writeString(rotated, "a3", StandardOpenOption.APPEND); // grows again: kept on
             f.poll();
-            assertEquals(Optional.of("the file renamed away at the last rotation grew by 11 bytes after the file now "
-                    + "at the path was taken up: a writer went on in it, and what it wrote there is not read"),
-                    f.takeNotice());
-            assertEquals(Optional.empty(), f.takeNotice(), "said once");
-            assertEquals(1, f.openFiles());
+            now[0] += RELEASE - 1;
+            f.poll();
+            assertEquals(2, f.openFiles(), "grew less than the release time ago");
+            now[0] += 1;
+            f.poll();
+            assertEquals(1, f.openFiles(), "quiet for the release time: let go");
+            assertFalse(f.readingRenamed());
+        }
+        assertEquals(List.of("a1", "<restarted replaced>", "b1", "a2 warning", "b2", "a3"), events,
+                "its unterminated last line delivered when it is let go");
+    }
 
-            Files.move(file, dir.resolve("live.log.2"));
-            Files.writeString(file, "c1\n");
+    /**
+     * With a sink per file, a line cut where the old writer paused is completed by its next write to the renamed file,
+     * whatever the new file holds meanwhile; each sink hears {@code ended()} when its file is done with.
+     */
+    @Test
+    void eachFileHasItsOwnPartialLineAndSink() throws IOException {
+        Path file = Files.writeString(dir.resolve("live.log"), "a1\na2 cut ");
+        Path rotated = dir.resolve("live.log.1");
+        List<List<String>> perFile = new ArrayList<>();
+        try (LogFollower f = new LogFollower(file, () -> {
+            List<String> mine = new ArrayList<>();
+            perFile.add(mine);
+            return new LineSink() {
+                @Override
+                public void line(String line) {
+                    mine.add(line);
+                }
+
+                @Override
+                public void restarted(String reason) {
+                    mine.add("<" + reason + ">");
+                }
+
+                @Override
+                public void ended() {
+                    mine.add("<ended>");
+                }
+            };
+        }, LineSplitter.DEFAULT_MAX_LINE_BYTES, QUIET, RELEASE, () -> now[0])) {
+            f.poll();
+            Files.move(file, rotated);
+            Files.writeString(file, "b1 partial");
             f.poll();
             now[0] += QUIET;
             f.poll();
-            assertEquals(2, f.openFiles());
-            now[0] += RELEASE;
+            Files.writeString(rotated, "in two\na3\n", StandardOpenOption.APPEND);
+            Files.writeString(file, " line\n", StandardOpenOption.APPEND);
             f.poll();
-            assertEquals(1, f.openFiles(), "quiet for the release time: closed");
-            assertEquals(Optional.empty(), f.takeNotice());
+            assertEquals(List.of(List.of("a1", "a2 cut in two", "a3"), List.of("<replaced>", "b1 partial line")),
+                    perFile);
+            Files.delete(rotated);
+            f.poll();
+            assertFalse(f.readingRenamed(), "a renamed file that is deleted is let go at once");
+            assertEquals(1, f.openFiles());
         }
+        assertEquals(List.of("a1", "a2 cut in two", "a3", "<ended>"), perFile.get(0));
+    }
+
+    /** A renamed file renamed again by a later rotation is found again, and read on; deleted, it is let go. */
+    @Test
+    void aRenamedFileRenamedAgainIsReadOnThenLetGoWhenDeleted() throws IOException {
+        Path file = Files.writeString(dir.resolve("live.log"), "a1\n");
+        try (LogFollower f = follower(file); OutputStream logger = Files.newOutputStream(file, StandardOpenOption.APPEND)) {
+            f.poll();
+            Files.move(file, dir.resolve("live.log.1"));
+            Files.writeString(file, "b1\n");
+            f.poll();
+            now[0] += QUIET;
+            f.poll();
+            Files.move(dir.resolve("live.log.1"), dir.resolve("live.log.2"));
+            logger.write("a2\n".getBytes(StandardCharsets.UTF_8));
+            logger.flush();
+            f.poll();
+            assertTrue(f.readingRenamed(), "found again under its new name");
+            Files.delete(dir.resolve("live.log.2"));
+            f.poll();
+            assertFalse(f.readingRenamed(), "deleted: let go");
+        }
+        assertEquals(List.of("a1", "<restarted replaced>", "b1", "a2"), events);
     }
 
     static boolean mkfifo(Path path) throws InterruptedException {

@@ -110,14 +110,18 @@ class LogFollowerTest {
             assertTrue(follower.poll());
             Files.writeString(file, "b3\n", StandardOpenOption.APPEND);
             follower.poll();
+            // the old file's unterminated line is held: its writer completes it in the renamed file
+            Files.writeString(dir.resolve("a.log.1"), " done\n", StandardOpenOption.APPEND);
+            follower.poll();
         }
-        assertEquals(List.of("a1", "a2", "a3", "<restarted replaced>", "b1", "b2", "b3"), sink.events);
+        assertEquals(List.of("a1", "a2", "<restarted replaced>", "b1", "b2", "b3", "a3 done"), sink.events);
     }
 
     /**
      * logrotate's default: the log is renamed and an empty one created, and the program writes on to the renamed file
      * until it reopens its log. Everything it writes there is read, before the new file, however long it goes on;
-     * the new file is read once it holds something and the old one has been quiet for the quiet time.
+     * the new file is read once it holds something and the old one has been quiet for the quiet time, and what the
+     * writer adds to the renamed file after that is read too.
      */
     @Test
     void aRenamedFileStillWrittenIsReadToItsEndBeforeTheNewOne() throws IOException {
@@ -147,10 +151,11 @@ class LogFollowerTest {
             assertEquals(6, sink.events.size(), "not quiet for long enough yet");
             now[0] += 1;
             assertTrue(follower.poll());
-            Files.writeString(rotated, "a7 too late\n", StandardOpenOption.APPEND);
+            Files.writeString(rotated, "a7 after the turn\n", StandardOpenOption.APPEND); // read on after the turn
             follower.poll();
         }
-        assertEquals(List.of("a1", "a2", "a3", "a4", "a5", "a6 warning", "<restarted replaced>", "b1"), sink.events);
+        assertEquals(List.of("a1", "a2", "a3", "a4", "a5", "a6 warning", "<restarted replaced>", "b1",
+                "a7 after the turn"), sink.events);
     }
 
     /** Rotated again before the old file was done: each new file is held open and read in its turn, none lost. */

@@ -1,6 +1,4 @@
-package dev.predmon.evaluate;
-
-import dev.predmon.learn.ScenarioSpec;
+package dev.predmon.learn;
 
 import java.nio.file.Path;
 import java.util.LinkedHashMap;

@@ -1,4 +1,4 @@
-package dev.predmon.cli;
+package dev.predmon.watch;
 
 import dev.predmon.abstraction.file.AbstractionFiles;
 import org.junit.jupiter.api.Test;
@@ -21,8 +21,8 @@ class UnnotifiedLineTest {
     void oneLineSaysWhatWhyAndHowOften() {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
-        try (WatchOutputs outputs = new WatchOutputs(new PrintWriter(out), new PrintWriter(err), false, false, true,
-                false, null, null, AbstractionFiles.defaults(), p -> false)) {
+        try (WatchSession outputs = new WatchSession(new PrintWriter(out), new PrintWriter(err),
+                WatchSettings.of(false, false, true, false), null, null, AbstractionFiles.defaults(), p -> false)) {
             outputs.unnotified(null, "User limit of inotify instances reached or too many open files",
                     TimeUnit.MILLISECONDS.toNanos(2));
             outputs.unnotified(Path.of("/mnt/robots"), "network or FUSE file system, whose changes on other hosts "

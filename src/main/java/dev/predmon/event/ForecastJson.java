@@ -1,4 +1,4 @@
-package dev.predmon.cli;
+package dev.predmon.event;
 
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
@@ -10,11 +10,11 @@ import dev.predmon.forecast.ForecastWords;
  * something no model does, or null), the training {@code runs} behind it and how many {@code violated}, and the same
  * in words ({@code explanation}).
  */
-record ForecastJson(double probability, Double timeToViolation, Double low, Double high, String unit, String basis,
+public record ForecastJson(double probability, Double timeToViolation, Double low, Double high, String unit, String basis,
                     Long novelSince, int runs, int violated, Double value, Double drift, String explanation) {
 
     /** The JSON of {@code f}, or null for none. */
-    static ForecastJson of(Forecast f) {
+    public static ForecastJson of(Forecast f) {
         if (f == null) {
             return null;
         }

@@ -1,18 +1,22 @@
-package dev.predmon.cli;
+package dev.predmon.watch;
 
+import dev.predmon.Terminal;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.pipeline.UnmappedMessages;
 
 import java.io.PrintWriter;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 /**
  * One log's parse problems on stderr, one line each: at once while following; with {@code --no-follow} held until the
  * log is known to hold something to judge (so that a file that is no log gets one line, not a list), the first
  * {@value Traces#MAX_PROBLEMS} of them, the rest counted.
  */
-final class ProblemLines {
+public final class ProblemLines {
 
     private final List<ParseProblem> held = new ArrayList<>();
     private long more;
@@ -46,5 +50,15 @@ final class ProblemLines {
     /** The log's first problem, or null: what a file that is no log is judged by. */
     ParseProblem first() {
         return first;
+    }
+
+    /**
+     * The interface messages no abstraction rule maps, never silently dropped: one line per command with its count
+     * and why, at most {@value UnmappedMessages#MAX_LINES} lines (a pose a message would be a line per value).
+     */
+    public static void unmapped(PrintWriter err, Path log, Map<String, Long> unmapped) {
+        UnmappedMessages.lines(unmapped).forEach(line -> err.println(Terminal.line(log + ": warning: interface "
+                + "messages no rule maps: " + line)));
+        err.flush();
     }
 }

@@ -1,4 +1,4 @@
-package dev.predmon.cli;
+package dev.predmon;
 
 /**
  * Text for a terminal made of what a log or a file name holds. Log values and file names are anyone's bytes: an ESC
@@ -7,7 +7,7 @@ package dev.predmon.cli;
  * prints from such text goes through {@link #line}, which writes each of those characters as a visible escape. JSON
  * output needs none of this: its strings escape control characters already.
  */
-final class Terminal {
+public final class Terminal {
 
     private static final char[] HEX = "0123456789abcdef".toCharArray();
 
@@ -20,7 +20,7 @@ final class Terminal {
      * (bidirectional overrides, zero-width marks, line and paragraph separators) as {@code \}{@code uNNNN}. Anything
      * else, backslashes included, is left as it is.
      */
-    static String line(String text) {
+    public static String line(String text) {
         if (text == null) {
             return null;
         }

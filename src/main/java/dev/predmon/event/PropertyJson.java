@@ -1,4 +1,4 @@
-package dev.predmon.cli;
+package dev.predmon.event;
 
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
@@ -17,8 +17,8 @@ import java.util.Locale;
  * {@code unit} ({@code ticks}, {@code seconds} or {@code occurrences}); for the last run, its latest {@code forecast}
  * (null for the earlier runs).
  */
-record PropertyJson(String property, String name, String kind, String verdict, Long line, Double time, Double value,
-                    String what, Double since, Double deadline, String unit, LatestJson forecast) {
+public record PropertyJson(String property, String name, String kind, String verdict, Long line, Double time,
+                           Double value, String what, Double since, Double deadline, String unit, LatestJson forecast) {
 
     /**
      * A property's latest forecast: what forecasts it ({@code model}: {@code forecast}, {@code deadline} or
@@ -26,10 +26,10 @@ record PropertyJson(String property, String name, String kind, String verdict, L
      * {@code timeLeft} (to the violation, or to the deadline) in {@code unit}, {@code novel} (pending longer than any
      * training obligation: no evidence), and the same in words.
      */
-    record LatestJson(String model, Double probability, Double timeLeft, String unit, boolean novel, String words) {
+    public record LatestJson(String model, Double probability, Double timeLeft, String unit, boolean novel, String words) {
     }
 
-    static PropertyJson of(PropertyVerdict pv) {
+    public static PropertyJson of(PropertyVerdict pv) {
         return of(pv, null);
     }
 
@@ -49,24 +49,24 @@ record PropertyJson(String property, String name, String kind, String verdict, L
         return new PropertyJson(id, name, kind, v.id(), null, null, null, null, null, null, null, forecast);
     }
 
-    static List<PropertyJson> of(List<PropertyVerdict> verdicts) {
+    public static List<PropertyJson> of(List<PropertyVerdict> verdicts) {
         return verdicts.stream().map(PropertyJson::of).toList();
     }
 
     /** Every property of the last run with its verdict and latest forecast ({@code last}: the forecast's, or null). */
-    static List<PropertyJson> latest(List<PropertyStatus> statuses, Forecast last) {
+    public static List<PropertyJson> latest(List<PropertyStatus> statuses, Forecast last) {
         return statuses.stream().map(s -> of(new PropertyVerdict(s.property(), s.verdict()), latest(s, last)))
                 .toList();
     }
 
     /** One line per property for the end summary: {@code no-abort (navigation never aborts): holds}. */
-    static List<String> lines(List<PropertyVerdict> verdicts) {
+    public static List<String> lines(List<PropertyVerdict> verdicts) {
         return verdicts.stream().map(pv -> String.format(Locale.ROOT, "  %s (%s): %s", pv.property().id(),
                 pv.property().name(), pv.verdict().describe())).toList();
     }
 
     /** As above, for the last run, each with its latest forecast: {@code ...: holds; no forecast: ...}. */
-    static List<String> latestLines(List<PropertyStatus> statuses, Forecast last) {
+    public static List<String> latestLines(List<PropertyStatus> statuses, Forecast last) {
         return statuses.stream().map(s -> String.format(Locale.ROOT, "  %s (%s): %s; %s", s.property().id(),
                 s.property().name(), s.verdict().describe(), latest(s, last).words())).toList();
     }

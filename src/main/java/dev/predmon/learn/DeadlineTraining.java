@@ -1,0 +1,241 @@
+package dev.predmon.learn;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.Calibration;
+import dev.predmon.forecast.DeadlineRule;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.Scorecard;
+import dev.predmon.forecast.StatsLearner;
+import dev.predmon.forecast.Survival;
+import dev.predmon.forecast.ThresholdChoice;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunTiming;
+import dev.predmon.property.Deadline;
+import dev.predmon.property.Property;
+import dev.predmon.property.Response;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.function.IntPredicate;
+
+/**
+ * Learns when the deadline forecast of each bounded-response property warns, by the cross-validation that chooses the
+ * battery's threshold ({@link ForecastTraining}), with the same folds of logs: for each fold, the durations of the
+ * other folds' obligations make the {@link Survival} estimate, and each held-out obligation is forecast after every
+ * record while it was pending ({@link RunTiming.Obligation#steps}), as {@code watch} forecasts it. Each obligation's
+ * highest forecast before its deadline, and whether it missed, choose the threshold ({@link ThresholdChoice}); its
+ * forecasts fit the {@link Calibration}; the novelty clause of {@link DeadlineRule} warns it whatever the threshold.
+ *
+ * <p>An obligation let go before its deadline (its run ended, or its scope closed) has no known outcome and is left
+ * out. Where the held-out obligations cannot choose (too few logs, or none missed its deadline), the property keeps
+ * {@link DeadlineRule#DEFAULT}, not validated, and the note says why.
+ *
+ * <p>The scorecard of each property comes from the same held-out forecasts, each fold judged with a threshold and a
+ * calibration chosen from the other folds only. A property none of whose held-out obligations missed its deadline
+ * gets none, as the forecast's property gets none without runs of both outcomes: there is no warning to score, and
+ * its rule's note says it is not validated.
+ */
+public final class DeadlineTraining {
+
+    private DeadlineTraining() {
+    }
+
+    /**
+     * {@code model} with the deadline rule of every property it learned obligations for, learned from the runs of
+     * {@code specs} in {@code traces}, and their scorecards after its own.
+     */
+    public static ForecastModel train(ForecastModel model, List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                      Abstraction abstraction) {
+        Map<String, Response> responses = new TreeMap<>();
+        for (Property p : abstraction.properties()) {
+            if (p instanceof Response r && model.obligations().containsKey(r.id())) {
+                responses.put(r.id(), r);
+            }
+        }
+        if (responses.isEmpty()) {
+            return model;
+        }
+        Map<Path, Integer> folds = folds(specs, traces);
+        int k = folds.isEmpty() ? 0 : folds.values().stream().mapToInt(f -> f).max().getAsInt() + 1;
+        Map<String, DeadlineRule> rules = new TreeMap<>();
+        List<Scorecard> cards = new ArrayList<>(model.scorecards());
+        for (Response r : responses.values()) {
+            if (k < 2) {
+                rules.put(r.id(), new DeadlineRule(ThresholdChoice.DEFAULT, String.format(Locale.ROOT,
+                        "default %.2f: too few logs to cross-validate", ThresholdChoice.DEFAULT), false,
+                        Calibration.IDENTITY));
+                continue;
+            }
+            List<HeldOut> judged = heldOut(r.id(), specs, traces, folds, k);
+            rules.put(r.id(), rule(judged));
+            if (judged.stream().anyMatch(HeldOut::missed)) {
+                cards.add(scorecard(r, k, judged)); // without a missed deadline, nothing to score (the rule says so)
+            }
+        }
+        return model.withDeadlines(rules).withScorecards(cards);
+    }
+
+    /**
+     * The fold of every log, as the battery's threshold assigns them ({@link Folds#assign}, with {@link
+     * ForecastTraining#FOLDS} folds at most): empty with fewer than two logs.
+     */
+    static Map<Path, Integer> folds(List<ScenarioSpec> specs, Map<Path, LogTrace> traces) {
+        List<ScenarioSpec> read = specs.stream().map(s -> s.withLogs(s.logs().stream().filter(traces::containsKey).toList())).toList();
+        long logs = read.stream().flatMap(s -> s.logs().stream()).distinct().count();
+        int k = (int) Math.min(ForecastTraining.FOLDS, logs);
+        return k < 2 ? Map.of() : Folds.assign(read, k);
+    }
+
+    /**
+     * One held-out obligation as its fold's training obligations forecast it: its raw P(miss) at each step that had
+     * evidence and how long it had been pending then, when the novelty clause warned it (NaN when it did not), the
+     * fold's miss rate, and its outcome.
+     */
+    record HeldOut(int fold, boolean missed, double duration, List<Double> probabilities, List<Double> elapsed,
+                   double caughtAt, double baseRate) {
+
+        double peak() {
+            return probabilities.stream().mapToDouble(p -> p).max().orElse(0);
+        }
+    }
+
+    /** Every obligation of property {@code id} with a known outcome, each forecast by the other folds' obligations. */
+    static List<HeldOut> heldOut(String id, List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                 Map<Path, Integer> folds, int k) {
+        List<HeldOut> judged = new ArrayList<>();
+        for (int f = 0; f < k; f++) {
+            int fold = f;
+            Survival survival = StatsLearner.obligations(runsOf(specs, traces, folds, g -> g != fold)).get(id);
+            if (survival == null || survival.size() == 0) {
+                continue; // watch gives no forecast without a training obligation: nothing to judge
+            }
+            for (LogTrace.Run run : runsOf(specs, traces, folds, g -> g == fold)) {
+                for (RunTiming.Obligation o : run.timing().obligations()) {
+                    if (o.property().equals(id) && (o.discharged() || o.missed())) {
+                        judged.add(forecast(fold, o, survival));
+                    }
+                }
+            }
+        }
+        return judged;
+    }
+
+    /** {@code o} forecast at each of its steps as {@code watch} forecasts it, by the rule's own clauses. */
+    private static HeldOut forecast(int fold, RunTiming.Obligation o, Survival survival) {
+        List<Double> ps = new ArrayList<>();
+        List<Double> elapsed = new ArrayList<>();
+        double caughtAt = Double.NaN;
+        for (double e : o.steps()) {
+            Survival.Estimate estimate = survival.estimate(e, o.deadline());
+            if (!estimate.novel()) {
+                ps.add(estimate.probability());
+                elapsed.add(e);
+            } else if (Double.isNaN(caughtAt) && DeadlineRule.pastEveryObligation(e, o.deadline(), survival)) {
+                caughtAt = e;
+            }
+        }
+        return new HeldOut(fold, o.missed(), o.duration(), ps, elapsed, caughtAt, survival.survival(o.deadline()));
+    }
+
+    /** The rule {@code judged} choose: a threshold and a calibration when they validate one, else the default. */
+    static DeadlineRule rule(List<HeldOut> judged) {
+        if (judged.isEmpty()) {
+            return new DeadlineRule(ThresholdChoice.DEFAULT, String.format(Locale.ROOT, "default %.2f: no held-out "
+                    + "obligation was met or missed", ThresholdChoice.DEFAULT), false, Calibration.IDENTITY);
+        }
+        Calibration calibration = fit(judged);
+        ThresholdChoice.Choice c = choose(judged, calibration);
+        if (!c.validated()) {
+            return new DeadlineRule(c.threshold(), c.note() + "; not validated: even odds, and the warning past "
+                    + "every training obligation", false, Calibration.IDENTITY);
+        }
+        return new DeadlineRule(c.threshold(), String.format(Locale.ROOT, "%.2f %s", c.threshold(), c.note()), true,
+                calibration);
+    }
+
+    private static Calibration fit(List<HeldOut> judged) {
+        return Calibration.fit(judged.stream().map(h -> new Calibration.Sample(h.probabilities(), h.missed()))
+                .toList());
+    }
+
+    /** The threshold on the calibrated scale, where even odds mean what they say. */
+    private static ThresholdChoice.Choice choose(List<HeldOut> judged, Calibration calibration) {
+        return ThresholdChoice.choose(judged.stream().map(h -> new ThresholdChoice.Peak(
+                calibration.apply(h.peak()), h.missed(), !Double.isNaN(h.caughtAt()))).toList(), "obligations");
+    }
+
+    /**
+     * The scorecard of {@code property} over the held-out obligations, each fold judged as {@code watch} would with
+     * the rule {@link #rule} makes from the other folds' obligations only. The lead runs from the warning to the
+     * deadline's passing, in the deadline's unit.
+     */
+    static Scorecard scorecard(Response property, int folds, List<HeldOut> judged) {
+        int missed = 0;
+        int warned = 0;
+        int alarms = 0;
+        List<Double> leads = new ArrayList<>();
+        double brier = 0;
+        double base = 0;
+        int scored = 0;
+        for (int f = 0; f < folds; f++) {
+            int fold = f;
+            DeadlineRule rule = rule(judged.stream().filter(h -> h.fold() != fold).toList());
+            for (HeldOut h : judged) {
+                if (h.fold() != fold) {
+                    continue;
+                }
+                double y = h.missed() ? 1 : 0;
+                double warnedAt = h.caughtAt();
+                double sum = 0;
+                for (int i = 0; i < h.probabilities().size(); i++) {
+                    double p = rule.calibration().apply(h.probabilities().get(i));
+                    sum += (p - y) * (p - y);
+                    if (p >= rule.threshold() && !(h.elapsed().get(i) >= warnedAt)) {
+                        warnedAt = h.elapsed().get(i); // the first step at the threshold, unless novelty came first
+                    }
+                }
+                if (!h.probabilities().isEmpty()) {
+                    brier += sum / h.probabilities().size();
+                    base += (h.baseRate() - y) * (h.baseRate() - y);
+                    scored++;
+                }
+                boolean warning = !Double.isNaN(warnedAt);
+                if (h.missed()) {
+                    missed++;
+                    if (warning) {
+                        warned++;
+                        leads.add(h.duration() - warnedAt);
+                    }
+                } else if (warning) {
+                    alarms++;
+                }
+            }
+        }
+        Deadline d = property.within();
+        return new Scorecard(property.name(), folds, judged.size(), missed, warned, alarms, Scorecard.median(leads),
+                d.unit() == Deadline.Unit.OCCURRENCES ? "occurrences" : d.unit().key,
+                scored == 0 ? Double.NaN : brier / scored, scored == 0 ? Double.NaN : base / scored,
+                Scorecard.OBLIGATIONS);
+    }
+
+    /** The runs of the logs whose fold {@code include} selects, each of the runs its scenario learns from. */
+    private static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                             Map<Path, Integer> folds, IntPredicate include) {
+        List<LogTrace.Run> runs = new ArrayList<>();
+        for (ScenarioSpec s : specs) {
+            for (Path log : s.logs()) {
+                LogTrace t = traces.get(log);
+                Integer fold = folds.get(log);
+                if (t != null && fold != null && include.test(fold)) {
+                    t.runs().stream().filter(r -> !r.pairs().isEmpty() && s.runs().selects(r.violated()))
+                            .forEach(runs::add);
+                }
+            }
+        }
+        return runs;
+    }
+}

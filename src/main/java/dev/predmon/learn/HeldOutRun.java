@@ -1,0 +1,68 @@
+package dev.predmon.learn;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.RunOutcome;
+import dev.predmon.monitor.WarningRule;
+import dev.predmon.pipeline.RunLabel;
+import dev.predmon.replay.LogReplay;
+import dev.predmon.replay.ReplayedLog;
+import dev.predmon.replay.ReplayedRun;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * One held-out run as {@code watch} forecasts it with a fold's models: every forecast before the property's violation,
+ * with its time, and when the rule warned it before that violation. Made by replaying the log through the one replay
+ * ({@link LogReplay}), so that the threshold and the calibration are chosen on the forecasts {@code watch} makes.
+ *
+ * @param violated      whether the forecast property was violated in the run
+ * @param probabilities the raw probability of each forecast before the violation, in order
+ * @param times         the time of each
+ * @param warnedAt      the time of the run's first warning when it came before the violation, NaN otherwise
+ * @param violationTime the time of the violation, NaN for a run that held
+ */
+public record HeldOutRun(boolean violated, List<Double> probabilities, List<Double> times, double warnedAt,
+                         double violationTime) {
+
+    public HeldOutRun {
+        probabilities = List.copyOf(probabilities);
+        times = List.copyOf(times);
+    }
+
+    /** A threshold no probability reaches: a replay with it warns only by the rule's other clauses. */
+    public static final double NEVER = 2;
+
+    /** The highest probability before the violation (0 without a forecast). */
+    public double peak() {
+        return probabilities.stream().mapToDouble(p -> p).max().orElse(0);
+    }
+
+    /**
+     * The runs of {@code log} that {@code label} selects and that have a pair, replayed against {@code models} (which
+     * carry a forecast) by {@code rule} with exact matching, as {@code watch} replays them.
+     */
+    public static List<HeldOutRun> replay(Path log, RunLabel label, ModelSet models, Abstraction abstraction,
+                                          int confirm, WarningRule rule) throws IOException {
+        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { });
+        List<HeldOutRun> out = new ArrayList<>();
+        for (ReplayedRun r : replayed.runs()) {
+            if (r.pairs().isEmpty() || !label.selects(r.violated())) {
+                continue;
+            }
+            RunOutcome o = r.outcome();
+            MonitorEvent.Warning w = o.warning();
+            MonitorEvent.Violation v = o.violation();
+            boolean before = w != null && (v == null || w.line() < v.line());
+            out.add(new HeldOutRun(r.violated(),
+                    r.beforeViolation().stream().map(t -> t.forecast().probability()).toList(),
+                    r.beforeViolation().stream().map(ReplayedRun.Timed::time).toList(),
+                    before ? w.time() : Double.NaN, v == null ? Double.NaN : v.time()));
+        }
+        return out;
+    }
+}

@@ -1,0 +1,128 @@
+package dev.predmon.replay;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.compact.IoPair;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.LogWatcher;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.RunOutcome;
+import dev.predmon.monitor.WarningRule;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.ParseProblem;
+import dev.predmon.pipeline.PipelineListener;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.ObjIntConsumer;
+
+/**
+ * Replays one complete log exactly as {@code watch --no-follow} judges it: the {@link LogWatcher} reads the file
+ * through the parser into a {@link PredictiveMonitor} (built-in safety monitor included), and what the monitor makes
+ * of it is kept per run instead of printed: its pairs and gaps (seen through {@link PredictiveMonitor#tee}), every
+ * forecast with the record that made it ({@link PredictiveMonitor#onEveryForecast}), and its events.
+ */
+public final class LogReplay {
+
+    private LogReplay() {
+    }
+
+    /**
+     * Replays {@code log} against {@code models}, warning by {@code rule}.
+     *
+     * @param threshold discrepancies a model may accumulate and still match
+     * @param confirm   pairs a faulty model must match after the last nominal one is eliminated
+     * @param taken     gets every record with its run right after the monitor took it
+     */
+    public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm,
+                                     WarningRule rule, ObjIntConsumer<LogRecord> taken) throws IOException {
+        List<Builder> runs = new ArrayList<>();
+        PredictiveMonitor[] self = new PredictiveMonitor[1];
+        LogRecord[] current = new LogRecord[1];
+        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, rule,
+                e -> of(runs, self[0].run()).event(e));
+        self[0] = monitor;
+        monitor.tee(new PipelineListener() {
+            @Override
+            public void runStarted(int number, LogRecord first) {
+                of(runs, monitor.run()).end(monitor); // before the monitor starts the next run over
+            }
+
+            @Override
+            public void record(LogRecord record) {
+                current[0] = record;
+            }
+
+            @Override
+            public void gap(LogRecord record) {
+                current[0] = record;
+                of(runs, monitor.run()).gaps.add(record.line());
+            }
+
+            @Override
+            public void pair(IoPair pair, LogRecord trigger) {
+                current[0] = trigger;
+                of(runs, monitor.run()).pairs.add(new ReplayedRun.Pair(pair, trigger.time(), trigger.line()));
+            }
+        });
+        monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
+                current[0].time(), current[0].line(), monitor.pairs())));
+        List<ParseProblem> problems = new ArrayList<>();
+        long lines;
+        try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, problems::add,
+                r -> taken.accept(r, monitor.run()))) {
+            watcher.drain();
+            lines = watcher.lines();
+        }
+        of(runs, monitor.run()).end(monitor);
+        List<ReplayedRun> out = new ArrayList<>();
+        for (RunOutcome o : monitor.runs()) {
+            Builder b = of(runs, o.run());
+            out.add(new ReplayedRun(o.run(), o, b.pairs, b.gaps, b.forecasts,
+                    b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt));
+        }
+        return new ReplayedLog(log, out, problems, lines, monitor);
+    }
+
+    /** As above, with the models' default rule ({@link PredictiveMonitor#defaultRule}) and no record hook. */
+    public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
+            throws IOException {
+        return replay(log, models, abstraction, threshold, confirm, PredictiveMonitor.defaultRule(models),
+                (r, run) -> { });
+    }
+
+    private static Builder of(List<Builder> runs, int run) {
+        while (runs.size() <= run) {
+            runs.add(new Builder());
+        }
+        return runs.get(run);
+    }
+
+    /** One run's stream while it is replayed. */
+    private static final class Builder {
+        final List<ReplayedRun.Pair> pairs = new ArrayList<>();
+        final List<Long> gaps = new ArrayList<>();
+        final List<ReplayedRun.Timed> forecasts = new ArrayList<>();
+        final List<MonitorEvent> events = new ArrayList<>();
+        /** Forecasts made before the forecast property's first violation, or -1 while it holds. */
+        int violatedAfter = -1;
+        List<ReplayedRun.Fate> models = List.of();
+        long matchRuleAt = -1;
+
+        /** The run ends: how the matching left each model. */
+        void end(PredictiveMonitor monitor) {
+            models = monitor.trackers().stream().map(ReplayedRun.Fate::of).toList();
+            matchRuleAt = monitor.matchRuleAt();
+        }
+
+        void event(MonitorEvent e) {
+            events.add(e);
+            if (e instanceof MonitorEvent.Violation v && v.forecast() && violatedAfter < 0) {
+                violatedAfter = forecasts.size();
+            }
+        }
+    }
+}

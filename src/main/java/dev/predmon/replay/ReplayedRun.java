@@ -1,0 +1,101 @@
+package dev.predmon.replay;
+
+import dev.predmon.compact.IoPair;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.matching.ModelTracker;
+import dev.predmon.model.LearnedModel;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.RunOutcome;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * One run of a replayed log, as the monitor took it.
+ *
+ * @param run       0, 1, ... in log order
+ * @param outcome   the monitor's outcome of the run (its first warning and violation, its verdicts)
+ * @param pairs     its compacted pairs, each with the record that completed it
+ * @param gaps      the lines of the messages the abstraction could not name (the trace misses a step there)
+ * @param forecasts every forecast the monitor made, one after each pair and each new value of the property, each
+ *                  with the record that made it
+ * @param forecastsBeforeViolation how many of {@code forecasts} came before the forecast property's first violation
+ *                                 (all of them in a run that held)
+ * @param events    every event the monitor told in the run, in order
+ * @param models    every model as the monitor's matching left it at the run's end, in model order
+ * @param matchRuleAt the pair after which the thesis's match rule first held ({@code confirm} included), or -1
+ */
+public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Long> gaps, List<Timed> forecasts,
+                          int forecastsBeforeViolation, List<MonitorEvent> events, List<Fate> models,
+                          long matchRuleAt) {
+
+    public ReplayedRun {
+        models = List.copyOf(models);
+        pairs = List.copyOf(pairs);
+        gaps = List.copyOf(gaps);
+        forecasts = List.copyOf(forecasts);
+        events = List.copyOf(events);
+    }
+
+    /**
+     * One model as the matching left it at the end of the run.
+     *
+     * @param matched          whether it still matched the run
+     * @param discrepancies    outputs that differed up to its elimination or the end
+     * @param elimination      where it stopped matching (an input it had no transition for, or the difference past
+     *                         the threshold), null while it matches
+     * @param firstDiscrepancy its first output that differed, or null
+     */
+    public record Fate(LearnedModel model, boolean matched, int discrepancies, ModelTracker.Failure elimination,
+                       ModelTracker.Failure firstDiscrepancy) {
+
+        static Fate of(ModelTracker t) {
+            return new Fate(t.model(), t.alive(), t.discrepancies(), t.elimination(), t.firstDiscrepancy());
+        }
+    }
+
+    /** A compacted pair and the record whose arrival completed it. */
+    public record Pair(IoPair pair, double time, long line) {
+    }
+
+    /**
+     * A forecast and the record that made it.
+     *
+     * @param pairs the run's pairs taken when it was made (a forecast after a pair counts that pair)
+     */
+    public record Timed(Forecast forecast, double time, long line, long pairs) {
+    }
+
+    /** The forecasts made before the forecast property's first violation: what a forecast is scored on. */
+    public List<Timed> beforeViolation() {
+        return forecasts.subList(0, forecastsBeforeViolation);
+    }
+
+    /** Whether the forecast property was violated in the run. */
+    public boolean violated() {
+        return outcome.violation() != null;
+    }
+
+    /** The run's warnings, in order (the first is the outcome's; later ones follow a recovery or are a deadline's). */
+    public List<MonitorEvent.Warning> warnings() {
+        return events.stream().filter(MonitorEvent.Warning.class::isInstance).map(MonitorEvent.Warning.class::cast)
+                .toList();
+    }
+
+    /** The forecast right after each pair, in pair order (empty without a forecast). */
+    public List<Forecast> afterPairs() {
+        List<Forecast> out = new ArrayList<>();
+        for (Timed t : forecasts) {
+            if (t.pairs() > out.size()) {
+                out.add(t.forecast()); // the first forecast once a pair came is the one after it
+            }
+        }
+        return List.copyOf(out);
+    }
+
+    /** The run's first event of {@code type}, if any. */
+    public <E extends MonitorEvent> Optional<E> first(Class<E> type) {
+        return events.stream().filter(type::isInstance).map(type::cast).findFirst();
+    }
+}

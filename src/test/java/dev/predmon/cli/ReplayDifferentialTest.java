@@ -1,0 +1,435 @@
+package dev.predmon.cli;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.evaluate.Replay;
+import dev.predmon.evaluate.RunResult;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.learn.HeldOutRun;
+import dev.predmon.model.ModelSet;
+import dev.predmon.model.ModelStore;
+import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.WarningRule;
+import dev.predmon.pipeline.RunLabel;
+import dev.predmon.replay.LogReplay;
+import dev.predmon.replay.ReplayedLog;
+import dev.predmon.replay.ReplayedRun;
+import dev.predmon.support.RealLogs;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
+import java.util.stream.Stream;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * Every path that judges a log judges it alike: {@code learn}'s held-out replay ({@link HeldOutRun#replay}, which
+ * chooses the threshold and the calibration), {@code evaluate}'s {@link Replay}, {@code explain}, {@code classify} and
+ * {@code watch --no-follow --json}, each run in process, against the one replay of the log ({@link LogReplay}). Per
+ * run they must give the same forecasts (probability and time to the violation, as numbers: exactly where a path
+ * hands doubles over, to the printed four decimals where it prints them), the same warnings (line, clause, property,
+ * probability), the same verdict of every property and the same exit code. Watch prints only the forecasts that
+ * changed: those must be, in order, a subsequence of the replay's every forecast.
+ */
+class ReplayDifferentialTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    @TempDir
+    Path tmp;
+
+    @Test
+    void everySampleLogWithTheShippedModels() throws Exception {
+        List<Path> logs = files(Path.of("sample-logs"), ".log");
+        assertEquals(30, logs.size());
+        Paths paths = new Paths(Path.of("models"));
+        assertEquals(List.of(), disagreements(logs, paths));
+        assertTrue(paths.forecasts > 500, "forecasts compared: " + paths.forecasts);
+        assertTrue(paths.warnings > 5, "warnings compared: " + paths.warnings);
+    }
+
+    @Test
+    void everySimulatedNovelty() throws Exception {
+        List<List<String>> novelties = List.of(List.of("--aborts", "1"), List.of("--never-arrives", "450"),
+                List.of("--grasp", "--grasp-failures", "12"), List.of("--late-turn", "15"), List.of("--noise", "0.5"),
+                List.of("--new-location", "garden"), List.of("--no-ticks"), List.of("--slowdown", "1.5"),
+                List.of("--drain-factor", "1.3"), List.of("--runs", "3"), List.of("--tick-period", "0.5"),
+                List.of("--stuck", "20", "--aborts", "1"), List.of("--late-replies", "0.3"),
+                List.of("--abort-on", "station", "--aborts", "2"), List.of("--gap", "3", "--runs", "2"),
+                List.of("--no-ticks", "--runs", "2", "--noise", "0.3"));
+        List<String> scenarios = List.of("direct", "recharge", "depleted");
+        List<Path> logs = new ArrayList<>();
+        for (int n = 0; n < novelties.size(); n++) {
+            String scenario = scenarios.get(n % scenarios.size());
+            Path log = tmp.resolve("n" + n + "-" + scenario + ".log");
+            List<String> args = new ArrayList<>(List.of("simulate", "--scenario", scenario, "--seed",
+                    Integer.toString(900 + n), "--out", log.toString()));
+            args.addAll(novelties.get(n));
+            Cli r = Cli.run(args.toArray(String[]::new));
+            assertEquals(0, r.code(), novelties.get(n) + " " + scenario + ": " + r.err());
+            logs.add(log);
+        }
+        // A noisy run sent to a new place: the known case where learn's offline forecasts once differed from watch's.
+        Path noisy = tmp.resolve("noisy-new-place.log");
+        Cli r = Cli.run("simulate", "--scenario", "recharge", "--seed", "3", "--noise", "0.5", "--new-location",
+                "office", "--out", noisy.toString());
+        assertEquals(0, r.code(), r.err());
+        logs.add(noisy);
+        Paths paths = new Paths(Path.of("models"));
+        assertEquals(List.of(), disagreements(logs, paths));
+        assertTrue(paths.forecasts > 200, "forecasts compared: " + paths.forecasts);
+    }
+
+    @Test
+    void theRealRecordingsWithModelsLearnedOnThem() throws Exception {
+        Assumptions.assumeTrue(Files.isDirectory(RealLogs.DIR), "skipped: no real recordings at "
+                + RealLogs.DIR.toAbsolutePath().normalize() + " (they are not part of this repository)");
+        Path models = tmp.resolve("real-models");
+        Cli learned = Cli.run("learn", "--logs", RealLogs.DIR.toString(), "--abstraction", "scope-fetch", "--models",
+                models.toString());
+        assertEquals(0, learned.code(), learned.err());
+        List<Path> logs = files(RealLogs.DIR, ".txt");
+        assertTrue(logs.size() >= 40, "the 43 recordings: " + logs.size());
+        Paths paths = new Paths(models);
+        assertEquals(List.of(), disagreements(logs, paths));
+        assertTrue(paths.forecasts > 1000, "forecasts compared: " + paths.forecasts);
+    }
+
+    /** The comparison is not blind: one forecast nudged by the last bit of its double is a disagreement. */
+    @Test
+    void aForecastOffByOneUlpIsADisagreement() throws Exception {
+        Path log = Path.of("sample-logs/recharge/recharge-3.log");
+        Paths paths = new Paths(Path.of("models"));
+        ReplayedLog reference = paths.reference(log);
+        List<Double> replayed = reference.runs().get(0).beforeViolation().stream()
+                .map(t -> t.forecast().probability()).toList();
+        List<Double> nudged = new ArrayList<>(replayed);
+        nudged.set(nudged.size() / 2, Math.nextUp(nudged.get(nudged.size() / 2)));
+        List<String> differ = new ArrayList<>();
+        same(differ, "learn", log + " run 0 probabilities", replayed, nudged);
+        assertEquals(1, differ.size(), differ.toString());
+        assertTrue(differ.get(0).contains("item " + nudged.size() / 2), differ.get(0));
+        List<String> none = new ArrayList<>();
+        same(none, "learn", log + " run 0 probabilities", replayed, List.copyOf(replayed));
+        assertEquals(List.of(), none);
+    }
+
+    /** The models of one directory, as every command loads them, and counts of what was compared. */
+    private static final class Paths {
+        final Path dir;
+        final Abstraction abstraction;
+        final ModelSet models;
+        final int confirm;
+        final WarningRule rule;
+        int forecasts;
+        int warnings;
+
+        Paths(Path dir) throws Exception {
+            this.dir = dir;
+            Abstraction stored = AbstractionFiles.load(ModelStore.storedAbstraction(dir).orElseThrow());
+            this.models = ModelStore.read(dir, stored);
+            this.abstraction = models.tune(stored);
+            this.confirm = abstraction.confirm();
+            this.rule = PredictiveMonitor.defaultRule(models);
+        }
+
+        ReplayedLog reference(Path log) throws IOException {
+            return LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { });
+        }
+    }
+
+    private static List<String> disagreements(List<Path> logs, Paths paths) throws Exception {
+        List<String> differ = new ArrayList<>();
+        for (Path log : logs) {
+            ReplayedLog reference = paths.reference(log);
+            int code = ExitCodes.ofMonitor(reference.monitor());
+            for (ReplayedRun run : reference.runs()) {
+                paths.forecasts += run.forecasts().size();
+                paths.warnings += run.warnings().size();
+            }
+            watch(differ, log, paths, reference, code);
+            evaluate(differ, log, paths, reference);
+            learn(differ, log, paths, reference);
+            explain(differ, log, paths, reference, code);
+            classify(differ, log, paths, reference, code);
+        }
+        return differ;
+    }
+
+    /** {@code watch --no-follow --json}: the forecasts it prints, its warnings, its verdicts and its exit code. */
+    private static void watch(List<String> differ, Path log, Paths paths, ReplayedLog reference, int code)
+            throws IOException {
+        Cli w = Cli.run("watch", "--no-follow", "--json", "--log", log.toString(), "--models", paths.dir.toString());
+        same(differ, "watch", log + " exit code", code, w.code());
+        List<JsonNode> events = w.jsonLines();
+        for (ReplayedRun run : reference.runs()) {
+            String where = log + " run " + run.run();
+            List<MonitorEvent.ForecastChanged> told = run.events().stream()
+                    .filter(MonitorEvent.ForecastChanged.class::isInstance).map(MonitorEvent.ForecastChanged.class::cast)
+                    .toList();
+            // What watch tells is a subsequence of every forecast the replay made, record for record.
+            Iterator<ReplayedRun.Timed> every = run.forecasts().iterator();
+            for (MonitorEvent.ForecastChanged c : told) {
+                boolean found = false;
+                while (!found && every.hasNext()) {
+                    ReplayedRun.Timed t = every.next();
+                    found = t.line() == c.line() && t.forecast().equals(c.forecast());
+                }
+                if (!found) {
+                    differ.add("replay: " + where + " forecast told at line " + c.line() + " is not one it made");
+                }
+            }
+            same(differ, "watch", where + " forecasts (line, probability, time to violation)",
+                    told.stream().map(c -> printed(c.line(), c.forecast())).toList(),
+                    ofRun(events, "forecast", run.run()).stream().map(e -> printed(e.get("line").asLong(),
+                            e.get("forecast"))).toList());
+            same(differ, "watch", where + " warnings (line, clause, property, probability)",
+                    run.warnings().stream().map(x -> warning(x.line(), x.clause().id(), x.property(),
+                            x.forecast() == null ? null : round(x.forecast().probability()))).toList(),
+                    ofRun(events, "warning", run.run()).stream().map(e -> warning(e.get("line").asLong(),
+                            e.get("clause").asText(), text(e.get("property")), e.get("forecast").isNull() ? null
+                                    : e.get("forecast").get("probability").asDouble())).toList());
+            same(differ, "watch", where + " violations (line, property)",
+                    run.events().stream().filter(MonitorEvent.Violation.class::isInstance)
+                            .map(MonitorEvent.Violation.class::cast).map(v -> v.line() + " " + v.property()).toList(),
+                    ofRun(events, "violation", run.run()).stream().map(e -> e.get("line").asLong() + " "
+                            + e.get("property").asText()).toList());
+        }
+        JsonNode end = events.get(events.size() - 1);
+        if (!end.get("event").asText().equals("end")) {
+            differ.add("watch: " + log + " ends with no end event");
+            return;
+        }
+        List<String> verdicts = new ArrayList<>();
+        end.get("runs").forEach(r -> r.get("properties").forEach(p -> verdicts.add(r.get("run").asInt() + " "
+                + p.get("property").asText() + " " + p.get("verdict").asText())));
+        same(differ, "watch", log + " verdicts (run, property, verdict)", verdicts(reference), verdicts);
+    }
+
+    /** {@code evaluate}'s replay: each run's forecasts before the violation, its warning and its verdicts. */
+    private static void evaluate(List<String> differ, Path log, Paths paths, ReplayedLog reference)
+            throws IOException {
+        List<RunResult> results = Replay.run(log, "?", false, RunLabel.ALL, -1, paths.models, paths.abstraction, 0,
+                paths.confirm, paths.rule);
+        if (results.size() != reference.runs().size()) {
+            differ.add("evaluate: " + log + " " + results.size() + " runs, the replay " + reference.runs().size());
+            return;
+        }
+        for (int i = 0; i < results.size(); i++) {
+            ReplayedRun run = reference.runs().get(i);
+            RunResult r = results.get(i);
+            String where = log + " run " + i;
+            if (r.forecast() != null) {
+                same(differ, "evaluate", where + " probabilities", probabilities(run), r.forecast().probabilities());
+                same(differ, "evaluate", where + " forecast times", times(run), r.forecast().times());
+            }
+            MonitorEvent.Warning w = run.outcome().warning();
+            same(differ, "evaluate", where + " warning (line, time)", w == null ? null : w.line() + " " + w.time(),
+                    r.warningLine() == null ? null : r.warningLine() + " " + r.warningTime());
+            MonitorEvent.Violation v = run.outcome().violation();
+            same(differ, "evaluate", where + " violation", v == null ? null : v.time(), r.violationTime());
+            same(differ, "evaluate", where + " other properties (property, first warning, first violation)",
+                    others(run, paths.abstraction), r.properties().stream().map(p -> p.property() + " " + p.warning()
+                            + " " + p.violation()).toList());
+        }
+    }
+
+    /** {@code learn}'s held-out replay, given the same models: the forecasts it scores and when the rule warned. */
+    private static void learn(List<String> differ, Path log, Paths paths, ReplayedLog reference) throws IOException {
+        if (paths.models.forecast() == null) {
+            return;
+        }
+        List<HeldOutRun> held = HeldOutRun.replay(log, RunLabel.ALL, paths.models, paths.abstraction, paths.confirm,
+                paths.rule);
+        List<ReplayedRun> scored = reference.runs().stream().filter(r -> !r.pairs().isEmpty()).toList();
+        if (held.size() != scored.size()) {
+            differ.add("learn: " + log + " " + held.size() + " runs, the replay " + scored.size());
+            return;
+        }
+        for (int i = 0; i < held.size(); i++) {
+            ReplayedRun run = scored.get(i);
+            HeldOutRun h = held.get(i);
+            String where = log + " run " + run.run();
+            same(differ, "learn", where + " probabilities", probabilities(run), h.probabilities());
+            same(differ, "learn", where + " forecast times", times(run), h.times());
+            MonitorEvent.Warning w = run.outcome().warning();
+            MonitorEvent.Violation v = run.outcome().violation();
+            double warned = w != null && (v == null || w.line() < v.line()) ? w.time() : Double.NaN;
+            same(differ, "learn", where + " warned at", warned, h.warnedAt());
+            same(differ, "learn", where + " violated", run.violated(), h.violated());
+        }
+    }
+
+    /** {@code explain --json}: the forecast after each pair, the forecasts scored, the warning and the exit code. */
+    private static void explain(List<String> differ, Path log, Paths paths, ReplayedLog reference, int code)
+            throws IOException {
+        Cli x = Cli.run("explain", "--json", "--log", log.toString(), "--models", paths.dir.toString());
+        same(differ, "explain", log + " exit code", code, x.code());
+        if (x.code() == ExitCodes.BAD_INPUT) {
+            return;
+        }
+        JsonNode doc = JSON.readTree(x.out());
+        List<JsonNode> runs = new ArrayList<>();
+        if (doc.has("runs")) {
+            doc.get("runs").forEach(runs::add);
+        } else {
+            runs.add(doc);
+        }
+        if (runs.size() != reference.runs().size()) {
+            differ.add("explain: " + log + " " + runs.size() + " runs, the replay " + reference.runs().size());
+            return;
+        }
+        for (int i = 0; i < runs.size(); i++) {
+            ReplayedRun run = reference.runs().get(i);
+            JsonNode e = runs.get(i);
+            String where = log + " run " + i;
+            List<String> after = new ArrayList<>();
+            e.get("steps").forEach(s -> after.add(s.get("forecast").isNull() ? null
+                    : printed(s.get("line").asLong(), s.get("forecast"))));
+            List<Forecast> afterPairs = run.afterPairs();
+            List<String> expected = new ArrayList<>();
+            for (int p = 0; p < run.pairs().size(); p++) {
+                expected.add(p < afterPairs.size() ? printed(run.pairs().get(p).pair().reply().line(),
+                        afterPairs.get(p)) : null);
+            }
+            same(differ, "explain", where + " forecast after each pair", expected, after);
+            JsonNode forecast = e.get("run").get("forecast");
+            if (forecast != null && !forecast.isNull()) {
+                List<Double> ps = new ArrayList<>();
+                forecast.get("probabilities").forEach(p -> ps.add(p.asDouble()));
+                same(differ, "explain", where + " probabilities", probabilities(run), ps);
+            }
+            MonitorEvent.Warning w = run.outcome().warning();
+            same(differ, "explain", where + " warning", w == null ? null : w.reason(), text(e.get("warning")));
+            JsonNode wl = e.get("run").get("warningLine");
+            same(differ, "explain", where + " warning line", w == null ? null : w.line(),
+                    wl == null || wl.isNull() ? null : wl.asLong());
+        }
+    }
+
+    /** {@code classify --json}: watch's verdict at the end of the file, and whether each run violated. */
+    private static void classify(List<String> differ, Path log, Paths paths, ReplayedLog reference, int code)
+            throws IOException {
+        Cli c = Cli.run("classify", "--json", "--log", log.toString(), "--models", paths.dir.toString());
+        same(differ, "classify", log + " exit code", code, c.code());
+        if (c.code() == ExitCodes.BAD_INPUT) {
+            return;
+        }
+        JsonNode doc = JSON.readTree(c.out());
+        List<JsonNode> runs = new ArrayList<>();
+        if (doc.has("runs")) {
+            doc.get("runs").forEach(runs::add);
+        } else {
+            runs.add(doc);
+        }
+        List<ReplayedRun> judged = reference.runs().size() > 1
+                ? reference.runs().stream().filter(r -> !r.pairs().isEmpty()).toList() : reference.runs();
+        same(differ, "classify", log + " violated per run", judged.stream().map(ReplayedRun::violated).toList(),
+                runs.stream().map(r -> r.get("violated").asBoolean()).toList());
+        for (JsonNode r : runs) {
+            same(differ, "classify", log + " watch's exit", code, r.get("watchExit").asInt());
+        }
+    }
+
+    /** Adds what differs between what the replay gave and what {@code path} gave, the first difference named. */
+    static void same(List<String> differ, String path, String what, Object replayed, Object other) {
+        if (Objects.equals(replayed, other)) {
+            return;
+        }
+        String detail = "";
+        if (replayed instanceof List<?> a && other instanceof List<?> b) {
+            int i = 0;
+            while (i < Math.min(a.size(), b.size()) && Objects.equals(a.get(i), b.get(i))) {
+                i++;
+            }
+            detail = i < Math.min(a.size(), b.size()) ? ": item " + i + " is " + a.get(i) + " in the replay, "
+                    + b.get(i) + " in " + path : ": " + a.size() + " in the replay, " + b.size() + " in " + path;
+        } else {
+            detail = ": " + replayed + " in the replay, " + other + " in " + path;
+        }
+        differ.add(path + ": " + what + detail);
+    }
+
+    private static List<Double> probabilities(ReplayedRun run) {
+        return run.beforeViolation().stream().map(t -> t.forecast().probability()).toList();
+    }
+
+    private static List<Double> times(ReplayedRun run) {
+        return run.beforeViolation().stream().map(ReplayedRun.Timed::time).toList();
+    }
+
+    private static List<String> verdicts(ReplayedLog reference) {
+        List<String> out = new ArrayList<>();
+        for (ReplayedRun run : reference.runs()) {
+            run.outcome().properties().forEach(p -> out.add(run.run() + " " + p.property().id() + " "
+                    + p.verdict().id()));
+        }
+        return out;
+    }
+
+    /** Every property but the forecast's, with its first warning and violation in the run, from the events. */
+    private static List<String> others(ReplayedRun run, Abstraction abstraction) {
+        String forecast = abstraction.safety().map(b -> b.id()).orElse(null);
+        List<String> out = new ArrayList<>();
+        abstraction.properties().stream().filter(p -> !p.id().equals(forecast)).forEach(p -> {
+            Double warning = run.warnings().stream().filter(w -> p.id().equals(w.property())).findFirst()
+                    .map(MonitorEvent.Warning::time).orElse(null);
+            Double violation = run.events().stream().filter(MonitorEvent.Violation.class::isInstance)
+                    .map(MonitorEvent.Violation.class::cast).filter(v -> p.id().equals(v.property())).findFirst()
+                    .map(MonitorEvent.Violation::time).orElse(null);
+            out.add(p.id() + " " + warning + " " + violation);
+        });
+        return out;
+    }
+
+    private static String printed(long line, Forecast f) {
+        return String.format(Locale.ROOT, "%d %s %s", line, round(f.probability()),
+                f.timeToViolation() == null ? null : round(f.timeToViolation()));
+    }
+
+    private static String printed(long line, JsonNode f) {
+        JsonNode t = f.get("timeToViolation");
+        return String.format(Locale.ROOT, "%d %s %s", line, f.get("probability").asDouble(),
+                t.isNull() ? null : t.asDouble());
+    }
+
+    private static String warning(long line, String clause, String property, Double probability) {
+        return line + " " + clause + " " + property + " " + probability;
+    }
+
+    /** As watch's JSON writes a forecast's numbers: to four decimals. */
+    private static double round(double x) {
+        return Math.round(x * 1e4) / 1e4;
+    }
+
+    private static String text(JsonNode n) {
+        return n == null || n.isNull() ? null : n.asText();
+    }
+
+    private static List<JsonNode> ofRun(List<JsonNode> events, String kind, int run) {
+        return events.stream().filter(e -> e.get("event").asText().equals(kind) && e.has("run")
+                && e.get("run").asInt() == run).toList();
+    }
+
+    private static List<Path> files(Path dir, String suffix) throws IOException {
+        try (Stream<Path> s = Files.walk(dir)) {
+            List<Path> files = s.filter(p -> p.toString().endsWith(suffix)).sorted().toList();
+            assertFalse(files.isEmpty(), dir + " holds no " + suffix);
+            return files;
+        }
+    }
+}

@@ -1,0 +1,81 @@
+package dev.predmon.forecast;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** {@code forecast.json} with the deadline rules and scorecards, and without them as older files are. */
+class ForecastFileDeadlineTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final String ID = "navigation-in-time";
+    private static final String LEARN_ID = "sha256:0123456789abcdef0123456789abcdef";
+    private static final Survival NAVIGATIONS = new Survival(new double[] {2, 3, 3, 4}, new double[] {12});
+    private static final DeadlineRule LEARNED = new DeadlineRule(0.62, "0.62 by cross-validation on 5 held-out "
+            + "obligations: warned 1 of 1 violations, 0 false alarm(s) in 4", true, new Calibration(1.4, -0.3, 5));
+    private static final Scorecard CARD = new Scorecard("a navigation ends in 10 ticks", 5, 5, 1, 1, 0, 6, "ticks",
+            0.05, 0.16, Scorecard.OBLIGATIONS);
+
+    private static ForecastModel model(Map<String, DeadlineRule> rules, List<Scorecard> cards) {
+        return new ForecastModel(ForecastModel.FORMAT, "s", 20, 5, 1, new Lows(new double[] {30}, new double[] {21}),
+                0.5, "default", false, Map.of(), List.of("start"), Calibration.IDENTITY, cards, Map.of(ID, NAVIGATIONS),
+                rules);
+    }
+
+    @Test
+    void theLearnedRuleAndItsScorecardRoundTrip() throws Exception {
+        ForecastModel m = model(Map.of(ID, LEARNED), List.of(CARD));
+        String text = ForecastFile.write(m, LEARN_ID);
+        ForecastModel back = ForecastFile.read(text, LEARN_ID);
+        assertEquals(m, back);
+        assertEquals(LEARNED, back.deadlineRule(ID));
+        assertEquals(CARD, back.scorecards().get(0));
+        JsonNode stored = JSON.readTree(text).get("obligations").get(ID);
+        assertEquals(0.62, stored.get("threshold").asDouble());
+        assertTrue(stored.get("validated").asBoolean());
+        assertEquals(1.4, stored.get("calibration").get("slope").asDouble());
+        assertEquals("obligations", JSON.readTree(text).get("scorecards").get(0).get("counted").asText());
+        // the learn id still ties the file to its models
+        IllegalArgumentException other = assertThrows(IllegalArgumentException.class,
+                () -> ForecastFile.read(text, "sha256:fedcba"));
+        assertTrue(other.getMessage().startsWith("learned with other models"), other.getMessage());
+    }
+
+    /** A file written before deadline rules existed has none: every deadline warns by the default rule. */
+    @Test
+    void aFileWithoutThemReadsWithTheDefaultRule() throws Exception {
+        ObjectNode old = (ObjectNode) JSON.readTree(ForecastFile.write(model(Map.of(ID, LEARNED), List.of(CARD)),
+                LEARN_ID));
+        ObjectNode navigation = (ObjectNode) old.get("obligations").get(ID);
+        navigation.remove(List.of("threshold", "note", "validated", "calibration"));
+        ((ObjectNode) old.get("scorecards").get(0)).remove("counted");
+        ((ObjectNode) old.get("scorecards").get(0)).put("property", "battery");
+        ((ObjectNode) old.get("scorecards").get(0)).put("unit", "s");
+        ForecastModel back = ForecastFile.read(JSON.writeValueAsString(old), LEARN_ID);
+        assertEquals(DeadlineRule.DEFAULT, back.deadlineRule(ID));
+        assertEquals(NAVIGATIONS, back.obligations().get(ID));
+        assertEquals(Scorecard.RUNS, back.scorecards().get(0).counted());
+        String rewritten = ForecastFile.write(model(Map.of(), List.of()), LEARN_ID);
+        assertFalse(JSON.readTree(rewritten).get("obligations").get(ID).has("threshold"), rewritten);
+        assertEquals(model(Map.of(), List.of()), ForecastFile.read(rewritten, LEARN_ID));
+    }
+
+    @Test
+    void aThresholdThatIsNotAProbabilityIsRefusedWhereItIs() throws Exception {
+        ObjectNode f = (ObjectNode) JSON.readTree(ForecastFile.write(model(Map.of(ID, LEARNED), List.of()), LEARN_ID));
+        ((ObjectNode) f.get("obligations").get(ID)).put("threshold", 1.5);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ForecastFile.read(JSON.writeValueAsString(f), LEARN_ID));
+        assertEquals("'obligations/navigation-in-time/threshold': 1.5 is not a probability (from 0 to 1)",
+                e.getMessage());
+    }
+}
