@@ -9,7 +9,7 @@ import picocli.CommandLine.Spec;
 import java.io.PrintWriter;
 import java.time.Duration;
 
-/** {@code --on-warning CMD}, {@code --on-violation CMD} and their timeout: the warning delivered to the robot. */
+/** {@code --on-warning CMD}, {@code --on-violation CMD}, {@code --on-recovered CMD} and their timeout: the warning delivered to the robot. */
 final class HookOptions {
 
     @Spec(Spec.Target.MIXEE)
@@ -26,6 +26,12 @@ final class HookOptions {
     @Option(names = "--on-violation", paramLabel = "CMD",
             description = "Run CMD for each violation of the property, as --on-warning does for each warning.")
     String onViolation;
+
+    @Option(names = "--on-recovered", paramLabel = "CMD",
+            description = "Run CMD for each recovery (a warning's or a violation's cause ended; PREDMON_PROPERTY names "
+                    + "the property), as --on-warning does for each warning: an alarm raised by the other hooks ends "
+                    + "when its cause does.")
+    String onRecovered;
 
     private double timeoutSeconds = 10;
 
@@ -47,10 +53,10 @@ final class HookOptions {
      *              rounded down in the hooks' environment, as on the page
      */
     CommandHooks open(PrintWriter err, double bound) {
-        if (onWarning == null && onViolation == null) {
+        if (onWarning == null && onViolation == null && onRecovered == null) {
             return null;
         }
-        return new CommandHooks(onWarning, onViolation, Duration.ofMillis(Math.round(timeoutSeconds * 1000)), bound,
+        return new CommandHooks(onWarning, onViolation, onRecovered, Duration.ofMillis(Math.round(timeoutSeconds * 1000)), bound,
                 line -> {
             err.println("predmon: " + line);
             err.flush();

@@ -50,7 +50,7 @@ public final class EventJson {
                     ForecastJson.of(w.forecast()), DeadlineJson.of(w.deadline()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             return new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
-                    ForecastJson.of(f.forecast()), f.property());
+                    ForecastJson.of(f.forecast()), f.property(), DeadlineJson.of(f.deadline()));
         } else if (e instanceof MonitorEvent.Violation v) {
             return new ViolationJson("violation", v.time(), v.clock().unit(), v.line(), v.run(), v.property(),
                     v.name(), v.value(), v.forecast() ? v.value() : null, v.before(), v.what());
@@ -64,8 +64,8 @@ public final class EventJson {
         } else if (e instanceof MonitorEvent.Restarted r) {
             return new RestartedJson("restarted", r.reason());
         } else if (e instanceof MonitorEvent.Recovered r) {
-            return new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(), r.value(),
-                    r.reason());
+            return new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(),
+                    Double.isNaN(r.value()) ? null : r.value(), r.reason(), r.property());
         } else if (e instanceof MonitorEvent.UnderWay u) {
             return new UnderWayJson("under-way", u.time(), u.clock().unit(), u.line(), u.run(), u.by(), u.underWay());
         }
@@ -129,15 +129,17 @@ public final class EventJson {
         }
     }
 
-    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, double battery,
-                         String reason) {
+    /** A recovery: {@code battery} the property's value (null for a property without one), {@code property} its id. */
+    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, Double battery,
+                         String reason, String property) {
     }
 
     record UnderWayJson(String event, double time, String unit, long line, int run, String by, boolean underWay) {
     }
 
     record ForecastEventJson(String event, double time, String unit, long line, int run, ForecastJson forecast,
-                             String property) {
+                             String property,
+                             DeadlineJson deadline) {
     }
 
     /**

@@ -19,7 +19,8 @@ import java.util.function.Consumer;
 
 /**
  * Delivers warnings and violations to the robot: {@code --on-warning CMD} and {@code --on-violation CMD} run a shell
- * command for each such event, with the event's JSON (one line) on its standard input and its main fields in
+ * command for each such event, and {@code --on-recovered CMD} for each recovery, so that an alarm raised on the robot
+ * ends when its cause ends, with the event's JSON (one line) on its standard input and its main fields in
  * environment variables ({@link HookEnvironment}). This is the thesis's future work made possible: the deliberation
  * layer hears of the predicted failure while a recovery action can still help.
  *
@@ -36,6 +37,7 @@ public final class CommandHooks implements AutoCloseable {
 
     private final String onWarning;
     private final String onViolation;
+    private final String onRecovered;
     private final Duration timeout;
     private final Consumer<String> report;
     private final double bound;
@@ -56,11 +58,21 @@ public final class CommandHooks implements AutoCloseable {
      * the page shows them ({@link HookEnvironment}).
      */
     public CommandHooks(String onWarning, String onViolation, Duration timeout, double bound, Consumer<String> report) {
+        this(onWarning, onViolation, null, timeout, bound, report);
+    }
+
+    /**
+     * As above, with {@code onRecovered} run for each recovery (a warning's or a violation's cause ended: the
+     * property's alarm is over), or null.
+     */
+    public CommandHooks(String onWarning, String onViolation, String onRecovered, Duration timeout, double bound,
+                        Consumer<String> report) {
         if (timeout.isNegative() || timeout.isZero()) {
             throw new IllegalArgumentException("the hook timeout must be positive, got " + timeout);
         }
         this.onWarning = onWarning;
         this.onViolation = onViolation;
+        this.onRecovered = onRecovered;
         this.timeout = timeout;
         this.report = report;
         this.bound = bound;
@@ -79,7 +91,8 @@ public final class CommandHooks implements AutoCloseable {
         String log = sent.log();
         MonitorEvent event = sent.event();
         String command = event instanceof MonitorEvent.Warning ? onWarning
-                : event instanceof MonitorEvent.Violation ? onViolation : null;
+                : event instanceof MonitorEvent.Violation ? onViolation
+                : event instanceof MonitorEvent.Recovered ? onRecovered : null;
         if (command == null) {
             return;
         }
@@ -125,12 +138,15 @@ public final class CommandHooks implements AutoCloseable {
     }
 
     private static String option(MonitorEvent e) {
-        return e instanceof MonitorEvent.Warning ? "--on-warning" : "--on-violation";
+        return e instanceof MonitorEvent.Warning ? "--on-warning" : e instanceof MonitorEvent.Recovered
+                ? "--on-recovered" : "--on-violation";
     }
 
     private static String describe(String log, MonitorEvent e) {
-        long line = e instanceof MonitorEvent.Warning w ? w.line() : ((MonitorEvent.Violation) e).line();
-        return (e instanceof MonitorEvent.Warning ? "warning" : "violation") + " of " + log + " line " + line;
+        long line = e instanceof MonitorEvent.Warning w ? w.line() : e instanceof MonitorEvent.Recovered r ? r.line()
+                : ((MonitorEvent.Violation) e).line();
+        return (e instanceof MonitorEvent.Warning ? "warning" : e instanceof MonitorEvent.Recovered ? "recovery"
+                : "violation") + " of " + log + " line " + line;
     }
 
     /** The shell that runs a command line: {@code sh -c} (or {@code cmd /c} on Windows). */

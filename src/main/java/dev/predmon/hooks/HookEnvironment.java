@@ -20,13 +20,15 @@ public final class HookEnvironment {
     }
 
     /**
-     * PREDMON_EVENT ({@code warning} or {@code violation}), PREDMON_LOG, PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
+     * PREDMON_EVENT ({@code warning}, {@code violation} or {@code recovered}), PREDMON_LOG, PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
      * ({@code s} or {@code ticks}), PREDMON_LINE, PREDMON_PROPERTY (the property's id), PREDMON_VALUE (its last
      * value, two decimals) and PREDMON_BATTERY (the same, the older name); for a warning PREDMON_SCENARIO (the faulty
      * scenario the run is most like), PREDMON_SCENARIOS (the faulty scenarios still matching, comma-separated),
      * PREDMON_PROBABILITY (two decimals; for a deadline's warning its probability of a miss, empty past every training
  * obligation) and PREDMON_TIME_TO_VIOLATION (in PREDMON_UNIT, as the page rounds it; empty for a deadline); for
-     * a violation PREDMON_BEFORE (the value before the violating one).
+     * a violation PREDMON_BEFORE (the value before the violating one); for a recovery ({@code recovered}) PREDMON_CAUSE
+     * ({@code forecast}, {@code action}, {@code property}, or {@code discharged} for a deadline) and PREDMON_PROPERTY
+     * the property whose alarm ended.
      *
      * @param bound the property's bound, below which it is violated (NaN when not known): a value below it is rounded
      *              down, as on the page, so that a violating 19.995 never reads as the bound itself
@@ -44,6 +46,10 @@ public final class HookEnvironment {
                     ? fixed(w.deadline().probability(), 2, RoundingMode.HALF_UP) : "");
             env.put("PREDMON_TIME_TO_VIOLATION", f == null || f.timeToViolation() == null ? ""
                     : span(f.timeToViolation(), w.clock().unit()));
+        } else if (event instanceof MonitorEvent.Recovered r) {
+            put(env, "recovered", log, r.run(), r.time(), r.clock().unit(), r.line(), r.property(),
+                    value(Double.isNaN(r.value()) ? null : r.value(), bound));
+            env.put("PREDMON_CAUSE", r.cause());
         } else if (event instanceof MonitorEvent.Violation v) {
             put(env, "violation", log, v.run(), v.time(), v.clock().unit(), v.line(), v.property(),
                     value(v.value(), bound));

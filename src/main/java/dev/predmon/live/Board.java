@@ -11,6 +11,7 @@ import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -39,6 +40,7 @@ public final class Board {
 
     private final List<LearnedModel> models;
     private final Optional<Bound> safety;
+    private final List<Property> properties;
     private final List<Scorecard> scorecards;
     private final long staleMillis;
     private final LongSupplier clock;
@@ -51,8 +53,8 @@ public final class Board {
 
     /** @param staleAfter a log that has not grown for this long is marked STALE (or its run ended, see Tile) */
     public Board(ModelSet models, Abstraction abstraction, Duration staleAfter, RobotNames names) {
-        this(models.models(), abstraction.safety(), staleAfter, System::currentTimeMillis, names,
-                models.forecast() == null ? List.of() : models.forecast().scorecards());
+        this(models.models(), abstraction.safety(), abstraction.properties(), staleAfter, System::currentTimeMillis,
+                names, models.forecast() == null ? List.of() : models.forecast().scorecards());
         warnsAt(PredictiveMonitor.defaultRule(models), models);
     }
 
@@ -75,19 +77,28 @@ public final class Board {
 
     Board(List<LearnedModel> models, Optional<Bound> safety, Duration staleAfter, LongSupplier clock,
           RobotNames names, List<Scorecard> scorecards) {
+        this(models, safety, safety.<List<Property>>map(List::of).orElse(List.of()), staleAfter, clock, names,
+                scorecards);
+    }
+
+    /** @param properties every property of the abstraction, each with its light on every tile */
+    Board(List<LearnedModel> models, Optional<Bound> safety, List<Property> properties, Duration staleAfter,
+          LongSupplier clock, RobotNames names, List<Scorecard> scorecards) {
         this.models = List.copyOf(models);
         this.safety = safety;
+        this.properties = List.copyOf(properties);
         this.scorecards = List.copyOf(scorecards);
         this.staleMillis = staleAfter.toMillis();
         this.clock = clock;
         this.names = names;
-        this.metrics = new Metrics(() -> status(null), safety.map(Bound::name).orElse(""));
+        this.metrics = new Metrics(() -> status(null), safety.map(Bound::name).orElse(""),
+                this.properties.stream().map(Property::id).toList());
     }
 
     /** The tile of {@code log}, made on first use. */
     public synchronized Tile tile(String log) {
         return tiles.computeIfAbsent(log, l -> {
-            Tile t = new Tile(l, names.of(l), models, safety, clock.getAsLong());
+            Tile t = new Tile(l, names.of(l), models, safety, properties, clock.getAsLong());
             metrics.added(t);
             return t;
         });
@@ -128,10 +139,16 @@ public final class Board {
         long now = clock.getAsLong();
         String action = safety.map(Bound::action).orElse(null);
         Map<Tile, String> shown = shownNames();
+        String property = safety.map(Bound::name).orElse(null);
+        Boolean skill = scorecards.stream().filter(c -> c.property().equals(property)).findFirst()
+                .map(Scorecard::skill).orElse(null);
+        Map<String, Boolean> skills = new HashMap<>(); // every scorecard's, by the property's name
+        scorecards.forEach(c -> skills.putIfAbsent(c.property(), c.skill()));
         List<ObjectNode> snapshots = new ArrayList<>();
         for (Tile t : all) {
             String name = shown.getOrDefault(t, t.name());
-            snapshots.add(t.snapshot(now, staleMillis, new Tile.Shown(name, action, warnsAt, !t.empty() || exists(t))));
+            snapshots.add(t.snapshot(now, staleMillis, new Tile.Shown(name, action, warnsAt, !t.empty() || exists(t),
+                    skill, skills)));
         }
         snapshots.sort(Comparator.comparingInt(Board::rank).thenComparing(s -> s.get("name").asText())
                 .thenComparing(s -> s.get("log").asText()));
@@ -171,10 +188,17 @@ public final class Board {
         }
     }
 
-    /** Where a tile sorts: by its state, a log quiet mid-run with the unknown ones (nobody knows what it does now). */
+    /**
+     * Where a tile sorts: by its state, a log quiet mid-run with the unknown ones (nobody knows what it does now), and
+     * a tile one of whose other properties is violated or warned with the violations or the warnings.
+     */
     static int rank(ObjectNode tile) {
         int r = ORDER.indexOf(tile.get("state").asText());
-        return tile.get("stale").asBoolean() && r > ORDER.indexOf("unknown") ? ORDER.indexOf("unknown") : r;
+        r = tile.get("stale").asBoolean() && r > ORDER.indexOf("unknown") ? ORDER.indexOf("unknown") : r;
+        String worst = tile.path("worst").path("state").asText("");
+        int w = worst.equals("violated") ? ORDER.indexOf("violation") : worst.equals("warning")
+                ? ORDER.indexOf("warning") : r;
+        return Math.min(r, w);
     }
 
     /** How many pages are connected to {@code /events} now. */

@@ -31,6 +31,17 @@ import java.util.function.Supplier;
  *   <li>{@code predmon_warnings_total}, {@code predmon_violations_total}: counted since watch started, over every
  *       run and rotation of the log.</li>
  * </ul>
+ * And per property of the abstraction, each labelled with its id ({@code property="no-abort"}):
+ * <ul>
+ *   <li>{@code predmon_property_state{state=...}}: 1 for its light's state (holds, pending, warning, unknown,
+ *       violated), 0 for each other one;</li>
+ *   <li>{@code predmon_property_probability}: its latest forecast's probability of a violation (of a miss, for a
+ *       deadline), absent without one;</li>
+ *   <li>{@code predmon_property_time_left{unit=...}}: a pending deadline's time left, in its unit (ticks, seconds,
+ *       occurrences);</li>
+ *   <li>{@code predmon_property_warnings_total}, {@code predmon_property_violations_total}: its warnings and
+ *       violations since watch started.</li>
+ * </ul>
  * The gauges are read from the tiles at each scrape, as {@code /status} gives them, so that {@code /metrics} never
  * says other than the page; the counters count the events as they come. A gauge with nothing to say (no forecast
  * yet, no reading) is left out rather than given a made-up value.
@@ -48,6 +59,10 @@ final class Metrics {
     private final String property;
     private final Counter warnings;
     private final Counter violations;
+    private final Counter propertyWarnings;
+    private final Counter propertyViolations;
+    /** The ids of the abstraction's properties, whose counters start at 0 with each tile. */
+    private final List<String> properties;
     /** The tiles of the scrape under way, as {@code /status} gives them; read by the gauges' callbacks. */
     private List<JsonNode> tiles = List.of();
 
@@ -56,8 +71,14 @@ final class Metrics {
      * @param property the property's name, the {@code property} label ("" where the abstraction has none)
      */
     Metrics(Supplier<ObjectNode> status, String property) {
+        this(status, property, List.of());
+    }
+
+    /** As above, with the ids of every property of the abstraction. */
+    Metrics(Supplier<ObjectNode> status, String property, List<String> properties) {
         this.status = status;
         this.property = property;
+        this.properties = List.copyOf(properties);
         List<String> states = new ArrayList<>();
         for (TileState s : TileState.values()) {
             states.add(s.id());
@@ -96,6 +117,39 @@ final class Metrics {
                         cb.call(t.get("battery").asDouble(), labels(t));
                     }
                 }));
+        List<String> lights = new ArrayList<>();
+        for (PropertyLights.Light l : PropertyLights.Light.values()) {
+            lights.add(l.id);
+        }
+        propertyGauge("predmon_property_state", "Each property's light: 1 for its state, 0 for the others ("
+                + String.join(", ", lights) + ")", (cb, t, p) -> {
+                    String now = p.get("state").asText();
+                    for (String l : lights) {
+                        cb.call(l.equals(now) ? 1 : 0, t.get("log").asText(), t.get("name").asText(),
+                                p.get("property").asText(), l);
+                    }
+                }, "state");
+        propertyGauge("predmon_property_probability", "Each property's latest forecast: the probability of a violation"
+                + " (of a missed deadline for a bounded response), 0 to 1", (cb, t, p) -> {
+                    if (number(p.get("forecast"), "probability")) {
+                        cb.call(p.get("forecast").get("probability").asDouble(), t.get("log").asText(),
+                                t.get("name").asText(), p.get("property").asText());
+                    }
+                });
+        propertyGauge("predmon_property_time_left", "A pending bounded response's time left before its deadline, in "
+                + "the unit of the label", (cb, t, p) -> {
+                    if (number(p.get("forecast"), "timeLeft")) {
+                        cb.call(p.get("forecast").get("timeLeft").asDouble(), t.get("log").asText(),
+                                t.get("name").asText(), p.get("property").asText(),
+                                p.get("forecast").get("unit").asText());
+                    }
+                }, "unit");
+        propertyWarnings = (Counter) Counter.builder().name("predmon_property_warnings_total").labelNames(LABELS)
+                .help("Each property's warnings since watch started, over every run of the log").withoutExemplars()
+                .register(registry);
+        propertyViolations = (Counter) Counter.builder().name("predmon_property_violations_total").labelNames(LABELS)
+                .help("Each property's violations since watch started, over every run of the log").withoutExemplars()
+                .register(registry);
         warnings = (Counter) Counter.builder().name("predmon_warnings_total").labelNames(LABELS)
                 .help("Warnings raised since watch started, over every run of the log").withoutExemplars()
                 .register(registry);
@@ -109,6 +163,16 @@ final class Metrics {
         System.arraycopy(LABELS, 0, labels, 0, LABELS.length);
         System.arraycopy(more, 0, labels, LABELS.length, more.length);
         GaugeWithCallback.builder().name(name).help(help).labelNames(labels).callback(callback).register(registry);
+    }
+
+    /** What a per-property gauge says of one property of one tile. */
+    @FunctionalInterface
+    private interface PropertyReading {
+        void read(GaugeWithCallback.Callback cb, JsonNode tile, JsonNode property);
+    }
+
+    private void propertyGauge(String name, String help, PropertyReading reading, String... more) {
+        gauge(name, help, cb -> forEachTile(t -> t.path("properties").forEach(p -> reading.read(cb, t, p))), more);
     }
 
     private void forEachTile(Consumer<JsonNode> each) {
@@ -132,11 +196,21 @@ final class Metrics {
     void added(Tile tile) {
         warnings.initLabelValues(tile.log(), tile.name(), property);
         violations.initLabelValues(tile.log(), tile.name(), property);
+        for (String p : properties) {
+            propertyWarnings.initLabelValues(tile.log(), tile.name(), p);
+            propertyViolations.initLabelValues(tile.log(), tile.name(), p);
+        }
     }
 
     /** An event of {@code tile}'s log. */
     void event(Tile tile, MonitorEvent e) {
-        if (e instanceof MonitorEvent.Warning) {
+        if (e instanceof MonitorEvent.Warning w && w.property() != null) {
+            propertyWarnings.labelValues(tile.log(), tile.name(), w.property()).inc();
+        } else if (e instanceof MonitorEvent.Violation v && v.property() != null) {
+            propertyViolations.labelValues(tile.log(), tile.name(), v.property()).inc();
+        }
+        if (e instanceof MonitorEvent.Warning w && w.clause() != MonitorEvent.Clause.DEADLINE) {
+            // this label is the forecast's property; a deadline's warnings are its own property's
             warnings.labelValues(tile.log(), tile.name(), property).inc();
         } else if (e instanceof MonitorEvent.Violation v && v.forecast()) {
             // this label is the forecast's property; the other properties' violations are not its own

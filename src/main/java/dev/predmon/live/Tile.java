@@ -7,9 +7,11 @@ import dev.predmon.event.LogEvent;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.monitor.PropertyStatus;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -48,6 +50,7 @@ public final class Tile {
     private long runLine = 1;
     private long runRecords;
     private final RunAlarm alarm = new RunAlarm();
+    private final PropertyLights lights;
     private String noVerdict;
     private boolean noMatch;
     private long noMatchLine;
@@ -64,11 +67,13 @@ public final class Tile {
     private Clock clock = Clock.SECONDS;
     private long grewAtMillis;
 
-    Tile(String log, String name, List<LearnedModel> models, Optional<Bound> safety, long nowMillis) {
+    Tile(String log, String name, List<LearnedModel> models, Optional<Bound> safety, List<Property> properties,
+         long nowMillis) {
         this.log = log;
         this.name = name;
         this.models = List.copyOf(models);
         this.safety = safety;
+        this.lights = new PropertyLights(properties, safety.map(Bound::id).orElse(null));
         this.grewAtMillis = nowMillis;
     }
 
@@ -86,16 +91,19 @@ public final class Tile {
         MonitorEvent e = sent.event();
         JsonNode node = sent.json();
         if (e instanceof MonitorEvent.ForecastChanged f) {
-            // Forecasts change often: the tile shows the latest, and the last events keep room for the rest.
-            setForecast(f.forecast(), node);
+            // Forecasts change often: the tile shows the latest, and the last events keep room for the rest. A
+            // deadline's forecast is its property's light's, from the monitor's statuses.
+            if (f.deadline() == null) {
+                setForecast(f.forecast(), node);
+            }
             return;
         }
         lastEvents.addLast(node);
         if (lastEvents.size() > LAST_EVENTS) {
             lastEvents.removeFirst();
         }
-        if (e instanceof MonitorEvent.Warning w && w.clause() == MonitorEvent.Clause.DEADLINE) {
-            return; // another property's deadline: in the last events, not the forecast property's light
+        if (lights.event(e)) {
+            return; // another property's warning or recovery: its own light and the last events
         }
         if (alarm.event(e, node)) {
             if (e instanceof MonitorEvent.Warning w && w.forecast() != null) {
@@ -145,7 +153,13 @@ public final class Tile {
         noVerdict = why;
     }
 
+    /** Every property after the latest record, as the monitor sees it. */
+    public synchronized void properties(List<PropertyStatus> statuses) {
+        lights.statuses(statuses);
+    }
+
     private void startRun(int number, long first) {
+        lights.reset();
         run = number;
         runLine = first;
         runRecords = 0;
@@ -213,9 +227,11 @@ public final class Tile {
     /**
      * What the board knows of a tile beyond its log: the robot's name as shown (the part of the name all logs share
      * dropped), the property's recommended action, the probability at which the forecast warns (null when it does
-     * not), and whether the log's file exists.
+     * not), whether the log's file exists, and whether the forecast has skill on these models (null when not
+     * measured).
      */
-    record Shown(String name, String action, Double warnsAt, boolean exists) {
+    record Shown(String name, String action, Double warnsAt, boolean exists, Boolean skill,
+                 Map<String, Boolean> skills) {
     }
 
     /** Whether the log has had no record since the start (so that whether its file exists is worth asking). */
@@ -257,6 +273,11 @@ public final class Tile {
             o.put("warnsAt", shown.warnsAt());
         }
         alarm.snapshot(o);
+        ArrayNode props = lights.json(state, noVerdict == null ? forecastJson : null, shown.skill(),
+                shown.skills());
+        o.set("properties", props);
+        // the worst property's light, for the compact view and the order of the tiles
+        o.set("worst", props.isEmpty() ? null : props.get(0));
         o.put("noMatch", noMatch);
         if (noMatch) {
             o.put("noMatchLine", noMatchLine);

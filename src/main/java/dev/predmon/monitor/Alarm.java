@@ -100,7 +100,7 @@ final class Alarm {
         }
         events.accept(new MonitorEvent.Recovered(r.time(), r.line(), "property", value, "the property holds again ("
                 + ForecastWords.fixed(value, 2) + ", at least " + ForecastWords.fixed(safety.floor(), 2) + ")",
-                r.clock(), run));
+                r.clock(), run, safety.id()));
     }
 
     /**
@@ -133,6 +133,6 @@ final class Alarm {
             forecast.startOver();
         }
         events.accept(new MonitorEvent.Recovered(r.time(), r.line(), byAction ? "action" : "forecast", value, reason,
-                r.clock(), run));
+                r.clock(), run, safety.id()));
     }
 }

@@ -4,6 +4,7 @@ import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Survival;
+import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Deadline;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
@@ -12,7 +13,6 @@ import dev.predmon.property.Response;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Consumer;
 
 /**
  * The deadline forecast of every bounded-response property the models learned durations for: while an obligation is
@@ -24,8 +24,11 @@ import java.util.function.Consumer;
  * threshold learned by cross-validation (even odds when the training obligations could not choose one), or when the
  * obligation has been pending longer than every training obligation (no evidence either way) and half of the time
  * from the longest of them to the deadline has passed too: a robot stuck in a way no training run was is warned with
- * that half of the margin left. A property without a training obligation gets no
- * forecast and no warning: no verdict on no evidence. Constant state per property.
+ * that half of the margin left. A warned obligation that is discharged in time ends its warning
+ * ({@link Listener#recovered}); one that misses its deadline is the property's violation, told by the checker. While
+ * an obligation is pending its (calibrated) forecast is told when it changes as the page shows it: the probability of
+ * a miss in whole percent, or that the obligation is past every training one. A property without a training
+ * obligation gets no forecast and no warning: no verdict on no evidence. Constant state per property.
  */
 final class DeadlineWatch {
 
@@ -40,18 +43,42 @@ final class DeadlineWatch {
     record Due(Response property, Survival.Estimate estimate, double elapsed, String reason) {
     }
 
+    /** Told what the deadline forecasts say, as it happens, with the record that made it. */
+    interface Listener {
+        /** A deadline warning. */
+        void due(LogRecord r, Due d);
+
+        /** The warned obligation of {@code property} was discharged in time: the warning's cause ended. */
+        void recovered(LogRecord r, Response property, String reason);
+
+        /** The forecast of {@code property}'s pending obligation changed as shown. */
+        void changed(LogRecord r, Response property, Survival.Estimate estimate);
+    }
+
     private final Response[] properties;
     private final Survival[] survival;
     private final DeadlineRule[] rules;
     private final boolean[] warned;
+    /** The forecast of each obligation pending now, or null. */
+    private final Survival.Estimate[] current;
+    /** Each pending obligation's forecast as last told ({@link #shown}), or null. */
+    private final String[] told;
+    /** Whether an obligation of each property ended at the last record, and whether it was discharged. */
+    private final boolean[] ended;
+    private final boolean[] discharged;
 
     /** The deadlines of {@code properties} that {@code model} learned durations for; none without a model. */
     DeadlineWatch(List<Property> properties, ForecastModel model) {
-        this.properties = new Response[properties.size()];
-        this.survival = new Survival[properties.size()];
-        this.rules = new DeadlineRule[properties.size()];
-        this.warned = new boolean[properties.size()];
-        for (int i = 0; i < properties.size(); i++) {
+        int n = properties.size();
+        this.properties = new Response[n];
+        this.survival = new Survival[n];
+        this.rules = new DeadlineRule[n];
+        this.warned = new boolean[n];
+        this.current = new Survival.Estimate[n];
+        this.told = new String[n];
+        this.ended = new boolean[n];
+        this.discharged = new boolean[n];
+        for (int i = 0; i < n; i++) {
             if (properties.get(i) instanceof Response r && model != null) {
                 Survival s = model.obligations().get(r.id());
                 if (s != null && s.size() > 0) {
@@ -63,27 +90,64 @@ final class DeadlineWatch {
         }
     }
 
-    /** After {@code checker} took a record: tells {@code out} each deadline warning it raises. */
-    void step(PropertyChecker checker, Consumer<Due> out) {
+    /** Whether property {@code index} has a deadline forecast. */
+    boolean forecasts(int index) {
+        return properties[index] != null;
+    }
+
+    /** The forecast of property {@code index}'s pending obligation, or null when none is pending (or no forecast). */
+    Survival.Estimate current(int index) {
+        return current[index];
+    }
+
+    /** Whether a warning of property {@code index} is up. */
+    boolean warned(int index) {
+        return warned[index];
+    }
+
+    /** An obligation of property {@code index} ended, {@code discharged} or let go (as the checker tells it). */
+    void closed(int index, boolean discharged) {
+        this.ended[index] = true;
+        this.discharged[index] = discharged;
+    }
+
+    /** After {@code checker} took a record: tells {@code out} each warning, recovery and forecast it makes. */
+    void step(PropertyChecker checker, LogRecord r, Listener out) {
         for (int i = 0; i < properties.length; i++) {
             if (properties[i] == null) {
                 continue;
             }
+            if (ended[i]) {
+                ended[i] = false;
+                if (warned[i] && discharged[i]) {
+                    out.recovered(r, properties[i], "'" + properties[i].name() + "' (" + properties[i].id()
+                            + "): the response came in time; the deadline warning is over");
+                }
+                // discharged, or let go at a missed deadline (the checker's violation): the next one is judged afresh
+                warned[i] = false;
+                current[i] = null;
+                told[i] = null;
+            }
             double elapsed = checker.elapsed(i);
             if (Double.isNaN(elapsed)) {
-                warned[i] = false; // the obligation was discharged or let go: the next one is judged afresh
-                continue;
-            }
-            if (warned[i]) {
                 continue;
             }
             Deadline d = properties[i].within();
             Survival s = survival[i];
             Survival.Estimate raw = s.estimate(elapsed, d.amount());
+            Survival.Estimate e = rules[i].calibrated(raw);
+            current[i] = e;
+            String shown = shown(e);
+            if (!shown.equals(told[i])) {
+                told[i] = shown;
+                out.changed(r, properties[i], e);
+            }
+            if (warned[i]) {
+                continue;
+            }
             if (rules[i].warns(raw, elapsed, d.amount(), s)) {
-                Survival.Estimate e = rules[i].calibrated(raw);
                 warned[i] = true;
-                out.accept(new Due(properties[i], e, elapsed, reason(properties[i], e, elapsed, s)));
+                out.due(r, new Due(properties[i], e, elapsed, reason(properties[i], e, elapsed, s)));
             }
         }
     }
@@ -91,6 +155,23 @@ final class DeadlineWatch {
     /** A new run. */
     void reset() {
         Arrays.fill(warned, false);
+        Arrays.fill(current, null);
+        Arrays.fill(told, null);
+        Arrays.fill(ended, false);
+        Arrays.fill(discharged, false);
+    }
+
+    /**
+     * A deadline forecast as the page shows it: {@code novel} past every training obligation, else the probability
+     * of a miss in whole percent ({@code <1%} and {@code >99%} at the ends, never 0% or 100% for what is not certain).
+     */
+    static String shown(Survival.Estimate e) {
+        if (e.novel()) {
+            return "novel";
+        }
+        double p = e.probability();
+        long v = Math.round(p * 100);
+        return p > 0 && v == 0 ? "<1%" : p < 1 && v == 100 ? ">99%" : v + "%";
     }
 
     /**
@@ -103,13 +184,15 @@ final class DeadlineWatch {
         String unit = d.unit() == Deadline.Unit.OCCURRENCES ? "occurrences" : d.unit().key;
         String head = String.format(Locale.ROOT, "'%s' (%s) pending %s %s", p.name(), p.id(),
                 ForecastWords.fixed(elapsed, 0), unit);
+        String action = p.action() == null ? "" : "; do now: " + p.action();
         if (e.novel()) {
             return String.format(Locale.ROOT, "%s, longer than any of the %d training obligations (the longest: %s):"
-                            + " behaviour never seen; %s %s left before the deadline of %s", head, s.size(),
-                    ForecastWords.fixed(s.longest(), 0), ForecastWords.fixed(e.timeLeft(), 0), unit, d.describe());
+                            + " behaviour never seen; %s %s left before the deadline of %s%s", head, s.size(),
+                    ForecastWords.fixed(s.longest(), 0), ForecastWords.fixed(e.timeLeft(), 0), unit, d.describe(),
+                    action);
         }
         return String.format(Locale.ROOT, "%s; %d of the %d training obligations pending that long took longer than %s;"
-                        + " P(miss) %s; %s %s left", head, e.longer(), e.atRisk(), d.describe(),
-                ForecastWords.fixed(e.probability(), 2), ForecastWords.fixed(e.timeLeft(), 0), unit);
+                        + " P(miss) %s; %s %s left%s", head, e.longer(), e.atRisk(), d.describe(),
+                ForecastWords.fixed(e.probability(), 2), ForecastWords.fixed(e.timeLeft(), 0), unit, action);
     }
 }

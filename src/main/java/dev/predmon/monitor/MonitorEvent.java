@@ -108,15 +108,22 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      *
      * @param time   time of the reading that ended it
      * @param line   its line
-     * @param cause  {@code property} (the property holds again after its violation), {@code forecast} or
-     *               {@code action}
-     * @param value  the property's value there
-     * @param reason why, in an operator's words
-     * @param clock  what {@code time} counts
-     * @param run    the run of the log
+     * @param cause    {@code property} (the property holds again after its violation), {@code forecast} or
+     *                 {@code action}; for a bounded response's deadline warning, {@code discharged} (the response came
+     *                 in time)
+     * @param value    the property's value there (NaN for a property without one, a bounded response)
+     * @param reason   why, in an operator's words
+     * @param clock    what {@code time} counts
+     * @param run      the run of the log
+     * @param property the id of the property whose alarm ended, or null when not known
      */
-    record Recovered(double time, long line, String cause, double value, String reason, Clock clock, int run)
-            implements MonitorEvent {
+    record Recovered(double time, long line, String cause, double value, String reason, Clock clock, int run,
+                     String property) implements MonitorEvent {
+
+        /** A recovery of no named property. */
+        public Recovered(double time, long line, String cause, double value, String reason, Clock clock, int run) {
+            this(time, line, cause, value, reason, clock, run, null);
+        }
     }
 
     /**
@@ -135,17 +142,25 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
     }
 
     /**
-     * The forecast changed enough to be told (see {@code ForecastTracker}).
+     * The forecast changed enough to be told (see {@code ForecastTracker}), or a bounded response's deadline forecast
+     * changed as the page shows it ({@code DeadlineWatch}: its probability of a miss in whole percent, or whether it is
+     * past every training obligation).
      *
      * @param time     time of the record that completed the pair
      * @param line     its line
-     * @param forecast the new forecast
+     * @param forecast the new forecast, or null for a deadline's
      * @param clock    what {@code time} counts
      * @param run      the run of the log
      * @param property the id of the property forecast, or null when not known
+     * @param deadline a bounded response's deadline forecast ({@code forecast} is then null), else null
      */
-    record ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run, String property)
-            implements MonitorEvent {
+    record ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run, String property,
+                           Survival.Estimate deadline) implements MonitorEvent {
+
+        /** A forecast of the forecast's property. */
+        public ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run, String property) {
+            this(time, line, forecast, clock, run, property, null);
+        }
 
         /** A forecast of no named property. */
         public ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run) {

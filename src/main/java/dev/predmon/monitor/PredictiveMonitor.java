@@ -4,6 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.Survival;
 import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
 import dev.predmon.matching.ModelTracker;
@@ -14,6 +15,8 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
+import dev.predmon.property.PropertyChecker.PropertyVerdict;
+import dev.predmon.property.Response;
 
 import java.util.List;
 import java.util.Map;
@@ -106,7 +109,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.alarm = new Alarm(safety.orElse(null), forecast, this.events);
         this.policy = new WarningPolicy(rule, forecast, alarm);
         this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
-                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, this::deadline);
+                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, new Deadlines());
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
@@ -191,6 +194,19 @@ public final class PredictiveMonitor implements PipelineListener {
         return finished.withCurrent(current());
     }
 
+    /** Every property of the current run with its verdict so far, in the abstraction's order. */
+    public List<PropertyVerdict> verdicts() {
+        return properties.verdicts();
+    }
+
+    /**
+     * Every property of the current run now, in the abstraction's order: its verdict, whether a warning of it is up,
+     * and what forecasts it (the forecast's property's latest forecast is {@link #forecast()}).
+     */
+    public List<PropertyStatus> properties() {
+        return properties.statuses(!alarm.quiet() && !alarm.violated());
+    }
+
     /** What all runs since the start add up to. */
     public RunsSummary summary() {
         return finished.summary(current());
@@ -231,12 +247,26 @@ public final class PredictiveMonitor implements PipelineListener {
         }
     }
 
-    /** A bounded response's deadline forecast warns: a warning of that property, beside the forecast's. */
-    private void deadline(LogRecord r, DeadlineWatch.Due d) {
-        MonitorEvent.Warning w = new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(), run,
-                rule, null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate());
-        anyWarning = anyWarning == null ? w : anyWarning;
-        events.accept(w);
+    /** What the bounded responses' deadline forecasts say: warnings, recoveries and forecasts of those properties. */
+    private final class Deadlines implements DeadlineWatch.Listener {
+        @Override
+        public void due(LogRecord r, DeadlineWatch.Due d) {
+            MonitorEvent.Warning w = new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(),
+                    run, rule, null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate());
+            anyWarning = anyWarning == null ? w : anyWarning;
+            events.accept(w);
+        }
+
+        @Override
+        public void recovered(LogRecord r, Response p, String reason) {
+            events.accept(new MonitorEvent.Recovered(r.time(), r.line(), "discharged", Double.NaN, reason, r.clock(),
+                    run, p.id()));
+        }
+
+        @Override
+        public void changed(LogRecord r, Response p, Survival.Estimate e) {
+            events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), null, r.clock(), run, p.id(), e));
+        }
     }
 
     /** Reports {@code news} if it is news, and returns the latest forecast. */

@@ -3,13 +3,15 @@ package dev.predmon.monitor;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Deadline;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.Response;
 import dev.predmon.property.Verdict;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
-import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
 /**
@@ -29,21 +31,24 @@ final class SafetyMonitor {
     private int run;
     /** The deadline forecasts, or null when nothing warns by them (the match rule, models without a forecast). */
     private final DeadlineWatch deadlines;
-    private final BiConsumer<LogRecord, DeadlineWatch.Due> dues;
+    private final DeadlineWatch.Listener told;
 
     SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events) {
-        this(abstraction, events, null, (r, d) -> { });
+        this(abstraction, events, null, null);
     }
 
-    /** As above, telling {@code dues} each deadline warning of {@code deadlines} with the record that raised it. */
+    /** As above, telling {@code told} what the deadline forecasts of {@code deadlines} say. */
     SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events, DeadlineWatch deadlines,
-                  BiConsumer<LogRecord, DeadlineWatch.Due> dues) {
+                  DeadlineWatch.Listener told) {
         this.deadlines = deadlines;
-        this.dues = dues;
+        this.told = told;
         Optional<Bound> forecast = abstraction.safety();
         this.forecastIndex = forecast.map(b -> abstraction.properties().indexOf(b)).orElse(-1);
         this.forecastId = forecast.map(Bound::id).orElse(null);
         this.checker = new PropertyChecker(abstraction.properties(), this::violated);
+        if (deadlines != null) {
+            checker.onObligations((index, p, duration, discharged) -> deadlines.closed(index, discharged));
+        }
         this.events = events;
     }
 
@@ -53,7 +58,7 @@ final class SafetyMonitor {
         this.run = run;
         checker.accept(r);
         if (deadlines != null) {
-            deadlines.step(checker, d -> dues.accept(r, d));
+            deadlines.step(checker, r, told);
         }
     }
 
@@ -88,5 +93,29 @@ final class SafetyMonitor {
     /** Every property with its verdict on the current run so far. */
     List<PropertyChecker.PropertyVerdict> verdicts() {
         return checker.verdicts();
+    }
+
+    /**
+     * Every property now, in the abstraction's order: its verdict, what forecasts it, and for a deadline whether it
+     * warned and the pending obligation's forecast.
+     *
+     * @param forecastWarned whether a warning of the forecast's property is up
+     */
+    List<PropertyStatus> statuses(boolean forecastWarned) {
+        List<PropertyStatus> all = new ArrayList<>(checker.properties().size());
+        for (int i = 0; i < checker.properties().size(); i++) {
+            Property p = checker.properties().get(i);
+            Verdict v = checker.verdict(i);
+            if (i == forecastIndex) {
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST, forecastWarned, null, null));
+            } else if (deadlines != null && deadlines.forecasts(i)) {
+                Deadline d = ((Response) p).within();
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.DEADLINE,
+                        deadlines.warned(i) && !(v instanceof Verdict.Violated), deadlines.current(i), d.unit().key));
+            } else {
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.NONE, false, null, null));
+            }
+        }
+        return all;
     }
 }

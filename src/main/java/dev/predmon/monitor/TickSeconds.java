@@ -67,7 +67,7 @@ public record TickSeconds(double seconds) {
         if (e instanceof MonitorEvent.Warning w && on(w.clock())) {
             return new MonitorEvent.Warning(times(w.time()), w.line(), w.scenarios(), w.battery(), w.pairs(),
                     Clock.SECONDS, w.run(), w.rule(), forecast(w.forecast()), w.reason(), w.clause(), w.scenario(),
-                    w.property());
+                    w.property(), w.deadline());
         }
         if (e instanceof MonitorEvent.Violation v && on(v.clock())) {
             return new MonitorEvent.Violation(times(v.time()), v.line(), v.property(), v.name(), v.value(), v.before(),
@@ -75,7 +75,7 @@ public record TickSeconds(double seconds) {
         }
         if (e instanceof MonitorEvent.ForecastChanged f && on(f.clock())) {
             return new MonitorEvent.ForecastChanged(times(f.time()), f.line(), forecast(f.forecast()),
-                    Clock.SECONDS, f.run(), f.property());
+                    Clock.SECONDS, f.run(), f.property(), f.deadline());
         }
         if (e instanceof MonitorEvent.Eliminated x && on(x.clock())) {
             return new MonitorEvent.Eliminated(times(x.time()), x.line(), x.model(), x.scenario(), x.faulty(),
@@ -86,7 +86,7 @@ public record TickSeconds(double seconds) {
         }
         if (e instanceof MonitorEvent.Recovered r && on(r.clock())) {
             return new MonitorEvent.Recovered(times(r.time()), r.line(), r.cause(), r.value(), r.reason(),
-                    Clock.SECONDS, r.run());
+                    Clock.SECONDS, r.run(), r.property());
         }
         if (e instanceof MonitorEvent.UnderWay u && on(u.clock())) {
             return new MonitorEvent.UnderWay(times(u.time()), u.line(), u.by(), u.underWay(), Clock.SECONDS, u.run());

@@ -95,6 +95,13 @@ final class EventPrinter {
             return String.format(Locale.ROOT, "%s line %d: WARNING: %s; battery %s", at(w.time(), w.clock()), w.line(),
                     w.reason(), battery(w.battery()));
         }
+        if (e instanceof MonitorEvent.ForecastChanged f && f.deadline() != null) {
+            return verbose ? String.format(Locale.ROOT, "%s line %d: forecast of %s: %s", at(f.time(), f.clock()),
+                    f.line(), f.property(), f.deadline().novel() ? "pending longer than any training obligation, "
+                    + ForecastWords.fixed(f.deadline().timeLeft(), 0) + " left" : "P(miss) "
+                    + ForecastWords.fixed(f.deadline().probability(), 2) + ", "
+                    + ForecastWords.fixed(f.deadline().timeLeft(), 0) + " left") : null;
+        }
         if (e instanceof MonitorEvent.ForecastChanged f) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast: %s", at(f.time(), f.clock()), f.line(),
                     ForecastWords.line(f.forecast())) : null;

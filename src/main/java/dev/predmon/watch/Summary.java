@@ -67,12 +67,15 @@ final class Summary {
         RunsSummary all = m.summary();
         RunOutcome first = all.firstWarned().orElse(runs.get(0));
         RunOutcome last = runs.get(runs.size() - 1);
+        // the last run's properties with their latest forecasts, the earlier runs' with their verdicts
+        List<PropertyJson> latest = PropertyJson.latest(m.properties(), m.forecast().orElse(null));
         List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
                 r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
-                ForecastJson.of(r.forecast()), PropertyJson.of(r.properties()))).toList();
+                ForecastJson.of(r.forecast()), r.run() == last.run() ? latest : PropertyJson.of(r.properties())))
+                .toList();
         End end = new End("end", stop, m.records(), all.pairs(), m.warning().isPresent(), m.violation().isPresent(),
                 first.lead().orElse(null), m.clock().unit(), all.noMatch(), perRun, all.runs(), all.dropped(),
-                UnmappedMessages.texts(m.unmapped()), m.rule().id(), ForecastJson.of(last.forecast()), PropertyJson.of(last.properties()));
+                UnmappedMessages.texts(m.unmapped()), m.rule().id(), ForecastJson.of(last.forecast()), latest);
         out.println(EventJson.line(EventJson.stamped(end, settings.several() ? log.name() : null, Instant.now())));
     }
 
@@ -118,10 +121,17 @@ final class Summary {
         }
     }
 
-    /** Each property's verdict on run {@code r}, a line each, begun as the text lines of events are. */
+    /**
+     * Each property's verdict on run {@code r}, a line each, begun as the text lines of events are; for the last run
+     * with each one's latest forecast, or why it has none.
+     */
     private void properties(WatchedLog log, RunOutcome r) {
         String stamp = settings.stamp().of(Instant.now()) + (settings.several() ? Terminal.line(log.name()) + ":" : "");
-        PropertyJson.lines(r.properties()).forEach(l -> out.println(stamp + l));
+        PredictiveMonitor m = log.monitor();
+        List<RunOutcome> runs = m.runs();
+        boolean last = r.run() == runs.get(runs.size() - 1).run();
+        (last ? PropertyJson.latestLines(m.properties(), m.forecast().orElse(null)) : PropertyJson.lines(r.properties()))
+                .forEach(l -> out.println(stamp + l));
     }
 
     /** One run's verdict in the {@code end} event. */

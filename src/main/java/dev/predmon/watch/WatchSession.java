@@ -136,7 +136,8 @@ public final class WatchSession implements Fleet.Listener, AutoCloseable {
         Instant at = Instant.now();
         o.printer.accept(e, at);
         boolean hook = hooks != null && live
-                && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation);
+                && (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation
+                || e instanceof MonitorEvent.Recovered);
         if (hook || o.tile != null) {
             LogEvent sent = LogEvent.of(log.name(), e, at);
             if (o.tile != null) {
@@ -153,6 +154,7 @@ public final class WatchSession implements Fleet.Listener, AutoCloseable {
         LogOutlet o = outlets.get(log);
         if (o.tile != null) {
             o.tile.record(settings.ticks().record(r));
+            o.tile.properties(log.monitor().properties());
         }
     }
 

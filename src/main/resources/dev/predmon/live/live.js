@@ -3,7 +3,7 @@
 // elsewhere. Acknowledgements and the alert switches are kept in this browser (localStorage): the server only shows.
 'use strict';
 import {STATES, STATE_WORDS} from './words.js';
-import {NEEDS_ATTENTION, el, renderRow, renderTile} from './tile.js';
+import {NEEDS_ATTENTION, el, renderRow, renderTile, shownLight, shownState} from './tile.js';
 
 const tilesEl = document.getElementById('tiles');
 const emptyEl = document.getElementById('empty');
@@ -35,7 +35,8 @@ function store(key, value) {
 }
 
 // An acknowledgement holds for the state it was given in: any change of state (or run, or staleness) lifts it.
-const ackKey = (t) => t.run + '|' + t.state + '|' + t.stale;
+const worstState = (t) => (t.worst && t.worst.model !== 'forecast' ? t.worst.property + ' ' + t.worst.state : '');
+const ackKey = (t) => t.run + '|' + t.state + '|' + t.stale + '|' + worstState(t);
 let acks = stored('acks', {});
 
 const ui = {
@@ -54,7 +55,8 @@ const ui = {
 // ---- order and drawing ---------------------------------------------------------------------------------------
 /** Worst first; a log quiet mid-run sorts with the unknown ones; acknowledged after the others of their state. */
 function rank(t) {
-  const r = STATES.indexOf(t.state);
+  // another property violated or warned sorts the robot with the violations or the warnings
+  const r = STATES.indexOf(shownState(t));
   return t.stale && r > STATES.indexOf('unknown') ? STATES.indexOf('unknown') : r;
 }
 
@@ -76,7 +78,7 @@ function node(t) {
     nodes.set(t.log, n);
   }
   n.dataset.state = t.state;
-  n.dataset.light = t.light;
+  n.dataset.light = shownLight(t);
   n.dataset.stale = String(t.stale);
   n.dataset.run = String(t.run);
   n.dataset.ack = String(ui.acked(t));
@@ -109,14 +111,14 @@ function show() {
 }
 
 function summary(all) {
-  const count = (s) => all.filter(t => t.state === s).length;
+  const count = (s) => all.filter(t => shownState(t) === s).length;
   const parts = STATES.filter(s => count(s) > 0).map(s => count(s) + ' ' + STATE_WORDS[s].toLowerCase());
   const stale = all.filter(t => t.stale).length;
   const acked = all.filter(t => ui.acked(t)).length;
   document.getElementById('summary').textContent = all.length + (all.length === 1 ? ' robot' : ' robots')
     + (parts.length ? ': ' + parts.join(', ') : '') + (stale ? ' \u00b7 ' + stale + ' stale' : '')
     + (acked ? ' \u00b7 ' + acked + ' acknowledged' : '');
-  const worst = all.length ? all[0].state : 'waiting';
+  const worst = all.length ? shownState(all[0]) : 'waiting';
   document.title = (NEEDS_ATTENTION.has(worst) && !ui.acked(all[0]) ? STATE_WORDS[worst] + ' \u2014 ' : '')
     + 'predmon live';
 }
@@ -160,8 +162,10 @@ function beep() {
 
 function alert(t) {
   if (ui.acked(t)) return;
-  const title = t.name + ': ' + STATE_WORDS[t.state];
-  const body = (t.state === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
+  const other = worstState(t) && !NEEDS_ATTENTION.has(t.state) ? t.worst : null; // another property's alarm
+  const title = t.name + ': ' + (other ? other.property + ' ' + other.state : STATE_WORDS[t.state]);
+  const body = other ? other.words + (other.action ? '\nDo now: ' + other.action : '')
+    : (t.state === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
   if (notify && 'Notification' in window && Notification.permission === 'granted') {
     new Notification(title, {body: body, tag: t.log});
   }
@@ -222,6 +226,9 @@ function apply(s, full, request) {
     const before = logs.get(t.log);
     logs.set(t.log, t);
     if (before && before.state !== t.state && (t.state === 'warning' || t.state === 'violation')) alert(t);
+    else if (before && worstState(before) !== worstState(t) && ['violated', 'warning'].includes(t.worst.state)) {
+      alert(t);
+    }
   }
   if (full) {
     for (const log of [...logs.keys()]) if (!seen.has(log)) logs.delete(log);

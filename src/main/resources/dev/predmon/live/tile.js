@@ -1,8 +1,8 @@
 // predmon live view: a tile (the full view) and a row (the compact view) of one robot. Text from logs goes into the
 // page through textContent only.
 'use strict';
-import {GLYPHS, STATE_WORDS, at, basisWords, chance, distanceWords, earlierText, eventText, forecastWords, momentText,
-  num, pct, recoveryWords, shortSpan, verdict, whenWords} from './words.js';
+import {GLYPHS, PROPERTY_GLYPHS, PROPERTY_STATES, PROPERTY_WORDS, STATE_WORDS, at, basisWords, chance, distanceWords, earlierText, eventText, forecastWords, momentText,
+  num, pct, propertyForecast, recoveryWords, shortSpan, verdict, whenWords} from './words.js';
 import {plot} from './plot.js';
 
 export function el(tag, cls, text) {
@@ -22,8 +22,81 @@ function light(t, small) {
   return l;
 }
 
+/** A property's light: its colour and glyph, its state in words for a screen reader. */
+export function propertyLight(p) {
+  const l = el('span', 'light small ' + p.light, PROPERTY_GLYPHS[p.state] || '');
+  l.setAttribute('role', 'img');
+  l.setAttribute('aria-label', p.property + ' ' + (PROPERTY_WORDS[p.state] || p.state));
+  return l;
+}
+
+/** One light per property, worst first: its id and name, its verdict in words, its forecast or that it has none. */
+function propertyList(t) {
+  const ul = el('ul', 'props');
+  for (const p of t.properties || []) {
+    const li = el('li', 'prop ' + p.state);
+    li.dataset.property = p.property;
+    li.dataset.state = p.state;
+    const head = el('div', 'prop-head');
+    head.append(el('b', 'prop-id', p.property), el('span', 'prop-name', p.name));
+    const text = el('div', 'prop-text');
+    text.append(head, el('div', 'prop-words', p.words), el('div', 'prop-forecast', propertyForecast(p, t)));
+    if (p.recovery) text.append(el('div', 'prop-recovery', 'recovered: ' + p.recovery));
+    if (p.action && (p.state === 'warning' || p.state === 'violated') && p.model !== 'forecast') {
+      const a = el('div', 'prop-action');
+      a.append(el('b', null, 'Do now: '), p.action);
+      text.append(a);
+    }
+    li.append(propertyLight(p), text);
+    ul.appendChild(li);
+  }
+  return ul;
+}
+
+/**
+ * The light a robot shows: its own state's, unless another property is worse (violated, or warned while the robot's
+ * state is calmer).
+ */
+export function shownLight(t) {
+  const w = t.worst;
+  if (!w || w.model === 'forecast') return t.light;
+  if (w.state === 'violated' && t.state !== 'violation') return 'red';
+  if (w.state === 'warning' && !['violation', 'warning'].includes(t.state)) return 'yellow';
+  return t.light;
+}
+
+/**
+ * The robot's state as the page counts and sorts it: its own, unless another property is violated (a violation) or
+ * warned (a warning) while its own state is calmer.
+ */
+export function shownState(t) {
+  const light = shownLight(t);
+  return light === t.light ? t.state : light === 'red' ? 'violation' : 'warning';
+}
+
+/**
+ * The compact view's chip of the worst property beside the forecast's (whose light is the row's own): its light and
+ * id when it is violated, warned or unknown, its light alone when the others are well; every property's words in
+ * the tooltip.
+ */
+function worstChip(t) {
+  const others = (t.properties || []).filter(p => p.model !== 'forecast');
+  if (others.length === 0) return null;
+  const w = others[0];
+  const chip = el('span', 'worst');
+  chip.dataset.state = w.state;
+  chip.dataset.property = w.property;
+  const calm = w.state === 'holds' || w.state === 'pending';
+  // the others all well: their light alone, so that the robot's name keeps the room; the tooltip says which
+  chip.append(propertyLight(w));
+  if (!calm) chip.append(el('span', 'worst-text', w.property));
+  chip.title = (t.properties || []).map(p => p.property + ' (' + PROPERTY_WORDS[p.state] + '): ' + p.words + ' \u2014 '
+    + propertyForecast(p, t)).join('\n');
+  return chip;
+}
+
 function ackButton(t, ui, compact) {
-  if (!NEEDS_ATTENTION.has(t.state) && !t.stale) return null;
+  if (!NEEDS_ATTENTION.has(shownState(t)) && !t.stale) return null;
   const acked = ui.acked(t);
   const b = el('button', 'ack', compact ? (acked ? 'acked' : 'ack') : acked ? 'acknowledged' : 'acknowledge');
   b.type = 'button';
@@ -139,7 +212,7 @@ export function renderTile(tile, t, ui) {
       + ': warning at ' + pct(t.warning.battery, t.threshold) + ', violation at '
       + pct(t.violation.battery, t.threshold);
   }
-  const parts = [head, status];
+  const parts = [head, status, propertyList(t)];
   for (const p of [actionLine(t), forecastLine(t, ui), whyLine(t), recoveryLine(t)]) if (p) parts.push(p);
   if (t.state !== 'no-verdict') parts.push(lead);
   if (t.history.length > 0) {
@@ -227,8 +300,13 @@ export function renderRow(row, t, ui) {
   const name = el('span', 'name', t.name);
   name.title = t.log;
   const line1 = el('div', 'line1');
-  line1.append(name, ...badges(t, true), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
-  const line2 = el('div', 'line2', rowWords(t, ui));
+  const chip = worstChip(t);
+  line1.append(name, ...badges(t, true), ...(chip ? [chip] : []), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
+  // another property's alarm first: which, and what to do
+  const w = shownState(t) !== t.state ? t.worst : null;
+  const alarm = w ? w.property + ' ' + PROPERTY_WORDS[w.state].toUpperCase() + (w.action ? ' \u2192 ' + w.action : '')
+    + ' \u00b7 ' : '';
+  const line2 = el('div', 'line2', alarm + rowWords(t, ui));
   line2.title = verdict(t) + (forecastWords(t.forecast) ? '\n' + forecastWords(t.forecast) : '');
   const text = el('div', 'text');
   text.append(line1, line2);

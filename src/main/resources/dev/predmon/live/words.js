@@ -9,6 +9,12 @@ export const STATE_WORDS = {violation: 'VIOLATION', warning: 'WARNING', unknown:
 export const GLYPHS = {violation: '\u2715', warning: '!', unknown: '?', 'no-verdict': '\u2298', ok: '\u2713',
   waiting: '\u2026', ended: '\u25A0'};
 
+/** A property's light, worst first, with its glyph and its name on the page. */
+export const PROPERTY_STATES = ['violated', 'warning', 'unknown', 'pending', 'holds'];
+export const PROPERTY_GLYPHS = {violated: '\u2715', warning: '!', unknown: '?', pending: '\u2026', holds: '\u2713'};
+export const PROPERTY_WORDS = {violated: 'violated', warning: 'warning', unknown: 'unknown', pending: 'pending',
+  holds: 'holds'};
+
 const missing = (x) => x === null || x === undefined || Number.isNaN(x);
 
 export const num = (x, digits) => missing(x) ? '?' : Number(x).toFixed(digits);
@@ -174,11 +180,12 @@ export function eventText(e, t) {
     case 'eliminated':
       return where + 'model ' + e.model + ' (' + (e.faulty ? 'faulty' : 'nominal') + ') eliminated: ' + e.reason;
     case 'warning':
+      if (e.clause === 'deadline') return where + 'WARNING of ' + e.property + ': ' + e.reason.split(';')[0];
       // The reason's first clause: the whole of it is under the tile's verdict.
       return where + 'WARNING at ' + pct(e.battery, thr) + ': '
         + (e.reason ? e.reason.split(';')[0] : 'only ' + e.scenarios.join(', ') + ' left');
     case 'violation':
-      return where + 'VIOLATION of ' + e.property + ': ' + pct(e.battery, thr);
+      return where + 'VIOLATION of ' + e.property + ': ' + (missing(e.battery) ? e.what || '' : pct(e.battery, thr));
     case 'no-match':
       return where + 'no learned scenario matches this run any more';
     case 'run':
@@ -186,7 +193,8 @@ export function eventText(e, t) {
     case 'restarted':
       return 'log ' + e.reason + ': monitoring starts over';
     case 'recovered':
-      return where + 'RECOVERED: ' + e.reason;
+      return where + 'RECOVERED' + (e.property && e.cause === 'discharged' ? ' (' + e.property + ')' : '') + ': '
+        + e.reason;
     case 'under-way':
       return where + (e.underWay ? 'the action is under way (' : 'the action is no longer under way (') + e.by + ')';
     default:
@@ -205,4 +213,24 @@ export function earlierText(r, unit) {
   return 'run ' + r.run + ' (line ' + r.line + '): ' + (r.warning ? 'warned' : 'no warning') + ', '
     + (r.violation ? 'violated' + (r.recovered ? ', then held again' : '') : 'held')
     + (r.lead !== null ? ', lead ' + span(r.lead, unit) : '') + (r.noMatch ? ', no model matched' : '');
+}
+
+/**
+ * A property's forecast in a few words, or that it has none: "P(miss) 12%, 40 ticks left". The forecast's property
+ * below the warning threshold says how far it is from a warning, with no countdown to a violation not expected.
+ */
+export function propertyForecast(p, t) {
+  const f = p.forecast;
+  if (p.model === 'forecast') {
+    if (!f) return 'no forecast yet';
+    if (p.skill === false) return 'no skill: the forecast did no better than the base rate';
+    if (f.basis === 'violated') return 'violated: no forecast to make';
+    const distance = t && t.state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+    return distance || chance(f.probability) + ' chance of a violation, ' + whenWords(f);
+  }
+  if (!f) return p.forecastWords;
+  const left = num(f.timeLeft, 0) + ' ' + f.unit + ' left';
+  if (f.novel) return 'no forecast: pending longer than any training obligation; ' + left;
+  if (p.skill === false) return 'no skill: the deadline forecast did no better than the base rate; ' + left;
+  return 'P(miss) ' + chance(f.probability) + ', ' + left + (p.skill === true ? '' : ' \u00b7 skill not measured');
 }

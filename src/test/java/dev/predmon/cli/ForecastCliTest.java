@@ -66,8 +66,17 @@ class ForecastCliTest {
     @Test
     void anUnseenDepletedRunHasForecastsAndAWarningThatSaysWhy() throws Exception {
         List<JsonNode> events = watch(simulate("depleted.log", "--scenario", "depleted", "--seed", "424242"));
-        List<JsonNode> forecasts = events.stream().filter(e -> e.get("event").asText().equals("forecast")).toList();
+        // the battery's forecasts; a bounded response's deadline forecasts carry "deadline" instead
+        List<JsonNode> forecasts = events.stream().filter(e -> e.get("event").asText().equals("forecast")
+                && !e.get("forecast").isNull()).toList();
         assertFalse(forecasts.isEmpty());
+        for (JsonNode e : events) {
+            if (e.get("event").asText().equals("forecast") && e.get("forecast").isNull()) {
+                JsonNode d = e.get("deadline");
+                assertTrue(d.get("novel").asBoolean() || (d.get("probability").asDouble() >= 0
+                        && d.get("probability").asDouble() <= 1), e.toString());
+            }
+        }
         for (JsonNode e : forecasts) {
             double p = e.get("forecast").get("probability").asDouble();
             assertTrue(p >= 0 && p <= 1, e.toString());

@@ -105,14 +105,14 @@ class LiveAlarmsBrowserTest {
     /** A run warned by the novelty clause at 29.64, the action under way, then recharged to 96.73: recovered. */
     private static void recovered(LiveScene scene, Tile t) {
         for (int tick = 1; tick <= 66; tick++) {
-            new Records().at(tick).level(60 - tick * 0.46).list().forEach(t::record);
+            scene.records(t, new Records().at(tick).level(60 - tick * 0.46).list());
         }
         scene.event(t, new MonitorEvent.Warning(66, 900, List.of(), 29.64, 12, Clock.SECONDS, 0,
                 WarningRule.FORECAST, forecast(0.23, 29.64), "P(violation) 0.23 beyond what the training runs that held "
                 + "did, with the value below the lowest they went to", MonitorEvent.Clause.NOVELTY));
         scene.event(t, new MonitorEvent.UnderWay(70, 950, "skill GoToChargingStation", true, Clock.SECONDS, 0));
         for (int tick = 67; tick <= 140; tick++) {
-            new Records().at(tick).level(Math.min(96.73, 29.64 + (tick - 66) * 1.2)).list().forEach(t::record);
+            scene.records(t, new Records().at(tick).level(Math.min(96.73, 29.64 + (tick - 66) * 1.2)).list());
         }
         scene.event(t, new MonitorEvent.Recovered(80, 1200, "action", 41.64, "recovered by the action, under way since "
                 + "line 950: the value rose from 29.64 to 41.64", Clock.SECONDS, 0));
@@ -129,14 +129,14 @@ class LiveAlarmsBrowserTest {
             recovered(scene, r1);
             Tile r2 = scene.board.tile(dir.resolve("r2.log").toString());
             for (int tick = 1; tick <= 40; tick++) {
-                new Records().at(tick).level(50 - tick * 0.5).list().forEach(r2::record);
+                scene.records(r2, new Records().at(tick).level(50 - tick * 0.5).list());
             }
             scene.event(r2, new MonitorEvent.UnderWay(36, 700, "goTo charging_station", true, Clock.SECONDS, 0));
             scene.event(r2, new MonitorEvent.Warning(40, 800, List.of("depleted"), 30.0, 12, Clock.SECONDS, 0,
                     WarningRule.FORECAST, forecast(0.91, 30.0), "P(violation) 0.91 reaches the warning threshold 0.86",
                     MonitorEvent.Clause.FORECAST));
             Tile r3 = scene.board.tile(dir.resolve("r3.log").toString());
-            new Records().at(1).level(80).list().forEach(r3::record);
+            scene.records(r3, new Records().at(1).level(80).list());
             scene.event(r3, new MonitorEvent.ForecastChanged(1, 10, forecast(0.54, 80), Clock.SECONDS, 0));
             r3.noVerdict("the models' abstraction 'thesis' does not fit this log: most of its interface messages "
                     + "have no rule (ArmService/preGrasp, ...); learn with --abstraction scope-fetch");
@@ -238,7 +238,7 @@ class LiveAlarmsBrowserTest {
                 String time = String.format(Locale.ROOT, "%02d_%02d", 9 + i / 6, (i % 6) * 10);
                 expected.add(time);
                 Tile t = scene.board.tile(dir.resolve("monitor2022-10-11T" + time + "+02_00.txt").toString());
-                new Records().at(1).level(40 + i).list().forEach(t::record);
+                scene.records(t, new Records().at(1).level(40 + i).list());
                 scene.event(t, new MonitorEvent.ForecastChanged(1, 10, forecast(0.05 + i / 100.0, 40 + i),
                         Clock.SECONDS, 0));
                 if (i % 7 == 0) {

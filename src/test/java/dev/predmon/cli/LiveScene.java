@@ -13,6 +13,7 @@ import dev.predmon.model.ModelStore;
 import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.parse.LogRecord;
 
 import java.io.IOException;
 import java.net.URI;
@@ -32,6 +33,7 @@ final class LiveScene implements AutoCloseable {
     final Abstraction abstraction;
     final Board board;
     private final Map<Path, LogWatcher> watchers = new HashMap<>();
+    private final Map<Tile, PredictiveMonitor> monitors = new HashMap<>();
     final LiveServer server;
 
     LiveScene(Path modelsDir, Duration staleAfter, RobotNames names, List<String> watching) throws Exception {
@@ -63,13 +65,40 @@ final class LiveScene implements AutoCloseable {
         LogWatcher w = watchers.get(log);
         if (w == null) {
             PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> event(tile, e));
-            w = LogWatcher.withRecords(log, monitor, p -> { }, tile::record);
+            w = LogWatcher.withRecords(log, monitor, p -> { }, r -> {
+                tile.record(r);
+                tile.properties(monitor.properties());
+            });
             watchers.put(log, w);
         }
         while (w.poll()) {
             board.grew(tile);
         }
         return tile;
+    }
+
+    /**
+     * Hands {@code records} to {@code tile} as watch does, each followed by every property's status as a monitor of
+     * the tile's log sees it (the monitor's own events are left out: the test gives the tile the events it shows).
+     */
+    void records(Tile tile, List<LogRecord> records) {
+        PredictiveMonitor m = monitors.computeIfAbsent(tile, t -> new PredictiveMonitor(models, abstraction, 0, e -> { }));
+        for (LogRecord r : records) {
+            m.accept(r);
+            tile.record(r);
+            tile.properties(m.properties());
+        }
+    }
+
+    /** As {@link #records}, with the monitor's events too: the tile shows what watch would show of these records. */
+    void feed(Tile tile, List<LogRecord> records) {
+        PredictiveMonitor m = monitors.computeIfAbsent(tile, t -> new PredictiveMonitor(models, abstraction, 0,
+                e -> event(t, e)));
+        for (LogRecord r : records) {
+            m.accept(r);
+            tile.record(r);
+            tile.properties(m.properties());
+        }
     }
 
     /** {@code e} of {@code tile}'s log, as watch gives it to the live view. */

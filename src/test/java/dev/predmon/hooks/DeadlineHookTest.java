@@ -28,4 +28,15 @@ class DeadlineHookTest {
                 warning(new Survival.Estimate(Double.NaN, 66, 0, 0, true)));
         assertEquals("", novel.get("PREDMON_PROBABILITY"), "no evidence, no number");
     }
+
+    @Test
+    void aRecoveryNamesItsPropertyAndItsCause() {
+        Map<String, String> env = HookEnvironment.of("r1.log", new MonitorEvent.Recovered(352, 7415, "discharged",
+                Double.NaN, "the response came in time", Clock.TICKS, 0, "navigation-in-time"));
+        assertEquals("recovered", env.get("PREDMON_EVENT"));
+        assertEquals("navigation-in-time", env.get("PREDMON_PROPERTY"));
+        assertEquals("discharged", env.get("PREDMON_CAUSE"));
+        assertEquals("", env.get("PREDMON_VALUE"), "a bounded response has no value");
+        assertEquals("7415", env.get("PREDMON_LINE"));
+    }
 }

@@ -88,7 +88,7 @@ class DeadlineWatchTest {
         int warnedAt = -1;
         for (int t = 1; t <= 10 && warnedAt < 0; t++) {
             c.accept(tick());
-            w.step(c, due::add);
+            w.step(c, null, told(due));
             warnedAt = due.isEmpty() ? -1 : t;
         }
         assertEquals(7, warnedAt, "(4 + 10) / 2: past the longest training navigation, half way to the deadline");
@@ -98,7 +98,7 @@ class DeadlineWatchTest {
         assertTrue(d.reason().contains("longer than any of the 4 training obligations"), d.reason());
         for (int t = 0; t < 2; t++) {
             c.accept(tick());
-            w.step(c, due::add);
+            w.step(c, null, told(due));
         }
         assertEquals(1, due.size(), "once per obligation");
     }
@@ -113,12 +113,88 @@ class DeadlineWatchTest {
         c.accept(goTo());
         for (int t = 0; t < 4; t++) {
             c.accept(tick());
-            w.step(c, due::add);
-            none.step(c, due::add);
+            w.step(c, null, told(due));
+            none.step(c, null, told(due));
         }
         c.accept(arrived());
-        w.step(c, due::add);
+        w.step(c, null, told(due));
         assertTrue(due.isEmpty(), due.toString());
+    }
+
+    /** Tells {@code due} the warnings only. */
+    private static DeadlineWatch.Listener told(List<DeadlineWatch.Due> due) {
+        return new Told() {
+            @Override
+            public void due(LogRecord r, DeadlineWatch.Due d) {
+                due.add(d);
+            }
+        };
+    }
+
+    /** What a deadline watch told, in a few words each. */
+    private static class Told implements DeadlineWatch.Listener {
+        final List<String> said = new ArrayList<>();
+
+        @Override
+        public void due(LogRecord r, DeadlineWatch.Due d) {
+            said.add("warning " + (d.estimate().novel() ? "novel" : DeadlineWatch.shown(d.estimate())));
+        }
+
+        @Override
+        public void recovered(LogRecord r, Response p, String reason) {
+            said.add("recovered " + p.id() + " at line " + r.line());
+        }
+
+        @Override
+        public void changed(LogRecord r, Response p, Survival.Estimate e) {
+            said.add("forecast " + DeadlineWatch.shown(e) + " " + e.timeLeft());
+        }
+    }
+
+    /** A checker of the navigation whose obligations' ends {@code w} hears, as the safety monitor wires them. */
+    private static PropertyChecker checker(DeadlineWatch w) {
+        PropertyChecker c = new PropertyChecker(List.<Property>of(NAVIGATION), (i, p, v) -> { });
+        c.onObligations((i, p, d, discharged) -> w.closed(i, discharged));
+        return c;
+    }
+
+    private void step(PropertyChecker c, DeadlineWatch w, LogRecord r, Told told) {
+        c.accept(r);
+        w.step(c, r, told);
+    }
+
+    @Test
+    void aWarnedNavigationThatArrivesInTimeRecoversAndOneThatMissesStaysWithoutRecovery() {
+        // training navigations took 2, 3, 3 and 4 ticks: pending past 4 ticks is novel, warned at (4 + 10) / 2 = 7
+        Survival s = new Survival(new double[] {2, 3, 3, 4}, new double[0]);
+        DeadlineWatch w = new DeadlineWatch(List.of(NAVIGATION), model(s));
+        PropertyChecker c = checker(w);
+        Told told = new Told();
+        step(c, w, goTo(), told);
+        for (int t = 0; t < 7; t++) {
+            step(c, w, tick(), told);
+        }
+        assertTrue(w.warned(0));
+        LogRecord arrived = arrived();
+        step(c, w, arrived, told);
+        assertEquals(List.of(
+                // P(miss) = S(10) / S(t) shrunk towards S(10) = 0: every training one took 4 ticks or less; told once
+                // while it reads 0% (10 ticks left at the goTo)
+                "forecast 0% 10.0",
+                // after 4 ticks no training navigation was still pending (the longest took 4): no evidence, 6 left
+                "forecast novel 6.0",
+                "warning novel",
+                "recovered navigation-in-time at line " + arrived.line()), told.said);
+        assertTrue(Double.isNaN(c.elapsed(0)) && !w.warned(0) && w.current(0) == null, "the alarm is over");
+
+        told.said.clear();
+        step(c, w, goTo(), told);
+        for (int t = 0; t < 11; t++) {
+            step(c, w, tick(), told);
+        }
+        step(c, w, arrived(), told);
+        assertEquals(List.of("forecast 0% 10.0", "forecast novel 6.0", "warning novel"), told.said,
+                "a missed deadline is the property's violation: no recovery");
     }
 
     /**
@@ -152,10 +228,10 @@ class DeadlineWatchTest {
         DeadlineWatch w = new DeadlineWatch(List.of(NAVIGATION), model);
         List<DeadlineWatch.Due> due = new ArrayList<>();
         c.accept(goTo());
-        w.step(c, due::add);
+        w.step(c, null, told(due));
         for (int t = 1; t <= 10; t++) {
             c.accept(tick());
-            w.step(c, due::add);
+            w.step(c, null, told(due));
             if (!due.isEmpty()) {
                 return new Warned(t, due.get(0));
             }

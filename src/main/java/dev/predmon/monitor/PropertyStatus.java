@@ -1,0 +1,35 @@
+package dev.predmon.monitor;
+
+import dev.predmon.forecast.Survival;
+import dev.predmon.property.Property;
+import dev.predmon.property.Verdict;
+
+/**
+ * One property of the run being watched, now: its verdict, whether a warning of it is up, and its latest forecast.
+ *
+ * @param property the property
+ * @param verdict  its verdict on the run so far
+ * @param model    what forecasts it
+ * @param warned   whether a warning of it is up now (raised, and neither recovered from nor overtaken by a violation)
+ * @param deadline for {@link Model#DEADLINE}, the forecast of the obligation pending now, or null when none is
+ * @param unit     for {@link Model#DEADLINE}, what the deadline and {@code deadline}'s time left count
+ *                 ({@code ticks}, {@code seconds}, {@code occurrences}); else null
+ */
+public record PropertyStatus(Property property, Verdict verdict, Model model, boolean warned,
+                             Survival.Estimate deadline, String unit) {
+
+    /** What forecasts a property. */
+    public enum Model {
+        /** The run's forecast ({@code ForecastTracker}): the forecast's property, its probability and time. */
+        FORECAST,
+        /** A bounded response's deadline forecast from the training runs' obligations ({@code DeadlineWatch}). */
+        DEADLINE,
+        /** Nothing: no model of the property (an absence, a precedence, a response the training runs never owed). */
+        NONE;
+
+        /** As in JSON: {@code forecast}, {@code deadline}, {@code none}. */
+        public String id() {
+            return name().toLowerCase(java.util.Locale.ROOT);
+        }
+    }
+}
