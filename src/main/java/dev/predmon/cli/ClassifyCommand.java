@@ -19,7 +19,7 @@ import java.util.concurrent.Callable;
 /** {@code predmon classify}: Algorithm 7 on a complete log. */
 @Command(name = "classify", mixinStandardHelpOptions = true,
         description = {"Classify a complete log against every model (thesis Algorithm 7): discrepancies per model, "
-                + "the models eliminated (an input they cannot take, or more discrepancies than --threshold), the "
+                + "the models eliminated (an input they cannot take, or more discrepancies than --tolerance), the "
                 + "best match and whether it is faulty.",
                 "Then the verdict watch reaches at the end of the same log, from the same replay: its exit code is "
                         + "classify's. Exit 6 when a property is violated with no warning before it, else 1 when a "
@@ -48,7 +48,7 @@ final class ClassifyCommand implements Callable<Integer> {
         for (ReplayedRun run : runs) {
             String name = LogTrace.name(replayed.log(), run.run(), replayed.runs().size());
             Classifier.Result r = Classifier.classify(set, run.pairs().stream().map(ReplayedRun.Pair::pair).toList(),
-                    input.threshold());
+                    input.tolerance());
             if (input.json) {
                 List<Score> scores = r.scores().stream().map(s -> new Score(s.model().id(), s.model().scenario(),
                         s.model().faulty(), s.eliminated(), s.discrepancies(),
@@ -86,7 +86,7 @@ final class ClassifyCommand implements Callable<Integer> {
         }
         out.println(r.best().map(s -> "best match: " + s.model().scenario() + " (" + s.model().id() + ", "
                 + s.discrepancies() + " discrepancies)" + (s.model().faulty() ? ": FAULTY" : ""))
-                .orElse("no model matches within threshold " + input.threshold()
+                .orElse("no model matches within tolerance " + input.tolerance()
                         + ": the run is unlike every learned scenario"));
     }
 

@@ -54,7 +54,7 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     @Mixin
-    ThresholdOption threshold;
+    ToleranceOption tolerance;
 
     @Mixin
     ConfirmOption confirm;
@@ -90,7 +90,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         Abstraction abstraction = abstractionOption.load();
         List<ScenarioSpec> train = ScenarioLayout.scan(logs, abstraction);
-        Evaluator evaluator = new Evaluator(abstraction, threshold.value, confirm.value(abstraction),
+        Evaluator evaluator = new Evaluator(abstraction, tolerance.value, confirm.value(abstraction),
                 ProgressBar.on(err, quiet)).rule(rule.asked());
         Evaluation e;
         if (split != null && split.test != null) {

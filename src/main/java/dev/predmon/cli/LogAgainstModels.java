@@ -24,7 +24,7 @@ import java.util.function.ObjIntConsumer;
 /**
  * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
  * {@code classify}, {@code explain}): {@code --log}, {@code --json}, {@code --models}, {@code --abstraction},
- * {@code --threshold}, and the checks they share, so that one situation gets one message from all four.
+ * {@code --tolerance}, and the checks they share, so that one situation gets one message from all four.
  */
 final class LogAgainstModels {
 
@@ -44,7 +44,7 @@ final class LogAgainstModels {
     AbstractionOption abstractionOption;
 
     @Mixin
-    ThresholdOption threshold;
+    ToleranceOption tolerance;
 
     private Abstraction abstraction;
     private ModelSet models;
@@ -124,7 +124,7 @@ final class LogAgainstModels {
         checkLog();
         ModelSet set = models();
         Abstraction abstraction = tuned();
-        ReplayedLog replayed = LogReplay.replay(log(), set, abstraction, threshold(), confirm,
+        ReplayedLog replayed = LogReplay.replay(log(), set, abstraction, tolerance(), confirm,
                 PredictiveMonitor.defaultRule(set), taken);
         Evidence evidence = replayed.evidence(abstraction);
         String missing = evidence.missing().or(evidence::fragment).orElse(null);
@@ -139,8 +139,8 @@ final class LogAgainstModels {
         return replayed;
     }
 
-    int threshold() {
-        return threshold.value;
+    int tolerance() {
+        return tolerance.value;
     }
 
     /** The one log of verify, classify and explain (watch takes several). */

@@ -25,8 +25,8 @@ import java.util.concurrent.Callable;
         description = {"Run a log's trace through the models of one scenario (thesis Algorithm 6) and report for each "
                 + "machine whether it matches, where its outputs differ (first position and both symbols), or where "
                 + "it is eliminated: an input it cannot take (position and symbol), or more output differences than "
-                + "--threshold.",
-                "Exit 0 when some machine of the scenario matches (outputs differing at most --threshold times), 1 "
+                + "--tolerance.",
+                "Exit 0 when some machine of the scenario matches (outputs differing at most --tolerance times), 1 "
                         + "otherwise; 3 when the log holds nothing to judge."})
 final class VerifyCommand implements Callable<Integer> {
 
@@ -60,10 +60,10 @@ final class VerifyCommand implements Callable<Integer> {
             for (LearnedModel m : own) {
                 Verification v = Verification.of(m, mealy);
                 boolean matches = v.verdict() == Verification.Verdict.MATCHES
-                        || (v.verdict() == Verification.Verdict.OUTPUTS_DIFFER && v.discrepancies() <= input.threshold());
+                        || (v.verdict() == Verification.Verdict.OUTPUTS_DIFFER && v.discrepancies() <= input.tolerance());
                 matched |= matches;
                 machines.add(new Machine(m.id(), thesisCase(v.verdict()), matches, v.steps(), v.discrepancies(),
-                        describe(v, input.threshold())));
+                        describe(v, input.tolerance())));
             }
             all &= matched;
             results.add(new Result(mealy.source(), scenario, mealy.pairs(), mealy.length(), machines, matched));
@@ -98,10 +98,10 @@ final class VerifyCommand implements Callable<Integer> {
     }
 
     /** One machine's verdict in the words watch, explain and classify use. */
-    static String describe(Verification v, int threshold) {
+    static String describe(Verification v, int tolerance) {
         return v.verdict() == Verification.Verdict.MATCHES ? "matches (" + v.steps() + " steps)"
                 : fate(v.failure(), v.discrepancies(), v.verdict() == Verification.Verdict.INPUT_UNDEFINED
-                || v.discrepancies() > threshold);
+                || v.discrepancies() > tolerance);
     }
 
     /**
@@ -110,7 +110,7 @@ final class VerifyCommand implements Callable<Integer> {
      *
      * @param failure       the input it could not take, or its first difference; null when it had none
      * @param discrepancies outputs that differed over the steps it walked
-     * @param eliminated    it could not take an input, or its outputs differed more often than the threshold allows
+     * @param eliminated    it could not take an input, or its outputs differed more often than the tolerance allows
      */
     static String fate(ModelTracker.Failure failure, int discrepancies, boolean eliminated) {
         if (failure == null) {
@@ -118,14 +118,14 @@ final class VerifyCommand implements Callable<Integer> {
         }
         String differ = "outputs differ " + discrepancies + " time(s); first: " + failure.describe();
         return eliminated ? "eliminated: " + (failure.expected() == null ? failure.describe() : differ)
-                : "matches within --threshold, " + differ;
+                : "matches within --tolerance, " + differ;
     }
 
     /**
      * One machine's verdict in {@code --json}.
      *
      * @param thesisCase the thesis's case: 1 matches, 2 outputs differ, 3 an input it cannot take
-     * @param matches    case 1, or case 2 within the threshold
+     * @param matches    case 1, or case 2 within the tolerance
      */
     record Machine(String model, int thesisCase, boolean matches, int steps, int discrepancies, String reason) {
     }

@@ -131,7 +131,7 @@ final class WatchCommand implements Callable<Integer> {
         try (LiveServer server = liveView.start(err, board);
              WatchSession session = new WatchSession(out, err, settings, hookOptions.open(err, bound(abstraction)),
                      board, abstraction, p -> !sources.named(p));
-             Fleet fleet = new Fleet(set, abstraction, input.threshold(), confirm.value(abstraction), warnBy,
+             Fleet fleet = new Fleet(set, abstraction, input.tolerance(), confirm.value(abstraction), warnBy,
                      session)) {
             if (set.forecast() != null) {
                 // How far to trust the models, once, before anything they say (and after what can refuse to start).

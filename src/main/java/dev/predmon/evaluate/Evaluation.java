@@ -11,7 +11,7 @@ import java.util.List;
  *
  * @param mode        {@code cross-validation} or {@code test-set}
  * @param folds       K, or 0 with a test set
- * @param threshold   discrepancies tolerated per model
+ * @param tolerance   the discrepancy tolerance: discrepancies tolerated per model
  * @param abstraction the abstraction's name
  * @param scenarios   per-scenario counts, sorted by scenario
  * @param confusion   actual against predicted over all runs
@@ -21,15 +21,15 @@ import java.util.List;
  * @param rule        the warning rule the runs were judged by
  * @param forecast    how good the forecast was, or null when the models carry none
  */
-@JsonPropertyOrder({"mode", "folds", "threshold", "abstraction", "rule", "scenarios", "confusion", "forecast", "notes",
+@JsonPropertyOrder({"mode", "folds", "tolerance", "abstraction", "rule", "scenarios", "confusion", "forecast", "notes",
         "runs"})
-public record Evaluation(String mode, int folds, int threshold, String abstraction, List<ScenarioSummary> scenarios,
+public record Evaluation(String mode, int folds, int tolerance, String abstraction, List<ScenarioSummary> scenarios,
                          Confusion confusion, List<RunResult> runs, List<String> notes,
                          @JsonIgnore ModelSet models, String rule, ForecastScore forecast) {
 
     /** An evaluation by the match rule, without a forecast. */
-    public Evaluation(String mode, int folds, int threshold, String abstraction, List<ScenarioSummary> scenarios,
+    public Evaluation(String mode, int folds, int tolerance, String abstraction, List<ScenarioSummary> scenarios,
                       Confusion confusion, List<RunResult> runs, List<String> notes, ModelSet models) {
-        this(mode, folds, threshold, abstraction, scenarios, confusion, runs, notes, models, "match", null);
+        this(mode, folds, tolerance, abstraction, scenarios, confusion, runs, notes, models, "match", null);
     }
 }

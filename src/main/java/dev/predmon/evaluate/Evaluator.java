@@ -34,22 +34,22 @@ import java.util.function.Predicate;
 public final class Evaluator {
 
     private final Abstraction abstraction;
-    private final int threshold;
+    private final int tolerance;
     private final int confirm;
     /** Training traces read again with a learned hysteresis, by that hysteresis. */
     private final Map<Map<String, Double>, Map<Path, LogTrace>> retuned = new HashMap<>();
     private final Progress progress;
     private WarningRule rule;
 
-    public Evaluator(Abstraction abstraction, int threshold, Progress progress) {
-        this(abstraction, threshold, abstraction.confirm(), progress);
+    public Evaluator(Abstraction abstraction, int tolerance, Progress progress) {
+        this(abstraction, tolerance, abstraction.confirm(), progress);
     }
 
     /** @param confirm pairs a faulty model must match after the last nominal model is eliminated (see watch) */
-    public Evaluator(Abstraction abstraction, int threshold, int confirm, Progress progress) {
+    public Evaluator(Abstraction abstraction, int tolerance, int confirm, Progress progress) {
         this.confirm = confirm;
         this.abstraction = abstraction;
-        this.threshold = threshold;
+        this.tolerance = tolerance;
         this.progress = progress;
     }
 
@@ -112,13 +112,13 @@ public final class Evaluator {
             summaries.add(ScenarioSummary.of(s.name(), s.faulty(),
                     runs.stream().filter(r -> r.scenario().equals(s.name())).toList()));
         }
-        return new Evaluation(mode, k, threshold, abstraction.name(), List.copyOf(summaries), Confusion.of(runs),
+        return new Evaluation(mode, k, tolerance, abstraction.name(), List.copyOf(summaries), Confusion.of(runs),
                 List.copyOf(runs), List.copyOf(notes), models, ruleFor(models).id(), ForecastScore.of(runs));
     }
 
     private List<RunResult> judge(Path log, ScenarioSpec s, int fold, ModelSet models) throws BadInputException {
         try {
-            return Replay.run(log, s.name(), s.faulty(), s.runs(), fold, models, abstraction, threshold, confirm,
+            return Replay.run(log, s.name(), s.faulty(), s.runs(), fold, models, abstraction, tolerance, confirm,
                     ruleFor(models));
         } catch (IOException e) {
             throw BadInputException.cannotRead(log, e);

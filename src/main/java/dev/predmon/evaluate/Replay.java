@@ -40,19 +40,19 @@ public final class Replay {
      * @param fold the fold it is tested in, or -1
      */
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
-                                      ModelSet models, Abstraction abstraction, int threshold, int confirm)
+                                      ModelSet models, Abstraction abstraction, int tolerance, int confirm)
             throws IOException {
-        return run(log, scenario, faulty, label, fold, models, abstraction, threshold, confirm,
+        return run(log, scenario, faulty, label, fold, models, abstraction, tolerance, confirm,
                 PredictiveMonitor.defaultRule(models));
     }
 
     /** As above, warning by {@code rule}. */
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
-                                      ModelSet models, Abstraction abstraction, int threshold, int confirm,
+                                      ModelSet models, Abstraction abstraction, int tolerance, int confirm,
                                       WarningRule rule) throws IOException {
         Approach approach = new Approach(abstraction.safety().orElse(null),
                 models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
-        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, threshold, confirm, rule, approach::record);
+        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, tolerance, confirm, rule, approach::record);
         return of(replayed, scenario, faulty, label, fold, models, abstraction, approach);
     }
 

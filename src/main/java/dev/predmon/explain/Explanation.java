@@ -59,7 +59,7 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
      * @param model          its id
      * @param scenario       its scenario
      * @param faulty         whether that scenario is faulty
-     * @param matched        it matched the whole trace (within the threshold)
+     * @param matched        it matched the whole trace (within the tolerance)
      * @param stoppedAt      the pair at which it was eliminated, or null
      * @param input          the input there
      * @param expected       the output it expected, or null when it had no transition for the input
@@ -75,10 +75,10 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
      * Explains {@code log} against {@code models}: one explanation per run the log holds, from one replay of it
      * ({@link LogReplay}) with the models' default rule.
      */
-    public static List<Explanation> of(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
+    public static List<Explanation> of(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm)
             throws IOException {
         Replay.Approach approach = approach(models, abstraction);
-        return of(LogReplay.replay(log, models, abstraction, threshold, confirm, PredictiveMonitor.defaultRule(models),
+        return of(LogReplay.replay(log, models, abstraction, tolerance, confirm, PredictiveMonitor.defaultRule(models),
                 approach::record), models, abstraction, approach);
     }
 

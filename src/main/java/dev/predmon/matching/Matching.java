@@ -10,7 +10,7 @@ import java.util.TreeSet;
 /**
  * Which models still match the run being watched, the thesis's MatchTracesRT made incremental: each compacted pair
  * advances every model still alive by its two Mealy steps ({@link ModelTracker}), a model is dropped at an input it
- * cannot take or when its discrepancies exceed the threshold, and the match rule ({@link MatchRule}) is told what
+ * cannot take or when its discrepancies exceed the tolerance, and the match rule ({@link MatchRule}) is told what
  * is left. A scenario matches while any of its machines matches. Per pair the work is one step per model and the
  * state is constant (per model: state, discrepancy count, alive).
  */
@@ -40,14 +40,14 @@ public final class Matching {
     private final MatchRule rule;
 
     /**
-     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
+     * @param tolerance discrepancies a model may accumulate and still match (0: exact matching)
      * @param confirm   pairs a faulty model must match after the last nominal model is eliminated before the match
      *                  rule warns
      */
-    public Matching(List<LearnedModel> models, int threshold, int confirm) {
+    public Matching(List<LearnedModel> models, int tolerance, int confirm) {
         this.rule = new MatchRule(confirm);
         for (LearnedModel m : models) {
-            trackers.add(new ModelTracker(m, threshold));
+            trackers.add(new ModelTracker(m, tolerance));
         }
     }
 

@@ -38,17 +38,17 @@ public final class ModelTracker implements MealySteps<ModelTracker.Outcome> {
     }
 
     private final LearnedModel model;
-    private final int threshold;
+    private final int tolerance;
     private Integer state;
     private int steps;
     private int discrepancies;
     private Failure firstDiscrepancy;
     private Failure elimination;
 
-    /** @param threshold discrepancies tolerated; one more eliminates the model (0: exact matching) */
-    public ModelTracker(LearnedModel model, int threshold) {
+    /** @param tolerance discrepancies tolerated; one more eliminates the model (0: exact matching) */
+    public ModelTracker(LearnedModel model, int tolerance) {
         this.model = model;
-        this.threshold = threshold;
+        this.tolerance = tolerance;
         reset();
     }
 
@@ -84,7 +84,7 @@ public final class ModelTracker implements MealySteps<ModelTracker.Outcome> {
         if (firstDiscrepancy == null) {
             firstDiscrepancy = f;
         }
-        if (discrepancies > threshold) {
+        if (discrepancies > tolerance) {
             elimination = f;
         }
         return Outcome.DISCREPANCY;

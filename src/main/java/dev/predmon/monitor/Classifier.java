@@ -14,9 +14,9 @@ import java.util.OptionalInt;
 
 /**
  * Algorithm 7 of the thesis (MatchTraces), off-line: every model runs the whole trace; a model that cannot take
- * some input, or whose outputs differ more often than the threshold allows, is eliminated (as {@code watch} eliminates
+ * some input, or whose outputs differ more often than the tolerance allows, is eliminated (as {@code watch} eliminates
  * it; the thesis deletes it); every model gets its discrepancy count; the best match is the model with the fewest
- * discrepancies within the threshold, except that a nominal model within the threshold is preferred to any faulty
+ * discrepancies within the tolerance, except that a nominal model within the tolerance is preferred to any faulty
  * one: a nominal scenario that still explains the run is no evidence of a fault. So the verdict is the one
  * {@code watch} reaches at the end of the same log: faulty exactly when every nominal model is out and a faulty one
  * still matches, and no match exactly when every model is out.
@@ -28,7 +28,7 @@ public final class Classifier {
      *
      * @param model         the model
      * @param eliminated    it could not take some input (the thesis's KeyError), or its outputs differed more often
-     *                      than the threshold allows
+     *                      than the tolerance allows
      * @param discrepancies outputs that differed (over the steps it walked)
      * @param failure       the input it could not take, or its first difference, or null
      */
@@ -39,7 +39,7 @@ public final class Classifier {
      * The classification.
      *
      * @param scores every model, in model order
-     * @param best   the best match within the threshold (nominal before faulty, then fewest discrepancies, then model
+     * @param best   the best match within the tolerance (nominal before faulty, then fewest discrepancies, then model
      *               order), if any
      */
     public record Result(List<Score> scores, Optional<Score> best) {
@@ -83,9 +83,9 @@ public final class Classifier {
 
     /**
      * Classifies a complete run given as its compacted pairs (as the replay of its log took them, so that the log is
-     * read once). {@code threshold}: most discrepancies a match may have.
+     * read once). {@code tolerance}: most discrepancies a match may have.
      */
-    public static Result classify(ModelSet models, List<IoPair> pairs, int threshold) {
+    public static Result classify(ModelSet models, List<IoPair> pairs, int tolerance) {
         List<Score> scores = new ArrayList<>();
         for (LearnedModel m : models.models()) {
             ModelTracker t = new ModelTracker(m, Integer.MAX_VALUE); // every discrepancy counted, as Algorithm 7 does
@@ -95,7 +95,7 @@ public final class Classifier {
                 }
             }
             boolean undefined = !t.alive();
-            boolean eliminated = undefined || t.discrepancies() > threshold;
+            boolean eliminated = undefined || t.discrepancies() > tolerance;
             scores.add(new Score(m, eliminated, t.discrepancies(), undefined ? t.elimination()
                     : t.firstDiscrepancy()));
         }

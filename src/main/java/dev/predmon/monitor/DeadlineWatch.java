@@ -66,6 +66,8 @@ final class DeadlineWatch {
     /** Whether an obligation of each property ended at the last record, and whether it was discharged. */
     private final boolean[] ended;
     private final boolean[] discharged;
+    /** Each pending obligation's elapsed time when it was last judged, NaN before. */
+    private final double[] judgedAt;
 
     /** The deadlines of {@code properties} that {@code model} learned durations for; none without a model. */
     DeadlineWatch(List<Property> properties, ForecastModel model) {
@@ -78,6 +80,8 @@ final class DeadlineWatch {
         this.told = new String[n];
         this.ended = new boolean[n];
         this.discharged = new boolean[n];
+        this.judgedAt = new double[n];
+        Arrays.fill(judgedAt, Double.NaN);
         for (int i = 0; i < n; i++) {
             if (properties.get(i) instanceof Response r && model != null) {
                 Survival s = model.obligations().get(r.id());
@@ -130,8 +134,13 @@ final class DeadlineWatch {
             }
             double elapsed = checker.elapsed(i);
             if (Double.isNaN(elapsed)) {
+                judgedAt[i] = Double.NaN;
                 continue;
             }
+            if (elapsed == judgedAt[i] && current[i] != null) {
+                continue; // judged at this elapsed time already: a deadline in ticks changes at the next tick only
+            }
+            judgedAt[i] = elapsed;
             Deadline d = properties[i].within();
             Survival s = survival[i];
             Survival.Estimate raw = s.estimate(elapsed, d.amount());
@@ -159,6 +168,7 @@ final class DeadlineWatch {
         Arrays.fill(told, null);
         Arrays.fill(ended, false);
         Arrays.fill(discharged, false);
+        Arrays.fill(judgedAt, Double.NaN);
     }
 
     /**

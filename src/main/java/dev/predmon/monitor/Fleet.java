@@ -106,7 +106,7 @@ public final class Fleet implements AutoCloseable {
      * How each log's monitor matches: the same for every log; {@code release}: how long a file gone from its log's
      * path is held open after it last grew.
      */
-    record Settings(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule,
+    record Settings(ModelSet models, Abstraction abstraction, int tolerance, int confirm, WarningRule rule,
                     Duration release) {
     }
 
@@ -118,17 +118,17 @@ public final class Fleet implements AutoCloseable {
     private Wakeups wakeups;
 
     /**
-     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
+     * @param tolerance discrepancies a model may accumulate and still match (0: exact matching)
      * @param confirm   pairs a faulty model must match after the last nominal one is eliminated before a warning
      */
-    public Fleet(ModelSet models, Abstraction abstraction, int threshold, int confirm, Listener listener) {
-        this(models, abstraction, threshold, confirm, PredictiveMonitor.defaultRule(models), listener);
+    public Fleet(ModelSet models, Abstraction abstraction, int tolerance, int confirm, Listener listener) {
+        this(models, abstraction, tolerance, confirm, PredictiveMonitor.defaultRule(models), listener);
     }
 
     /** A fleet whose monitors warn by {@code rule}. */
-    public Fleet(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule,
+    public Fleet(ModelSet models, Abstraction abstraction, int tolerance, int confirm, WarningRule rule,
                  Listener listener) {
-        this.settings = new Settings(models, abstraction, threshold, confirm, rule, LogWatcher.DEFAULT_RELEASE);
+        this.settings = new Settings(models, abstraction, tolerance, confirm, rule, LogWatcher.DEFAULT_RELEASE);
         this.listener = listener;
     }
 
@@ -137,7 +137,7 @@ public final class Fleet implements AutoCloseable {
      * fleet may hold open.
      */
     void limits(Duration release, int budget) {
-        settings = new Settings(settings.models(), settings.abstraction(), settings.threshold(), settings.confirm(),
+        settings = new Settings(settings.models(), settings.abstraction(), settings.tolerance(), settings.confirm(),
                 settings.rule(), release);
         openFiles = new OpenFiles(budget);
     }

@@ -4,7 +4,6 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.UnmappedMessage;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
-import dev.predmon.forecast.Survival;
 import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
 import dev.predmon.matching.ModelTracker;
@@ -16,7 +15,6 @@ import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
-import dev.predmon.property.Response;
 
 import java.util.List;
 import java.util.Map;
@@ -28,7 +26,7 @@ import java.util.function.ObjIntConsumer;
  * The predictive monitor: the thesis's Algorithm 8 with MatchTracesRT, made incremental. Records are pushed
  * one at a time through the shared {@link TracePipeline}; each compacted pair advances every model still alive
  * by its two Mealy steps ({@code input/OK}, {@code Delta/output}) ({@link Matching}); a model is dropped at an input
- * it cannot take or when its discrepancies exceed the threshold. A scenario matches while any of its machines
+ * it cannot take or when its discrepancies exceed the tolerance. A scenario matches while any of its machines
  * matches.
  *
  * <p>The forecast ({@link ForecastTracker}) follows the same pairs when the models carry one: a probability of
@@ -47,69 +45,60 @@ import java.util.function.ObjIntConsumer;
 public final class PredictiveMonitor implements PipelineListener {
 
     private final Matching matching;
-    private final Optional<Bound> safety;
     private final SafetyMonitor properties;
     private final Consumer<MonitorEvent> events;
     private final TracePipeline pipeline;
-    private MonitorEvent.Warning warning;
-    /** The run's first warning of any property: the forecast's {@link #warning}, or a deadline's. */
-    private MonitorEvent.Warning anyWarning;
-    private MonitorEvent.Violation violation;
-    private boolean noMatch;
-    private Double battery;
+    /** What the current run has shown so far; starts over with every run. */
+    private final RunState now = new RunState();
     private Clock clock = Clock.SECONDS;
-    private long pairs;
-    /** The pair of the current run at which the thesis's match rule first held (confirm included), or -1. */
-    private long matchRuleAt = -1;
-    private int run;
-    private long runLine = 1;
     private final RunHistory finished = new RunHistory();
-    private MonitorEvent.Warning firstWarning;
-    private MonitorEvent.Violation firstViolation;
     /** Runs before the last restart: the runs after it are numbered on from there. */
     private int runsBefore;
     private final LogTotals before = new LogTotals();
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private final Alarm alarm;
-    private final WarningPolicy policy;
-    private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
+    /** The forecast property's value, violation, forecast and warnings. */
+    private final ForecastFollow follow;
     private TickSeconds ticks = TickSeconds.NONE;
     /** Sees what the pipeline gives the monitor, each just before the monitor takes it (the replay's stream). */
     private PipelineListener tee = (pair, trigger) -> { };
 
     /** As below, confirming as the abstraction says ({@link Abstraction#confirm()}). */
-    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, Consumer<MonitorEvent> events) {
-        this(models, abstraction, threshold, abstraction.confirm(), events);
+    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int tolerance, Consumer<MonitorEvent> events) {
+        this(models, abstraction, tolerance, abstraction.confirm(), events);
     }
 
     /** As below, warning by {@link #defaultRule}. */
-    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, int confirm,
+    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int tolerance, int confirm,
                              Consumer<MonitorEvent> events) {
-        this(models, abstraction, threshold, confirm, defaultRule(models), events);
+        this(models, abstraction, tolerance, confirm, defaultRule(models), events);
     }
 
     /**
-     * @param threshold discrepancies a model may accumulate and still match (0: exact matching)
+     * @param tolerance discrepancies a model may accumulate and still match (0: exact matching)
      * @param confirm   pairs a faulty model must match after the last nominal model is eliminated before the match
      *                  rule's warning
      * @param rule      when to warn; {@link WarningRule#FORECAST} needs models learned with a forecast
      * @param events    receives every event, in log order
      */
-    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int threshold, int confirm, WarningRule rule,
+    public PredictiveMonitor(ModelSet models, Abstraction abstraction, int tolerance, int confirm, WarningRule rule,
                              Consumer<MonitorEvent> events) {
         if (rule == WarningRule.FORECAST && models.forecast() == null) {
             throw new IllegalArgumentException("the forecast rule needs models learned with a forecast");
         }
         this.rule = rule;
         this.forecast = ForecastTracker.of(models);
-        this.matching = new Matching(models.models(), threshold, confirm);
-        this.safety = abstraction.safety();
+        this.matching = new Matching(models.models(), tolerance, confirm);
+        Bound safety = abstraction.safety().orElse(null);
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
-        this.alarm = new Alarm(safety.orElse(null), forecast, this.events);
-        this.policy = new WarningPolicy(rule, forecast, alarm);
+        this.alarm = new Alarm(safety, forecast, this.events);
+        WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
         this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
-                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, new Deadlines());
+                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null,
+                new DeadlineEvents(now, rule, this.events));
+        this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
+                properties.forecastId(), this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
@@ -153,7 +142,7 @@ public final class PredictiveMonitor implements PipelineListener {
         tee.runStarted(number, first);
         finished.add(current());
         startRun(runsBefore + number, first.line());
-        events.accept(new MonitorEvent.RunStarted(run, first.time(), first.line(), first.clock()));
+        events.accept(new MonitorEvent.RunStarted(now.run, first.time(), first.line(), first.clock()));
     }
 
     /** The rule used when none is asked for: the forecast's when held-out runs chose its threshold, else the thesis's. */
@@ -162,16 +151,8 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     private void startRun(int number, long line) {
-        run = number;
-        runLine = line;
+        now.start(number, line);
         matching.reset();
-        warning = null;
-        anyWarning = null;
-        violation = null;
-        noMatch = false;
-        battery = null;
-        pairs = 0;
-        matchRuleAt = -1;
         alarm.reset();
         properties.reset();
         if (forecast != null) {
@@ -180,10 +161,10 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     private RunOutcome current() {
-        return new RunOutcome(run, runLine, (MonitorEvent.Warning) ticks.event(warning),
-                (MonitorEvent.Violation) ticks.event(violation), noMatch, pairs, battery != null,
+        return new RunOutcome(now.run, now.firstLine, (MonitorEvent.Warning) ticks.event(now.warning),
+                (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs, now.value != null,
                 forecast == null ? null : forecast.last(), properties.verdicts(),
-                (MonitorEvent.Warning) ticks.event(anyWarning));
+                (MonitorEvent.Warning) ticks.event(now.anyWarning));
     }
 
     /**
@@ -217,79 +198,13 @@ public final class PredictiveMonitor implements PipelineListener {
     public void record(LogRecord record) {
         tee.record(record);
         clock = ticks.clock(record.clock());
+        int run = now.run;
         properties.accept(record, run);
         alarm.record(record, run);
         double v = properties.forecastValue(); // safety's valueOf(record), as the checker read it
-        if (Double.isNaN(v)) {
-            return;
+        if (!Double.isNaN(v)) {
+            follow.reading(record, v);
         }
-        Double before = battery;
-        battery = v;
-        if (!alarm.violated() && safety.get().violatedBy(v)) {
-            Bound p = safety.get();
-            MonitorEvent.Violation now = new MonitorEvent.Violation(record.time(), record.line(), p.id(), p.name(), v,
-                    before, p.violation(v), record.clock(), run, true);
-            violation = violation == null ? now : violation;
-            firstViolation = firstViolation == null ? now : firstViolation;
-            alarm.violatedNow();
-            events.accept(now);
-        }
-        alarm.holdsAgain(record, v, run);
-        if (forecast != null && (before == null || before != v)) {
-            Forecast f = told(forecast.reading(record.time(), v), record);
-            alarm.reading(record, v, f, policy.forecastWarns(f, !matching.nominalAlive()), run);
-            WarningPolicy.Decision d = policy.atReading(f, v, !matching.nominalAlive());
-            if (d != null) {
-                warn(record, matching.faultyAlive(), d.reason(), f, d.clause());
-            }
-        } else if (forecast == null) {
-            alarm.reading(record, v, null, false, run); // models without a forecast: recovered by the action alone
-        }
-    }
-
-    /** What the bounded responses' deadline forecasts say: warnings, recoveries and forecasts of those properties. */
-    private final class Deadlines implements DeadlineWatch.Listener {
-        @Override
-        public void due(LogRecord r, DeadlineWatch.Due d) {
-            MonitorEvent.Warning w = new MonitorEvent.Warning(r.time(), r.line(), List.of(), battery, pairs, r.clock(),
-                    run, rule, null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(), d.estimate());
-            anyWarning = anyWarning == null ? w : anyWarning;
-            events.accept(w);
-        }
-
-        @Override
-        public void recovered(LogRecord r, Response p, String reason) {
-            events.accept(new MonitorEvent.Recovered(r.time(), r.line(), "discharged", Double.NaN, reason, r.clock(),
-                    run, p.id()));
-        }
-
-        @Override
-        public void changed(LogRecord r, Response p, Survival.Estimate e) {
-            events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), null, r.clock(), run, p.id(), e));
-        }
-    }
-
-    /** Reports {@code news} if it is news, and returns the latest forecast. */
-    private Forecast told(Forecast news, LogRecord trigger) {
-        Forecast f = forecast.last();
-        everyForecast.accept(f, run);
-        if (news != null) {
-            events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(), run,
-                    properties.forecastId()));
-        }
-        return f;
-    }
-
-    private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f,
-                      MonitorEvent.Clause clause) {
-        MonitorEvent.Warning w = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, battery, pairs,
-                trigger.clock(), run, rule, f, reason, clause, matching.likeliestFaulty(faultyAlive),
-                properties.forecastId());
-        warning = warning == null ? w : warning; // the run's outcome keeps its first warning
-        anyWarning = anyWarning == null ? w : anyWarning;
-        firstWarning = firstWarning == null ? w : firstWarning;
-        alarm.warned(w);
-        events.accept(w);
     }
 
     @Override
@@ -309,25 +224,20 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void pair(IoPair pair, LogRecord trigger) {
         tee.pair(pair, trigger);
-        pairs++;
+        now.pairs++;
         Matching.Step step = matching.pair(pair);
-        if (step.ruleWarns() && matchRuleAt < 0) {
-            matchRuleAt = pairs - 1;
+        if (step.ruleWarns() && now.matchRuleAt < 0) {
+            now.matchRuleAt = now.pairs - 1;
         }
         for (ModelTracker t : step.eliminated()) {
             LearnedModel m = t.model();
             events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
-                    m.faulty(), t.elimination().describe(), trigger.clock(), run));
+                    m.faulty(), t.elimination().describe(), trigger.clock(), now.run));
         }
-        Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
-                battery == null ? Double.NaN : battery, trigger.line()), trigger);
-        WarningPolicy.Decision d = policy.atPair(pair, step, f);
-        if (d != null) {
-            warn(trigger, step.faultyAlive(), d.reason(), f, d.clause());
-        }
-        if (!noMatch && step.noMatch()) {
-            noMatch = true;
-            events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock(), run));
+        follow.pair(pair, step, trigger);
+        if (!now.noMatch && step.noMatch()) {
+            now.noMatch = true;
+            events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock(), now.run));
         }
     }
 
@@ -351,7 +261,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * {@link MonitorEvent.ForecastChanged} tells only the changes that matter).
      */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
-        this.everyForecast = each;
+        follow.onEveryForecast(each);
     }
 
     /**
@@ -372,39 +282,29 @@ public final class PredictiveMonitor implements PipelineListener {
         return forecast == null ? Optional.empty() : Optional.ofNullable(forecast.last());
     }
 
-    /** The probability at which the forecast rule warns, if the models carry a forecast. */
-    public Optional<Double> forecastThreshold() {
-        return forecast == null ? Optional.empty() : Optional.of(forecast.threshold());
-    }
-
     /** The first warning of the log (of any run), once raised. */
     public Optional<MonitorEvent.Warning> warning() {
-        return Optional.ofNullable((MonitorEvent.Warning) ticks.event(firstWarning));
+        return Optional.ofNullable((MonitorEvent.Warning) ticks.event(follow.firstWarning()));
     }
 
     /** The forecast property's first violation in the log (of any run), once seen. */
     public Optional<MonitorEvent.Violation> violation() {
-        return Optional.ofNullable((MonitorEvent.Violation) ticks.event(firstViolation));
+        return Optional.ofNullable((MonitorEvent.Violation) ticks.event(follow.firstViolation()));
     }
 
     /** The run being matched: 0, then 1, 2, ... in a log that holds several. */
     public int run() {
-        return run;
+        return now.run;
     }
 
     /** Whether, in some run since the start, a point came where no model, nominal or faulty, matched it any more. */
     public boolean noMatch() {
-        return noMatch || finished.noMatch();
+        return now.noMatch || finished.noMatch();
     }
 
     /** Every model's tracker, in model order. */
     public List<ModelTracker> trackers() {
         return matching.trackers();
-    }
-
-    /** Last value on the safety property's channel (the battery level), or null. */
-    public Double battery() {
-        return battery;
     }
 
     /** What the log's times count: seconds, or ticks in a log without time stamps (seconds until a record says). */
@@ -417,12 +317,12 @@ public final class PredictiveMonitor implements PipelineListener {
      * included, whether or not the rule in force warned there; -1 while it has not.
      */
     public long matchRuleAt() {
-        return matchRuleAt;
+        return now.matchRuleAt;
     }
 
     /** Compacted pairs matched so far. */
     public long pairs() {
-        return pairs;
+        return now.pairs;
     }
 
     /** The pipeline's counters (records, interface records, unmapped messages). */

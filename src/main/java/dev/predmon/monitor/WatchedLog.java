@@ -20,7 +20,7 @@ public final class WatchedLog {
     WatchedLog(Path path, Fleet.Settings settings, Fleet.Listener listener) {
         this.path = path;
         this.name = path.toString();
-        this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.threshold(),
+        this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.tolerance(),
                 settings.confirm(), settings.rule(), e -> listener.event(this, e));
         this.watcher = LogWatcher.withRelease(path, monitor, p -> listener.problem(this, p),
                 r -> listener.record(this, r), settings.release());

@@ -33,16 +33,16 @@ public final class LogReplay {
     /**
      * Replays {@code log} against {@code models}, warning by {@code rule}.
      *
-     * @param threshold discrepancies a model may accumulate and still match
+     * @param tolerance discrepancies a model may accumulate and still match
      * @param confirm   pairs a faulty model must match after the last nominal one is eliminated
      * @param taken     gets every record with its run right after the monitor took it
      */
-    public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm,
+    public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm,
                                      WarningRule rule, ObjIntConsumer<LogRecord> taken) throws IOException {
         List<Builder> runs = new ArrayList<>();
         PredictiveMonitor[] self = new PredictiveMonitor[1];
         LogRecord[] current = new LogRecord[1];
-        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, threshold, confirm, rule,
+        PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, tolerance, confirm, rule,
                 e -> of(runs, self[0].run()).event(e));
         self[0] = monitor;
         monitor.tee(new PipelineListener() {
@@ -88,9 +88,9 @@ public final class LogReplay {
     }
 
     /** As above, with the models' default rule ({@link PredictiveMonitor#defaultRule}) and no record hook. */
-    public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int threshold, int confirm)
+    public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm)
             throws IOException {
-        return replay(log, models, abstraction, threshold, confirm, PredictiveMonitor.defaultRule(models),
+        return replay(log, models, abstraction, tolerance, confirm, PredictiveMonitor.defaultRule(models),
                 (r, run) -> { });
     }
 

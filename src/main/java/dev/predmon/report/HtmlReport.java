@@ -74,7 +74,7 @@ public final class HtmlReport {
                         ? e.folds() + "-fold cross-validation over the training logs (every run is judged by models "
                         + "learned without it)"
                         : "models learned on the training logs, every run of the test logs judged")
-                .append("; discrepancy threshold ").append(e.threshold()).append("; warning rule <code>")
+                .append("; discrepancy tolerance ").append(e.tolerance()).append("; warning rule <code>")
                 .append(Svg.esc(e.rule()))
                 .append("</code>; abstraction <code>")
                 .append(Svg.esc(e.abstraction())).append("</code>. Each run was replayed through the code path of "

@@ -28,7 +28,7 @@ public final class TextReport {
     /** Prints the tables of {@code e}. */
     public static void print(PrintWriter out, Evaluation e) {
         out.println((e.mode().equals("cross-validation") ? e.folds() + "-fold cross-validation"
-                : "learned on --logs, judged --test") + ", discrepancy threshold " + e.threshold() + ", abstraction '"
+                : "learned on --logs, judged --test") + ", discrepancy tolerance " + e.tolerance() + ", abstraction '"
                 + e.abstraction() + "'");
         out.println();
         Table scenarios = new Table("scenario", "kind", ">runs", ">warned", ">hits", ">false", ">missed", ">late",

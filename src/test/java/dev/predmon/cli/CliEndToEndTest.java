@@ -128,10 +128,10 @@ class CliEndToEndTest {
     @Test
     void aNegativeThresholdIsAUsageErrorForEveryMatchingCommand() {
         for (String command : List.of("watch", "classify", "explain")) {
-            Cli r = Cli.run(command, "--log", "x.log", "--threshold", "-1");
+            Cli r = Cli.run(command, "--log", "x.log", "--tolerance", "-1");
             assertEquals(ExitCodes.USAGE, r.code(), command);
-            assertTrue(r.err().contains("--threshold must be at least 0"), r.err());
+            assertTrue(r.err().contains("--tolerance must be at least 0"), r.err());
         }
-        assertEquals(ExitCodes.USAGE, Cli.run("evaluate", "--logs", "x", "--threshold", "-2").code());
+        assertEquals(ExitCodes.USAGE, Cli.run("evaluate", "--logs", "x", "--tolerance", "-2").code());
     }
 }

@@ -108,6 +108,26 @@ class LivePageBrowserTest {
         }
     }
 
+    /**
+     * Clicks {@code element} until {@code condition} holds: on a loaded machine the page can lay itself out again
+     * between finding the element and the click, which then lands beside it.
+     */
+    private static void clickUntil(HeadlessChromium.Page page, String element, String condition, String what)
+            throws Exception {
+        for (int attempt = 1; ; attempt++) {
+            click(page, element);
+            long deadline = System.nanoTime() + 5_000_000_000L;
+            while (System.nanoTime() < deadline) {
+                if ("true".equals(page.eval("String(!!(() => { try { return " + condition + "; } catch (e) { return "
+                        + "false; } })())"))) {
+                    return;
+                }
+                Thread.sleep(50);
+            }
+            assertTrue(attempt < 6, "timed out: " + what);
+        }
+    }
+
     /** A real click (mouse pressed and released) in the middle of the element {@code element} gives. */
     private static void click(HeadlessChromium.Page page, String element) throws Exception {
         JsonNode r = JSON.readTree(page.eval("JSON.stringify((" + element + ").getBoundingClientRect())"));
@@ -221,12 +241,10 @@ class LivePageBrowserTest {
             assertTrue(page.eval(r1 + ".querySelector('.action').textContent")
                     .contains("send the robot to the charging station"));
             assertEquals("sound off", page.eval("document.getElementById('sound').textContent"), "no sound by default");
-            click(page, "document.getElementById('notify')");
-            waitFor(page, "document.getElementById('notify').getAttribute('aria-pressed') === 'true'",
-                    "notifications on");
+            clickUntil(page, "document.getElementById('notify')",
+                    "document.getElementById('notify').getAttribute('aria-pressed') === 'true'", "notifications on");
 
-            click(page, r1 + ".querySelector('button.ack')");
-            waitFor(page, r1 + ".dataset.ack === 'true'", "acknowledged");
+            clickUntil(page, r1 + ".querySelector('button.ack')", r1 + ".dataset.ack === 'true'", "acknowledged");
             assertEquals("acknowledged", page.eval(r1 + ".querySelector('button.ack').textContent"));
             assertTrue(page.eval("document.getElementById('summary').textContent").contains("1 acknowledged"));
             page.call("Page.reload", JSON.createObjectNode());

@@ -38,10 +38,14 @@ class UsageErrorTest {
         assertEquals(List.of("predmon: Missing required option: '--log=FILE'", "see 'predmon watch --help'"),
                 missing.err().strip().lines().toList());
 
-        Cli negative = Cli.run("classify", "--log", "x.log", "--threshold", "-1");
+        Cli negative = Cli.run("classify", "--log", "x.log", "--tolerance", "-1");
         assertEquals(ExitCodes.USAGE, negative.code());
         assertEquals(2, negative.err().strip().lines().count(), negative.err());
-        assertTrue(negative.err().contains("--threshold must be at least 0"), negative.err());
+        assertTrue(negative.err().contains("--tolerance must be at least 0"), negative.err());
+        Cli oldName = Cli.run("classify", "--log", "x.log", "--threshold", "-1");
+        assertEquals(ExitCodes.USAGE, oldName.code(), "the option's earlier name is still taken");
+        assertTrue(oldName.err().contains("--threshold must be at least 0"), oldName.err());
+        assertFalse(Cli.run("classify", "--help").out().contains("--threshold"), "and not shown in the help");
 
         Cli misspelt = Cli.run("clasify", "--log", "x.log");
         assertEquals(ExitCodes.USAGE, misspelt.code());

@@ -110,7 +110,7 @@ class EvaluatorTest {
     @Test
     void jsonHasTheDocumentedFields() throws Exception {
         JsonNode j = new ObjectMapper().readTree(new ObjectMapper().writeValueAsString(folds));
-        for (String f : List.of("mode", "folds", "threshold", "abstraction", "scenarios", "confusion", "runs", "notes")) {
+        for (String f : List.of("mode", "folds", "tolerance", "abstraction", "scenarios", "confusion", "runs", "notes")) {
             assertTrue(j.has(f), f);
         }
         assertFalse(j.has("models"));

@@ -94,7 +94,7 @@ class ReportInChromiumTest {
         Evaluation e = new Evaluator(AbstractionFiles.defaults(), 0, Progress.NONE)
                 .crossValidate(ScenarioLayout.scan(logs, AbstractionFiles.defaults()), 2);
         ModelSet shipped = ModelStore.read(Path.of("models"), AbstractionFiles.defaults());
-        Evaluation withShipped = new Evaluation(e.mode(), e.folds(), e.threshold(), e.abstraction(), e.scenarios(),
+        Evaluation withShipped = new Evaluation(e.mode(), e.folds(), e.tolerance(), e.abstraction(), e.scenarios(),
                 e.confusion(), e.runs(), e.notes(), shipped);
 
         SvgTexts.Measured m = SvgTexts.measure(open("shipped.html", HtmlReport.html(withShipped, AbstractionFiles.defaults())));

@@ -1,0 +1,124 @@
+package dev.predmon.monitor;
+
+import dev.predmon.compact.IoPair;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.matching.Matching;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Bound;
+
+import java.util.List;
+import java.util.function.Consumer;
+import java.util.function.ObjIntConsumer;
+
+/**
+ * The forecast's property followed through the runs of a log, for the {@link PredictiveMonitor}: each new value (its
+ * violation, the recovery the {@link Alarm} sees), the forecast after each value and each pair, and the warnings the
+ * {@link WarningPolicy} decides on them. It keeps the log's first warning and first violation of the property.
+ */
+final class ForecastFollow {
+
+    private final Bound bound;
+    private final ForecastTracker forecast;
+    private final Alarm alarm;
+    private final WarningPolicy policy;
+    private final Matching matching;
+    private final RunState now;
+    private final WarningRule rule;
+    private final String property;
+    private final Consumer<MonitorEvent> events;
+    private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
+    private MonitorEvent.Warning firstWarning;
+    private MonitorEvent.Violation firstViolation;
+
+    /**
+     * @param bound    the forecast's property, null without one
+     * @param forecast the forecast, null for models without one
+     * @param property the property's id, null without one
+     */
+    ForecastFollow(Bound bound, ForecastTracker forecast, Alarm alarm, WarningPolicy policy, Matching matching,
+                   RunState now, WarningRule rule, String property, Consumer<MonitorEvent> events) {
+        this.bound = bound;
+        this.forecast = forecast;
+        this.alarm = alarm;
+        this.policy = policy;
+        this.matching = matching;
+        this.now = now;
+        this.rule = rule;
+        this.property = property;
+        this.events = events;
+    }
+
+    /** The property's value {@code v}, read from {@code record}: its violation, recovery, forecast and warning. */
+    void reading(LogRecord record, double v) {
+        int run = now.run;
+        Double before = now.value;
+        now.value = v;
+        if (!alarm.violated() && bound.violatedBy(v)) {
+            MonitorEvent.Violation violation = new MonitorEvent.Violation(record.time(), record.line(), bound.id(),
+                    bound.name(), v, before, bound.violation(v), record.clock(), run, true);
+            now.violation = now.violation == null ? violation : now.violation;
+            firstViolation = firstViolation == null ? violation : firstViolation;
+            alarm.violatedNow();
+            events.accept(violation);
+        }
+        alarm.holdsAgain(record, v, run);
+        if (forecast != null && (before == null || before != v)) {
+            Forecast f = told(forecast.reading(record.time(), v), record);
+            alarm.reading(record, v, f, policy.forecastWarns(f, !matching.nominalAlive()), run);
+            WarningPolicy.Decision d = policy.atReading(f, v, !matching.nominalAlive());
+            if (d != null) {
+                warn(record, matching.faultyAlive(), d.reason(), f, d.clause());
+            }
+        } else if (forecast == null) {
+            alarm.reading(record, v, null, false, run); // models without a forecast: recovered by the action alone
+        }
+    }
+
+    /** A compacted pair, {@code step} its matching: the forecast after it, and a warning if the policy decides one. */
+    void pair(IoPair pair, Matching.Step step, LogRecord trigger) {
+        Forecast f = forecast == null ? null : told(forecast.pair(pair.input(), pair.output(), trigger.time(),
+                now.value == null ? Double.NaN : now.value, trigger.line()), trigger);
+        WarningPolicy.Decision d = policy.atPair(pair, step, f);
+        if (d != null) {
+            warn(trigger, step.faultyAlive(), d.reason(), f, d.clause());
+        }
+    }
+
+    /** Also tells {@code each} every forecast with its run ({@link PredictiveMonitor#onEveryForecast}). */
+    void onEveryForecast(ObjIntConsumer<Forecast> each) {
+        this.everyForecast = each;
+    }
+
+    /** The log's first warning of the property (of any run), or null. */
+    MonitorEvent.Warning firstWarning() {
+        return firstWarning;
+    }
+
+    /** The log's first violation of the property (of any run), or null. */
+    MonitorEvent.Violation firstViolation() {
+        return firstViolation;
+    }
+
+    /** Reports {@code news} if it is news, and returns the latest forecast. */
+    private Forecast told(Forecast news, LogRecord trigger) {
+        Forecast f = forecast.last();
+        everyForecast.accept(f, now.run);
+        if (news != null) {
+            events.accept(new MonitorEvent.ForecastChanged(trigger.time(), trigger.line(), news, trigger.clock(),
+                    now.run, property));
+        }
+        return f;
+    }
+
+    private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f,
+                      MonitorEvent.Clause clause) {
+        MonitorEvent.Warning w = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, now.value,
+                now.pairs, trigger.clock(), now.run, rule, f, reason, clause, matching.likeliestFaulty(faultyAlive),
+                property);
+        now.warning = now.warning == null ? w : now.warning; // the run's outcome keeps its first warning
+        now.anyWarned(w);
+        firstWarning = firstWarning == null ? w : firstWarning;
+        alarm.warned(w);
+        events.accept(w);
+    }
+}

@@ -1,0 +1,46 @@
+package dev.predmon.monitor;
+
+/**
+ * What the current run has shown the {@link PredictiveMonitor} so far: its number and first line, its first warnings
+ * and violation, the forecast property's last value, the pairs matched and where the thesis's rule first held. All of
+ * it starts over with every run ({@link #start}); what outlives a run is the monitor's {@link RunHistory}.
+ */
+final class RunState {
+
+    /** The run: 0, then 1, 2, ... in a log that holds several. */
+    int run;
+    /** The line of the run's first record. */
+    long firstLine = 1;
+    /** The forecast property's first warning (the forecast's or the thesis's rule), or null. */
+    MonitorEvent.Warning warning;
+    /** The first warning of any property: {@link #warning}, or a deadline's; null before one. */
+    MonitorEvent.Warning anyWarning;
+    /** The forecast property's first violation, or null. */
+    MonitorEvent.Violation violation;
+    /** Whether a point came where no model, nominal or faulty, matched the run any more. */
+    boolean noMatch;
+    /** The forecast property's last value, null before one. */
+    Double value;
+    /** Compacted pairs matched. */
+    long pairs;
+    /** The pair at which the thesis's match rule first held (confirm included), or -1. */
+    long matchRuleAt = -1;
+
+    /** Run {@code number} begins at {@code line}: nothing seen yet. */
+    void start(int number, long line) {
+        run = number;
+        firstLine = line;
+        warning = null;
+        anyWarning = null;
+        violation = null;
+        noMatch = false;
+        value = null;
+        pairs = 0;
+        matchRuleAt = -1;
+    }
+
+    /** A warning of some property: kept when it is the run's first. */
+    void anyWarned(MonitorEvent.Warning w) {
+        anyWarning = anyWarning == null ? w : anyWarning;
+    }
+}
