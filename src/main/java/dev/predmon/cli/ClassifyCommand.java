@@ -3,7 +3,7 @@ package dev.predmon.cli;
 import dev.predmon.Terminal;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
-import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunId;
 import dev.predmon.replay.ReplayedLog;
 import dev.predmon.replay.ReplayedRun;
 import picocli.CommandLine.Command;
@@ -46,7 +46,7 @@ final class ClassifyCommand implements Callable<Integer> {
                 ? replayed.runs().stream().filter(r -> !r.pairs().isEmpty()).toList() : replayed.runs();
         List<Result> results = new ArrayList<>();
         for (ReplayedRun run : runs) {
-            String name = LogTrace.name(replayed.log(), run.run(), replayed.runs().size());
+            String name = RunId.of(replayed.log(), run.run(), replayed.runs().size()).name();
             Classifier.Result r = Classifier.classify(set, run.pairs().stream().map(ReplayedRun.Pair::pair).toList(),
                     input.tolerance());
             if (input.json) {

@@ -101,7 +101,7 @@ public final class Evaluator {
         }
         ModelSet all = learn(specs, samples, log -> true, new ArrayList<>(), "");
         c.step("learned the models shown, on every log");
-        runs.sort(Comparator.comparing(RunResult::scenario).thenComparing(RunResult::log));
+        runs.sort(Comparator.comparing(RunResult::scenario).thenComparing(r -> r.log().name()));
         return result("cross-validation", used, specs, runs, notes, all);
     }
 

@@ -7,7 +7,7 @@ import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.LogRecord;
-import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.RunId;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
@@ -92,7 +92,7 @@ public final class Replay {
             Verdict verdict = Verdict.of(faulty, warningTime, violationTime);
             Double lead = verdict == Verdict.WARNED_BEFORE_VIOLATION ? violationTime - warningTime : null;
             List<ReplayedRun.Timed> scored = r.beforeViolation();
-            results.add(new RunResult(scenario, faulty, LogTrace.name(replayed.log(), o.run(), runs.size()), fold,
+            results.add(new RunResult(scenario, faulty, RunId.of(replayed.log(), o.run(), runs.size()), fold,
                     verdict, warningTime, warning == null ? null : warning.line(),
                     warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.battery(),
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),

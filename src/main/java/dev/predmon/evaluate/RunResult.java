@@ -1,6 +1,7 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.forecast.Forecast;
+import dev.predmon.pipeline.RunId;
 
 import java.util.List;
 
@@ -42,7 +43,7 @@ import java.util.List;
  * @param properties       the abstraction's other properties (every one but the forecast's), each with its first
  *                         warning and violation in the run, in file order
  */
-public record RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
+public record RunResult(String scenario, boolean faulty, RunId log, int fold, Verdict verdict, Double warningTime,
                         Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                         List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
@@ -50,7 +51,7 @@ public record RunResult(String scenario, boolean faulty, String log, int fold, V
                         List<PropertyResult> properties) {
 
     /** A result without the other properties. */
-    public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
+    public RunResult(String scenario, boolean faulty, RunId log, int fold, Verdict verdict, Double warningTime,
                      Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                      Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                      List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
@@ -71,7 +72,7 @@ public record RunResult(String scenario, boolean faulty, String log, int fold, V
     }
 
     /** A result without forecasts. */
-    public RunResult(String scenario, boolean faulty, String log, int fold, Verdict verdict, Double warningTime,
+    public RunResult(String scenario, boolean faulty, RunId log, int fold, Verdict verdict, Double warningTime,
                      Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
                      Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                      List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,

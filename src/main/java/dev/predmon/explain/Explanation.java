@@ -130,7 +130,7 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
                         t.discrepancies(), reason));
             }
         }
-        return new Explanation(run.log(), List.copyOf(steps), List.copyOf(fates), run, rule,
+        return new Explanation(run.log().name(), List.copyOf(steps), List.copyOf(fates), run, rule,
                 replayed.outcome().warning(), replayed.matchRuleAt());
     }
 }

@@ -5,6 +5,7 @@ import dev.predmon.forecast.Calibration;
 import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
+import dev.predmon.forecast.ScorecardTally;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.Survival;
 import dev.predmon.forecast.ThresholdChoice;
@@ -174,52 +175,16 @@ public final class DeadlineTraining {
      * deadline's passing, in the deadline's unit.
      */
     static Scorecard scorecard(Response property, int folds, List<HeldOut> judged) {
-        int missed = 0;
-        int warned = 0;
-        int alarms = 0;
-        List<Double> leads = new ArrayList<>();
-        double brier = 0;
-        double base = 0;
-        int scored = 0;
+        ScorecardTally tally = new ScorecardTally();
         for (int f = 0; f < folds; f++) {
             int fold = f;
             DeadlineRule rule = rule(judged.stream().filter(h -> h.fold() != fold).toList());
-            for (HeldOut h : judged) {
-                if (h.fold() != fold) {
-                    continue;
-                }
-                double y = h.missed() ? 1 : 0;
-                double warnedAt = h.caughtAt();
-                double sum = 0;
-                for (int i = 0; i < h.probabilities().size(); i++) {
-                    double p = rule.calibration().apply(h.probabilities().get(i));
-                    sum += (p - y) * (p - y);
-                    if (p >= rule.threshold() && !(h.elapsed().get(i) >= warnedAt)) {
-                        warnedAt = h.elapsed().get(i); // the first step at the threshold, unless novelty came first
-                    }
-                }
-                if (!h.probabilities().isEmpty()) {
-                    brier += sum / h.probabilities().size();
-                    base += (h.baseRate() - y) * (h.baseRate() - y);
-                    scored++;
-                }
-                boolean warning = !Double.isNaN(warnedAt);
-                if (h.missed()) {
-                    missed++;
-                    if (warning) {
-                        warned++;
-                        leads.add(h.duration() - warnedAt);
-                    }
-                } else if (warning) {
-                    alarms++;
-                }
-            }
+            judged.stream().filter(h -> h.fold() == fold).forEach(h -> tally.add(h.probabilities(), h.elapsed(),
+                    h.caughtAt(), h.missed(), h.duration(), h.baseRate(), rule.calibration(), rule.threshold()));
         }
         Deadline d = property.within();
-        return new Scorecard(property.name(), folds, judged.size(), missed, warned, alarms, Scorecard.median(leads),
-                d.unit() == Deadline.Unit.OCCURRENCES ? "occurrences" : d.unit().key,
-                scored == 0 ? Double.NaN : brier / scored, scored == 0 ? Double.NaN : base / scored,
-                Scorecard.OBLIGATIONS);
+        return tally.scorecard(property.name(), folds, judged.size(),
+                d.unit() == Deadline.Unit.OCCURRENCES ? "occurrences" : d.unit().key, Scorecard.OBLIGATIONS);
     }
 
     /** The runs of the logs whose fold {@code include} selects, each of the runs its scenario learns from. */

@@ -5,6 +5,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.Calibration;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
+import dev.predmon.forecast.ScorecardTally;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.mealy.MealyTrace;
@@ -133,13 +134,7 @@ public final class ForecastTraining {
         if (property == null || judged.isEmpty()) {
             return List.of();
         }
-        int violating = 0;
-        int warned = 0;
-        int alarms = 0;
-        List<Double> leads = new ArrayList<>();
-        double brier = 0;
-        double base = 0;
-        int scored = 0;
+        ScorecardTally tally = new ScorecardTally();
         for (int f = 0; f < folds; f++) {
             int fold = f;
             List<HeldOut> others = judged.stream().filter(h -> h.fold() != fold).toList();
@@ -149,41 +144,14 @@ public final class ForecastTraining {
                     calibration.apply(h.run().peak()), h.run().violated(), !Double.isNaN(h.run().warnedAt())))
                     .toList()).threshold();
             for (HeldOut judgedRun : judged) {
-                if (judgedRun.fold() != fold) {
-                    continue;
-                }
-                HeldOutRun h = judgedRun.run();
-                boolean violated = h.violated();
-                double y = violated ? 1 : 0;
-                double warnedAt = h.warnedAt();
-                double sum = 0;
-                for (int i = 0; i < h.probabilities().size(); i++) {
-                    double p = calibration.apply(h.probabilities().get(i));
-                    sum += (p - y) * (p - y);
-                    if (p >= threshold && !(h.times().get(i) >= warnedAt)) {
-                        warnedAt = h.times().get(i); // the first forecast at the threshold, unless a clause came first
-                    }
-                }
-                if (!h.probabilities().isEmpty()) {
-                    brier += sum / h.probabilities().size();
-                    base += (judgedRun.baseRate() - y) * (judgedRun.baseRate() - y);
-                    scored++;
-                }
-                boolean warning = !Double.isNaN(warnedAt);
-                if (violated) {
-                    violating++;
-                    if (warning) {
-                        warned++;
-                        leads.add(h.violationTime() - warnedAt);
-                    }
-                } else if (warning) {
-                    alarms++;
+                if (judgedRun.fold() == fold) {
+                    HeldOutRun h = judgedRun.run();
+                    tally.add(h.probabilities(), h.times(), h.warnedAt(), h.violated(), h.violationTime(),
+                            judgedRun.baseRate(), calibration, threshold);
                 }
             }
         }
-        return List.of(new Scorecard(property, folds, judged.size(), violating, warned, alarms,
-                Scorecard.median(leads), unit, scored == 0 ? Double.NaN : brier / scored,
-                scored == 0 ? Double.NaN : base / scored));
+        return List.of(tally.scorecard(property, folds, judged.size(), unit, Scorecard.RUNS));
     }
 
     /** The safety property's threshold, NaN when the abstraction has no property. */

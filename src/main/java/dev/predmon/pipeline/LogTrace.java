@@ -70,7 +70,7 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
         List<MealyTrace> samples = new ArrayList<>();
         for (Run r : runs) {
             if (!r.pairs().isEmpty() && label.selects(r.violated())) {
-                samples.add(MealyMapping.toTrace(r.pairs(), name(log, r.index(), runs.size())));
+                samples.add(MealyMapping.toTrace(r.pairs(), RunId.of(log, r.index(), runs.size()).name()));
             }
         }
         return samples;
@@ -92,8 +92,4 @@ public record LogTrace(Path log, List<IoPair> pairs, List<ParseProblem> problems
         return runs.size() > 1 ? runs.stream().filter(r -> !r.pairs().isEmpty()).toList() : runs;
     }
 
-    /** How a run of a log is named in reports: the file, with {@code #k} when the log holds several runs. */
-    public static String name(Path log, int run, int runs) {
-        return runs > 1 ? log + "#" + run : log.toString();
-    }
 }

@@ -37,14 +37,8 @@ public record RunView(int number, RunResult result, String log, Integer run, Str
 
     /** The view of {@code r}, the {@code number}-th run of the evaluation. */
     public static RunView of(int number, RunResult r) {
-        String name = r.log();
-        Integer run = null;
-        int hash = name.lastIndexOf('#');
-        if (hash > 0 && name.substring(hash + 1).matches("\\d+")) {
-            run = Integer.parseInt(name.substring(hash + 1));
-            name = name.substring(0, hash);
-        }
-        return new RunView(number, r, withFolder(Path.of(name)), run, verdict(r), tone(r), forecastOf(r));
+        return new RunView(number, r, withFolder(r.log().log()), r.log().numberIfSeveral(), verdict(r), tone(r),
+                forecastOf(r));
     }
 
     /** The file name with its folder ({@code depleted/depleted-1.log}): the folder is often the scenario. */

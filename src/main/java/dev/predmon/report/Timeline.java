@@ -2,13 +2,13 @@ package dev.predmon.report;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
-import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordSink;
 import dev.predmon.parse.RecordSource;
 import dev.predmon.pipeline.PipelineListener;
+import dev.predmon.pipeline.RunId;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
 
@@ -37,18 +37,12 @@ import java.util.List;
 public record Timeline(double start, double[] times, double[] values, Clock clock) {
 
     /**
-     * The timeline of one run as {@link RunResult#log()} names it ({@code file}, or {@code file#k} for run k of a log
-     * that holds several), cut into runs by the abstraction's rule as the monitor cuts it; the clock is the log's own.
+     * The timeline of run {@code id}, cut into runs by the abstraction's rule as the monitor cuts it; the clock is the
+     * log's own.
      */
-    public static Timeline ofRun(String runName, Abstraction abstraction, Bound rule, int maxPoints)
-            throws IOException {
-        int hash = runName.lastIndexOf('#');
-        int run = 0;
-        Path log = Path.of(runName);
-        if (hash > 0 && runName.substring(hash + 1).matches("\\d+")) {
-            run = Integer.parseInt(runName.substring(hash + 1));
-            log = Path.of(runName.substring(0, hash));
-        }
+    public static Timeline ofRun(RunId id, Abstraction abstraction, Bound rule, int maxPoints) throws IOException {
+        int run = id.run();
+        Path log = id.log();
         List<double[]> points = new ArrayList<>();
         double[] first = {Double.NaN};
         Clock[] clock = {Clock.SECONDS};

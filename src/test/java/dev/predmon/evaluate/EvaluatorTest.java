@@ -68,7 +68,7 @@ class EvaluatorTest {
         }
         // A run is judged in its own fold, whose models were learned only on the other folds.
         for (RunResult r : folds.runs()) {
-            assertEquals(fold.get(Path.of(r.log())), r.fold());
+            assertEquals(fold.get(r.log().log()), r.fold());
         }
         assertThrows(IllegalArgumentException.class, () -> Folds.assign(specs, 1));
     }

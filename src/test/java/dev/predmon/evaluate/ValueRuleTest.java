@@ -1,5 +1,6 @@
 package dev.predmon.evaluate;
 
+import dev.predmon.pipeline.RunId;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;
@@ -12,7 +13,7 @@ class ValueRuleTest {
     /** A run judged with a forecast: warned by the rule at {@code warning}, by the baseline at {@code below}. */
     private static RunResult run(boolean faulty, Double warning, Double violation, Double below) {
         Verdict v = Verdict.of(faulty, warning, violation);
-        return new RunResult("s", faulty, "log", 0, v, warning, warning == null ? null : 1L, List.of(), null,
+        return new RunResult("s", faulty, RunId.of(java.nio.file.Path.of("log"), 0, 1), 0, v, warning, warning == null ? null : 1L, List.of(), null,
                 violation, v == Verdict.WARNED_BEFORE_VIOLATION ? violation - warning : null, false, null, 10, 5, 0,
                 List.of(), true, "ticks", false, 0, 0, null,
                 new RunResult.ForecastTrace(List.of(0.2), null, null, 0.3, 0.8, below));

@@ -125,7 +125,7 @@ class HtmlReportTest {
         int withForecast = 0;
         for (RunResult r : hundred.runs()) {
             RunResult.ForecastTrace f = r.forecast();
-            assertEquals(f.probabilities().size(), f.times().size(), r.log());
+            assertEquals(f.probabilities().size(), f.times().size(), r.log().name());
             double before = r.start();
             for (double t : f.times()) {
                 assertTrue(t >= before, r.log() + ": " + f.times());

@@ -5,6 +5,7 @@ import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.evaluate.ScenarioSummary;
 import dev.predmon.evaluate.Verdict;
+import dev.predmon.pipeline.RunId;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -28,13 +29,20 @@ final class JudgedRuns {
         Double v = violation == null ? null : START + violation;
         Verdict verdict = Verdict.of(faulty, w, v);
         Double lead = verdict == Verdict.WARNED_BEFORE_VIOLATION ? v - w : null;
-        return new RunResult(faulty ? "depleted" : "recharge", faulty, log, 0, verdict, w, w == null ? null : 4019L,
+        return new RunResult(faulty ? "depleted" : "recharge", faulty, id(log), 0, verdict, w, w == null ? null : 4019L,
                 w == null ? List.of() : List.of("depleted"), w == null ? null : 28.7, v, lead, noMatch != null,
                 noMatch == null ? null : START + noMatch, 873, 18, 0, List.of(eliminations), true, "s",
                 v != null && nearBound < RunResult.SUDDEN_READINGS, START, nearBound, v == null ? null : 25.0);
     }
 
     /** A model eliminated at {@code time} from the start, on {@code line}. */
+    /** The run a fixture names: {@code file}, or {@code file#k} for run k of a log of several. */
+    private static RunId id(String name) {
+        int hash = name.indexOf('#');
+        return hash < 0 ? RunId.of(java.nio.file.Path.of(name), 0, 1)
+                : RunId.of(java.nio.file.Path.of(name.substring(0, hash)), Integer.parseInt(name.substring(hash + 1)), 2);
+    }
+
     static RunResult.Elimination gone(String model, double time, long line) {
         return new RunResult.Elimination(model, model, model.equals("depleted"), START + time, line,
                 "cannot take input level_i_after_o_level_high at step 10");

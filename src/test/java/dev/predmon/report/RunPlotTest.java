@@ -3,6 +3,7 @@ package dev.predmon.report;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.parse.Clock;
+import dev.predmon.pipeline.RunId;
 import dev.predmon.property.Bound;
 import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
@@ -79,7 +80,7 @@ class RunPlotTest {
         Path log = dir.resolve("epoch.log");
         SimOptions epoch = SimOptions.defaults().withEpoch(true);
         Files.writeString(log, LogWriter.toText(Simulator.run(Scenario.DEPLETED, 3, epoch), epoch));
-        Timeline t = Timeline.ofRun(log.toString(), AbstractionFiles.defaults(), RULE, 20_000);
+        Timeline t = Timeline.ofRun(RunId.of(log, 0, 1), AbstractionFiles.defaults(), RULE, 20_000);
         assertTrue(t.start() > 1e9, "epoch start " + t.start());
         List<Drawn> texts = texts(RunPlot.svg(run(t.start(), 20.0, 25.0, null, t.clock()), t, RULE));
         assertEquals("time (s from start)", only(texts, "xl").text());
