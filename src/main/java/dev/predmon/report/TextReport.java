@@ -56,8 +56,8 @@ public final class TextReport {
             Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median",
                     ">baseline: warned ahead", ">false alarms", "lead: median");
             for (PropertyScore p : others) {
-                t.row(p.property(), p.runs(), p.violating(), p.warned(), p.falseAlarms(), median(p.lead()),
-                        p.baselineWarned(), p.baselineAlarms(), median(p.baselineLead()));
+                t.row(p.property(), p.runs(), p.violating(), p.warned(), p.falseAlarms(), PropertySection.median(p.lead()),
+                        p.baselineWarned(), p.baselineAlarms(), PropertySection.median(p.baselineLead()));
             }
             t.print(out);
             out.println("baseline: warn once an obligation is pending longer than every training obligation of the "
@@ -144,9 +144,5 @@ public final class TextReport {
             }
             out.println(b.toString().stripTrailing());
         }
-    }
-
-    private static String median(Stats s) {
-        return s.n() == 0 ? "-" : String.format(Locale.ROOT, "%.1f", s.median());
     }
 }
