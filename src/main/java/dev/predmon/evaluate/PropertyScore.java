@@ -11,23 +11,33 @@ import java.util.Map;
  * lead. A deadline's warnings come from its forecast (how long the obligation has been pending against the training
  * runs'); a property without a forecast (an absence, a precedence) is counted so its violations are seen.
  *
- * @param property    its id
- * @param runs        runs judged
- * @param violating   runs that violated it
- * @param warned      of those, runs warned about it before the violation
- * @param falseAlarms runs that kept it but were warned about it
- * @param lead        lead of the warned violations, in the runs' unit
+ * <p>Beside them, the elapsed-time baseline, chosen by the same cross-validation: warn as soon as an obligation has
+ * been pending longer than every training obligation of the fold's models. It is to a deadline what the raw-value
+ * baseline is to a bound: what the learned durations add over "later than ever seen".
+ *
+ * @param property        its id
+ * @param runs            runs judged
+ * @param violating       runs that violated it
+ * @param warned          of those, runs warned about it before the violation
+ * @param falseAlarms     runs that kept it but were warned about it
+ * @param lead            lead of the warned violations, in the runs' unit
+ * @param baselineWarned  violating runs the elapsed-time baseline warned before the violation
+ * @param baselineAlarms  runs that kept it but the elapsed-time baseline warned
+ * @param baselineLead    the elapsed-time baseline's lead
  */
-public record PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead) {
+public record PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
+                            int baselineWarned, int baselineAlarms, Stats baselineLead) {
 
     /** One score per property, in the order the runs list them. */
     public static List<PropertyScore> of(List<RunResult> runs) {
         Map<String, int[]> counts = new LinkedHashMap<>();
         Map<String, List<Double>> leads = new LinkedHashMap<>();
+        Map<String, List<Double>> baselineLeads = new LinkedHashMap<>();
         for (RunResult r : runs) {
             for (RunResult.PropertyResult p : r.properties()) {
-                int[] c = counts.computeIfAbsent(p.property(), k -> new int[4]);
+                int[] c = counts.computeIfAbsent(p.property(), k -> new int[6]);
                 List<Double> l = leads.computeIfAbsent(p.property(), k -> new ArrayList<>());
+                List<Double> b = baselineLeads.computeIfAbsent(p.property(), k -> new ArrayList<>());
                 c[0]++;
                 if (p.violation() != null) {
                     c[1]++;
@@ -35,13 +45,19 @@ public record PropertyScore(String property, int runs, int violating, int warned
                         c[2]++;
                         l.add(p.violation() - p.warning());
                     }
-                } else if (p.warning() != null) {
-                    c[3]++;
+                    if (p.beyond() != null && p.beyond() < p.violation()) {
+                        c[4]++;
+                        b.add(p.violation() - p.beyond());
+                    }
+                } else {
+                    c[3] += p.warning() != null ? 1 : 0;
+                    c[5] += p.beyond() != null ? 1 : 0;
                 }
             }
         }
         List<PropertyScore> out = new ArrayList<>();
-        counts.forEach((id, c) -> out.add(new PropertyScore(id, c[0], c[1], c[2], c[3], Stats.of(leads.get(id)))));
+        counts.forEach((id, c) -> out.add(new PropertyScore(id, c[0], c[1], c[2], c[3], Stats.of(leads.get(id)), c[4],
+                c[5], Stats.of(baselineLeads.get(id)))));
         return out;
     }
 }

@@ -73,6 +73,7 @@ public final class Replay {
             MonitorEvent.NoMatch noMatch = null;
             Map<String, Double> warnings = new HashMap<>();
             Map<String, Double> violations = new HashMap<>();
+            Map<String, Double> beyond = new HashMap<>();
             for (MonitorEvent e : r.events()) {
                 if (e instanceof MonitorEvent.Eliminated x) {
                     eliminations.add(new RunResult.Elimination(x.model(), x.scenario(), x.faulty(), x.time(), x.line(),
@@ -83,6 +84,8 @@ public final class Replay {
                     warnings.putIfAbsent(w.property(), w.time());
                 } else if (e instanceof MonitorEvent.Violation v) {
                     violations.putIfAbsent(v.property(), v.time());
+                } else if (e instanceof MonitorEvent.ForecastChanged c && c.deadline() != null && c.deadline().novel()) {
+                    beyond.putIfAbsent(c.property(), c.time());
                 }
             }
             MonitorEvent.Warning warning = o.warning();
@@ -105,19 +108,20 @@ public final class Replay {
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
                             scored.stream().map(ReplayedRun.Timed::time).toList()),
-                    others(abstraction, warnings, violations)));
+                    others(abstraction, warnings, violations, beyond)));
         }
         return results;
     }
 
     /** Every property but the forecast's, with its first warning and violation in the run. */
     private static List<RunResult.PropertyResult> others(Abstraction abstraction, Map<String, Double> warnings,
-                                                         Map<String, Double> violations) {
+                                                         Map<String, Double> violations, Map<String, Double> beyond) {
         String forecast = abstraction.safety().map(Property::id).orElse(null);
         List<RunResult.PropertyResult> out = new ArrayList<>();
         for (Property p : abstraction.properties()) {
             if (!p.id().equals(forecast)) {
-                out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id())));
+                out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id()),
+                        beyond.get(p.id())));
             }
         }
         return out;

@@ -67,8 +67,15 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * @param property  its id
      * @param warning   the time of its first warning (a deadline forecast), or null
      * @param violation the time of its violation, or null
+     * @param beyond    when an obligation of it was first pending longer than every training obligation (the
+     *                  elapsed-time baseline's warning), or null
      */
-    public record PropertyResult(String property, Double warning, Double violation) {
+    public record PropertyResult(String property, Double warning, Double violation, Double beyond) {
+
+        /** A property no obligation of which went beyond the training ones. */
+        public PropertyResult(String property, Double warning, Double violation) {
+            this(property, warning, violation, null);
+        }
     }
 
     /** A result without forecasts. */

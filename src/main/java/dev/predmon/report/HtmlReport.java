@@ -85,6 +85,7 @@ public final class HtmlReport {
         summary(h, e);
         confusion(h, e.confusion());
         ForecastSection.html(h, e);
+        PropertySection.html(h, e);
         for (String n : e.notes()) {
             h.append("<p>Note: ").append(Svg.esc(n)).append("</p>\n");
         }

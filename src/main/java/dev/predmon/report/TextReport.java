@@ -53,12 +53,15 @@ public final class TextReport {
         if (!others.isEmpty()) {
             out.println();
             out.println("the other properties (warnings from their deadline forecasts; lead in the runs' unit)");
-            Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median");
+            Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median",
+                    ">baseline: warned ahead", ">false alarms", "lead: median");
             for (PropertyScore p : others) {
-                t.row(p.property(), p.runs(), p.violating(), p.warned(), p.falseAlarms(),
-                        p.lead().n() == 0 ? "-" : String.format(Locale.ROOT, "%.1f", p.lead().median()));
+                t.row(p.property(), p.runs(), p.violating(), p.warned(), p.falseAlarms(), PropertySection.median(p.lead()),
+                        p.baselineWarned(), p.baselineAlarms(), PropertySection.median(p.baselineLead()));
             }
             t.print(out);
+            out.println("baseline: warn once an obligation is pending longer than every training obligation of the "
+                    + "fold (the elapsed-time rule, chosen by the same cross-validation)");
         }
         out.println();
         out.println("times from the start of each run");

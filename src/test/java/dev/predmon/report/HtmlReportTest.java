@@ -97,6 +97,18 @@ class HtmlReportTest {
     }
 
     @Test
+    void everyOtherPropertyHasARowWithItsBaselineBesideIt() {
+        List<dev.predmon.evaluate.PropertyScore> scores = dev.predmon.evaluate.PropertyScore.of(hundred.runs());
+        assertFalse(scores.isEmpty(), "the built-in abstraction has other properties");
+        assertTrue(html.contains("<h2 id=properties>The other properties</h2>"));
+        for (dev.predmon.evaluate.PropertyScore p : scores) {
+            assertTrue(html.contains("<tr><td>" + p.property() + "</td><td>" + p.runs() + "</td><td>" + p.violating()
+                    + "</td><td>" + p.warned() + "</td><td>" + p.falseAlarms() + "</td>"), p.property());
+        }
+        assertTrue(html.contains("baseline: warned ahead"));
+    }
+
+    @Test
     void theSuddenNoteSaysWhatTheDataShow() {
         long sudden = hundred.runs().stream().filter(RunResult::sudden).count();
         String note = TextReport.sudden(hundred.runs());

@@ -1,0 +1,46 @@
+package dev.predmon.report;
+
+import dev.predmon.evaluate.Evaluation;
+import dev.predmon.evaluate.PropertyScore;
+import dev.predmon.evaluate.Stats;
+
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The report's section on the abstraction's other properties, as the text report prints it: per property, its
+ * violations, the warnings ahead of them from its deadline forecast, its false alarms and lead, and beside them the
+ * elapsed-time baseline's ({@link PropertyScore}).
+ */
+final class PropertySection {
+
+    private PropertySection() {
+    }
+
+    static void html(StringBuilder h, Evaluation e) {
+        List<PropertyScore> others = PropertyScore.of(e.runs());
+        if (others.isEmpty()) {
+            return;
+        }
+        h.append("<h2 id=properties>The other properties</h2>\n");
+        h.append("<table><tr><th>property</th><th>runs</th><th>violated</th><th>warned ahead</th><th>false alarms</th>"
+                + "<th>lead: median</th><th>baseline: warned ahead</th><th>false alarms</th><th>lead: median</th>"
+                + "</tr>\n");
+        for (PropertyScore p : others) {
+            h.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%s</td>"
+                            + "<td>%d</td><td>%d</td><td>%s</td></tr>\n", Svg.esc(p.property()), p.runs(),
+                    p.violating(), p.warned(), p.falseAlarms(), median(p.lead()), p.baselineWarned(),
+                    p.baselineAlarms(), median(p.baselineLead())));
+        }
+        h.append("</table>\n<p>A deadline's warnings come from its forecast: how long the obligation has been pending "
+                + "against how long the training runs' took. A property without a forecast (an absence, a precedence) "
+                + "is listed so that its violations are seen. The baseline, chosen by the same cross-validation, warns "
+                + "as soon as an obligation is pending longer than every training obligation: what the learned "
+                + "durations add over \"later than ever seen\". Leads are in the runs' unit.</p>\n");
+    }
+
+    /** A median as the tables show it: one decimal, or "-" without any. */
+    static String median(Stats s) {
+        return s.n() == 0 ? "-" : String.format(Locale.ROOT, "%.1f", s.median());
+    }
+}
