@@ -184,7 +184,7 @@ public final class DeadlineTraining {
         }
         Deadline d = property.within();
         return tally.scorecard(property.name(), folds, judged.size(),
-                d.unit() == Deadline.Unit.OCCURRENCES ? "occurrences" : d.unit().key, Scorecard.OBLIGATIONS);
+                d.unit().key, Scorecard.OBLIGATIONS);
     }
 
     /** The runs of the logs whose fold {@code include} selects, each of the runs its scenario learns from. */

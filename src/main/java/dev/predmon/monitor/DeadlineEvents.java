@@ -41,6 +41,7 @@ final class DeadlineEvents implements DeadlineWatch.Listener {
 
     @Override
     public void changed(LogRecord r, Response p, Survival.Estimate e) {
-        events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), null, r.clock(), now.run, p.id(), e));
+        events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), null, r.clock(), now.run, p.id(), e,
+                p.within().unit().key));
     }
 }

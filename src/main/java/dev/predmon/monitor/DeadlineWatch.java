@@ -191,7 +191,7 @@ final class DeadlineWatch {
      */
     static String reason(Response p, Survival.Estimate e, double elapsed, Survival s) {
         Deadline d = p.within();
-        String unit = d.unit() == Deadline.Unit.OCCURRENCES ? "occurrences" : d.unit().key;
+        String unit = d.unit().key;
         String head = String.format(Locale.ROOT, "'%s' (%s) pending %s %s", p.name(), p.id(),
                 ForecastWords.fixed(elapsed, 0), unit);
         String action = p.action() == null ? "" : "; do now: " + p.action();

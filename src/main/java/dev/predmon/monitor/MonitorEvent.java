@@ -153,9 +153,17 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param run      the run of the log
      * @param property the id of the property forecast, or null when not known
      * @param deadline a bounded response's deadline forecast ({@code forecast} is then null), else null
+     * @param unit     what {@code deadline}'s time left counts ({@code ticks}, {@code seconds}, {@code occurrences}),
+     *                 else null
      */
     record ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run, String property,
-                           Survival.Estimate deadline) implements MonitorEvent {
+                           Survival.Estimate deadline, String unit) implements MonitorEvent {
+
+        /** A forecast, of a deadline without its unit. */
+        public ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run, String property,
+                               Survival.Estimate deadline) {
+            this(time, line, forecast, clock, run, property, deadline, null);
+        }
 
         /** A forecast of the forecast's property. */
         public ForecastChanged(double time, long line, Forecast forecast, Clock clock, int run, String property) {

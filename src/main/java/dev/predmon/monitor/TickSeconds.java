@@ -75,7 +75,7 @@ public record TickSeconds(double seconds) {
         }
         if (e instanceof MonitorEvent.ForecastChanged f && on(f.clock())) {
             return new MonitorEvent.ForecastChanged(times(f.time()), f.line(), forecast(f.forecast()),
-                    Clock.SECONDS, f.run(), f.property(), f.deadline());
+                    Clock.SECONDS, f.run(), f.property(), f.deadline(), f.unit());
         }
         if (e instanceof MonitorEvent.Eliminated x && on(x.clock())) {
             return new MonitorEvent.Eliminated(times(x.time()), x.line(), x.model(), x.scenario(), x.faulty(),

@@ -97,10 +97,10 @@ final class EventPrinter {
         }
         if (e instanceof MonitorEvent.ForecastChanged f && f.deadline() != null) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast of %s: %s", at(f.time(), f.clock()),
-                    f.line(), f.property(), f.deadline().novel() ? "pending longer than any training obligation, "
-                    + ForecastWords.fixed(f.deadline().timeLeft(), 0) + " left" : "P(miss) "
-                    + ForecastWords.fixed(f.deadline().probability(), 2) + ", "
-                    + ForecastWords.fixed(f.deadline().timeLeft(), 0) + " left") : null;
+                    f.line(), f.property(), (f.deadline().novel() ? "pending longer than any training obligation, "
+                    : "P(miss) " + ForecastWords.fixed(f.deadline().probability(), 2) + ", ")
+                    + ForecastWords.fixed(f.deadline().timeLeft(), 0) + (f.unit() == null ? "" : " " + f.unit())
+                    + " left") : null;
         }
         if (e instanceof MonitorEvent.ForecastChanged f) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast: %s", at(f.time(), f.clock()), f.line(),

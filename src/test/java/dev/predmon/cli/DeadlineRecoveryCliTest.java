@@ -98,4 +98,14 @@ class DeadlineRecoveryCliTest {
         assertEquals(List.of("recovered navigation-in-time discharged", "warning navigation-in-time "),
                 lines.stream().sorted().toList(), "each hook ran once, naming the property");
     }
+
+    @Test
+    @Timeout(120)
+    void aDeadlinesForecastSaysWhatItsTimeLeftCounts() throws Exception {
+        Path log = Files.writeString(dir.resolve("late.txt"), lateArrival());
+        Cli r = Cli.run("watch", "--log", log.toString(), "--models", "models", "--no-follow", "--eliminations");
+        assertTrue(r.out().contains("forecast of navigation-in-time: P(miss) 0.00, 400 ticks left"), r.out());
+        assertTrue(r.out().contains("forecast of navigation-in-time: pending longer than any training obligation, 115 "
+                + "ticks left"), r.out());
+    }
 }
