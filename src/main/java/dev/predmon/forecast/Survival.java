@@ -94,13 +94,15 @@ public final class Survival {
     /**
      * The forecast of an obligation pending for {@code elapsed} against {@code deadline} (same unit).
      *
-     * @return the estimate; {@link Estimate#novel} when {@code elapsed} is past every training obligation (or there
-     *         is none), and then its probability is NaN
+     * @return the estimate; {@link Estimate#novel} when {@code elapsed} is longer than every training obligation (or
+     *         there is none), and then its probability is NaN
      */
     public Estimate estimate(double elapsed, double deadline) {
         double left = Math.max(0.0, deadline - elapsed);
         int atRisk = pendingAfter(elapsed);
-        if (atRisk == 0) {
+        if (atRisk == 0 && !(elapsed <= longest())) {
+            // Past every training obligation. One pending exactly as long as the longest is not: in ticks or
+            // attempts, the longest training one was still pending at that count too, until its response came.
             return new Estimate(Double.NaN, left, 0, 0, true);
         }
         double base = survival(deadline);

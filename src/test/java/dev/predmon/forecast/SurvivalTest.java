@@ -44,6 +44,17 @@ class SurvivalTest {
     }
 
     @Test
+    void pendingExactlyAsLongAsTheLongestIsNotYetNovel() {
+        // Every grasp of training held at its first attempt: a grasp at its first attempt, its reply still to come,
+        // is what every training grasp was too; only a second attempt is longer than any of them.
+        Survival grasps = new Survival(new double[] {1, 1, 1}, new double[0]);
+        assertFalse(grasps.estimate(1, 8).novel());
+        assertEquals(0.0, grasps.estimate(1, 8).probability(), 1e-12);
+        assertTrue(grasps.estimate(2, 8).novel());
+        assertFalse(s.estimate(6, 10).novel(), "the longest training obligation took 6");
+    }
+
+    @Test
     void runsThatEndedEarlyDoNotReadAsFast() {
         // Five obligations censored at 1 (the runs stopped) and one discharged at 10: the naive share of "discharged
         // by 5" over all six would be 0; Kaplan-Meier keeps the one run that was watched long enough.

@@ -182,7 +182,7 @@ class DeadlineWatchTest {
                 // while it reads 0% (10 ticks left at the goTo)
                 "forecast 0% 10.0",
                 // after 4 ticks no training navigation was still pending (the longest took 4): no evidence, 6 left
-                "forecast novel 6.0",
+                "forecast novel 5.0",
                 "warning novel",
                 "recovered navigation-in-time at line " + arrived.line()), told.said);
         assertTrue(Double.isNaN(c.elapsed(0)) && !w.warned(0) && w.current(0) == null, "the alarm is over");
@@ -193,7 +193,7 @@ class DeadlineWatchTest {
             step(c, w, tick(), told);
         }
         step(c, w, arrived(), told);
-        assertEquals(List.of("forecast 0% 10.0", "forecast novel 6.0", "warning novel"), told.said,
+        assertEquals(List.of("forecast 0% 10.0", "forecast novel 5.0", "warning novel"), told.said,
                 "a missed deadline is the property's violation: no recovery");
     }
 
