@@ -3,6 +3,7 @@ package dev.predmon.bench;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Fleet;
+import dev.predmon.monitor.FleetListener;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -18,7 +19,7 @@ import java.nio.file.Path;
 record FleetSetup(Abstraction abstraction, ModelSet models, long pauseNanos, boolean polling, Path dir) {
 
     /** A fleet telling {@code listener} its events (exact matching, the abstraction's confirm). */
-    Fleet fleet(Fleet.Listener listener) {
+    Fleet fleet(FleetListener listener) {
         return new Fleet(models, abstraction, 0, abstraction.confirm(), listener);
     }
 

@@ -17,7 +17,7 @@ public final class WatchedLog {
     /** What the user was last told about it (something not a file at its path, a read that failed), or null. */
     String told;
 
-    WatchedLog(Path path, Fleet.Settings settings, Fleet.Listener listener) {
+    WatchedLog(Path path, Fleet.Settings settings, FleetListener listener) {
         this.path = path;
         this.name = path.toString();
         this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.tolerance(),

@@ -6,6 +6,7 @@ import dev.predmon.event.LogEvent;
 import dev.predmon.hooks.CommandHooks;
 import dev.predmon.live.Board;
 import dev.predmon.monitor.Fleet;
+import dev.predmon.monitor.FleetListener;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WatchedLog;
@@ -33,7 +34,7 @@ import java.util.function.Predicate;
  * {@link Notices}, and the heartbeat lines to stdout. At the end, {@link #finish} gives each log its summary and the
  * session its exit code ({@link Verdicts}).
  */
-public final class WatchSession implements Fleet.Listener, AutoCloseable {
+public final class WatchSession implements FleetListener, AutoCloseable {
 
     private final PrintWriter out;
     private final PrintWriter err;

@@ -81,7 +81,7 @@ class ChaosSoakTest {
         assertTrue(pool.stream().anyMatch(r -> r.warnings() > 0) && pool.stream().anyMatch(r -> r.warnings() == 0),
                 "the pool holds runs that warn and runs that do not");
         Path robots = Files.createDirectories(dir.resolve("robots"));
-        Fleet fleet = new Fleet(models, ABSTRACTION, 0, ABSTRACTION.confirm(), new Fleet.Listener() {
+        Fleet fleet = new Fleet(models, ABSTRACTION, 0, ABSTRACTION.confirm(), new FleetListener() {
             @Override
             public void event(WatchedLog log, MonitorEvent e) {
                 if (e instanceof MonitorEvent.Warning) {

@@ -53,7 +53,7 @@ class FleetDescriptorsTest {
         assumeTrue(Files.isDirectory(FDS), "no /proc/self/fd here");
         Path robots = Files.createDirectories(dir.resolve("robots"));
         Fleet fleet = new Fleet(LearnedModels.modelSet(List.of(), ABSTRACTION), ABSTRACTION, 0, 0,
-                new Fleet.Listener() {
+                new FleetListener() {
                     @Override
                     public void event(WatchedLog log, MonitorEvent event) {
                     }

@@ -51,7 +51,7 @@ class FleetFollowTest {
     private final AtomicLong seenCount = new AtomicLong();
 
     private Fleet fleet() {
-        return new Fleet(LearnedModels.modelSet(List.of(), ABSTRACTION), ABSTRACTION, 0, 0, new Fleet.Listener() {
+        return new Fleet(LearnedModels.modelSet(List.of(), ABSTRACTION), ABSTRACTION, 0, 0, new FleetListener() {
             @Override
             public void event(WatchedLog log, MonitorEvent event) {
             }
