@@ -60,8 +60,8 @@ public final class DeadlineTraining {
         if (responses.isEmpty()) {
             return model;
         }
-        Map<Path, Integer> folds = folds(specs, traces);
-        int k = folds.isEmpty() ? 0 : folds.values().stream().mapToInt(f -> f).max().getAsInt() + 1;
+        Map<Path, Integer> folds = ForecastTraining.folds(ForecastTraining.present(specs, traces));
+        int k = Folds.used(folds);
         Map<String, DeadlineRule> rules = new TreeMap<>();
         List<Scorecard> cards = new ArrayList<>(model.scorecards());
         for (Response r : responses.values()) {
@@ -78,17 +78,6 @@ public final class DeadlineTraining {
             }
         }
         return model.withDeadlines(rules).withScorecards(cards);
-    }
-
-    /**
-     * The fold of every log, as the battery's threshold assigns them ({@link Folds#assign}, with {@link
-     * ForecastTraining#FOLDS} folds at most): empty with fewer than two logs.
-     */
-    static Map<Path, Integer> folds(List<ScenarioSpec> specs, Map<Path, LogTrace> traces) {
-        List<ScenarioSpec> read = specs.stream().map(s -> s.withLogs(s.logs().stream().filter(traces::containsKey).toList())).toList();
-        long logs = read.stream().flatMap(s -> s.logs().stream()).distinct().count();
-        int k = (int) Math.min(ForecastTraining.FOLDS, logs);
-        return k < 2 ? Map.of() : Folds.assign(read, k);
     }
 
     /**
@@ -190,17 +179,6 @@ public final class DeadlineTraining {
     /** The runs of the logs whose fold {@code include} selects, each of the runs its scenario learns from. */
     private static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
                                              Map<Path, Integer> folds, IntPredicate include) {
-        List<LogTrace.Run> runs = new ArrayList<>();
-        for (ScenarioSpec s : specs) {
-            for (Path log : s.logs()) {
-                LogTrace t = traces.get(log);
-                Integer fold = folds.get(log);
-                if (t != null && fold != null && include.test(fold)) {
-                    t.runs().stream().filter(r -> !r.pairs().isEmpty() && s.runs().selects(r.violated()))
-                            .forEach(runs::add);
-                }
-            }
-        }
-        return runs;
+        return ForecastTraining.runsOf(specs, traces, log -> folds.containsKey(log) && include.test(folds.get(log)));
     }
 }

@@ -62,14 +62,12 @@ public final class ForecastTraining {
         List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
         String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
         ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
-        List<ScenarioSpec> read = specs.stream().map(s -> s.withLogs(s.logs().stream().filter(traces::containsKey).toList())).toList();
-        long logs = read.stream().flatMap(s -> s.logs().stream()).distinct().count();
-        int k = (int) Math.min(FOLDS, logs);
-        if (k < 2) {
+        List<ScenarioSpec> read = present(specs, traces);
+        Map<Path, Integer> folds = folds(read);
+        if (folds.isEmpty()) {
             return stats.withThreshold(ThresholdChoice.DEFAULT, "default " + ThresholdChoice.DEFAULT
                     + ": too few logs to cross-validate", false);
         }
-        Map<Path, Integer> folds = Folds.assign(read, k);
         int used = Folds.used(folds);
         List<HeldOut> judged = new ArrayList<>();
         for (int f = 0; f < used; f++) {
@@ -164,9 +162,24 @@ public final class ForecastTraining {
         return abstraction.safety().map(Bound::name).orElse(null);
     }
 
+    /** {@code specs} with only the logs {@code traces} holds (those that could be read). */
+    static List<ScenarioSpec> present(List<ScenarioSpec> specs, Map<Path, LogTrace> traces) {
+        return specs.stream().map(s -> s.withLogs(s.logs().stream().filter(traces::containsKey).toList())).toList();
+    }
+
+    /**
+     * The fold of every log of {@code specs} in the cross-validation of the forecast's threshold and of every
+     * deadline's ({@link Folds#assign}, at most {@value #FOLDS} folds); empty with fewer than two logs.
+     */
+    static Map<Path, Integer> folds(List<ScenarioSpec> specs) {
+        long logs = specs.stream().flatMap(s -> s.logs().stream()).distinct().count();
+        int k = (int) Math.min(FOLDS, logs);
+        return k < 2 ? Map.of() : Folds.assign(specs, k);
+    }
+
     /** The runs of the logs {@code include} selects, each of the runs its scenario learns from. */
-    private static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
-                                             Predicate<Path> include) {
+    static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                     Predicate<Path> include) {
         List<LogTrace.Run> runs = new ArrayList<>();
         for (ScenarioSpec s : specs) {
             for (Path log : s.logs()) {

@@ -49,7 +49,7 @@ class DeadlineTrainingTest {
         List<ScenarioSpec> specs = List.of(spec(Path.of("a.log"), Path.of("b.log")));
         Map<Path, LogTrace> traces = Map.of(Path.of("a.log"), log("a.log", arrived(2), missed()),
                 Path.of("b.log"), log("b.log", arrived(2), missed()));
-        Map<Path, Integer> folds = DeadlineTraining.folds(specs, traces);
+        Map<Path, Integer> folds = ForecastTraining.folds(ForecastTraining.present(specs, traces));
         assertEquals(Map.of(Path.of("a.log"), 0, Path.of("b.log"), 1), folds);
         List<DeadlineTraining.HeldOut> judged = DeadlineTraining.heldOut(ID, specs, traces, folds, 2);
         assertEquals(4, judged.size());
@@ -80,7 +80,7 @@ class DeadlineTrainingTest {
         Map<Path, LogTrace> traces = Map.of(Path.of("a.log"), log("a.log", arrived(2), arrived(3)),
                 Path.of("b.log"), log("b.log", arrived(4), arrived(2)));
         DeadlineRule rule = DeadlineTraining.rule(DeadlineTraining.heldOut(ID, specs, traces,
-                DeadlineTraining.folds(specs, traces), 2));
+                ForecastTraining.folds(ForecastTraining.present(specs, traces)), 2));
         assertFalse(rule.validated());
         assertEquals(0.5, rule.threshold());
         assertEquals(DeadlineRule.DEFAULT.calibration(), rule.calibration());
@@ -99,7 +99,7 @@ class DeadlineTrainingTest {
         RunTiming.Obligation ended = new RunTiming.Obligation(ID, 5, false, 10, steps(5));
         Map<Path, LogTrace> traces = Map.of(Path.of("a.log"), log("a.log", arrived(2), ended),
                 Path.of("b.log"), log("b.log", arrived(2), missed()));
-        assertEquals(3, DeadlineTraining.heldOut(ID, specs, traces, DeadlineTraining.folds(specs, traces), 2).size());
+        assertEquals(3, DeadlineTraining.heldOut(ID, specs, traces, ForecastTraining.folds(ForecastTraining.present(specs, traces)), 2).size());
     }
 
     private static ScenarioSpec spec(Path... logs) {
