@@ -19,9 +19,11 @@ import java.util.List;
  *                    before the violation reaches the threshold)
  * @param judged      the warning rule the runs were judged by, scored on the runs with a forecast
  * @param rawValue    the raw-value baseline on the same runs ({@link ValueRule#rawValue})
+ * @param chance      how far a calibrated forecast would stray on the same runs by chance alone: the yardstick of
+ *                    {@code ece} and of each bin's observed frequency
  */
 public record ForecastScore(int runs, double brier, double baseBrier, double ece, List<Bin> reliability,
-                            List<Point> sweep, ValueRule judged, ValueRule rawValue) {
+                            List<Point> sweep, ValueRule judged, ValueRule rawValue, ChanceSpread chance) {
 
     /** Bins of the reliability table. */
     static final int BINS = 10;
@@ -35,8 +37,16 @@ public record ForecastScore(int runs, double brier, double baseBrier, double ece
      * @param forecasts forecasts in the bin
      * @param predicted their weighted mean probability
      * @param observed  the weighted share of them whose run violated
+     * @param chanceLow  the observed share a calibrated forecast stays above in 19 draws of 20 on the same runs
+     * @param chanceHigh the share it stays under in 19 draws of 20: an observed share outside is more than chance
      */
-    public record Bin(double from, double to, double weight, int forecasts, double predicted, double observed) {
+    public record Bin(double from, double to, double weight, int forecasts, double predicted, double observed,
+                      double chanceLow, double chanceHigh) {
+
+        /** Whether the observed share is within what chance gives a calibrated forecast on these runs. */
+        public boolean withinChance() {
+            return observed >= chanceLow - 1e-9 && observed <= chanceHigh + 1e-9;
+        }
     }
 
     /**
@@ -70,7 +80,7 @@ public record ForecastScore(int runs, double brier, double baseBrier, double ece
             double each = 1.0 / ps.size();
             for (double x : ps) {
                 brier += each * (x - y) * (x - y);
-                int b = Math.min(BINS - 1, (int) (x * BINS));
+                int b = ChanceSpread.bin(x, BINS);
                 w[b] += each;
                 p[b] += each * x;
                 o[b] += each * y;
@@ -79,11 +89,13 @@ public record ForecastScore(int runs, double brier, double baseBrier, double ece
             double br = r.forecast().baseRate();
             base += (br - y) * (br - y);
         }
+        ChanceSpread chance = ChanceSpread.of(scored.stream().map(r -> r.forecast().probabilities()).toList(), BINS);
         List<Bin> bins = new ArrayList<>();
         double ece = 0;
         for (int b = 0; b < BINS; b++) {
             if (n[b] > 0) {
-                bins.add(new Bin(b / (double) BINS, (b + 1) / (double) BINS, w[b], n[b], p[b] / w[b], o[b] / w[b]));
+                bins.add(new Bin(b / (double) BINS, (b + 1) / (double) BINS, w[b], n[b], p[b] / w[b], o[b] / w[b],
+                        chance.observedLow().get(b), chance.observedHigh().get(b)));
                 ece += Math.abs(p[b] - o[b]);
             }
         }
@@ -92,7 +104,7 @@ public record ForecastScore(int runs, double brier, double baseBrier, double ece
             sweep.add(point(scored, i / 10.0));
         }
         return new ForecastScore(scored.size(), brier / scored.size(), base / scored.size(), ece / scored.size(),
-                List.copyOf(bins), List.copyOf(sweep), ValueRule.judged(runs), ValueRule.rawValue(runs));
+                List.copyOf(bins), List.copyOf(sweep), ValueRule.judged(runs), ValueRule.rawValue(runs), chance);
     }
 
     /** The forecast rule at threshold {@code t} over {@code runs}. */
