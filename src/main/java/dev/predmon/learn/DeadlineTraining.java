@@ -81,7 +81,7 @@ public final class DeadlineTraining {
      * evidence and how long it had been pending then, when the novelty clause warned it (NaN when it did not), the
      * fold's miss rate, and its outcome.
      */
-    record HeldOut(int fold, boolean missed, double duration, List<Double> probabilities, List<Double> elapsed,
+    public record HeldOut(int fold, boolean missed, double duration, List<Double> probabilities, List<Double> elapsed,
                    double caughtAt, double baseRate) {
 
         double peak() {
@@ -93,7 +93,7 @@ public final class DeadlineTraining {
      * Every held-out obligation of property {@code id} with a known outcome (met or missed), as the replay of its log
      * with its fold's models forecast it.
      */
-    static List<HeldOut> heldOut(String id, HeldOutFolds heldOut) {
+    public static List<HeldOut> heldOut(String id, HeldOutFolds heldOut) {
         List<HeldOut> judged = new ArrayList<>();
         for (HeldOutFolds.Fold fold : heldOut.judged()) {
             Survival survival = fold.obligations().get(id);
