@@ -46,7 +46,7 @@ public final class EventJson {
     private static Object record(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w) {
             return new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.property(),
-                    w.scenario(), w.scenarios(), w.battery(), w.pairs(), w.rule().id(), w.clause().id(), w.reason(),
+                    w.scenario(), w.scenarios(), w.value(), w.pairs(), w.rule().id(), w.clause().id(), w.reason(),
                     ForecastJson.of(w.forecast()), DeadlineJson.of(w.deadline()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             return new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),

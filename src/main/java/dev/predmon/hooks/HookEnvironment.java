@@ -37,7 +37,7 @@ public final class HookEnvironment {
     public static Map<String, String> of(String log, MonitorEvent event, double bound) {
         Map<String, String> env = new LinkedHashMap<>();
         if (event instanceof MonitorEvent.Warning w) {
-            put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.property(), value(w.battery(), bound));
+            put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.property(), value(w.value(), bound));
             env.put("PREDMON_SCENARIO", w.scenario() == null ? "" : w.scenario());
             env.put("PREDMON_SCENARIOS", String.join(",", w.scenarios()));
             Forecast f = w.forecast();

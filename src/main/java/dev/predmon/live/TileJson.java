@@ -26,8 +26,8 @@ final class TileJson {
         ObjectNode o = JSON.createObjectNode();
         o.put("time", w.time());
         o.put("line", w.line());
-        if (w.battery() != null) {
-            o.put("battery", w.battery());
+        if (w.value() != null) {
+            o.put("battery", w.value());
         }
         ArrayNode s = o.putArray("scenarios");
         w.scenarios().forEach(s::add);

@@ -93,7 +93,7 @@ final class EventPrinter {
         if (e instanceof MonitorEvent.Warning w) {
             warning = w;
             return String.format(Locale.ROOT, "%s line %d: WARNING: %s; battery %s", at(w.time(), w.clock()), w.line(),
-                    w.reason(), battery(w.battery()));
+                    w.reason(), battery(w.value()));
         }
         if (e instanceof MonitorEvent.ForecastChanged f && f.deadline() != null) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast of %s: %s", at(f.time(), f.clock()),
@@ -113,7 +113,7 @@ final class EventPrinter {
         if (e instanceof MonitorEvent.Violation v) {
             String lead = warning == null ? "no warning came before it"
                     : String.format(Locale.ROOT, "lead of the warning: %s, battery %s at the warning vs %s now",
-                    span(v.time() - warning.time(), v.clock()), battery(warning.battery()), battery(v.value()));
+                    span(v.time() - warning.time(), v.clock()), battery(warning.value()), battery(v.value()));
             return String.format(Locale.ROOT, "%s line %d: VIOLATION of '%s': %s; %s", at(v.time(), v.clock()), v.line(),
                     v.name(), battery(v.value()), lead);
         }
