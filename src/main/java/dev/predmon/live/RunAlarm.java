@@ -114,6 +114,7 @@ final class RunAlarm {
             r.put("time", recovery.time());
             r.put("line", recovery.line());
             r.put("cause", recovery.cause());
+            r.put("value", recovery.value());
             r.put("battery", recovery.value());
             r.put("reason", recovery.reason());
         }

@@ -19,7 +19,7 @@ final class TileJson {
     }
 
     /**
-     * The warning: when, where, the battery, the faulty scenarios left (none for a forecast-rule warning), the rule and
+     * The warning: when, where, the value ({@code battery} too, its older name), the faulty scenarios left (none for a forecast-rule warning), the rule and
      * the clause that warned, its reason in an operator's words, and the forecast at the warning as the event's JSON gave it (or null).
      */
     static ObjectNode warning(MonitorEvent.Warning w, JsonNode event) {
@@ -27,6 +27,7 @@ final class TileJson {
         o.put("time", w.time());
         o.put("line", w.line());
         if (w.value() != null) {
+            o.put("value", w.value());
             o.put("battery", w.value());
         }
         ArrayNode s = o.putArray("scenarios");
@@ -42,6 +43,7 @@ final class TileJson {
         ObjectNode o = JSON.createObjectNode();
         o.put("time", v.time());
         o.put("line", v.line());
+        o.put("value", v.value());
         o.put("battery", v.value());
         return o;
     }
@@ -52,7 +54,7 @@ final class TileJson {
         o.put("what", what);
         o.put("time", time);
         o.put("line", line);
-        number(o, "battery", value);
+        number(o, "value", value);
         return o;
     }
 
