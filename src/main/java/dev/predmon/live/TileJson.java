@@ -19,8 +19,9 @@ final class TileJson {
     }
 
     /**
-     * The warning: when, where, the value ({@code battery} too, its older name), the faulty scenarios left (none for a forecast-rule warning), the rule and
-     * the clause that warned, its reason in an operator's words, and the forecast at the warning as the event's JSON gave it (or null).
+     * The warning: when, where, the value ({@code battery} too, its older name), the faulty scenarios left (none for a
+     * forecast-rule warning), the rule and the clause that warned, its reason in an operator's words, and the forecast
+     * at the warning as the event's JSON gave it (or null).
      */
     static ObjectNode warning(MonitorEvent.Warning w, JsonNode event) {
         ObjectNode o = JSON.createObjectNode();

@@ -4,9 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The property's readings over one run (e.g. the battery level over time), in constant memory for a run of any length: once
- * {@code capacity} points are kept, every other one is dropped and from then on only every second reading is kept
- * (then every fourth, ...). The latest reading is always part of {@link #points()}, so the plot ends where the
+ * The property's readings over one run (e.g. the battery level over time), in constant memory for a run of any
+ * length: once {@code capacity} points are kept, every other one is dropped and from then on only every second
+ * reading is kept (then every fourth, ...). The latest reading is always part of {@link #points()}, so the plot ends where the
  * value is now. A plot a few hundred pixels wide needs no more.
  */
 final class ValueSeries {
