@@ -97,7 +97,7 @@ public final class Replay {
             List<ReplayedRun.Timed> scored = r.beforeViolation();
             results.add(new RunResult(scenario, faulty, RunId.of(replayed.log(), o.run(), runs.size()), fold,
                     verdict, warningTime, warning == null ? null : warning.line(),
-                    warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.battery(),
+                    warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.value(),
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
                     runs.size() == 1 ? replayed.records() : -1, o.pairs(), replayed.problems().size(),
                     List.copyOf(eliminations), o.safetyObserved(), replayed.unit(),

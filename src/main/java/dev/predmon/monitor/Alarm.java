@@ -110,10 +110,10 @@ final class Alarm {
      * @param warnsNow whether the forecast rule would warn on it now
      */
     void reading(LogRecord r, double value, Forecast f, boolean warnsNow, int run) {
-        if (active == null || violated || warnsNow || active.battery() == null) {
+        if (active == null || violated || warnsNow || active.value() == null) {
             return;
         }
-        double at = active.battery();
+        double at = active.value();
         double gap = Math.max(0, at - safety.floor());
         double floor = forecast == null ? Double.NaN : forecast.safeFloor();
         if (!(value > at && value - safety.floor() >= gap * (1 + RISE)) || value < floor) {

@@ -48,7 +48,8 @@ final class DeadlineEvents implements DeadlineWatch.Listener {
 
     @Override
     public void due(LogRecord r, DeadlineWatch.Due d) {
-        MonitorEvent.Warning w = new MonitorEvent.Warning(r.time(), r.line(), List.of(), now.value, now.pairs,
+        // A bounded response has no value: the warning carries none, as its violation and its recovery do not.
+        MonitorEvent.Warning w = new MonitorEvent.Warning(r.time(), r.line(), List.of(), null, now.pairs,
                 r.clock(), now.run, rule, null, d.reason(), MonitorEvent.Clause.DEADLINE, null, d.property().id(),
                 d.estimate());
         now.anyWarned(w);

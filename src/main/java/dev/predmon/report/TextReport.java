@@ -32,11 +32,11 @@ public final class TextReport {
                 + e.abstraction() + "'");
         out.println();
         Table scenarios = new Table("scenario", "kind", ">runs", ">warned", ">hits", ">false", ">missed", ">late",
-                ">no-vio", ">no-match", ">sudden", "lead: median [min..max]", "battery@warning: median [min..max]");
+                ">no-vio", ">no-match", ">sudden", "lead: median [min..max]", "value@warning: median [min..max]");
         for (ScenarioSummary s : e.scenarios()) {
             scenarios.row(s.scenario(), s.faulty() ? "faulty" : "nominal", s.runs(), s.warned(), s.hits(),
                     s.falseAlarms(), s.missed(), s.late(), s.noViolation(), s.noMatch(), s.sudden(),
-                    s.lead().n() == 0 ? "-" : stats(s.lead()) + " " + s.leadUnit(), stats(s.batteryAtWarning()));
+                    s.lead().n() == 0 ? "-" : stats(s.lead()) + " " + s.leadUnit(), stats(s.valueAtWarning()));
         }
         scenarios.print(out);
         out.println();
