@@ -140,7 +140,7 @@ class ReplayDifferentialTest {
         assertEquals(List.of(), none);
     }
 
-    /** Nor is the deadlines': one deadline forecast of learn's nudged by the last bit of its double is a disagreement. */
+    /** Nor is the deadlines': one of learn's deadline forecasts nudged by the last bit of its double disagrees. */
     @Test
     void aDeadlineForecastOffByOneUlpIsADisagreement() throws Exception {
         Path log = Path.of("sample-logs/recharge/recharge-3.log");
@@ -364,12 +364,13 @@ class ReplayDifferentialTest {
                         told.stream().map(e -> deadline(e.get("line").asLong(), e.get("deadline").get("probability")
                                 .isNull() ? null : e.get("deadline").get("probability").asDouble(),
                                 e.get("deadline").get("timeLeft").asDouble())).toList());
-                same(differ, "learn", where + " deadline warnings (line)", learned.warnings(),
+                same(differ, "watch", where + " deadline warnings (line), learn's held-out replay first",
+                        learned.warnings(),
                         ofRun(events, "warning", run).stream().filter(e -> r.id().equals(text(e.get("property")))
                                 && e.get("clause").asText().equals("deadline")
                                 && e.get("line").asLong() <= learned.lastForecast())
                                 .map(e -> e.get("line").asLong()).toList());
-                same(differ, "learn", where + " violations (line)", learned.letGo(),
+                same(differ, "watch", where + " violations (line), learn's held-out replay first", learned.letGo(),
                         ofRun(events, "violation", run).stream().filter(e -> r.id().equals(text(e.get("property")))
                                 && e.get("line").asLong() <= learned.lastEnd())
                                 .map(e -> e.get("line").asLong()).toList());
