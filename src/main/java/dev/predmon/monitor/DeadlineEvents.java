@@ -10,18 +10,40 @@ import java.util.function.Consumer;
 /**
  * What the bounded responses' deadline forecasts ({@link DeadlineWatch}) say, as the monitor's events: a warning of
  * the property (which counts as the run's warning of some property), its recovery when the obligation is discharged,
- * and its forecast when it changes as shown.
+ * and its forecast when it changes as shown; and, to whoever asks ({@link DeadlineSteps}), every judgement and every
+ * obligation's end.
  */
 final class DeadlineEvents implements DeadlineWatch.Listener {
 
     private final RunState now;
     private final WarningRule rule;
     private final Consumer<MonitorEvent> events;
+    /** Also told every judgement and every obligation's end, or null. */
+    private DeadlineSteps steps;
 
     DeadlineEvents(RunState now, WarningRule rule, Consumer<MonitorEvent> events) {
         this.now = now;
         this.rule = rule;
         this.events = events;
+    }
+
+    /** Also tells {@code each} every deadline forecast and every forecast obligation's end. */
+    void steps(DeadlineSteps each) {
+        this.steps = each;
+    }
+
+    @Override
+    public void judged(LogRecord r, Response p, double elapsed, Survival.Estimate raw) {
+        if (steps != null) {
+            steps.forecast(now.run, p, r, elapsed, raw);
+        }
+    }
+
+    @Override
+    public void ended(LogRecord r, Response p, double duration, boolean discharged) {
+        if (steps != null) {
+            steps.ended(now.run, p, r, duration, discharged);
+        }
     }
 
     @Override

@@ -58,6 +58,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private final Alarm alarm;
+    /** The deadline forecasts' events. */
+    private final DeadlineEvents deadlineEvents;
     /** The forecast property's value, violation, forecast and warnings. */
     private final ForecastFollow follow;
     private TickSeconds ticks = TickSeconds.NONE;
@@ -94,9 +96,9 @@ public final class PredictiveMonitor implements PipelineListener {
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety, forecast, this.events);
         WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
+        this.deadlineEvents = new DeadlineEvents(now, rule, this.events);
         this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
-                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null,
-                new DeadlineEvents(now, rule, this.events));
+                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, deadlineEvents);
         this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
                 properties.forecastId(), this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
@@ -262,6 +264,15 @@ public final class PredictiveMonitor implements PipelineListener {
      */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
         follow.onEveryForecast(each);
+    }
+
+    /**
+     * Also tells {@code each} every deadline forecast of a bounded response, raw, with its run, and how each obligation
+     * so forecast ended (for the deadlines' training; {@link MonitorEvent.ForecastChanged} tells only what the page
+     * shows). Nothing without deadline forecasts (the match rule, models without obligations).
+     */
+    public void onEveryDeadlineForecast(DeadlineSteps each) {
+        deadlineEvents.steps(each);
     }
 
     /**

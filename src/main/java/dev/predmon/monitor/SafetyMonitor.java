@@ -47,7 +47,7 @@ final class SafetyMonitor {
         this.forecastId = forecast.map(Bound::id).orElse(null);
         this.checker = new PropertyChecker(abstraction.properties(), this::violated);
         if (deadlines != null) {
-            checker.onObligations((index, p, duration, discharged) -> deadlines.closed(index, discharged));
+            checker.onObligations((index, p, duration, discharged) -> deadlines.closed(index, duration, discharged));
         }
         this.events = events;
     }
