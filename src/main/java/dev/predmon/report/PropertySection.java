@@ -37,6 +37,7 @@ final class PropertySection {
                 + "is listed so that its violations are seen. The baseline, chosen by the same cross-validation, warns "
                 + "as soon as an obligation is pending longer than every training obligation: what the learned "
                 + "durations add over \"later than ever seen\". Leads are in the runs' unit.</p>\n");
+        PropertyForecastTables.html(h, others);
     }
 
     /** A median as the tables show it: one decimal, or "-" without any. */

@@ -62,6 +62,7 @@ public final class TextReport {
             t.print(out);
             out.println("baseline: warn once an obligation is pending longer than every training obligation of the "
                     + "fold (the elapsed-time rule, chosen by the same cross-validation)");
+            PropertyForecastTables.print(out, others);
         }
         out.println();
         out.println("times from the start of each run");
