@@ -8,6 +8,7 @@ import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.model.LearnedModel;
+import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
@@ -16,6 +17,7 @@ import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -98,8 +100,19 @@ public final class PredictiveMonitor implements PipelineListener {
                 ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null,
                 new DeadlineEvents(now, rule, this.events));
         this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
-                properties.forecastId(), this.events);
+                properties.forecastId(), violates(models), this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
+    }
+
+    /** By faulty scenario, the property its runs violate, of the scenarios whose {@code scenario.json} names one. */
+    private static Map<String, String> violates(ModelSet models) {
+        Map<String, String> out = new HashMap<>();
+        for (ModelIndex.Scenario s : models.index().scenarios()) {
+            if (s.faulty() && s.violates() != null) {
+                out.put(s.name(), s.violates());
+            }
+        }
+        return out;
     }
 
     /** Reports every time in seconds, a tick lasting {@code t} (a log without time stamps counts ticks). */
@@ -185,7 +198,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * and what forecasts it (the forecast's property's latest forecast is {@link #forecast()}).
      */
     public List<PropertyStatus> properties() {
-        return properties.statuses(!alarm.quiet() && !alarm.violated());
+        return properties.statuses(!alarm.quiet() && !alarm.violated(), now.othersWarned);
     }
 
     /** What all runs since the start add up to. */

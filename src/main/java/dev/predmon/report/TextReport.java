@@ -52,7 +52,8 @@ public final class TextReport {
         List<PropertyScore> others = PropertyScore.of(e.runs());
         if (!others.isEmpty()) {
             out.println();
-            out.println("the other properties (warnings from their deadline forecasts; lead in the runs' unit)");
+            out.println("the other properties (warnings from their deadline forecasts, or the matching of a faulty "
+                    + "scenario that violates them; lead in the runs' unit)");
             Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median",
                     ">baseline: warned ahead", ">false alarms", "lead: median");
             for (PropertyScore p : others) {
