@@ -5,6 +5,7 @@ import dev.predmon.forecast.Forecast;
 import dev.predmon.matching.Matching;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 
 import java.util.List;
 import java.util.Map;
@@ -28,8 +29,8 @@ final class ForecastFollow {
     private final WarningRule rule;
     private final String property;
     private final Consumer<MonitorEvent> events;
-    /** By faulty scenario, the property its runs violate when it is not the forecast's ({@code violates}). */
-    private final Map<String, String> violates;
+    /** By faulty scenario, the property its runs violate when its {@code scenario.json} names one. */
+    private final Map<String, Property> violates;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
     private MonitorEvent.Warning firstWarning;
     private MonitorEvent.Violation firstViolation;
@@ -42,7 +43,7 @@ final class ForecastFollow {
      *                 names one ({@code violates}); a scenario not in it violates {@code property}
      */
     ForecastFollow(Bound bound, ForecastTracker forecast, Alarm alarm, WarningPolicy policy, Matching matching,
-                   RunState now, WarningRule rule, String property, Map<String, String> violates,
+                   RunState now, WarningRule rule, String property, Map<String, Property> violates,
                    Consumer<MonitorEvent> events) {
         this.violates = Map.copyOf(violates);
         this.bound = bound;
@@ -126,10 +127,12 @@ final class ForecastFollow {
     private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f,
                       MonitorEvent.Clause clause) {
         String scenario = matching.likeliestFaulty(faultyAlive);
-        String about = clause == MonitorEvent.Clause.MATCHING && scenario != null
-                ? violates.getOrDefault(scenario, property) : property;
+        Property other = clause == MonitorEvent.Clause.MATCHING && scenario != null ? violates.get(scenario) : null;
+        String about = other == null ? property : other.id();
+        String why = Objects.equals(about, property) ? reason : "'" + other.name() + "' (" + other.id()
+                + "), which faulty scenario " + scenario + " violates: " + reason;
         MonitorEvent.Warning w = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, now.value,
-                now.pairs, trigger.clock(), now.run, rule, f, reason, clause, scenario, about);
+                now.pairs, trigger.clock(), now.run, rule, f, why, clause, scenario, about);
         if (Objects.equals(about, property)) {
             now.warning = now.warning == null ? w : now.warning; // the run's outcome keeps its first warning
             firstWarning = firstWarning == null ? w : firstWarning;

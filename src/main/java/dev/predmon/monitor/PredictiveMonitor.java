@@ -15,6 +15,7 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
 
 import java.util.HashMap;
@@ -100,16 +101,20 @@ public final class PredictiveMonitor implements PipelineListener {
                 ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null,
                 new DeadlineEvents(now, rule, this.events));
         this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
-                properties.forecastId(), violates(models), this.events);
+                properties.forecastId(), violates(models, abstraction), this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
-    /** By faulty scenario, the property its runs violate, of the scenarios whose {@code scenario.json} names one. */
-    private static Map<String, String> violates(ModelSet models) {
-        Map<String, String> out = new HashMap<>();
+    /**
+     * By faulty scenario, the property its runs violate, of the scenarios whose {@code scenario.json} names one of
+     * {@code abstraction}'s properties.
+     */
+    private static Map<String, Property> violates(ModelSet models, Abstraction abstraction) {
+        Map<String, Property> out = new HashMap<>();
         for (ModelIndex.Scenario s : models.index().scenarios()) {
             if (s.faulty() && s.violates() != null) {
-                out.put(s.name(), s.violates());
+                abstraction.properties().stream().filter(p -> p.id().equals(s.violates())).findFirst()
+                        .ifPresent(p -> out.put(s.name(), p));
             }
         }
         return out;

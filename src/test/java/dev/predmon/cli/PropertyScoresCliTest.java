@@ -164,6 +164,8 @@ class PropertyScoresCliTest {
         assertEquals("matching", warning.get("clause").asText());
         assertEquals("blocked", warning.get("scenario").asText());
         assertEquals("no-abort", warning.get("property").asText());
+        assertTrue(warning.get("reason").asText().startsWith("'navigation never aborts' (no-abort), which faulty "
+                + "scenario blocked violates: the run can only be faulty scenario blocked"), warning.toString());
         JsonNode violation = Cli.firstEvent(watch.jsonLines(), "violation").orElseThrow();
         assertEquals("no-abort", violation.get("property").asText());
         assertTrue(warning.get("line").asLong() < violation.get("line").asLong(), "warned ahead of the abort");
