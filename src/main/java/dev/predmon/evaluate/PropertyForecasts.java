@@ -69,19 +69,19 @@ record PropertyForecasts(Reliability.Run run, String scope) {
                         obligationRate(p, model)), RunResult.PropertyResult.OBLIGATION));
             } else {
                 out.put(p.id(), new PropertyForecasts(Reliability.Run.of(k.probabilities, missed,
-                        baseRates.getOrDefault(p.id(), Double.NaN)), RunResult.PropertyResult.RUN));
+                        baseRates.get(p.id())), RunResult.PropertyResult.RUN));
             }
         }
         return out;
     }
 
-    /** The share of the models' training obligations of {@code p} that missed the deadline, NaN when not known. */
-    private static double obligationRate(Property p, ForecastModel model) {
+    /** The share of the models' training obligations of {@code p} that missed the deadline, null when not known. */
+    private static Double obligationRate(Property p, ForecastModel model) {
         if (!(p instanceof Response r) || model == null) {
-            return Double.NaN;
+            return null;
         }
         Survival s = model.obligations().get(r.id());
-        return s == null || s.size() == 0 ? Double.NaN : s.survival(r.within().amount());
+        return s == null || s.size() == 0 ? null : s.survival(r.within().amount());
     }
 
     /** One property's forecasts in the run so far. */

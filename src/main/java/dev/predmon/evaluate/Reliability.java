@@ -16,12 +16,12 @@ import java.util.List;
  * @param forecasts   forecasts scored
  * @param violating   of the runs, those with an outcome of 1 (the run violated the property)
  * @param brier       the weighted mean squared distance between probability and outcome (0 is perfect)
- * @param baseBrier   the same for a forecaster that always says each run's base rate; NaN when a run has none
+ * @param baseBrier   the same for a forecaster that always says each run's base rate; null when a run has none
  * @param ece         expected calibration error: the weighted mean gap between predicted and observed in the bins
  * @param bins        predicted probability against observed frequency, in ten bins of the probability (the bins
  *                    with a forecast)
  */
-public record Reliability(int runs, int forecasts, int violating, double brier, double baseBrier, double ece,
+public record Reliability(int runs, int forecasts, int violating, double brier, Double baseBrier, double ece,
                           List<Bin> bins) {
 
     /** Bins of the reliability table. */
@@ -49,9 +49,9 @@ public record Reliability(int runs, int forecasts, int violating, double brier, 
      *
      * @param probabilities each forecast's probability, in order
      * @param outcomes      each forecast's outcome, 0 or 1, same length
-     * @param baseRate      what the base-rate forecaster says for this run (NaN: none)
+     * @param baseRate      what the base-rate forecaster says for this run, null when not known
      */
-    public record Run(List<Double> probabilities, List<Integer> outcomes, double baseRate) {
+    public record Run(List<Double> probabilities, List<Integer> outcomes, Double baseRate) {
 
         public Run {
             probabilities = List.copyOf(probabilities);
@@ -63,7 +63,7 @@ public record Reliability(int runs, int forecasts, int violating, double brier, 
         }
 
         /** A run whose every forecast has the run's outcome. */
-        public static Run of(List<Double> probabilities, boolean violated, double baseRate) {
+        public static Run of(List<Double> probabilities, boolean violated, Double baseRate) {
             return new Run(probabilities, probabilities.stream().map(p -> violated ? 1 : 0).toList(), baseRate);
         }
     }
@@ -85,7 +85,7 @@ public record Reliability(int runs, int forecasts, int violating, double brier, 
         for (Run r : scored) {
             List<Double> ps = r.probabilities();
             double each = 1.0 / ps.size();
-            double br = r.baseRate();
+            double br = r.baseRate() == null ? Double.NaN : r.baseRate();
             boolean violated = false;
             for (int i = 0; i < ps.size(); i++) {
                 double x = ps.get(i);
@@ -118,6 +118,7 @@ public record Reliability(int runs, int forecasts, int violating, double brier, 
             }
         }
         int k = scored.size();
-        return new Reliability(k, forecasts, violating, brier / k, base / k, ece / k, bins);
+        return new Reliability(k, forecasts, violating, brier / k, Double.isNaN(base) ? null : base / k, ece / k,
+                bins);
     }
 }

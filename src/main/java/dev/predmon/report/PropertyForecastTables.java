@@ -79,7 +79,7 @@ final class PropertyForecastTables {
         }
         String outcome = RunResult.PropertyResult.OBLIGATION.equals(scope) ? "with an obligation that missed"
                 : "violated";
-        String base = Double.isNaN(r.baseBrier()) ? "base rate not known"
+        String base = r.baseBrier() == null ? "base rate not known"
                 : String.format(Locale.ROOT, "always saying the base rate: %.3f", r.baseBrier());
         String line = String.format(Locale.ROOT, "per %s, %d runs with forecasts, %d forecasts, %d %s: Brier score "
                         + "%.3f (%s), expected calibration error %.3f", scope, r.runs(), r.forecasts(), r.violating(),

@@ -53,6 +53,14 @@ class ReliabilityTest {
     }
 
     @Test
+    void withoutABaseRateThereIsNoBaseline() {
+        Reliability r = Reliability.of(List.of(Reliability.Run.of(List.of(0.3), true, 0.4),
+                Reliability.Run.of(List.of(0.1), false, null)));
+        assertNull(r.baseBrier());
+        assertEquals((0.49 + 0.01) / 2, r.brier(), EPS);
+    }
+
+    @Test
     void noForecastIsNoScore() {
         assertNull(Reliability.of(List.of()));
         assertNull(Reliability.of(List.of(Reliability.Run.of(List.of(), true, 0.5))));
