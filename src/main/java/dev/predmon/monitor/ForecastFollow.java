@@ -39,8 +39,8 @@ final class ForecastFollow {
      * @param bound    the forecast's property, null without one
      * @param forecast the forecast, null for models without one
      * @param property the property's id, null without one
-     * @param violates by faulty scenario, the id of the property its runs violate when its {@code scenario.json}
-     *                 names one ({@code violates}); a scenario not in it violates {@code property}
+     * @param violates by faulty scenario, the property its runs violate when its {@code scenario.json} names one
+     *                 ({@code violates}); a scenario not in it violates {@code property}
      */
     ForecastFollow(Bound bound, ForecastTracker forecast, Alarm alarm, WarningPolicy policy, Matching matching,
                    RunState now, WarningRule rule, String property, Map<String, Property> violates,
