@@ -66,12 +66,29 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * One of the abstraction's other properties in the run.
      *
      * @param property  its id
-     * @param warning   the time of its first warning (a deadline forecast), or null
+     * @param warning   the time of its first warning (a deadline forecast, or the match rule's for a faulty scenario
+     *                  that violates it), or null
      * @param violation the time of its violation, or null
      * @param beyond    when an obligation of it was first pending longer than every training obligation (the
      *                  elapsed-time baseline's warning), or null
+     * @param forecasts what its forecast said before its violation (or the run's end), each forecast with its
+     *                  outcome, and the base rate of the models that judged the run; null when it has no forecast
+     * @param scope     what each forecast and its outcome are about: {@link #OBLIGATION} (a deadline forecast:
+     *                  P(the pending obligation misses its deadline), outcome: that obligation missed it) or
+     *                  {@link #RUN} (P(the run violates the property), outcome: it did); null without a forecast
      */
-    public record PropertyResult(String property, Double warning, Double violation, Double beyond) {
+    public record PropertyResult(String property, Double warning, Double violation, Double beyond,
+                                 Reliability.Run forecasts, String scope) {
+
+        /** A deadline forecast's scope: one obligation. */
+        public static final String OBLIGATION = "obligation";
+        /** A forecast of the run's violation. */
+        public static final String RUN = "run";
+
+        /** A property without a forecast. */
+        public PropertyResult(String property, Double warning, Double violation, Double beyond) {
+            this(property, warning, violation, beyond, null, null);
+        }
 
         /** A property no obligation of which went beyond the training ones. */
         public PropertyResult(String property, Double warning, Double violation) {

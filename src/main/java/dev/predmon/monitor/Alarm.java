@@ -71,6 +71,14 @@ final class Alarm {
         matchingSpent |= w.clause() == MonitorEvent.Clause.MATCHING;
     }
 
+    /**
+     * The matching warned of another property than this alarm's (a faulty scenario that violates that one): it
+     * warns once a run, and this alarm stays as it was.
+     */
+    void matchingSpent() {
+        matchingSpent = true;
+    }
+
     /** The property is violated from this reading on. */
     void violatedNow() {
         violated = true;

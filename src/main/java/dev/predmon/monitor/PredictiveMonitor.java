@@ -8,14 +8,17 @@ import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.model.LearnedModel;
+import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -100,8 +103,23 @@ public final class PredictiveMonitor implements PipelineListener {
         this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
                 ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, deadlineEvents);
         this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
-                properties.forecastId(), this.events);
+                properties.forecastId(), violates(models, abstraction), this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
+    }
+
+    /**
+     * By faulty scenario, the property its runs violate, of the scenarios whose {@code scenario.json} names one of
+     * {@code abstraction}'s properties.
+     */
+    private static Map<String, Property> violates(ModelSet models, Abstraction abstraction) {
+        Map<String, Property> out = new HashMap<>();
+        for (ModelIndex.Scenario s : models.index().scenarios()) {
+            if (s.faulty() && s.violates() != null) {
+                abstraction.properties().stream().filter(p -> p.id().equals(s.violates())).findFirst()
+                        .ifPresent(p -> out.put(s.name(), p));
+            }
+        }
+        return out;
     }
 
     /** Reports every time in seconds, a tick lasting {@code t} (a log without time stamps counts ticks). */
@@ -187,7 +205,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * and what forecasts it (the forecast's property's latest forecast is {@link #forecast()}).
      */
     public List<PropertyStatus> properties() {
-        return properties.statuses(!alarm.quiet() && !alarm.violated());
+        return properties.statuses(!alarm.quiet() && !alarm.violated(), now.othersWarned);
     }
 
     /** What all runs since the start add up to. */

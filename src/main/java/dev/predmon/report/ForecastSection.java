@@ -2,6 +2,7 @@ package dev.predmon.report;
 
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.ForecastScore;
+import dev.predmon.evaluate.Reliability;
 
 import java.util.Locale;
 
@@ -28,7 +29,7 @@ final class ForecastSection {
                 s.ece(), Svg.esc(e.rule())));
         h.append("<table><tr><th>P in</th><th>forecasts</th><th>runs' worth</th><th>predicted</th><th>observed</th>"
                 + "</tr>\n");
-        for (ForecastScore.Bin b : s.reliability()) {
+        for (Reliability.Bin b : s.reliability()) {
             h.append(String.format(Locale.ROOT, "<tr><td>%.1f - %.1f</td><td>%d</td><td>%.1f</td><td>%.2f</td>"
                     + "<td>%.2f</td></tr>\n", b.from(), b.to(), b.forecasts(), b.weight(), b.predicted(), b.observed()));
         }

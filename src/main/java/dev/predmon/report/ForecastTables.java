@@ -2,6 +2,7 @@ package dev.predmon.report;
 
 import dev.predmon.evaluate.Evaluation;
 import dev.predmon.evaluate.ForecastScore;
+import dev.predmon.evaluate.Reliability;
 import dev.predmon.evaluate.ValueRule;
 
 import java.io.PrintWriter;
@@ -26,7 +27,7 @@ final class ForecastTables {
                 e.rule(), s.brier(), s.baseBrier(), s.ece());
         out.println("reliability: predicted probability against observed frequency of violation (runs weigh the same)");
         out.printf(Locale.ROOT, "  %-11s %9s %8s %10s %9s%n", "P in", "forecasts", "runs", "predicted", "observed");
-        for (ForecastScore.Bin b : s.reliability()) {
+        for (Reliability.Bin b : s.reliability()) {
             out.printf(Locale.ROOT, "  %.1f - %.1f  %9d %8.1f %10.2f %9.2f%n", b.from(), b.to(), b.forecasts(),
                     b.weight(), b.predicted(), b.observed());
         }
