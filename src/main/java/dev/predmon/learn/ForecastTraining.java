@@ -8,15 +8,11 @@ import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.ScorecardTally;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
-import dev.predmon.mealy.MealyTrace;
-import dev.predmon.model.ModelSet;
-import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.property.Bound;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
-import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -28,8 +24,8 @@ import java.util.function.Predicate;
  * Learns the forecast that goes with the machines: the per-state statistics over every training run
  * ({@link StatsLearner}), and the warning threshold chosen by cross-validation over the same runs ({@link Folds}):
  * each fold's machines and statistics are learned without it, its logs are replayed through {@code watch}'s own monitor
- * with them ({@link HeldOutRun#replay}), and each run's highest forecast before its violation decides
- * ({@link ThresholdChoice}).
+ * with them ({@link HeldOutFolds}, the replays the deadlines are chosen on too), and each run's highest forecast before
+ * its violation decides ({@link ThresholdChoice}).
  *
  * <p>The forecast rule also warns where the thesis's rule would, when every nominal machine was contradicted (every
  * nominal machine eliminated by an output it predicted otherwise while a faulty one matches, {@code confirm} pairs
@@ -57,52 +53,39 @@ public final class ForecastTraining {
     public static ForecastModel train(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
                                       Map<String, CompactMealy<String, String>> machines, Alphabet<String> alphabet,
                                       Abstraction abstraction, int confirm) throws BadInputException {
+        return train(specs, traces, machines, abstraction, heldOut(specs, traces, alphabet, abstraction, confirm));
+    }
+
+    /**
+     * The cross-validation's replays of the logs of {@code specs} ({@link HeldOutFolds#replay}), with the unit and
+     * the property's threshold of {@link #train}: what it and {@link DeadlineTraining#train} choose on.
+     */
+    public static HeldOutFolds heldOut(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                       Alphabet<String> alphabet, Abstraction abstraction, int confirm)
+            throws BadInputException {
+        return HeldOutFolds.replay(specs, traces, alphabet, abstraction, unit(runsOf(specs, traces, log -> true)),
+                limit(abstraction), confirm);
+    }
+
+    /**
+     * As above, choosing on {@code heldOut}, the replays {@link #heldOut} made of the same logs.
+     */
+    public static ForecastModel train(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                      Map<String, CompactMealy<String, String>> machines, Abstraction abstraction,
+                                      HeldOutFolds heldOut) {
         double limit = limit(abstraction);
         String property = property(abstraction);
         List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
-        String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
+        String unit = unit(runs);
         ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
-        List<ScenarioSpec> read = present(specs, traces);
-        Map<Path, Integer> folds = folds(read);
-        if (folds.isEmpty()) {
+        if (heldOut.folds() == 0) {
             return stats.withThreshold(ThresholdChoice.DEFAULT, "default " + ThresholdChoice.DEFAULT
                     + ": too few logs to cross-validate", false);
         }
-        int used = Folds.used(folds);
         List<HeldOut> judged = new ArrayList<>();
-        for (int f = 0; f < used; f++) {
-            int fold = f;
-            Predicate<Path> held = log -> folds.get(log) == fold;
-            List<LearnedScenario> foldLearned = new ArrayList<>();
-            for (ScenarioSpec s : read) {
-                List<MealyTrace> samples = s.logs().stream().filter(held.negate())
-                        .flatMap(l -> traces.get(l).samples(s.runs()).stream()).toList();
-                if (!samples.isEmpty()) {
-                    foldLearned.add(ScenarioLearner.learnSamples(s, samples, alphabet));
-                }
-            }
-            List<LogTrace.Run> training = runsOf(read, traces, held.negate());
-            if (training.stream().allMatch(LogTrace.Run::violated) || training.stream().noneMatch(LogTrace.Run::violated)) {
-                continue; // a fold that trains on one outcome only says nothing about where to draw the line
-            }
-            ForecastModel foldStats = StatsLearner.learn(LearnedModels.machines(foldLearned), training, unit, limit);
-            // Warning at no probability, the rule's other clauses alone warn: those runs count as caught.
-            ModelSet foldModels = LearnedModels.modelSet(foldLearned, abstraction,
-                    foldStats.withThreshold(HeldOutRun.NEVER, "held out", true));
-            for (ScenarioSpec s : read) {
-                for (Path log : s.logs()) {
-                    if (!held.test(log)) {
-                        continue;
-                    }
-                    try {
-                        for (HeldOutRun r : HeldOutRun.replay(log, s.runs(), foldModels, abstraction, confirm,
-                                WarningRule.FORECAST)) {
-                            judged.add(new HeldOut(fold, r, foldStats.baseRate()));
-                        }
-                    } catch (IOException e) {
-                        throw BadInputException.cannotRead(log, e);
-                    }
-                }
+        for (HeldOutFolds.Fold fold : heldOut.judged()) {
+            if (fold.bothOutcomes()) { // a fold that trains on one outcome only says nothing about where to draw the line
+                fold.runs().forEach(r -> judged.add(new HeldOut(fold.index(), r, fold.baseRate())));
             }
         }
         // The threshold is chosen on the calibrated scale, where even odds mean what they say.
@@ -110,13 +93,18 @@ public final class ForecastTraining {
                 h.run().probabilities(), h.run().violated())).toList());
         ThresholdChoice.Choice c = ThresholdChoice.choose(judged.stream().map(h -> new ThresholdChoice.Peak(
                 calibration.apply(h.run().peak()), h.run().violated(), !Double.isNaN(h.run().warnedAt()))).toList());
-        List<Scorecard> cards = scorecards(property, used, unit, judged);
+        List<Scorecard> cards = scorecards(property, heldOut.folds(), unit, judged);
         if (!c.validated()) {
             return stats.withThreshold(c.threshold(), c.note(), false).withScorecards(cards);
         }
         double threshold = c.threshold();
         String note = String.format(Locale.ROOT, "%.2f %s", threshold, c.note());
         return stats.withCalibration(calibration).withThreshold(threshold, note, true).withScorecards(cards);
+    }
+
+    /** What the runs' times count: the first run's unit, seconds without a run. */
+    private static String unit(List<LogTrace.Run> runs) {
+        return runs.isEmpty() ? "s" : runs.get(0).timing().unit();
     }
 
     /** One held-out run ({@link HeldOutRun}) with its fold and that fold's base rate. */

@@ -17,21 +17,25 @@ import java.util.List;
 
 /**
  * One held-out run as {@code watch} forecasts it with a fold's models: every forecast before the property's violation,
- * with its time, and when the rule warned it before that violation. Made by replaying the log through the one replay
- * ({@link LogReplay}), so that the threshold and the calibration are chosen on the forecasts {@code watch} makes.
+ * with its time, and when the rule warned it before that violation; and every obligation of a bounded response with
+ * its deadline forecasts. Made by replaying the log through the one replay
+ * ({@link LogReplay}), so that the thresholds and the calibrations are chosen on the forecasts {@code watch} makes.
  *
  * @param violated      whether the forecast property was violated in the run
  * @param probabilities the raw probability of each forecast before the violation, in order
  * @param times         the time of each
  * @param warnedAt      the time of the run's first warning when it came before the violation, NaN otherwise
  * @param violationTime the time of the violation, NaN for a run that held
+ * @param obligations   every obligation of a bounded response that the monitor forecast and that ended in the run,
+ *                      with its deadline forecasts ({@link ReplayedRun#obligations})
  */
 public record HeldOutRun(boolean violated, List<Double> probabilities, List<Double> times, double warnedAt,
-                         double violationTime) {
+                         double violationTime, List<ReplayedRun.Obligation> obligations) {
 
     public HeldOutRun {
         probabilities = List.copyOf(probabilities);
         times = List.copyOf(times);
+        obligations = List.copyOf(obligations);
     }
 
     /** A threshold no probability reaches: a replay with it warns only by the rule's other clauses. */
@@ -61,7 +65,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
             out.add(new HeldOutRun(r.violated(),
                     r.beforeViolation().stream().map(t -> t.forecast().probability()).toList(),
                     r.beforeViolation().stream().map(ReplayedRun.Timed::time).toList(),
-                    before ? w.time() : Double.NaN, v == null ? Double.NaN : v.time()));
+                    before ? w.time() : Double.NaN, v == null ? Double.NaN : v.time(), r.obligations()));
         }
         return out;
     }

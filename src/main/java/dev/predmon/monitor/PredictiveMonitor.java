@@ -8,14 +8,17 @@ import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.model.LearnedModel;
+import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -58,6 +61,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private final Alarm alarm;
+    /** The deadline forecasts' events. */
+    private final DeadlineEvents deadlineEvents;
     /** The forecast property's value, violation, forecast and warnings. */
     private final ForecastFollow follow;
     private TickSeconds ticks = TickSeconds.NONE;
@@ -94,12 +99,27 @@ public final class PredictiveMonitor implements PipelineListener {
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety, forecast, this.events);
         WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
+        this.deadlineEvents = new DeadlineEvents(now, rule, this.events);
         this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
-                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null,
-                new DeadlineEvents(now, rule, this.events));
+                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, deadlineEvents);
         this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
-                properties.forecastId(), this.events);
+                properties.forecastId(), violates(models, abstraction), this.events);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
+    }
+
+    /**
+     * By faulty scenario, the property its runs violate, of the scenarios whose {@code scenario.json} names one of
+     * {@code abstraction}'s properties.
+     */
+    private static Map<String, Property> violates(ModelSet models, Abstraction abstraction) {
+        Map<String, Property> out = new HashMap<>();
+        for (ModelIndex.Scenario s : models.index().scenarios()) {
+            if (s.faulty() && s.violates() != null) {
+                abstraction.properties().stream().filter(p -> p.id().equals(s.violates())).findFirst()
+                        .ifPresent(p -> out.put(s.name(), p));
+            }
+        }
+        return out;
     }
 
     /** Reports every time in seconds, a tick lasting {@code t} (a log without time stamps counts ticks). */
@@ -185,7 +205,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * and what forecasts it (the forecast's property's latest forecast is {@link #forecast()}).
      */
     public List<PropertyStatus> properties() {
-        return properties.statuses(!alarm.quiet() && !alarm.violated());
+        return properties.statuses(!alarm.quiet() && !alarm.violated(), now.othersWarned);
     }
 
     /** What all runs since the start add up to. */
@@ -262,6 +282,15 @@ public final class PredictiveMonitor implements PipelineListener {
      */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
         follow.onEveryForecast(each);
+    }
+
+    /**
+     * Also tells {@code each} every deadline forecast of a bounded response, raw, with its run, and how each obligation
+     * so forecast ended (for the deadlines' training; {@link MonitorEvent.ForecastChanged} tells only what the page
+     * shows). Nothing without deadline forecasts (the match rule, models without obligations).
+     */
+    public void onEveryDeadlineForecast(DeadlineSteps each) {
+        deadlineEvents.steps(each);
     }
 
     /**

@@ -12,6 +12,7 @@ import dev.predmon.property.Verdict;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import java.util.function.Consumer;
 
 /**
@@ -47,7 +48,7 @@ final class SafetyMonitor {
         this.forecastId = forecast.map(Bound::id).orElse(null);
         this.checker = new PropertyChecker(abstraction.properties(), this::violated);
         if (deadlines != null) {
-            checker.onObligations((index, p, duration, discharged) -> deadlines.closed(index, discharged));
+            checker.onObligations((index, p, duration, discharged) -> deadlines.closed(index, duration, discharged));
         }
         this.events = events;
     }
@@ -100,8 +101,10 @@ final class SafetyMonitor {
      * warned and the pending obligation's forecast.
      *
      * @param forecastWarned whether a warning of the forecast's property is up
+     * @param matchingWarned the other properties the matching warned of in the run (a faulty scenario's
+     *                       {@code violates})
      */
-    List<PropertyStatus> statuses(boolean forecastWarned) {
+    List<PropertyStatus> statuses(boolean forecastWarned, Set<String> matchingWarned) {
         List<PropertyStatus> all = new ArrayList<>(checker.properties().size());
         for (int i = 0; i < checker.properties().size(); i++) {
             Property p = checker.properties().get(i);
@@ -111,9 +114,11 @@ final class SafetyMonitor {
             } else if (deadlines != null && deadlines.forecasts(i)) {
                 Deadline d = ((Response) p).within();
                 all.add(new PropertyStatus(p, v, PropertyStatus.Model.DEADLINE,
-                        deadlines.warned(i) && !(v instanceof Verdict.Violated), deadlines.current(i), d.unit().key));
+                        (deadlines.warned(i) || matchingWarned.contains(p.id())) && !(v instanceof Verdict.Violated),
+                        deadlines.current(i), d.unit().key));
             } else {
-                all.add(new PropertyStatus(p, v, PropertyStatus.Model.NONE, false, null, null));
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.NONE,
+                        matchingWarned.contains(p.id()) && !(v instanceof Verdict.Violated), null, null));
             }
         }
         return all;

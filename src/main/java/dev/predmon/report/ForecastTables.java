@@ -22,18 +22,11 @@ final class ForecastTables {
             return;
         }
         out.printf(Locale.ROOT, "forecast over %d held-out runs (warning rule: %s): Brier score %.3f (always saying the"
-                        + " training base rate: %.3f; lower is better), expected calibration error %.3f (a calibrated"
-                        + " forecast shows up to %.3f on these runs by chance, 9 times in 10)%n", s.runs(),
-                e.rule(), s.brier(), s.baseBrier(), s.ece(), s.chance().eceBound());
+                        + " training base rate: %.3f; lower is better), %s%n", s.runs(),
+                e.rule(), s.brier(), s.baseBrier(), ReliabilityRows.ece(s.ece(), s.eceChance()));
         out.println("reliability: predicted probability against observed frequency of violation (runs weigh the same);"
-                + " chance: where a calibrated forecast's observed frequency falls 9 times in 10 on these runs");
-        out.printf(Locale.ROOT, "  %-11s %9s %8s %10s %9s  %s%n", "P in", "forecasts", "runs", "predicted", "observed",
-                "chance");
-        for (ForecastScore.Bin b : s.reliability()) {
-            out.printf(Locale.ROOT, "  %.1f - %.1f  %9d %8.1f %10.2f %9.2f  %.2f-%.2f%s%n", b.from(), b.to(),
-                    b.forecasts(), b.weight(), b.predicted(), b.observed(), b.chanceLow(), b.chanceHigh(),
-                    b.withinChance() ? "" : "  more than chance");
-        }
+                + " " + ReliabilityRows.CHANCE);
+        ReliabilityRows.text(out, "  ", s.reliability());
         out.println("baseline, chosen by the same cross-validation: what the learned machines add");
         for (ValueRule r : List.of(s.judged(), s.rawValue())) {
             out.printf(Locale.ROOT, "  %-66s %s%n", r.rule(), words(r));
