@@ -20,9 +20,10 @@ import java.util.List;
  *                    before the violation reaches the threshold)
  * @param judged      the warning rule the runs were judged by, scored on the runs with a forecast
  * @param rawValue    the raw-value baseline on the same runs ({@link ValueRule#rawValue})
+ * @param eceChance   the calibration error a calibrated forecast stays under on the same runs by chance, 9 times in 10
  */
 public record ForecastScore(int runs, double brier, double baseBrier, double ece, List<Reliability.Bin> reliability,
-                            List<Point> sweep, ValueRule judged, ValueRule rawValue) {
+                            List<Point> sweep, ValueRule judged, ValueRule rawValue, double eceChance) {
 
     /**
      * The forecast rule at one threshold.
@@ -50,7 +51,7 @@ public record ForecastScore(int runs, double brier, double baseBrier, double ece
             sweep.add(point(scored, i / 10.0));
         }
         return new ForecastScore(r.runs(), r.brier(), r.baseBrier(), r.ece(), r.bins(), List.copyOf(sweep),
-                ValueRule.judged(runs), ValueRule.rawValue(runs));
+                ValueRule.judged(runs), ValueRule.rawValue(runs), r.eceChance());
     }
 
     /** The forecast rule at threshold {@code t} over {@code runs}. */

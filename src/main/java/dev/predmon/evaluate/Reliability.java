@@ -20,9 +20,11 @@ import java.util.List;
  * @param ece         expected calibration error: the weighted mean gap between predicted and observed in the bins
  * @param bins        predicted probability against observed frequency, in ten bins of the probability (the bins
  *                    with a forecast)
+ * @param eceChance   the calibration error a calibrated forecast stays under on the same runs by chance alone, 9
+ *                    times in 10 ({@link ChanceSpread}): an {@code ece} below it is no evidence of miscalibration
  */
 public record Reliability(int runs, int forecasts, int violating, double brier, Double baseBrier, double ece,
-                          List<Bin> bins) {
+                          List<Bin> bins, double eceChance) {
 
     /** Bins of the reliability table. */
     static final int BINS = 10;
@@ -40,8 +42,16 @@ public record Reliability(int runs, int forecasts, int violating, double brier, 
      * @param forecasts forecasts in the bin
      * @param predicted their weighted mean probability
      * @param observed  the weighted share of them whose outcome was 1
+     * @param chanceLow  the observed share a calibrated forecast stays above on the same runs, 19 times in 20
+     * @param chanceHigh the share it stays under, 19 times in 20: an observed share outside the two is more than chance
      */
-    public record Bin(double from, double to, double weight, int forecasts, double predicted, double observed) {
+    public record Bin(double from, double to, double weight, int forecasts, double predicted, double observed,
+                      double chanceLow, double chanceHigh) {
+
+        /** Whether the observed share is within what chance gives a calibrated forecast on these runs. */
+        public boolean withinChance() {
+            return observed >= chanceLow - 1e-9 && observed <= chanceHigh + 1e-9;
+        }
     }
 
     /**
@@ -92,7 +102,7 @@ public record Reliability(int runs, int forecasts, int violating, double brier, 
                 double y = r.outcomes().get(i);
                 violated |= y > 0;
                 brier += each * (x - y) * (x - y);
-                int b = Math.min(BINS - 1, (int) (x * BINS));
+                int b = ChanceSpread.bin(x, BINS);
                 w[b] += each;
                 p[b] += each * x;
                 o[b] += each * y;
@@ -109,16 +119,18 @@ public record Reliability(int runs, int forecasts, int violating, double brier, 
             forecasts += ps.size();
             violating += violated ? 1 : 0;
         }
+        ChanceSpread chance = ChanceSpread.of(scored.stream().map(Run::probabilities).toList(), BINS);
         List<Bin> bins = new ArrayList<>();
         double ece = 0;
         for (int b = 0; b < BINS; b++) {
             if (n[b] > 0) {
-                bins.add(new Bin(b / (double) BINS, (b + 1) / (double) BINS, w[b], n[b], p[b] / w[b], o[b] / w[b]));
+                bins.add(new Bin(b / (double) BINS, (b + 1) / (double) BINS, w[b], n[b], p[b] / w[b], o[b] / w[b],
+                        chance.observedLow().get(b), chance.observedHigh().get(b)));
                 ece += Math.abs(p[b] - o[b]);
             }
         }
         int k = scored.size();
         return new Reliability(k, forecasts, violating, brier / k, Double.isNaN(base) ? null : base / k, ece / k,
-                bins);
+                bins, chance.eceBound());
     }
 }

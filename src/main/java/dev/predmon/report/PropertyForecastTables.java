@@ -22,7 +22,7 @@ final class PropertyForecastTables {
             + "discharged in time, or pending at the run's end, did not), its base rate the share of the fold's "
             + "training obligations that missed; forecasts past every training obligation have no probability and are "
             + "not scored. A value forecast is P(the run violates the property), its base rate the share of the "
-            + "fold's training runs that violated it. Lower Brier is better.";
+            + "fold's training runs that violated it. Lower Brier is better; " + ReliabilityRows.CHANCE + ".";
 
     private PropertyForecastTables() {
     }
@@ -36,12 +36,7 @@ final class PropertyForecastTables {
             if (r == null) {
                 continue;
             }
-            out.printf(Locale.ROOT, "    %-11s %9s %8s %10s %9s%n", "P in", "forecasts", "runs", "predicted",
-                    "observed");
-            for (Reliability.Bin b : r.bins()) {
-                out.printf(Locale.ROOT, "    %.1f - %.1f  %9d %8.1f %10.2f %9.2f%n", b.from(), b.to(), b.forecasts(),
-                        b.weight(), b.predicted(), b.observed());
-            }
+            ReliabilityRows.text(out, "    ", r.bins());
         }
     }
 
@@ -58,14 +53,7 @@ final class PropertyForecastTables {
             if (r == null) {
                 continue;
             }
-            h.append("<table><tr><th>P in</th><th>forecasts</th><th>runs' worth</th><th>predicted</th>"
-                    + "<th>observed</th></tr>\n");
-            for (Reliability.Bin b : r.bins()) {
-                h.append(String.format(Locale.ROOT, "<tr><td>%.1f - %.1f</td><td>%d</td><td>%.1f</td><td>%.2f</td>"
-                        + "<td>%.2f</td></tr>\n", b.from(), b.to(), b.forecasts(), b.weight(), b.predicted(),
-                        b.observed()));
-            }
-            h.append("</table>\n");
+            ReliabilityRows.html(h, r.bins());
         }
     }
 
@@ -82,8 +70,8 @@ final class PropertyForecastTables {
         String base = r.baseBrier() == null ? "base rate not known"
                 : String.format(Locale.ROOT, "always saying the base rate: %.3f", r.baseBrier());
         String line = String.format(Locale.ROOT, "per %s, %d runs with forecasts, %d forecasts, %d %s: Brier score "
-                        + "%.3f (%s), expected calibration error %.3f", scope, r.runs(), r.forecasts(), r.violating(),
-                outcome, r.brier(), base, r.ece());
+                        + "%.3f (%s), %s", scope, r.runs(), r.forecasts(), r.violating(),
+                outcome, r.brier(), base, ReliabilityRows.ece(r.ece(), r.eceChance()));
         if (r.violating() == 0) {
             line += "; nothing was violated on these runs, so the Brier score cannot show skill (every run held)";
         }

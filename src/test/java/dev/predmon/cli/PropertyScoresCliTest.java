@@ -73,11 +73,13 @@ class PropertyScoresCliTest {
         String nav = line(out, "navigation-in-time");
         assertTrue(nav.matches("  navigation-in-time: per obligation, 6 runs with forecasts, \\d+ forecasts, 4 with "
                 + "an obligation that missed: Brier score \\d\\.\\d{3} \\(always saying the base rate: \\d\\.\\d{3}\\), "
-                + "expected calibration error \\d\\.\\d{3}"), nav);
+                + "expected calibration error \\d\\.\\d{3} \\(a calibrated forecast shows up to \\d\\.\\d{3} on these "
+                + "runs by chance, 9 times in 10\\)"), nav);
         List<String> lines = out.lines().toList();
         int at = lines.indexOf(nav);
         assertTrue(lines.get(at + 1).trim().startsWith("P in"), lines.get(at + 1));
-        assertTrue(lines.get(at + 2).trim().matches("\\d\\.\\d - \\d\\.\\d +\\d+ +\\d+\\.\\d +\\d\\.\\d\\d +\\d\\.\\d\\d"),
+        assertTrue(lines.get(at + 2).trim().matches("\\d\\.\\d - \\d\\.\\d +\\d+ +\\d+\\.\\d +\\d\\.\\d\\d +\\d\\.\\d\\d +"
+                        + "\\d\\.\\d\\d-\\d\\.\\d\\d( +more than chance)?"),
                 lines.get(at + 2));
         assertEquals("  no-abort: no forecast", line(out, "no-abort"));
 
