@@ -13,8 +13,10 @@ import java.util.Arrays;
  *
  * <p>The forecast of a pending obligation that has run {@code t} against a deadline {@code T} is
  * {@code P(miss) = S(T) / S(t)}, counted over the training obligations still pending at {@code t} (the runs "in the
- * same place"), shrunk towards the overall miss rate {@code S(T)} with a prior of {@link ForecastModel#PRIOR_RUNS}
- * runs so that three runs cannot claim certainty. Past every training obligation there is no evidence: the estimate
+ * same place"), shrunk towards the overall miss rate with a prior of {@link ForecastModel#PRIOR_RUNS} runs so that
+ * three runs cannot claim certainty. The overall miss rate is {@code S(T)} over the {@code n} training obligations,
+ * itself kept off 0 and 1 as the rule of succession does ({@code (n S(T) + 1/2) / (n + 1)}): after 40 obligations none
+ * of which missed, the next one misses about once in 80, not never. Past every training obligation there is no evidence: the estimate
  * says so ({@link Estimate#novel}) and gives only the time left.
  *
  * <p>Immutable; the durations are kept sorted, and one estimate is two binary searches and a product over the
@@ -105,11 +107,21 @@ public final class Survival {
             // attempts, the longest training one was still pending at that count too, until its response came.
             return new Estimate(Double.NaN, left, 0, 0, true);
         }
-        double base = survival(deadline);
+        double base = missRate(deadline);
         double now = survival(elapsed);
         double km = now <= 0 ? 1.0 : Math.min(1.0, survival(Math.max(elapsed, deadline)) / now);
         double p = (atRisk * km + ForecastModel.PRIOR_RUNS * base) / (atRisk + ForecastModel.PRIOR_RUNS);
         return new Estimate(p, left, atRisk, pendingAfter(Math.max(elapsed, deadline)), false);
+    }
+
+    /**
+     * The overall share of obligations that miss {@code deadline}, from the {@code n} training ones: the Kaplan-Meier
+     * {@code S(deadline)} with half an obligation each way ({@code (n S + 1/2) / (n + 1)}, Jeffreys' prior), so that no
+     * finite number of obligations that all made it reads as a certainty that the next one will.
+     */
+    public double missRate(double deadline) {
+        int n = size();
+        return (n * survival(deadline) + 0.5) / (n + 1);
     }
 
     /**

@@ -26,8 +26,8 @@ class SurvivalTest {
     @Test
     void aPendingObligationIsJudgedOnTheRunsStillPendingThatLongShrunkTowardsTheOverallMissRate() {
         Survival.Estimate e = s.estimate(3, 5);
-        // S(5) / S(3) = 0.5 over 4 runs at risk; the prior: 2 runs at S(5) = 5/12
-        assertEquals((4 * 0.5 + 2 * 5.0 / 12) / 6, e.probability(), 1e-12);
+        // S(5) / S(3) = 0.5 over 4 runs at risk; the prior: 2 runs at the miss rate (6 S(5) + 1/2) / 7 = 3/7
+        assertEquals((4 * 0.5 + 2 * 3.0 / 7) / 6, e.probability(), 1e-12);
         assertEquals(2.0, e.timeLeft());
         assertEquals(4, e.atRisk());
         assertEquals(1, e.longer()); // only the run discharged at 6 is known to have been pending past 5
@@ -49,7 +49,8 @@ class SurvivalTest {
         // is what every training grasp was too; only a second attempt is longer than any of them.
         Survival grasps = new Survival(new double[] {1, 1, 1}, new double[0]);
         assertFalse(grasps.estimate(1, 8).novel());
-        assertEquals(0.0, grasps.estimate(1, 8).probability(), 1e-12);
+        // none of 3 missed: about once in 8, not never ((3 * 0 + 1/2) / 4)
+        assertEquals(0.125, grasps.estimate(1, 8).probability(), 1e-12);
         assertTrue(grasps.estimate(2, 8).novel());
         assertFalse(s.estimate(6, 10).novel(), "the longest training obligation took 6");
     }

@@ -178,9 +178,10 @@ class DeadlineWatchTest {
         LogRecord arrived = arrived();
         step(c, w, arrived, told);
         assertEquals(List.of(
-                // P(miss) = S(10) / S(t) shrunk towards S(10) = 0: every training one took 4 ticks or less; told once
-                // while it reads 0% (10 ticks left at the goTo)
-                "forecast 0% 10.0",
+                // P(miss) = S(10) / S(t) = 0 over the training ones still pending, shrunk by 2 runs towards the miss
+                // rate (4 * 0 + 1/2) / 5 = 0.1: every training one took 4 ticks or less, so the estimate rises only as
+                // fewer of them were still pending: 4 of 4 (2 * 0.1 / 6), 3 after 2 ticks, 1 after 3, none after 4
+                "forecast 3% 10.0", "forecast 4% 8.0", "forecast 7% 7.0", "forecast 10% 6.0",
                 // after 4 ticks no training navigation was still pending (the longest took 4): no evidence, 6 left
                 "forecast novel 5.0",
                 "warning novel",
@@ -193,7 +194,8 @@ class DeadlineWatchTest {
             step(c, w, tick(), told);
         }
         step(c, w, arrived(), told);
-        assertEquals(List.of("forecast 0% 10.0", "forecast novel 5.0", "warning novel"), told.said,
+        assertEquals(List.of("forecast 3% 10.0", "forecast 4% 8.0", "forecast 7% 7.0", "forecast 10% 6.0",
+                "forecast novel 5.0", "warning novel"), told.said,
                 "a missed deadline is the property's violation: no recovery");
     }
 
@@ -210,12 +212,13 @@ class DeadlineWatchTest {
         assertEquals(3, warnedAt(model(s)).tick());
         Warned at06 = warnedAt(model(s, new DeadlineRule(0.6, "learned", true, Calibration.IDENTITY)));
         assertEquals(4, at06.tick());
-        assertEquals(2.0 / 3, at06.due().estimate().probability(), 1e-12);
+        // S(10) / S(4) = 1 over the 2 still pending; the miss rate (6 S(10) + 1/2) / 7 = 5/14 as the prior's
+        assertEquals((2 * 1 + 2 * 5.0 / 14) / 4, at06.due().estimate().probability(), 1e-12);
         assertEquals(-1, warnedAt(model(s, new DeadlineRule(0.7, "learned", true, Calibration.IDENTITY))).tick());
         Calibration lift = new Calibration(1, 1, 5);
         Warned lifted = warnedAt(model(s, new DeadlineRule(0.7, "learned", true, lift)));
         assertEquals(3, lifted.tick());
-        assertEquals(lift.apply(8.0 / 15), lifted.due().estimate().probability(), 1e-12);
+        assertEquals(lift.apply((3 * 2.0 / 3 + 2 * 5.0 / 14) / 5), lifted.due().estimate().probability(), 1e-12);
         assertTrue(lifted.due().reason().contains("P(miss) 0.76"), lifted.due().reason());
     }
 
