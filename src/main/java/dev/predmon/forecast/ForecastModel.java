@@ -28,12 +28,16 @@ import java.util.Map;
  *                    the deadline forecast of that property ({@link Survival})
  * @param deadlines   by bounded-response property id, when its deadline forecast warns, chosen by cross-validation
  *                    over those obligations; a property without one has {@link DeadlineRule#DEFAULT}
+ * @param bounds      by id, every bound property but the one of {@code limit} (the abstraction's safety property): its
+ *                    own value forecast, learned as this one is from the runs labelled by its own violation
+ *                    ({@link BoundModel})
  */
 public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
                             double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
                             Calibration calibration, List<Scorecard> scorecards,
-                            Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines) {
+                            Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines,
+                            Map<String, BoundModel> bounds) {
 
     /** Current format. */
     public static final int FORMAT = 1;
@@ -48,6 +52,23 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         scorecards = List.copyOf(scorecards);
         obligations = Map.copyOf(obligations);
         deadlines = Map.copyOf(deadlines);
+        bounds = Map.copyOf(bounds);
+    }
+
+    /** A model without other bound properties' forecasts. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
+                         double threshold, String thresholdNote, boolean validated,
+                         Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
+                         Calibration calibration, List<Scorecard> scorecards,
+                         Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, scorecards, obligations, deadlines, Map.of());
+    }
+
+    /** This model with {@code forecasts} as the other bound properties' forecasts, by property id. */
+    public ForecastModel withBounds(Map<String, BoundModel> forecasts) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, obligations, deadlines, forecasts);
     }
 
     /** A model whose deadline forecasts warn by the default rule. */
@@ -67,7 +88,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with {@code rules} as its deadline rules, by property id. */
     public ForecastModel withDeadlines(Map<String, DeadlineRule> rules) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, rules);
+                states, startInputs, calibration, scorecards, obligations, rules, bounds);
     }
 
     /** A model without deadline forecasts. */
@@ -146,19 +167,19 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs, calibration, scorecards, obligations, deadlines);
+                startInputs, calibration, scorecards, obligations, deadlines, bounds);
     }
 
     /** This model with another calibration (the threshold is left as it is). */
     public ForecastModel withCalibration(Calibration c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, c, scorecards, obligations, deadlines);
+                states, startInputs, c, scorecards, obligations, deadlines, bounds);
     }
 
     /** This model with {@code cards} as its scorecards. */
     public ForecastModel withScorecards(List<Scorecard> cards) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, cards, obligations, deadlines);
+                states, startInputs, calibration, cards, obligations, deadlines, bounds);
     }
 
     @Override
@@ -168,7 +189,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && lows.equals(m.lows)
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
                 && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration)
-                && scorecards.equals(m.scorecards) && obligations.equals(m.obligations) && deadlines.equals(m.deadlines);
+                && scorecards.equals(m.scorecards) && obligations.equals(m.obligations) && deadlines.equals(m.deadlines)
+                && bounds.equals(m.bounds);
     }
 
     @Override

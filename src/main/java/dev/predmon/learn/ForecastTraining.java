@@ -2,6 +2,8 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.BoundModel;
+import dev.predmon.forecast.BoundRuns;
 import dev.predmon.forecast.Calibration;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
@@ -13,6 +15,7 @@ import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -22,6 +25,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeMap;
 import java.util.function.Predicate;
 
 /**
@@ -62,14 +66,28 @@ public final class ForecastTraining {
         List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
         String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
         ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
+        List<Bound> others = others(abstraction);
+        Map<String, String> sides = new TreeMap<>();
+        Map<String, BoundModel> boundStats = new TreeMap<>();
+        for (Bound b : others) {
+            String side = BoundRuns.side(b, runs);
+            sides.put(b.id(), side);
+            boundStats.put(b.id(), new BoundModel(side, StatsLearner.learn(machines, BoundRuns.view(b, side, runs),
+                    unit, BoundModel.limit(b, side))));
+        }
         List<ScenarioSpec> read = present(specs, traces);
         Map<Path, Integer> folds = folds(read);
         if (folds.isEmpty()) {
-            return stats.withThreshold(ThresholdChoice.DEFAULT, "default " + ThresholdChoice.DEFAULT
-                    + ": too few logs to cross-validate", false);
+            String note = "default " + ThresholdChoice.DEFAULT + ": too few logs to cross-validate";
+            Map<String, BoundModel> bounds = new TreeMap<>();
+            boundStats.forEach((id, b) -> bounds.put(id, new BoundModel(b.side(),
+                    b.model().withThreshold(ThresholdChoice.DEFAULT, note, false))));
+            return stats.withThreshold(ThresholdChoice.DEFAULT, note, false).withBounds(bounds);
         }
         int used = Folds.used(folds);
         List<HeldOut> judged = new ArrayList<>();
+        Map<String, List<HeldOut>> boundJudged = new TreeMap<>();
+        others.forEach(b -> boundJudged.put(b.id(), new ArrayList<>()));
         for (int f = 0; f < used; f++) {
             int fold = f;
             Predicate<Path> held = log -> folds.get(log) == fold;
@@ -82,29 +100,64 @@ public final class ForecastTraining {
                 }
             }
             List<LogTrace.Run> training = runsOf(read, traces, held.negate());
-            if (training.stream().allMatch(LogTrace.Run::violated) || training.stream().noneMatch(LogTrace.Run::violated)) {
-                continue; // a fold that trains on one outcome only says nothing about where to draw the line
+            // a fold that trains on one outcome only says nothing about where to draw the line
+            boolean judges = !oneOutcome(training);
+            Map<String, CompactMealy<String, String>> foldMachines = LearnedModels.machines(foldLearned);
+            Map<String, BoundModel> foldBounds = new TreeMap<>();
+            Map<String, Double> foldBaseRates = new TreeMap<>();
+            for (Bound b : others) {
+                List<LogTrace.Run> view = BoundRuns.view(b, sides.get(b.id()), training);
+                if (!oneOutcome(view)) {
+                    ForecastModel m = StatsLearner.learn(foldMachines, view, unit,
+                            BoundModel.limit(b, sides.get(b.id())));
+                    foldBounds.put(b.id(), new BoundModel(sides.get(b.id()),
+                            m.withThreshold(HeldOutRun.NEVER, "held out", true)));
+                    foldBaseRates.put(b.id(), m.baseRate());
+                }
             }
-            ForecastModel foldStats = StatsLearner.learn(LearnedModels.machines(foldLearned), training, unit, limit);
+            if (!judges && foldBounds.isEmpty()) {
+                continue;
+            }
+            ForecastModel foldStats = StatsLearner.learn(foldMachines, training, unit, limit);
             // Warning at no probability, the rule's other clauses alone warn: those runs count as caught.
             ModelSet foldModels = LearnedModels.modelSet(foldLearned, abstraction,
-                    foldStats.withThreshold(HeldOutRun.NEVER, "held out", true));
+                    foldStats.withThreshold(HeldOutRun.NEVER, "held out", true).withBounds(foldBounds));
             for (ScenarioSpec s : read) {
                 for (Path log : s.logs()) {
                     if (!held.test(log)) {
                         continue;
                     }
                     try {
-                        for (HeldOutRun r : HeldOutRun.replay(log, s.runs(), foldModels, abstraction, confirm,
-                                WarningRule.FORECAST)) {
-                            judged.add(new HeldOut(fold, r, foldStats.baseRate()));
+                        HeldOutRun.Judged replayed = HeldOutRun.replayAll(log, s.runs(), foldModels, abstraction,
+                                confirm, WarningRule.FORECAST);
+                        if (judges) {
+                            for (HeldOutRun r : replayed.safety()) {
+                                judged.add(new HeldOut(fold, r, foldStats.baseRate()));
+                            }
                         }
+                        replayed.bounds().forEach((id, rs) -> rs.forEach(r -> boundJudged.get(id)
+                                .add(new HeldOut(fold, r, foldBaseRates.get(id)))));
                     } catch (IOException e) {
                         throw BadInputException.cannotRead(log, e);
                     }
                 }
             }
         }
+        Map<String, BoundModel> bounds = new TreeMap<>();
+        for (Bound b : others) {
+            BoundModel m = boundStats.get(b.id());
+            bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), used, unit,
+                    boundJudged.get(b.id()))));
+        }
+        return chosen(stats, property, used, unit, judged).withBounds(bounds);
+    }
+
+    /**
+     * {@code stats} with the calibration, the threshold and the scorecard of {@code property} chosen on the held-out
+     * runs {@code judged}.
+     */
+    private static ForecastModel chosen(ForecastModel stats, String property, int used, String unit,
+                                        List<HeldOut> judged) {
         // The threshold is chosen on the calibrated scale, where even odds mean what they say.
         Calibration calibration = Calibration.fit(judged.stream().map(h -> new Calibration.Sample(
                 h.run().probabilities(), h.run().violated())).toList());
@@ -117,6 +170,26 @@ public final class ForecastTraining {
         double threshold = c.threshold();
         String note = String.format(Locale.ROOT, "%.2f %s", threshold, c.note());
         return stats.withCalibration(calibration).withThreshold(threshold, note, true).withScorecards(cards);
+    }
+
+    private static boolean oneOutcome(List<LogTrace.Run> runs) {
+        return runs.stream().allMatch(LogTrace.Run::violated) || runs.stream().noneMatch(LogTrace.Run::violated);
+    }
+
+    /**
+     * Every bound property of {@code abstraction} but its safety property, with a floor or a ceiling: each gets a value
+     * forecast of its own ({@link BoundModel}).
+     */
+    public static List<Bound> others(Abstraction abstraction) {
+        String safety = abstraction.safety().map(Bound::id).orElse(null);
+        List<Bound> out = new ArrayList<>();
+        for (Property p : abstraction.properties()) {
+            if (p instanceof Bound b && !b.id().equals(safety)
+                    && (b.hasFloor() || b.ceiling() != Double.POSITIVE_INFINITY)) {
+                out.add(b);
+            }
+        }
+        return out;
     }
 
     /** One held-out run ({@link HeldOutRun}) with its fold and that fold's base rate. */

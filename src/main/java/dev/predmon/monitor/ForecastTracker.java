@@ -36,6 +36,12 @@ final class ForecastTracker {
                 models.machines()));
     }
 
+    /** The tracker of the forecast {@code model} over {@code machines} (a bound property's own, {@link BoundWatch}). */
+    static ForecastTracker of(ForecastModel model, java.util.Map<String, net.automatalib.automaton.transducer
+            .CompactMealy<String, String>> machines) {
+        return new ForecastTracker(new Forecaster(model, machines));
+    }
+
     /** The probability at which the forecast rule warns, for runs that match learned machines. */
     double threshold() {
         return forecaster.stats().threshold();

@@ -99,6 +99,11 @@ public final class PredictiveMonitor implements PipelineListener {
                 new DeadlineEvents(now, rule, this.events));
         this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
                 properties.forecastId(), this.events);
+        if (rule == WarningRule.FORECAST) {
+            BoundWatch bounds = new BoundWatch(abstraction.properties(), models, rule, now, this.events);
+            properties.forecastBounds(bounds, () -> !matching.nominalAlive());
+            follow.forecastBounds(bounds);
+        }
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
@@ -107,6 +112,9 @@ public final class PredictiveMonitor implements PipelineListener {
         ticks = t;
         if (forecast != null) {
             forecast.countTicksAs(t);
+        }
+        if (properties.bounds() != null) {
+            properties.bounds().countTicksAs(t);
         }
     }
 
@@ -216,9 +224,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void gap(LogRecord record) {
         tee.gap(record);
-        if (forecast != null) {
-            forecast.unseen(record.line());
-        }
+        follow.unseen(record.line());
     }
 
     @Override
@@ -265,11 +271,26 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
+     * Also tells {@code each} every forecast of each bound property with a value forecast of its own (not the
+     * forecast's), on its forecast's scale, one per pair and per new value of it (for the held-out replays).
+     */
+    public void onEveryBoundForecast(BoundWatch.Every each) {
+        if (properties.bounds() != null) {
+            properties.bounds().onEveryForecast(each);
+        }
+    }
+
+    /**
      * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before the
      * monitor takes it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
      */
     public void tee(PipelineListener also) {
         this.tee = also;
+    }
+
+    /** The id of the property the monitor's own forecast and the match rule's warnings are about, if any. */
+    public Optional<String> forecastProperty() {
+        return Optional.ofNullable(properties.forecastId());
     }
 
     /** The rule this monitor warns by. */

@@ -32,9 +32,27 @@ final class SafetyMonitor {
     /** The deadline forecasts, or null when nothing warns by them (the match rule, models without a forecast). */
     private final DeadlineWatch deadlines;
     private final DeadlineWatch.Listener told;
+    /** The other bound properties' value forecasts, or null when nothing warns by them. */
+    private BoundWatch bounds;
+    /** Whether no nominal model matches the run any more (what the bounds' novelty clause asks). */
+    private java.util.function.BooleanSupplier beyondNominal = () -> false;
 
     SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events) {
         this(abstraction, events, null, null);
+    }
+
+    /**
+     * Also forecasts the bound properties other than the forecast's by {@code bounds}, {@code beyondNominal} telling
+     * whether no nominal model matches the run any more.
+     */
+    void forecastBounds(BoundWatch bounds, java.util.function.BooleanSupplier beyondNominal) {
+        this.bounds = bounds;
+        this.beyondNominal = beyondNominal;
+    }
+
+    /** The other bound properties' value forecasts, or null. */
+    BoundWatch bounds() {
+        return bounds;
     }
 
     /** As above, telling {@code told} what the deadline forecasts of {@code deadlines} say. */
@@ -60,6 +78,9 @@ final class SafetyMonitor {
         if (deadlines != null) {
             deadlines.step(checker, r, told);
         }
+        if (bounds != null) {
+            bounds.record(checker, r, beyondNominal.getAsBoolean());
+        }
     }
 
     private void violated(int index, Property p, Verdict.Violated v) {
@@ -74,6 +95,9 @@ final class SafetyMonitor {
         checker.reset();
         if (deadlines != null) {
             deadlines.reset();
+        }
+        if (bounds != null) {
+            bounds.reset();
         }
     }
 
@@ -108,6 +132,9 @@ final class SafetyMonitor {
             Verdict v = checker.verdict(i);
             if (i == forecastIndex) {
                 all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST, forecastWarned, null, null));
+            } else if (bounds != null && bounds.forecasts(i)) {
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST,
+                        bounds.warned(i) && !(v instanceof Verdict.Violated), null, null, bounds.current(i)));
             } else if (deadlines != null && deadlines.forecasts(i)) {
                 Deadline d = ((Response) p).within();
                 all.add(new PropertyStatus(p, v, PropertyStatus.Model.DEADLINE,

@@ -181,6 +181,9 @@ public final class Traces {
         private final Steps[] steps;
         /** The run's outcome: when each property was first violated. */
         private Map<String, Double> violations = new TreeMap<>();
+        /** By property index, the bound properties but the safety one: each change of their value in the run. */
+        private final List<RunTiming.Reading>[] others;
+        private final double[] otherValues;
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
             this.abstraction = abstraction;
@@ -196,6 +199,16 @@ public final class Traces {
                     steps[i] = new Steps();
                 }
             }
+            @SuppressWarnings("unchecked")
+            List<RunTiming.Reading>[] o = new List[properties.size()];
+            this.others = o;
+            this.otherValues = new double[properties.size()];
+            for (int i = 0; i < others.length; i++) {
+                if (properties.get(i) instanceof Bound && i != safetyIndex) {
+                    others[i] = new ArrayList<>();
+                }
+            }
+            Arrays.fill(otherValues, Double.NaN);
             checker.onObligations((i, p, duration, discharged) -> {
                 double deadline = p instanceof Response r ? r.within().amount() : Double.POSITIVE_INFINITY;
                 obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, deadline,
@@ -216,6 +229,13 @@ public final class Traces {
                 endTime = record.time();
             }
             unit = record.clock().unit();
+            for (int i = 0; i < others.length; i++) {
+                double b = others[i] == null ? Double.NaN : checker.value(i);
+                if (!Double.isNaN(b) && b != otherValues[i]) {
+                    others[i].add(new RunTiming.Reading(record.time(), b, pairs.size()));
+                    otherValues[i] = b;
+                }
+            }
             if (safety.isEmpty()) {
                 return;
             }
@@ -280,8 +300,16 @@ public final class Traces {
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
             checker.finish();
             checker.reset();
+            Map<String, List<RunTiming.Reading>> bounds = new TreeMap<>();
+            for (int i = 0; i < others.length; i++) {
+                if (others[i] != null) {
+                    bounds.put(abstraction.properties().get(i).id(), List.copyOf(others[i]));
+                    others[i].clear();
+                }
+            }
+            Arrays.fill(otherValues, Double.NaN);
             RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
-                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations, violations);
+                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations, violations, bounds);
             changes = new ArrayList<>();
             gaps = new ArrayList<>();
             obligations = new ArrayList<>();

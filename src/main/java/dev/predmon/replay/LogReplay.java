@@ -16,7 +16,11 @@ import dev.predmon.pipeline.PipelineListener;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
 import java.util.function.ObjIntConsumer;
 
 /**
@@ -70,6 +74,8 @@ public final class LogReplay {
         });
         monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
                 current[0].time(), current[0].line(), monitor.pairs())));
+        monitor.onEveryBoundForecast((property, f, run) -> of(runs, run).bound(property, new ReplayedRun.Timed(f,
+                current[0].time(), current[0].line(), monitor.pairs())));
         List<ParseProblem> problems = new ArrayList<>();
         long lines;
         try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, problems::add,
@@ -82,7 +88,8 @@ public final class LogReplay {
         for (RunOutcome o : monitor.runs()) {
             Builder b = of(runs, o.run());
             out.add(new ReplayedRun(o.run(), o, b.pairs, b.gaps, b.forecasts,
-                    b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt));
+                    b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt,
+                    b.bounds));
         }
         return new ReplayedLog(log, out, problems, lines, monitor);
     }
@@ -111,6 +118,15 @@ public final class LogReplay {
         int violatedAfter = -1;
         List<ReplayedRun.Fate> models = List.of();
         long matchRuleAt = -1;
+        /** By bound property id, its forecasts before its first violation; the ids violated so far. */
+        final Map<String, List<ReplayedRun.Timed>> bounds = new TreeMap<>();
+        final Set<String> violated = new HashSet<>();
+
+        void bound(String property, ReplayedRun.Timed t) {
+            if (!violated.contains(property)) {
+                bounds.computeIfAbsent(property, k -> new ArrayList<>()).add(t);
+            }
+        }
 
         /** The run ends: how the matching left each model. */
         void end(PredictiveMonitor monitor) {
@@ -120,6 +136,9 @@ public final class LogReplay {
 
         void event(MonitorEvent e) {
             events.add(e);
+            if (e instanceof MonitorEvent.Violation v) {
+                violated.add(v.property());
+            }
             if (e instanceof MonitorEvent.Violation v && v.forecast() && violatedAfter < 0) {
                 violatedAfter = forecasts.size();
             }

@@ -8,8 +8,11 @@ import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.RunOutcome;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.TreeMap;
 
 /**
  * One run of a replayed log, as the monitor took it.
@@ -25,10 +28,13 @@ import java.util.Optional;
  * @param events    every event the monitor told in the run, in order
  * @param models    every model as the monitor's matching left it at the run's end, in model order
  * @param matchRuleAt the pair after which the thesis's match rule first held ({@code confirm} included), or -1
+ * @param boundForecasts by id, every bound property with a value forecast of its own (not the forecast's property):
+ *                  each forecast of it made before its first violation in the run (all of them in a run where it held),
+ *                  one after each pair and each new value of it, on its forecast's scale (a ceiling's mirrored)
  */
 public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Long> gaps, List<Timed> forecasts,
                           int forecastsBeforeViolation, List<MonitorEvent> events, List<Fate> models,
-                          long matchRuleAt) {
+                          long matchRuleAt, Map<String, List<Timed>> boundForecasts) {
 
     public ReplayedRun {
         models = List.copyOf(models);
@@ -36,6 +42,9 @@ public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Lo
         gaps = List.copyOf(gaps);
         forecasts = List.copyOf(forecasts);
         events = List.copyOf(events);
+        Map<String, List<Timed>> copy = new TreeMap<>();
+        boundForecasts.forEach((id, f) -> copy.put(id, List.copyOf(f)));
+        boundForecasts = Collections.unmodifiableMap(copy);
     }
 
     /**
