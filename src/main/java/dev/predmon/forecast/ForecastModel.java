@@ -65,6 +65,13 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 calibration, scorecards, obligations, deadlines, Map.of());
     }
 
+    /** Every property's scorecard: this model's, then each other bound property's by id. */
+    public List<Scorecard> allScorecards() {
+        List<Scorecard> all = new java.util.ArrayList<>(scorecards);
+        new java.util.TreeMap<>(bounds).values().forEach(b -> all.addAll(b.model().scorecards()));
+        return List.copyOf(all);
+    }
+
     /** This model with {@code forecasts} as the other bound properties' forecasts, by property id. */
     public ForecastModel withBounds(Map<String, BoundModel> forecasts) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,

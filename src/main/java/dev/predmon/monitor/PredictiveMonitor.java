@@ -190,10 +190,10 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /**
      * Every property of the current run now, in the abstraction's order: its verdict, whether a warning of it is up,
-     * and what forecasts it (the forecast's property's latest forecast is {@link #forecast()}).
+     * what forecasts it and its latest forecast (the forecast's property's is {@link #forecast()}).
      */
     public List<PropertyStatus> properties() {
-        return properties.statuses(!alarm.quiet() && !alarm.violated());
+        return properties.statuses(!alarm.quiet() && !alarm.violated(), forecast().orElse(null));
     }
 
     /** What all runs since the start add up to. */

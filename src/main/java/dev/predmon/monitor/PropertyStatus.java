@@ -15,9 +15,8 @@ import dev.predmon.property.Verdict;
  * @param deadline for {@link Model#DEADLINE}, the forecast of the obligation pending now, or null when none is
  * @param unit     for {@link Model#DEADLINE}, what the deadline and {@code deadline}'s time left count
  *                 ({@code ticks}, {@code seconds}, {@code occurrences}); else null
- * @param forecast for {@link Model#FORECAST} of a bound property other than the forecast's own, its latest value
- *                 forecast (null before one); null for the forecast's property (the monitor's own forecast) and
- *                 any other
+ * @param forecast for {@link Model#FORECAST}, its latest value forecast (the monitor's own for the forecast's
+ *                 property, a bound property's own for any other), null before one and for the other models
  */
 public record PropertyStatus(Property property, Verdict verdict, Model model, boolean warned,
                              Survival.Estimate deadline, String unit, Forecast forecast) {

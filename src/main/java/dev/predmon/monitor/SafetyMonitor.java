@@ -124,14 +124,16 @@ final class SafetyMonitor {
      * warned and the pending obligation's forecast.
      *
      * @param forecastWarned whether a warning of the forecast's property is up
+     * @param forecastNow    the forecast's property's latest forecast, or null
      */
-    List<PropertyStatus> statuses(boolean forecastWarned) {
+    List<PropertyStatus> statuses(boolean forecastWarned, dev.predmon.forecast.Forecast forecastNow) {
         List<PropertyStatus> all = new ArrayList<>(checker.properties().size());
         for (int i = 0; i < checker.properties().size(); i++) {
             Property p = checker.properties().get(i);
             Verdict v = checker.verdict(i);
             if (i == forecastIndex) {
-                all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST, forecastWarned, null, null));
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST, forecastWarned, null, null,
+                        forecastNow));
             } else if (bounds != null && bounds.forecasts(i)) {
                 all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST,
                         bounds.warned(i) && !(v instanceof Verdict.Violated), null, null, bounds.current(i)));
