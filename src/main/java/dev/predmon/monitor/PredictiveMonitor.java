@@ -99,10 +99,9 @@ public final class PredictiveMonitor implements PipelineListener {
                 new DeadlineEvents(now, rule, this.events));
         this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
                 properties.forecastId(), this.events);
-        if (rule == WarningRule.FORECAST) {
-            BoundWatch bounds = new BoundWatch(abstraction.properties(), models, rule, now, this.events);
-            properties.forecastBounds(bounds, () -> !matching.nominalAlive());
-            follow.forecastBounds(bounds);
+        if (rule == WarningRule.FORECAST) { // the other bound properties' forecasts, warning by the same rule
+            follow.forecastBounds(properties.forecastBounds(new BoundWatch(abstraction.properties(), models, rule, now,
+                    this.events), () -> !matching.nominalAlive()));
         }
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
@@ -113,9 +112,7 @@ public final class PredictiveMonitor implements PipelineListener {
         if (forecast != null) {
             forecast.countTicksAs(t);
         }
-        if (properties.bounds() != null) {
-            properties.bounds().countTicksAs(t);
-        }
+        properties.countTicksAs(t);
     }
 
     /** Takes the next record of the log. */

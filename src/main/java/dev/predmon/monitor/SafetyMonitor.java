@@ -43,11 +43,19 @@ final class SafetyMonitor {
 
     /**
      * Also forecasts the bound properties other than the forecast's by {@code bounds}, {@code beyondNominal} telling
-     * whether no nominal model matches the run any more.
+     * whether no nominal model matches the run any more; returns {@code bounds}.
      */
-    void forecastBounds(BoundWatch bounds, java.util.function.BooleanSupplier beyondNominal) {
+    BoundWatch forecastBounds(BoundWatch bounds, java.util.function.BooleanSupplier beyondNominal) {
         this.bounds = bounds;
         this.beyondNominal = beyondNominal;
+        return bounds;
+    }
+
+    /** Reports the other bound properties' forecast times in seconds, a tick lasting {@code t}. */
+    void countTicksAs(TickSeconds t) {
+        if (bounds != null) {
+            bounds.countTicksAs(t);
+        }
     }
 
     /** The other bound properties' value forecasts, or null. */

@@ -11,6 +11,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -74,13 +76,35 @@ class BoundForecastCliTest {
                 && e.path("property").asText().equals(property)).toList();
     }
 
-    @Test
-    void aReserveFloorAndACeilingAreForecastAndWarnedEachUnderItsOwnId() throws Exception {
-        Path abstraction = abstraction();
+    /** Eight simulated runs of each scenario, a log each, in a scenario directory each. */
+    private Path trainingLogs() {
         Path logs = tmp.resolve("logs");
         for (String s : List.of("direct", "recharge", "depleted")) {
             simulate(s, "200", "--runs", "8", "--out-dir", logs.resolve(s).toString());
         }
+        return logs;
+    }
+
+    @Test
+    void evaluateScoresEachBoundsWarningsFromItsOwnForecast() throws Exception {
+        Cli r = Cli.run("evaluate", "--logs", trainingLogs().toString(), "--abstraction", abstraction().toString(),
+                "--folds", "3", "--quiet");
+        assertEquals(0, r.code(), r.err());
+        Matcher reserve = Pattern.compile("\nreserve +24 +(\\d+) +(\\d+) +(\\d+) ").matcher(r.out());
+        assertTrue(reserve.find(), r.out());
+        int violated = Integer.parseInt(reserve.group(1));
+        int warned = Integer.parseInt(reserve.group(2));
+        assertTrue(violated > 8, "the depleted runs and the recharge runs that crossed 40: " + r.out());
+        assertTrue(warned > violated / 2, "most warned ahead by the reserve's own forecast: " + r.out());
+        Matcher full = Pattern.compile("\nfull +24 +8 +(\\d+) ").matcher(r.out());
+        assertTrue(full.find(), "every recharge run overcharges: " + r.out());
+        assertTrue(Integer.parseInt(full.group(1)) > 0, r.out());
+    }
+
+    @Test
+    void aReserveFloorAndACeilingAreForecastAndWarnedEachUnderItsOwnId() throws Exception {
+        Path abstraction = abstraction();
+        Path logs = trainingLogs();
         Path models = tmp.resolve("models");
         Cli learn = Cli.run("learn", "--logs", logs.toString(), "--models", models.toString(), "--abstraction",
                 abstraction.toString());
