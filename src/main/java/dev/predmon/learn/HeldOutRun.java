@@ -91,7 +91,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
                 w = x;
             }
         }
-        List<ReplayedRun.Timed> f = r.boundForecasts().getOrDefault(id, List.of());
+        List<ReplayedRun.Timed> f = r.boundBeforeViolation(id);
         return new HeldOutRun(v != null, f.stream().map(t -> t.forecast().probability()).toList(),
                 f.stream().map(ReplayedRun.Timed::time).toList(), w == null ? Double.NaN : w.time(),
                 v == null ? Double.NaN : v.time());

@@ -170,7 +170,7 @@ public final class BoundWatch {
 
     /** Reports {@code news} of property {@code i} if it is news; returns its latest forecast (forecast's scale). */
     private Forecast told(int i, Forecast news, LogRecord r) {
-        every.forecast(bounds[i].id(), trackers[i].last(), now.run);
+        every.forecast(bounds[i].id(), models[i].shown(trackers[i].last()), now.run);
         if (news != null) {
             events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), models[i].shown(news), r.clock(),
                     now.run, bounds[i].id()));

@@ -269,7 +269,7 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /**
      * Also tells {@code each} every forecast of each bound property with a value forecast of its own (not the
-     * forecast's), on its forecast's scale, one per pair and per new value of it (for the held-out replays).
+     * forecast's), as the property reads, one per pair and per new value of it (for the held-out replays).
      */
     public void onEveryBoundForecast(BoundWatch.Every each) {
         if (properties.bounds() != null) {

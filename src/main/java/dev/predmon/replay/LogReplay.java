@@ -16,10 +16,8 @@ import dev.predmon.pipeline.PipelineListener;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.TreeMap;
 import java.util.function.ObjIntConsumer;
 
@@ -89,7 +87,7 @@ public final class LogReplay {
             Builder b = of(runs, o.run());
             out.add(new ReplayedRun(o.run(), o, b.pairs, b.gaps, b.forecasts,
                     b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt,
-                    b.bounds));
+                    b.bounds, b.boundsBefore));
         }
         return new ReplayedLog(log, out, problems, lines, monitor);
     }
@@ -118,14 +116,12 @@ public final class LogReplay {
         int violatedAfter = -1;
         List<ReplayedRun.Fate> models = List.of();
         long matchRuleAt = -1;
-        /** By bound property id, its forecasts before its first violation; the ids violated so far. */
+        /** By bound property id, its forecasts; and how many came before its first violation, once it came. */
         final Map<String, List<ReplayedRun.Timed>> bounds = new TreeMap<>();
-        final Set<String> violated = new HashSet<>();
+        final Map<String, Integer> boundsBefore = new TreeMap<>();
 
         void bound(String property, ReplayedRun.Timed t) {
-            if (!violated.contains(property)) {
-                bounds.computeIfAbsent(property, k -> new ArrayList<>()).add(t);
-            }
+            bounds.computeIfAbsent(property, k -> new ArrayList<>()).add(t);
         }
 
         /** The run ends: how the matching left each model. */
@@ -136,8 +132,8 @@ public final class LogReplay {
 
         void event(MonitorEvent e) {
             events.add(e);
-            if (e instanceof MonitorEvent.Violation v) {
-                violated.add(v.property());
+            if (e instanceof MonitorEvent.Violation v && v.property() != null) {
+                boundsBefore.putIfAbsent(v.property(), bounds.getOrDefault(v.property(), List.of()).size());
             }
             if (e instanceof MonitorEvent.Violation v && v.forecast() && violatedAfter < 0) {
                 violatedAfter = forecasts.size();

@@ -29,12 +29,15 @@ import java.util.TreeMap;
  * @param models    every model as the monitor's matching left it at the run's end, in model order
  * @param matchRuleAt the pair after which the thesis's match rule first held ({@code confirm} included), or -1
  * @param boundForecasts by id, every bound property with a value forecast of its own (not the forecast's property):
- *                  each forecast of it made before its first violation in the run (all of them in a run where it held),
- *                  one after each pair and each new value of it, on its forecast's scale (a ceiling's mirrored)
+ *                  every forecast of it, one after each pair and each new value of it, as the property reads, each
+ *                  with the record that made it
+ * @param boundForecastsBeforeViolation by id, how many of {@code boundForecasts} came before the property's first
+ *                  violation (absent in a run where it held)
  */
 public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Long> gaps, List<Timed> forecasts,
                           int forecastsBeforeViolation, List<MonitorEvent> events, List<Fate> models,
-                          long matchRuleAt, Map<String, List<Timed>> boundForecasts) {
+                          long matchRuleAt, Map<String, List<Timed>> boundForecasts,
+                          Map<String, Integer> boundForecastsBeforeViolation) {
 
     public ReplayedRun {
         models = List.copyOf(models);
@@ -45,6 +48,13 @@ public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Lo
         Map<String, List<Timed>> copy = new TreeMap<>();
         boundForecasts.forEach((id, f) -> copy.put(id, List.copyOf(f)));
         boundForecasts = Collections.unmodifiableMap(copy);
+        boundForecastsBeforeViolation = Map.copyOf(boundForecastsBeforeViolation);
+    }
+
+    /** The forecasts of bound property {@code id} made before its first violation: what its forecast is scored on. */
+    public List<Timed> boundBeforeViolation(String id) {
+        List<Timed> all = boundForecasts.getOrDefault(id, List.of());
+        return all.subList(0, boundForecastsBeforeViolation.getOrDefault(id, all.size()));
     }
 
     /**

@@ -31,8 +31,12 @@ class BoundForecastCliTest {
     @TempDir
     Path tmp;
 
-    /** The thesis's abstraction with the reserve floor and the ceiling, as a file. */
     private Path abstraction() throws Exception {
+        return abstraction(tmp);
+    }
+
+    /** The thesis's abstraction with the reserve floor and the ceiling, as a file in {@code tmp}. */
+    static Path abstraction(Path tmp) throws Exception {
         Cli shown = Cli.run("abstraction", "show", "thesis");
         assertEquals(0, shown.code(), shown.err());
         ObjectNode a = (ObjectNode) JSON.readTree(shown.out());
@@ -51,6 +55,11 @@ class BoundForecastCliTest {
     }
 
     private Path simulate(String scenario, String seed, String... more) {
+        return simulate(tmp, scenario, seed, more);
+    }
+
+    /** A simulated log of {@code scenario} in {@code tmp}, or with {@code more} arguments where they say. */
+    static Path simulate(Path tmp, String scenario, String seed, String... more) {
         Path out = tmp.resolve(scenario + "-" + seed + ".log");
         List<String> args = new ArrayList<>(List.of("simulate", "--scenario", scenario, "--seed", seed));
         if (more.length == 0) {
@@ -76,11 +85,15 @@ class BoundForecastCliTest {
                 && e.path("property").asText().equals(property)).toList();
     }
 
-    /** Eight simulated runs of each scenario, a log each, in a scenario directory each. */
     private Path trainingLogs() {
+        return trainingLogs(tmp);
+    }
+
+    /** Eight simulated runs of each scenario, a log each, in a scenario directory each, in {@code tmp}. */
+    static Path trainingLogs(Path tmp) {
         Path logs = tmp.resolve("logs");
         for (String s : List.of("direct", "recharge", "depleted")) {
-            simulate(s, "200", "--runs", "8", "--out-dir", logs.resolve(s).toString());
+            simulate(tmp, s, "200", "--runs", "8", "--out-dir", logs.resolve(s).toString());
         }
         return logs;
     }
