@@ -1,7 +1,9 @@
 package dev.predmon.forecast;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * Everything the forecast learned from the training runs, stored beside the machines ({@code forecast.json}).
@@ -67,8 +69,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
 
     /** Every property's scorecard: this model's, then each other bound property's by id. */
     public List<Scorecard> allScorecards() {
-        List<Scorecard> all = new java.util.ArrayList<>(scorecards);
-        new java.util.TreeMap<>(bounds).values().forEach(b -> all.addAll(b.model().scorecards()));
+        List<Scorecard> all = new ArrayList<>(scorecards);
+        new TreeMap<>(bounds).values().forEach(b -> all.addAll(b.model().scorecards()));
         return List.copyOf(all);
     }
 

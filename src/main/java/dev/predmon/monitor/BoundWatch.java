@@ -190,7 +190,7 @@ public final class BoundWatch {
 
     private void decide(int i, Forecast f, boolean beyondNominal, LogRecord r, String where) {
         Forecast shown = models[i].shown(f);
-        WarningPolicy.Decision d = WarningPolicy.ofBound(rule, trackers[i], f, shown, beyondNominal,
+        WarningPolicy.Decision d = WarningPolicy.ofBound(rule, trackers[i], f, shown, models[i].mirrored(), beyondNominal,
                 warned(i) || violated[i], where);
         if (d == null) {
             return;

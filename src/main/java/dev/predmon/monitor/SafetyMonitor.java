@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Deadline;
@@ -12,6 +13,7 @@ import dev.predmon.property.Verdict;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 
 /**
@@ -35,7 +37,7 @@ final class SafetyMonitor {
     /** The other bound properties' value forecasts, or null when nothing warns by them. */
     private BoundWatch bounds;
     /** Whether no nominal model matches the run any more (what the bounds' novelty clause asks). */
-    private java.util.function.BooleanSupplier beyondNominal = () -> false;
+    private BooleanSupplier beyondNominal = () -> false;
 
     SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events) {
         this(abstraction, events, null, null);
@@ -45,7 +47,7 @@ final class SafetyMonitor {
      * Also forecasts the bound properties other than the forecast's by {@code bounds}, {@code beyondNominal} telling
      * whether no nominal model matches the run any more; returns {@code bounds}.
      */
-    BoundWatch forecastBounds(BoundWatch bounds, java.util.function.BooleanSupplier beyondNominal) {
+    BoundWatch forecastBounds(BoundWatch bounds, BooleanSupplier beyondNominal) {
         this.bounds = bounds;
         this.beyondNominal = beyondNominal;
         return bounds;
@@ -134,7 +136,7 @@ final class SafetyMonitor {
      * @param forecastWarned whether a warning of the forecast's property is up
      * @param forecastNow    the forecast's property's latest forecast, or null
      */
-    List<PropertyStatus> statuses(boolean forecastWarned, dev.predmon.forecast.Forecast forecastNow) {
+    List<PropertyStatus> statuses(boolean forecastWarned, Forecast forecastNow) {
         List<PropertyStatus> all = new ArrayList<>(checker.properties().size());
         for (int i = 0; i < checker.properties().size(); i++) {
             Property p = checker.properties().get(i);

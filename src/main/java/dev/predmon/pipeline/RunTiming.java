@@ -1,8 +1,10 @@
 package dev.predmon.pipeline;
 
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * When the pairs of one run came and what the safety property's channel read then: the forecast learns from it how
@@ -142,9 +144,9 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
         gaps = List.copyOf(gaps);
         obligations = List.copyOf(obligations);
         violations = Map.copyOf(violations);
-        Map<String, List<Reading>> copy = new java.util.TreeMap<>();
+        Map<String, List<Reading>> copy = new TreeMap<>();
         bounds.forEach((id, r) -> copy.put(id, List.copyOf(r)));
-        bounds = java.util.Collections.unmodifiableMap(copy);
+        bounds = Collections.unmodifiableMap(copy);
     }
 
     /** Whether the run violated the property {@code id} (its outcome as the safety monitor saw it). */
