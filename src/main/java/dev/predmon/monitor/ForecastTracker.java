@@ -6,8 +6,9 @@ import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.matching.Matching;
 import dev.predmon.model.ModelSet;
-import java.util.Map;
 import net.automatalib.automaton.transducer.CompactMealy;
+
+import java.util.Map;
 
 /**
  * The forecast of the run being watched: a {@link Forecaster} over the models' machines, and which of its forecasts
