@@ -223,8 +223,8 @@ final class DemoCommand implements Callable<Integer> {
         boolean ok;
         if (scenario.faulty()) {
             ok = w != null && v != null && w.time() < v.time();
-            out.println(ok ? String.format(Locale.ROOT, "  => predicted %.1f s ahead: warning at battery %.1f%%, "
-                    + "violation at %.1f%%", v.time() - w.time(), w.battery(), v.value())
+            out.println(ok ? String.format(Locale.ROOT, "  => predicted %.1f s ahead: warning at %s %.1f%%, "
+                    + "violation at %.1f%%", v.time() - w.time(), w.property(), w.value(), v.value())
                     : "  => the warning did not come before the violation");
         } else {
             ok = w == null && v == null;

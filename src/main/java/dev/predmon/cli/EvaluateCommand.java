@@ -30,7 +30,7 @@ import java.util.concurrent.Callable;
                 "With --test DIR: learn on --logs, judge every log of DIR. With --folds K (default 5): K-fold "
                         + "cross-validation over --logs, run by run; a log is only judged by models learned without it.",
                 "Prints per scenario: runs, warned, hits, false alarms, missed (a faulty run not warned before its "
-                        + "violation), lead (violation time - warning time) and battery at the warning "
+                        + "violation), lead (violation time - warning time) and the watched value at the warning "
                         + "(median [min..max]); then every run's verdict."})
 final class EvaluateCommand implements Callable<Integer> {
 
@@ -63,7 +63,8 @@ final class EvaluateCommand implements Callable<Integer> {
     RuleOption rule;
 
     @Option(names = "--report", paramLabel = "FILE",
-            description = "Write a self-contained HTML report: table, confusion matrix, leads, battery plots, models.")
+            description = "Write a self-contained HTML report: table, confusion matrix, leads, plots of the watched "
+                    + "value, models.")
     Path report;
 
     @Option(names = "--json", description = "Print the evaluation as one JSON document instead of tables.")

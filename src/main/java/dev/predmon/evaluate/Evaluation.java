@@ -1,6 +1,7 @@
 package dev.predmon.evaluate;
 
 import com.fasterxml.jackson.annotation.JsonIgnore;
+import com.fasterxml.jackson.annotation.JsonProperty;
 import com.fasterxml.jackson.annotation.JsonPropertyOrder;
 import dev.predmon.model.ModelSet;
 
@@ -21,7 +22,7 @@ import java.util.List;
  * @param rule        the warning rule the runs were judged by
  * @param forecast    how good the forecast was, or null when the models carry none
  */
-@JsonPropertyOrder({"mode", "folds", "tolerance", "abstraction", "rule", "scenarios", "confusion", "forecast", "notes",
+@JsonPropertyOrder({"mode", "folds", "tolerance", "abstraction", "rule", "scenarios", "confusion", "forecast", "properties", "notes",
         "runs"})
 public record Evaluation(String mode, int folds, int tolerance, String abstraction, List<ScenarioSummary> scenarios,
                          Confusion confusion, List<RunResult> runs, List<String> notes,
@@ -31,5 +32,14 @@ public record Evaluation(String mode, int folds, int tolerance, String abstracti
     public Evaluation(String mode, int folds, int tolerance, String abstraction, List<ScenarioSummary> scenarios,
                       Confusion confusion, List<RunResult> runs, List<String> notes, ModelSet models) {
         this(mode, folds, tolerance, abstraction, scenarios, confusion, runs, notes, models, "match", null);
+    }
+
+    /**
+     * How each of the abstraction's other properties fared ({@link PropertyScore}): its violations, warnings, lead,
+     * the elapsed-time baseline, and how good its forecast was.
+     */
+    @JsonProperty("properties")
+    public List<PropertyScore> properties() {
+        return PropertyScore.of(runs);
     }
 }

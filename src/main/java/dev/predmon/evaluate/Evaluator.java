@@ -2,6 +2,7 @@ package dev.predmon.evaluate;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.ForecastModel;
 import dev.predmon.learn.Folds;
 import dev.predmon.learn.Learning;
 import dev.predmon.learn.ScenarioLearner;
@@ -11,6 +12,7 @@ import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
+import dev.predmon.property.Property;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -66,11 +68,12 @@ public final class Evaluator {
         List<String> notes = new ArrayList<>();
         Map<Path, LogTrace> samples = readSamples(train, notes, c);
         ModelSet models = learn(train, samples, log -> true, notes, "");
+        Map<String, Double> rates = baseRates(train, samples, log -> true);
         c.step("learned " + models.models().size() + " model(s)");
         List<RunResult> runs = new ArrayList<>();
         for (ScenarioSpec s : test) {
             for (Path log : s.logs()) {
-                runs.addAll(judge(log, s, -1, models));
+                runs.addAll(judge(log, s, -1, models, rates));
                 c.step(log.getFileName().toString());
             }
         }
@@ -89,11 +92,12 @@ public final class Evaluator {
         for (int f = 0; f < used; f++) {
             int current = f;
             ModelSet models = learn(specs, samples, log -> fold.get(log) != current, notes, "fold " + f + ": ");
+            Map<String, Double> rates = baseRates(specs, samples, log -> fold.get(log) != current);
             c.step("fold " + f + ": learned " + models.models().size() + " model(s)");
             for (ScenarioSpec s : specs) {
                 for (Path log : s.logs()) {
                     if (fold.get(log) == current) {
-                        runs.addAll(judge(log, s, current, models));
+                        runs.addAll(judge(log, s, current, models, rates));
                         c.step("fold " + f + ": " + log.getFileName());
                     }
                 }
@@ -116,10 +120,11 @@ public final class Evaluator {
                 List.copyOf(runs), List.copyOf(notes), models, ruleFor(models).id(), ForecastScore.of(runs));
     }
 
-    private List<RunResult> judge(Path log, ScenarioSpec s, int fold, ModelSet models) throws BadInputException {
+    private List<RunResult> judge(Path log, ScenarioSpec s, int fold, ModelSet models, Map<String, Double> rates)
+            throws BadInputException {
         try {
             return Replay.run(log, s.name(), s.faulty(), s.runs(), fold, models, abstraction, tolerance, confirm,
-                    ruleFor(models));
+                    ruleFor(models), rates);
         } catch (IOException e) {
             throw BadInputException.cannotRead(log, e);
         }
@@ -162,6 +167,40 @@ public final class Evaluator {
                 tuned -> reread(samples, tuned), said, l -> { });
         said.forEach(n -> notes.add(prefix + n));
         return learned.modelSet();
+    }
+
+    /**
+     * The base rate of every property but the forecast's: the share of the training runs (the runs of the logs
+     * {@code training} keeps that their scenario learns from) that violated it, with the forecast's prior of
+     * {@link ForecastModel#PRIOR_RUNS} runs split evenly, so that it is the battery's base rate taken for each property.
+     */
+    private Map<String, Double> baseRates(List<ScenarioSpec> specs, Map<Path, LogTrace> samples,
+                                          Predicate<Path> training) {
+        int runs = 0;
+        Map<String, Integer> violating = new HashMap<>();
+        for (ScenarioSpec s : specs) {
+            for (Path log : s.logs()) {
+                LogTrace trace = samples.get(log);
+                if (trace == null || !training.test(log)) {
+                    continue;
+                }
+                for (LogTrace.Run r : trace.judgedRunsInFull()) {
+                    if (!s.runs().selects(r.violated())) {
+                        continue;
+                    }
+                    runs++;
+                    for (Property p : abstraction.properties()) {
+                        violating.merge(p.id(), r.violated(p.id()) ? 1 : 0, Integer::sum);
+                    }
+                }
+            }
+        }
+        Map<String, Double> rates = new LinkedHashMap<>();
+        for (Property p : abstraction.properties()) {
+            rates.put(p.id(), (violating.getOrDefault(p.id(), 0) + ForecastModel.PRIOR_RUNS / 2)
+                    / (runs + ForecastModel.PRIOR_RUNS));
+        }
+        return rates;
     }
 
     /** The training logs read again with {@code tuned}, cached by hysteresis, since folds mostly agree. */

@@ -8,7 +8,8 @@ import java.util.List;
  *
  * <p>Every run weighs the same: a run's forecasts (one per pair before its violation or end) share one unit of
  * weight, so a long run does not outvote a short one. The outcome of every forecast of a run is whether that run
- * violated the property.
+ * violated the property. The Brier score, the calibration error and the reliability table are {@link Reliability}'s,
+ * as for every other property's forecast.
  *
  * @param runs        runs with at least one forecast
  * @param brier       the mean squared distance between probability and outcome (0 is perfect)
@@ -19,25 +20,10 @@ import java.util.List;
  *                    before the violation reaches the threshold)
  * @param judged      the warning rule the runs were judged by, scored on the runs with a forecast
  * @param rawValue    the raw-value baseline on the same runs ({@link ValueRule#rawValue})
+ * @param eceChance   the calibration error a calibrated forecast stays under on the same runs by chance, 9 times in 10
  */
-public record ForecastScore(int runs, double brier, double baseBrier, double ece, List<Bin> reliability,
-                            List<Point> sweep, ValueRule judged, ValueRule rawValue) {
-
-    /** Bins of the reliability table. */
-    static final int BINS = 10;
-
-    /**
-     * One bin of the reliability table.
-     *
-     * @param from      lower edge of the probability
-     * @param to        upper edge
-     * @param weight    runs' worth of forecasts in the bin
-     * @param forecasts forecasts in the bin
-     * @param predicted their weighted mean probability
-     * @param observed  the weighted share of them whose run violated
-     */
-    public record Bin(double from, double to, double weight, int forecasts, double predicted, double observed) {
-    }
+public record ForecastScore(int runs, double brier, double baseBrier, double ece, List<Reliability.Bin> reliability,
+                            List<Point> sweep, ValueRule judged, ValueRule rawValue, double eceChance) {
 
     /**
      * The forecast rule at one threshold.
@@ -58,41 +44,14 @@ public record ForecastScore(int runs, double brier, double baseBrier, double ece
         if (scored.isEmpty()) {
             return null;
         }
-        double brier = 0;
-        double base = 0;
-        double[] w = new double[BINS];
-        double[] p = new double[BINS];
-        double[] o = new double[BINS];
-        int[] n = new int[BINS];
-        for (RunResult r : scored) {
-            double y = r.violationTime() != null ? 1 : 0;
-            List<Double> ps = r.forecast().probabilities();
-            double each = 1.0 / ps.size();
-            for (double x : ps) {
-                brier += each * (x - y) * (x - y);
-                int b = Math.min(BINS - 1, (int) (x * BINS));
-                w[b] += each;
-                p[b] += each * x;
-                o[b] += each * y;
-                n[b]++;
-            }
-            double br = r.forecast().baseRate();
-            base += (br - y) * (br - y);
-        }
-        List<Bin> bins = new ArrayList<>();
-        double ece = 0;
-        for (int b = 0; b < BINS; b++) {
-            if (n[b] > 0) {
-                bins.add(new Bin(b / (double) BINS, (b + 1) / (double) BINS, w[b], n[b], p[b] / w[b], o[b] / w[b]));
-                ece += Math.abs(p[b] - o[b]);
-            }
-        }
+        Reliability r = Reliability.of(scored.stream().map(x -> Reliability.Run.of(x.forecast().probabilities(),
+                x.violationTime() != null, x.forecast().baseRate())).toList());
         List<Point> sweep = new ArrayList<>();
         for (int i = 1; i <= 9; i++) {
             sweep.add(point(scored, i / 10.0));
         }
-        return new ForecastScore(scored.size(), brier / scored.size(), base / scored.size(), ece / scored.size(),
-                List.copyOf(bins), List.copyOf(sweep), ValueRule.judged(runs), ValueRule.rawValue(runs));
+        return new ForecastScore(r.runs(), r.brier(), r.baseBrier(), r.ece(), r.bins(), List.copyOf(sweep),
+                ValueRule.judged(runs), ValueRule.rawValue(runs), r.eceChance());
     }
 
     /** The forecast rule at threshold {@code t} over {@code runs}. */

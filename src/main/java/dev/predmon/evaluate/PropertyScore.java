@@ -9,8 +9,10 @@ import java.util.Map;
  * How each of the abstraction's other properties (every one but the forecast's) fared on the judged runs: its
  * violations, how many a warning came before, its false alarms (runs that kept it but were warned about it), and the
  * lead. A bound's warnings come from its own value forecast (learned from the training runs labelled by its own
- * violation), a deadline's from its forecast (how long the obligation has been pending against the training runs');
- * a property without a forecast (an absence, a precedence) is counted so its violations are seen.
+ * violation), a deadline's from its forecast (how long the obligation has been pending against the training runs'),
+ * and a property a faulty scenario's runs violate ({@code violates} in its {@code scenario.json}) is also warned of by
+ * the matching; a property without either (an absence, a precedence) is counted so its violations are seen. How good
+ * each property's forecast was is {@link Reliability}'s score of its forecasts ({@link PropertyForecasts}).
  *
  * <p>Beside them, the elapsed-time baseline, chosen by the same cross-validation: warn as soon as an obligation has
  * been pending longer than every training obligation of the fold's models. It is to a deadline what the raw-value
@@ -25,17 +27,35 @@ import java.util.Map;
  * @param baselineWarned  violating runs the elapsed-time baseline warned before the violation
  * @param baselineAlarms  runs that kept it but the elapsed-time baseline warned
  * @param baselineLead    the elapsed-time baseline's lead
+ * @param forecast        how good its forecast was ({@link Reliability}: Brier score against the base rate,
+ *                        calibration error, reliability table), or null when it has no forecast with a probability
+ *                        on these runs
+ * @param scope           what its forecasts are about ({@link RunResult.PropertyResult#scope}), null without one
  */
 public record PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
-                            int baselineWarned, int baselineAlarms, Stats baselineLead) {
+                            int baselineWarned, int baselineAlarms, Stats baselineLead, Reliability forecast,
+                            String scope) {
+
+    /** A score without a forecast. */
+    public PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
+                         int baselineWarned, int baselineAlarms, Stats baselineLead) {
+        this(property, runs, violating, warned, falseAlarms, lead, baselineWarned, baselineAlarms, baselineLead, null,
+                null);
+    }
 
     /** One score per property, in the order the runs list them. */
     public static List<PropertyScore> of(List<RunResult> runs) {
         Map<String, int[]> counts = new LinkedHashMap<>();
         Map<String, List<Double>> leads = new LinkedHashMap<>();
         Map<String, List<Double>> baselineLeads = new LinkedHashMap<>();
+        Map<String, List<Reliability.Run>> forecasts = new LinkedHashMap<>();
+        Map<String, String> scopes = new LinkedHashMap<>();
         for (RunResult r : runs) {
             for (RunResult.PropertyResult p : r.properties()) {
+                if (p.forecasts() != null) {
+                    forecasts.computeIfAbsent(p.property(), k -> new ArrayList<>()).add(p.forecasts());
+                    scopes.putIfAbsent(p.property(), p.scope());
+                }
                 int[] c = counts.computeIfAbsent(p.property(), k -> new int[6]);
                 List<Double> l = leads.computeIfAbsent(p.property(), k -> new ArrayList<>());
                 List<Double> b = baselineLeads.computeIfAbsent(p.property(), k -> new ArrayList<>());
@@ -57,8 +77,11 @@ public record PropertyScore(String property, int runs, int violating, int warned
             }
         }
         List<PropertyScore> out = new ArrayList<>();
-        counts.forEach((id, c) -> out.add(new PropertyScore(id, c[0], c[1], c[2], c[3], Stats.of(leads.get(id)), c[4],
-                c[5], Stats.of(baselineLeads.get(id)))));
+        counts.forEach((id, c) -> {
+            Reliability f = Reliability.of(forecasts.getOrDefault(id, List.of()));
+            out.add(new PropertyScore(id, c[0], c[1], c[2], c[3], Stats.of(leads.get(id)), c[4], c[5],
+                    Stats.of(baselineLeads.get(id)), f, f == null ? null : scopes.get(id)));
+        });
         return out;
     }
 }

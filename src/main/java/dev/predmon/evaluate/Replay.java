@@ -50,10 +50,21 @@ public final class Replay {
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
                                       ModelSet models, Abstraction abstraction, int tolerance, int confirm,
                                       WarningRule rule) throws IOException {
+        return run(log, scenario, faulty, label, fold, models, abstraction, tolerance, confirm, rule, Map.of());
+    }
+
+    /**
+     * As above, with the base rate of each property other than the forecast's: the share of the training runs of
+     * {@code models} that violated it (what a value forecast of it is scored against; a deadline's comes from the
+     * models' obligations).
+     */
+    public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
+                                      ModelSet models, Abstraction abstraction, int tolerance, int confirm,
+                                      WarningRule rule, Map<String, Double> baseRates) throws IOException {
         Approach approach = new Approach(abstraction.safety().orElse(null),
                 models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
         ReplayedLog replayed = LogReplay.replay(log, models, abstraction, tolerance, confirm, rule, approach::record);
-        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach);
+        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, baseRates);
     }
 
     /**
@@ -62,6 +73,13 @@ public final class Replay {
      */
     public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
                                      ModelSet models, Abstraction abstraction, Approach approach) {
+        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, Map.of());
+    }
+
+    /** As above, with the base rates of the other properties' value forecasts by property id. */
+    public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
+                                     ModelSet models, Abstraction abstraction, Approach approach,
+                                     Map<String, Double> baseRates) {
         List<ReplayedRun> runs = replayed.runs();
         List<RunResult> results = new ArrayList<>();
         for (ReplayedRun r : runs) {
@@ -97,7 +115,7 @@ public final class Replay {
             List<ReplayedRun.Timed> scored = r.beforeViolation();
             results.add(new RunResult(scenario, faulty, RunId.of(replayed.log(), o.run(), runs.size()), fold,
                     verdict, warningTime, warning == null ? null : warning.line(),
-                    warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.battery(),
+                    warning == null ? List.of() : warning.scenarios(), warning == null ? null : warning.value(),
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
                     runs.size() == 1 ? replayed.records() : -1, o.pairs(), replayed.problems().size(),
                     List.copyOf(eliminations), o.safetyObserved(), replayed.unit(),
@@ -108,20 +126,23 @@ public final class Replay {
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
                             scored.stream().map(ReplayedRun.Timed::time).toList()),
-                    others(abstraction, warnings, violations, beyond)));
+                    others(abstraction, warnings, violations, beyond,
+                            PropertyForecasts.of(r.events(), abstraction, models.forecast(), baseRates))));
         }
         return results;
     }
 
-    /** Every property but the forecast's, with its first warning and violation in the run. */
+    /** Every property but the forecast's, with its first warning and violation in the run and its forecasts. */
     private static List<RunResult.PropertyResult> others(Abstraction abstraction, Map<String, Double> warnings,
-                                                         Map<String, Double> violations, Map<String, Double> beyond) {
+                                                         Map<String, Double> violations, Map<String, Double> beyond,
+                                                         Map<String, PropertyForecasts> forecasts) {
         String forecast = abstraction.safety().map(Property::id).orElse(null);
         List<RunResult.PropertyResult> out = new ArrayList<>();
         for (Property p : abstraction.properties()) {
             if (!p.id().equals(forecast)) {
+                PropertyForecasts f = forecasts.get(p.id());
                 out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id()),
-                        beyond.get(p.id())));
+                        beyond.get(p.id()), f == null ? null : f.run(), f == null ? null : f.scope()));
             }
         }
         return out;

@@ -1,5 +1,6 @@
 package dev.predmon.evaluate;
 
+import com.fasterxml.jackson.annotation.JsonProperty;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.pipeline.RunId;
 
@@ -16,7 +17,7 @@ import java.util.List;
  * @param warningTime      time of the warning, or null
  * @param warningLine      its line, or null
  * @param warningScenarios the faulty scenarios still matching at the warning (empty without one)
- * @param batteryAtWarning the battery level at the warning, or null
+ * @param valueAtWarning   the watched value (the forecast's property's) at the warning, or null
  * @param violationTime    time of the safety monitor's first violation, or null
  * @param lead             violation time minus warning time for a hit, else null
  * @param noMatch          whether a point came where no model matched (unknown behaviour)
@@ -44,7 +45,7 @@ import java.util.List;
  *                         warning and violation in the run, in file order
  */
 public record RunResult(String scenario, boolean faulty, RunId log, int fold, Verdict verdict, Double warningTime,
-                        Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
+                        Long warningLine, List<String> warningScenarios, Double valueAtWarning, Double violationTime,
                         Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                         List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
                         double start, int nearBound, Double beforeViolation, ForecastTrace forecast,
@@ -52,11 +53,11 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
 
     /** A result without the other properties. */
     public RunResult(String scenario, boolean faulty, RunId log, int fold, Verdict verdict, Double warningTime,
-                     Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
+                     Long warningLine, List<String> warningScenarios, Double valueAtWarning, Double violationTime,
                      Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                      List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
                      double start, int nearBound, Double beforeViolation, ForecastTrace forecast) {
-        this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, batteryAtWarning,
+        this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, valueAtWarning,
                 violationTime, lead, noMatch, noMatchTime, records, pairs, problems, eliminations, safetyObserved, unit,
                 sudden, start, nearBound, beforeViolation, forecast, List.of());
     }
@@ -65,12 +66,29 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * One of the abstraction's other properties in the run.
      *
      * @param property  its id
-     * @param warning   the time of its first warning (a deadline forecast), or null
+     * @param warning   the time of its first warning (a deadline forecast, or the match rule's for a faulty scenario
+     *                  that violates it), or null
      * @param violation the time of its violation, or null
      * @param beyond    when an obligation of it was first pending longer than every training obligation (the
      *                  elapsed-time baseline's warning), or null
+     * @param forecasts what its forecast said before its violation (or the run's end), each forecast with its
+     *                  outcome, and the base rate of the models that judged the run; null when it has no forecast
+     * @param scope     what each forecast and its outcome are about: {@link #OBLIGATION} (a deadline forecast:
+     *                  P(the pending obligation misses its deadline), outcome: that obligation missed it) or
+     *                  {@link #RUN} (P(the run violates the property), outcome: it did); null without a forecast
      */
-    public record PropertyResult(String property, Double warning, Double violation, Double beyond) {
+    public record PropertyResult(String property, Double warning, Double violation, Double beyond,
+                                 Reliability.Run forecasts, String scope) {
+
+        /** A deadline forecast's scope: one obligation. */
+        public static final String OBLIGATION = "obligation";
+        /** A forecast of the run's violation. */
+        public static final String RUN = "run";
+
+        /** A property without a forecast. */
+        public PropertyResult(String property, Double warning, Double violation, Double beyond) {
+            this(property, warning, violation, beyond, null, null);
+        }
 
         /** A property no obligation of which went beyond the training ones. */
         public PropertyResult(String property, Double warning, Double violation) {
@@ -80,11 +98,11 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
 
     /** A result without forecasts. */
     public RunResult(String scenario, boolean faulty, RunId log, int fold, Verdict verdict, Double warningTime,
-                     Long warningLine, List<String> warningScenarios, Double batteryAtWarning, Double violationTime,
+                     Long warningLine, List<String> warningScenarios, Double valueAtWarning, Double violationTime,
                      Double lead, boolean noMatch, Double noMatchTime, long records, long pairs, int problems,
                      List<Elimination> eliminations, boolean safetyObserved, String unit, boolean sudden,
                      double start, int nearBound, Double beforeViolation) {
-        this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, batteryAtWarning,
+        this(scenario, faulty, log, fold, verdict, warningTime, warningLine, warningScenarios, valueAtWarning,
                 violationTime, lead, noMatch, noMatchTime, records, pairs, problems, eliminations, safetyObserved, unit,
                 sudden, start, nearBound, beforeViolation, null);
     }
@@ -145,6 +163,12 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * ten ticks of the robot's tree, or a few seconds of a battery polled at 2-3 Hz.
      */
     public static final int SUDDEN_READINGS = 10;
+
+    /** {@link #valueAtWarning} under its older name in the evaluation's JSON, kept for existing scripts. */
+    @JsonProperty("batteryAtWarning")
+    public Double batteryAtWarning() {
+        return valueAtWarning;
+    }
 
     /** {@code time} (a log time, such as the warning's) counted from the start of the run, or null. */
     public Double sinceStart(Double time) {

@@ -1,5 +1,7 @@
 package dev.predmon.evaluate;
 
+import com.fasterxml.jackson.annotation.JsonProperty;
+
 import java.util.List;
 import java.util.Objects;
 import java.util.TreeSet;
@@ -18,13 +20,13 @@ import java.util.TreeSet;
  * @param noViolation        faulty runs whose log ends before any violation (neither hit nor missed)
  * @param noMatch            runs where at some point no model matched (unknown behaviour)
  * @param lead               lead of the hits, in {@code leadUnit}
- * @param batteryAtWarning   battery level at the warning, over the hits
+ * @param valueAtWarning     the watched value at the warning, over the hits
  * @param sudden             runs whose violation was sudden ({@link RunResult#sudden()}): few readings near the bound
  * @param suddenHits         of {@code hits}, those with a sudden violation
  * @param leadUnit           what the lead counts ({@code s} or {@code ticks}; {@code s, ticks} when runs differ)
  */
 public record ScenarioSummary(String scenario, boolean faulty, int runs, int warned, int hits, int falseAlarms,
-                              int missed, int late, int noViolation, int noMatch, Stats lead, Stats batteryAtWarning,
+                              int missed, int late, int noViolation, int noMatch, Stats lead, Stats valueAtWarning,
                               int sudden, int suddenHits, String leadUnit) {
 
     /** Summarises the runs of one scenario. */
@@ -53,7 +55,13 @@ public record ScenarioSummary(String scenario, boolean faulty, int runs, int war
         List<RunResult> hit = runs.stream().filter(r -> r.verdict() == Verdict.WARNED_BEFORE_VIOLATION).toList();
         return new ScenarioSummary(scenario, faulty, runs.size(), warned, hits, falseAlarms, missed, late, noViolation,
                 noMatch, Stats.of(hit.stream().map(RunResult::lead).toList()),
-                Stats.of(hit.stream().map(RunResult::batteryAtWarning).filter(Objects::nonNull).toList()),
+                Stats.of(hit.stream().map(RunResult::valueAtWarning).filter(Objects::nonNull).toList()),
                 sudden, suddenHits, String.join(", ", new TreeSet<>(runs.stream().map(RunResult::unit).toList())));
+    }
+
+    /** {@link #valueAtWarning} under its older name in the evaluation's JSON, kept for existing scripts. */
+    @JsonProperty("batteryAtWarning")
+    public Stats batteryAtWarning() {
+        return valueAtWarning;
     }
 }

@@ -46,7 +46,8 @@ public final class EventJson {
     private static Object record(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w) {
             return new WarningJson("warning", w.time(), w.clock().unit(), w.line(), w.run(), w.property(),
-                    w.scenario(), w.scenarios(), w.battery(), w.pairs(), w.rule().id(), w.clause().id(), w.reason(),
+                    w.scenario(), w.scenarios(), w.value(), w.value(), w.pairs(), w.rule().id(), w.clause().id(),
+                    w.reason(),
                     ForecastJson.of(w.forecast()), DeadlineJson.of(w.deadline()));
         } else if (e instanceof MonitorEvent.ForecastChanged f) {
             return new ForecastEventJson("forecast", f.time(), f.clock().unit(), f.line(), f.run(),
@@ -64,8 +65,9 @@ public final class EventJson {
         } else if (e instanceof MonitorEvent.Restarted r) {
             return new RestartedJson("restarted", r.reason());
         } else if (e instanceof MonitorEvent.Recovered r) {
-            return new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(),
-                    Double.isNaN(r.value()) ? null : r.value(), r.reason(), r.property());
+            Double value = Double.isNaN(r.value()) ? null : r.value();
+            return new RecoveredJson("recovered", r.time(), r.clock().unit(), r.line(), r.run(), r.cause(), value,
+                    value, r.reason(), r.property());
         } else if (e instanceof MonitorEvent.UnderWay u) {
             return new UnderWayJson("under-way", u.time(), u.clock().unit(), u.line(), u.run(), u.by(), u.underWay());
         }
@@ -112,9 +114,14 @@ public final class EventJson {
         return WALL_TIME.format(at);
     }
 
+    /**
+     * A warning: {@code property} the id of the property whose violation is predicted, {@code value} its value at the
+     * warning (null before any reading, and for a bounded response's deadline, which has none), {@code battery} the
+     * same under its older name, kept for existing scripts.
+     */
     record WarningJson(String event, double time, String unit, long line, int run, String property,
-                       String scenario, List<String> scenarios, Double battery, long pairs, String rule, String clause,
-                       String reason, ForecastJson forecast, DeadlineJson deadline) {
+                       String scenario, List<String> scenarios, Double value, Double battery, long pairs, String rule,
+                       String clause, String reason, ForecastJson forecast, DeadlineJson deadline) {
     }
 
     /**
@@ -129,9 +136,12 @@ public final class EventJson {
         }
     }
 
-    /** A recovery: {@code battery} the property's value (null for a property without one), {@code property} its id. */
-    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, Double battery,
-                         String reason, String property) {
+    /**
+     * A recovery: {@code value} the property's value (null for a property without one), {@code battery} the same under
+     * its older name, {@code property} its id.
+     */
+    record RecoveredJson(String event, double time, String unit, long line, int run, String cause, Double value,
+                         Double battery, String reason, String property) {
     }
 
     record UnderWayJson(String event, double time, String unit, long line, int run, String by, boolean underWay) {
@@ -144,7 +154,8 @@ public final class EventJson {
 
     /**
      * A property's violation: {@code property} its id, {@code name} its words, {@code value} the violating value of a
-     * bound (null for an event), {@code battery} the same for the forecast's property only, {@code what} in words.
+     * bound (null for an event), {@code battery} the same for the forecast's property only (its older name, kept for
+     * existing scripts), {@code what} in words.
      */
     record ViolationJson(String event, double time, String unit, long line, int run, String property, String name,
                          Double value, Double battery, Double before, String what) {

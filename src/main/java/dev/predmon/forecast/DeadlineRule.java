@@ -27,8 +27,18 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
             String.format(Locale.ROOT, "default %.2f: not cross-validated", ThresholdChoice.DEFAULT), false,
             Calibration.IDENTITY);
 
+    /** A threshold no probability reaches: a rule with it warns by the novelty clause alone. */
+    public static final double NEVER = 2;
+
+    /**
+     * The rule of a held-out replay ({@code learn}'s cross-validation): only the novelty clause warns, so that the
+     * obligations it catches are known whatever threshold is chosen after.
+     */
+    public static final DeadlineRule NOVELTY_ONLY = new DeadlineRule(NEVER, "held out: the novelty clause alone",
+            false, Calibration.IDENTITY);
+
     public DeadlineRule {
-        if (!(threshold >= 0 && threshold <= 1)) {
+        if (!((threshold >= 0 && threshold <= 1) || threshold == NEVER)) {
             throw new IllegalArgumentException("a threshold is a probability, from 0 to 1: " + threshold);
         }
     }

@@ -22,7 +22,8 @@ public final class HookEnvironment {
     /**
      * PREDMON_EVENT ({@code warning}, {@code violation} or {@code recovered}), PREDMON_LOG, PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
      * ({@code s} or {@code ticks}), PREDMON_LINE, PREDMON_PROPERTY (the property's id), PREDMON_VALUE (its last
-     * value, two decimals) and PREDMON_BATTERY (the same, the older name); for a warning PREDMON_SCENARIO (the faulty
+     * value, two decimals; empty for a property without one, such as a bounded response) and PREDMON_BATTERY (the
+     * same, the older name); for a warning PREDMON_SCENARIO (the faulty
      * scenario the run is most like), PREDMON_SCENARIOS (the faulty scenarios still matching, comma-separated),
      * PREDMON_PROBABILITY (two decimals; for a deadline's warning its probability of a miss, empty past every training
  * obligation) and PREDMON_TIME_TO_VIOLATION (in PREDMON_UNIT, as the page rounds it; empty for a deadline); for
@@ -37,7 +38,7 @@ public final class HookEnvironment {
     public static Map<String, String> of(String log, MonitorEvent event, double bound) {
         Map<String, String> env = new LinkedHashMap<>();
         if (event instanceof MonitorEvent.Warning w) {
-            put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.property(), value(w.battery(), bound));
+            put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.property(), value(w.value(), bound));
             env.put("PREDMON_SCENARIO", w.scenario() == null ? "" : w.scenario());
             env.put("PREDMON_SCENARIOS", String.join(",", w.scenarios()));
             Forecast f = w.forecast();

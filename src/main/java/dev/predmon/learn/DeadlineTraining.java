@@ -6,28 +6,25 @@ import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.ScorecardTally;
-import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.Survival;
 import dev.predmon.forecast.ThresholdChoice;
-import dev.predmon.pipeline.LogTrace;
-import dev.predmon.pipeline.RunTiming;
 import dev.predmon.property.Deadline;
 import dev.predmon.property.Property;
 import dev.predmon.property.Response;
+import dev.predmon.replay.ReplayedRun;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
-import java.util.function.IntPredicate;
 
 /**
  * Learns when the deadline forecast of each bounded-response property warns, by the cross-validation that chooses the
- * battery's threshold ({@link ForecastTraining}), with the same folds of logs: for each fold, the durations of the
- * other folds' obligations make the {@link Survival} estimate, and each held-out obligation is forecast after every
- * record while it was pending ({@link RunTiming.Obligation#steps}), as {@code watch} forecasts it. Each obligation's
+ * battery's threshold ({@link ForecastTraining}), on the same replays ({@link HeldOutFolds}): for each fold, the
+ * durations of the other folds' obligations make the {@link Survival} estimate of the fold's models, and each held-out
+ * obligation is forecast as {@code watch}'s own monitor forecast it in the replay of its log with them, one replay of
+ * each held-out log for every property ({@link ReplayedRun#obligations}). Each obligation's
  * highest forecast before its deadline, and whether it missed, choose the threshold ({@link ThresholdChoice}); its
  * forecasts fit the {@link Calibration}; the novelty clause of {@link DeadlineRule} warns it whatever the threshold.
  *
@@ -46,11 +43,11 @@ public final class DeadlineTraining {
     }
 
     /**
-     * {@code model} with the deadline rule of every property it learned obligations for, learned from the runs of
-     * {@code specs} in {@code traces}, and their scorecards after its own.
+     * {@code model} with the deadline rule of every property it learned obligations for, chosen on {@code heldOut},
+     * the cross-validation's replays of its training logs ({@link ForecastTraining#heldOut}), and their scorecards
+     * after its own.
      */
-    public static ForecastModel train(ForecastModel model, List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
-                                      Abstraction abstraction) {
+    public static ForecastModel train(ForecastModel model, HeldOutFolds heldOut, Abstraction abstraction) {
         Map<String, Response> responses = new TreeMap<>();
         for (Property p : abstraction.properties()) {
             if (p instanceof Response r && model.obligations().containsKey(r.id())) {
@@ -60,8 +57,7 @@ public final class DeadlineTraining {
         if (responses.isEmpty()) {
             return model;
         }
-        Map<Path, Integer> folds = ForecastTraining.folds(ForecastTraining.present(specs, traces));
-        int k = Folds.used(folds);
+        int k = heldOut.folds();
         Map<String, DeadlineRule> rules = new TreeMap<>();
         List<Scorecard> cards = new ArrayList<>(model.scorecards());
         for (Response r : responses.values()) {
@@ -71,7 +67,7 @@ public final class DeadlineTraining {
                         Calibration.IDENTITY));
                 continue;
             }
-            List<HeldOut> judged = heldOut(r.id(), specs, traces, folds, k);
+            List<HeldOut> judged = heldOut(r.id(), heldOut);
             rules.put(r.id(), rule(judged));
             if (judged.stream().anyMatch(HeldOut::missed)) {
                 cards.add(scorecard(r, k, judged)); // without a missed deadline, nothing to score (the rule says so)
@@ -85,7 +81,7 @@ public final class DeadlineTraining {
      * evidence and how long it had been pending then, when the novelty clause warned it (NaN when it did not), the
      * fold's miss rate, and its outcome.
      */
-    record HeldOut(int fold, boolean missed, double duration, List<Double> probabilities, List<Double> elapsed,
+    public record HeldOut(int fold, boolean missed, double duration, List<Double> probabilities, List<Double> elapsed,
                    double caughtAt, double baseRate) {
 
         double peak() {
@@ -93,20 +89,21 @@ public final class DeadlineTraining {
         }
     }
 
-    /** Every obligation of property {@code id} with a known outcome, each forecast by the other folds' obligations. */
-    static List<HeldOut> heldOut(String id, List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
-                                 Map<Path, Integer> folds, int k) {
+    /**
+     * Every held-out obligation of property {@code id} with a known outcome (met or missed), as the replay of its log
+     * with its fold's models forecast it.
+     */
+    public static List<HeldOut> heldOut(String id, HeldOutFolds heldOut) {
         List<HeldOut> judged = new ArrayList<>();
-        for (int f = 0; f < k; f++) {
-            int fold = f;
-            Survival survival = StatsLearner.obligations(runsOf(specs, traces, folds, g -> g != fold)).get(id);
+        for (HeldOutFolds.Fold fold : heldOut.judged()) {
+            Survival survival = fold.obligations().get(id);
             if (survival == null || survival.size() == 0) {
                 continue; // watch gives no forecast without a training obligation: nothing to judge
             }
-            for (LogTrace.Run run : runsOf(specs, traces, folds, g -> g == fold)) {
-                for (RunTiming.Obligation o : run.timing().obligations()) {
-                    if (o.property().equals(id) && (o.discharged() || o.missed())) {
-                        judged.add(forecast(fold, o, survival));
+            for (HeldOutRun run : fold.runs()) {
+                for (ReplayedRun.Obligation o : run.obligations()) {
+                    if (o.property().id().equals(id) && (o.discharged() || o.missed())) {
+                        judged.add(forecast(fold.index(), o, survival));
                     }
                 }
             }
@@ -114,21 +111,21 @@ public final class DeadlineTraining {
         return judged;
     }
 
-    /** {@code o} forecast at each of its steps as {@code watch} forecasts it, by the rule's own clauses. */
-    private static HeldOut forecast(int fold, RunTiming.Obligation o, Survival survival) {
+    /**
+     * {@code o} as the replay forecast it: the forecasts that had evidence, and where the novelty clause warned it (the
+     * replay's rule warns by that clause alone, {@link DeadlineRule#NOVELTY_ONLY}).
+     */
+    private static HeldOut forecast(int fold, ReplayedRun.Obligation o, Survival survival) {
         List<Double> ps = new ArrayList<>();
         List<Double> elapsed = new ArrayList<>();
-        double caughtAt = Double.NaN;
-        for (double e : o.steps()) {
-            Survival.Estimate estimate = survival.estimate(e, o.deadline());
-            if (!estimate.novel()) {
-                ps.add(estimate.probability());
-                elapsed.add(e);
-            } else if (Double.isNaN(caughtAt) && DeadlineRule.pastEveryObligation(e, o.deadline(), survival)) {
-                caughtAt = e;
+        for (ReplayedRun.Step step : o.forecasts()) {
+            if (!step.estimate().novel()) {
+                ps.add(step.estimate().probability());
+                elapsed.add(step.elapsed());
             }
         }
-        return new HeldOut(fold, o.missed(), o.duration(), ps, elapsed, caughtAt, survival.survival(o.deadline()));
+        return new HeldOut(fold, o.missed(), o.duration(), ps, elapsed, o.warnedAt(),
+                survival.survival(o.property().within().amount()));
     }
 
     /** The rule {@code judged} choose: a threshold and a calibration when they validate one, else the default. */
@@ -174,11 +171,5 @@ public final class DeadlineTraining {
         Deadline d = property.within();
         return tally.scorecard(property.name(), folds, judged.size(),
                 d.unit().key, Scorecard.OBLIGATIONS);
-    }
-
-    /** The runs of the logs whose fold {@code include} selects, each of the runs its scenario learns from. */
-    private static List<LogTrace.Run> runsOf(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
-                                             Map<Path, Integer> folds, IntPredicate include) {
-        return ForecastTraining.runsOf(specs, traces, log -> folds.containsKey(log) && include.test(folds.get(log)));
     }
 }

@@ -10,16 +10,12 @@ import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.ScorecardTally;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
-import dev.predmon.mealy.MealyTrace;
-import dev.predmon.model.ModelSet;
-import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
-import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -32,8 +28,8 @@ import java.util.function.Predicate;
  * Learns the forecast that goes with the machines: the per-state statistics over every training run
  * ({@link StatsLearner}), and the warning threshold chosen by cross-validation over the same runs ({@link Folds}):
  * each fold's machines and statistics are learned without it, its logs are replayed through {@code watch}'s own monitor
- * with them ({@link HeldOutRun#replay}), and each run's highest forecast before its violation decides
- * ({@link ThresholdChoice}).
+ * with them ({@link HeldOutFolds}, the replays the deadlines are chosen on too), and each run's highest forecast before
+ * its violation decides ({@link ThresholdChoice}).
  *
  * <p>The forecast rule also warns where the thesis's rule would, when every nominal machine was contradicted (every
  * nominal machine eliminated by an output it predicted otherwise while a faulty one matches, {@code confirm} pairs
@@ -52,7 +48,8 @@ public final class ForecastTraining {
     /**
      * The forecast of {@code machines} (by id), learned from the runs of {@code specs} in {@code traces}, with the
      * property's {@link Scorecard} from the same cross-validation. Each fold's held-out logs are replayed through
-     * {@code watch}'s own monitor ({@link HeldOutRun#replay}) with the models learned without them.
+     * {@code watch}'s own monitor ({@link HeldOutFolds}) with the models learned without them; every other bound
+     * property gets its forecast ({@link BoundModel}) from the same replays.
      *
      * @param abstraction the abstraction the traces were read with (tuned to the noise): its safety property is the
      *                    forecast's
@@ -61,95 +58,64 @@ public final class ForecastTraining {
     public static ForecastModel train(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
                                       Map<String, CompactMealy<String, String>> machines, Alphabet<String> alphabet,
                                       Abstraction abstraction, int confirm) throws BadInputException {
+        return train(specs, traces, machines, abstraction, heldOut(specs, traces, alphabet, abstraction, confirm));
+    }
+
+    /**
+     * The cross-validation's replays of the logs of {@code specs} ({@link HeldOutFolds#replay}), with the unit and
+     * the property's threshold of {@link #train}: what it and {@link DeadlineTraining#train} choose on.
+     */
+    public static HeldOutFolds heldOut(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                       Alphabet<String> alphabet, Abstraction abstraction, int confirm)
+            throws BadInputException {
+        List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
+        return HeldOutFolds.replay(specs, traces, alphabet, abstraction, unit(runs), limit(abstraction),
+                sides(others(abstraction), runs), confirm);
+    }
+
+    /**
+     * As above, choosing on {@code heldOut}, the replays {@link #heldOut} made of the same logs.
+     */
+    public static ForecastModel train(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
+                                      Map<String, CompactMealy<String, String>> machines, Abstraction abstraction,
+                                      HeldOutFolds heldOut) {
         double limit = limit(abstraction);
         String property = property(abstraction);
         List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
-        String unit = runs.isEmpty() ? "s" : runs.get(0).timing().unit();
+        String unit = unit(runs);
         ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
         List<Bound> others = others(abstraction);
-        Map<String, String> sides = new TreeMap<>();
+        Map<String, String> sides = sides(others, runs);
         Map<String, BoundModel> boundStats = new TreeMap<>();
         for (Bound b : others) {
-            String side = BoundRuns.side(b, runs);
-            sides.put(b.id(), side);
+            String side = sides.get(b.id());
             boundStats.put(b.id(), new BoundModel(side, StatsLearner.learn(machines, BoundRuns.view(b, side, runs),
                     unit, BoundModel.limit(b, side))));
         }
-        List<ScenarioSpec> read = present(specs, traces);
-        Map<Path, Integer> folds = folds(read);
-        if (folds.isEmpty()) {
+        if (heldOut.folds() == 0) {
             String note = "default " + ThresholdChoice.DEFAULT + ": too few logs to cross-validate";
             Map<String, BoundModel> bounds = new TreeMap<>();
             boundStats.forEach((id, b) -> bounds.put(id, new BoundModel(b.side(),
                     b.model().withThreshold(ThresholdChoice.DEFAULT, note, false))));
             return stats.withThreshold(ThresholdChoice.DEFAULT, note, false).withBounds(bounds);
         }
-        int used = Folds.used(folds);
         List<HeldOut> judged = new ArrayList<>();
         Map<String, List<HeldOut>> boundJudged = new TreeMap<>();
         others.forEach(b -> boundJudged.put(b.id(), new ArrayList<>()));
-        for (int f = 0; f < used; f++) {
-            int fold = f;
-            Predicate<Path> held = log -> folds.get(log) == fold;
-            List<LearnedScenario> foldLearned = new ArrayList<>();
-            for (ScenarioSpec s : read) {
-                List<MealyTrace> samples = s.logs().stream().filter(held.negate())
-                        .flatMap(l -> traces.get(l).samples(s.runs()).stream()).toList();
-                if (!samples.isEmpty()) {
-                    foldLearned.add(ScenarioLearner.learnSamples(s, samples, alphabet));
-                }
+        for (HeldOutFolds.Fold fold : heldOut.judged()) {
+            if (fold.bothOutcomes()) { // a fold that trains on one outcome only says nothing about where to draw the line
+                fold.runs().forEach(r -> judged.add(new HeldOut(fold.index(), r, fold.baseRate())));
             }
-            List<LogTrace.Run> training = runsOf(read, traces, held.negate());
-            // a fold that trains on one outcome only says nothing about where to draw the line
-            boolean judges = !oneOutcome(training);
-            Map<String, CompactMealy<String, String>> foldMachines = LearnedModels.machines(foldLearned);
-            Map<String, BoundModel> foldBounds = new TreeMap<>();
-            Map<String, Double> foldBaseRates = new TreeMap<>();
-            for (Bound b : others) {
-                List<LogTrace.Run> view = BoundRuns.view(b, sides.get(b.id()), training);
-                if (!oneOutcome(view)) {
-                    ForecastModel m = StatsLearner.learn(foldMachines, view, unit,
-                            BoundModel.limit(b, sides.get(b.id())));
-                    foldBounds.put(b.id(), new BoundModel(sides.get(b.id()),
-                            m.withThreshold(HeldOutRun.NEVER, "held out", true)));
-                    foldBaseRates.put(b.id(), m.baseRate());
-                }
-            }
-            if (!judges && foldBounds.isEmpty()) {
-                continue;
-            }
-            ForecastModel foldStats = StatsLearner.learn(foldMachines, training, unit, limit);
-            // Warning at no probability, the rule's other clauses alone warn: those runs count as caught.
-            ModelSet foldModels = LearnedModels.modelSet(foldLearned, abstraction,
-                    foldStats.withThreshold(HeldOutRun.NEVER, "held out", true).withBounds(foldBounds));
-            for (ScenarioSpec s : read) {
-                for (Path log : s.logs()) {
-                    if (!held.test(log)) {
-                        continue;
-                    }
-                    try {
-                        HeldOutRun.Judged replayed = HeldOutRun.replayAll(log, s.runs(), foldModels, abstraction,
-                                confirm, WarningRule.FORECAST);
-                        if (judges) {
-                            for (HeldOutRun r : replayed.safety()) {
-                                judged.add(new HeldOut(fold, r, foldStats.baseRate()));
-                            }
-                        }
-                        replayed.bounds().forEach((id, rs) -> rs.forEach(r -> boundJudged.get(id)
-                                .add(new HeldOut(fold, r, foldBaseRates.get(id)))));
-                    } catch (IOException e) {
-                        throw BadInputException.cannotRead(log, e);
-                    }
-                }
-            }
+            fold.bounds().forEach((id, b) -> b.runs().forEach(r -> boundJudged.get(id)
+                    .add(new HeldOut(fold.index(), r, b.baseRate()))));
         }
         Map<String, BoundModel> bounds = new TreeMap<>();
         for (Bound b : others) {
             BoundModel m = boundStats.get(b.id());
-            bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), used, unit,
+            bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), heldOut.folds(), unit,
                     boundJudged.get(b.id()))));
         }
-        return chosen(stats, property, used, unit, judged).withBounds(bounds);
+        return chosen(stats, property, heldOut.folds(), unit, judged).withBounds(bounds);
     }
 
     /**
@@ -172,10 +138,6 @@ public final class ForecastTraining {
         return stats.withCalibration(calibration).withThreshold(threshold, note, true).withScorecards(cards);
     }
 
-    private static boolean oneOutcome(List<LogTrace.Run> runs) {
-        return runs.stream().allMatch(LogTrace.Run::violated) || runs.stream().noneMatch(LogTrace.Run::violated);
-    }
-
     /**
      * Every bound property of {@code abstraction} but its safety property, with a floor or a ceiling: each gets a value
      * forecast of its own ({@link BoundModel}).
@@ -190,6 +152,18 @@ public final class ForecastTraining {
             }
         }
         return out;
+    }
+
+    /** By id, the side of each of {@code others} its forecast predicts, as {@code runs} cross it. */
+    static Map<String, String> sides(List<Bound> others, List<LogTrace.Run> runs) {
+        Map<String, String> sides = new TreeMap<>();
+        others.forEach(b -> sides.put(b.id(), BoundRuns.side(b, runs)));
+        return sides;
+    }
+
+    /** What the runs' times count: the first run's unit, seconds without a run. */
+    private static String unit(List<LogTrace.Run> runs) {
+        return runs.isEmpty() ? "s" : runs.get(0).timing().unit();
     }
 
     /** One held-out run ({@link HeldOutRun}) with its fold and that fold's base rate. */

@@ -19,21 +19,25 @@ import java.util.TreeMap;
 
 /**
  * One held-out run as {@code watch} forecasts it with a fold's models: every forecast before the property's violation,
- * with its time, and when the rule warned it before that violation. Made by replaying the log through the one replay
- * ({@link LogReplay}), so that the threshold and the calibration are chosen on the forecasts {@code watch} makes.
+ * with its time, and when the rule warned it before that violation; and every obligation of a bounded response with
+ * its deadline forecasts. Made by replaying the log through the one replay
+ * ({@link LogReplay}), so that the thresholds and the calibrations are chosen on the forecasts {@code watch} makes.
  *
  * @param violated      whether the forecast property was violated in the run
  * @param probabilities the raw probability of each forecast before the violation, in order
  * @param times         the time of each
  * @param warnedAt      the time of the run's first warning when it came before the violation, NaN otherwise
  * @param violationTime the time of the violation, NaN for a run that held
+ * @param obligations   every obligation of a bounded response that the monitor forecast and that ended in the run,
+ *                      with its deadline forecasts ({@link ReplayedRun#obligations})
  */
 public record HeldOutRun(boolean violated, List<Double> probabilities, List<Double> times, double warnedAt,
-                         double violationTime) {
+                         double violationTime, List<ReplayedRun.Obligation> obligations) {
 
     public HeldOutRun {
         probabilities = List.copyOf(probabilities);
         times = List.copyOf(times);
+        obligations = List.copyOf(obligations);
     }
 
     /** A threshold no probability reaches: a replay with it warns only by the rule's other clauses. */
@@ -80,7 +84,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
         return new Judged(of(replayed, label), bounds);
     }
 
-    /** Run {@code r} as bound property {@code id} saw it. */
+    /** Run {@code r} as bound property {@code id} saw it; the obligations go with the forecast property's run. */
     private static HeldOutRun ofProperty(ReplayedRun r, String id) {
         MonitorEvent.Violation v = null;
         MonitorEvent.Warning w = null;
@@ -94,7 +98,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
         List<ReplayedRun.Timed> f = r.boundBeforeViolation(id);
         return new HeldOutRun(v != null, f.stream().map(t -> t.forecast().probability()).toList(),
                 f.stream().map(ReplayedRun.Timed::time).toList(), w == null ? Double.NaN : w.time(),
-                v == null ? Double.NaN : v.time());
+                v == null ? Double.NaN : v.time(), List.of());
     }
 
     private static List<HeldOutRun> of(ReplayedLog replayed, RunLabel label) {
@@ -110,7 +114,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
             out.add(new HeldOutRun(r.violated(),
                     r.beforeViolation().stream().map(t -> t.forecast().probability()).toList(),
                     r.beforeViolation().stream().map(ReplayedRun.Timed::time).toList(),
-                    before ? w.time() : Double.NaN, v == null ? Double.NaN : v.time()));
+                    before ? w.time() : Double.NaN, v == null ? Double.NaN : v.time(), r.obligations()));
         }
         return out;
     }

@@ -109,8 +109,9 @@ public final class Learning {
             learnedSpecs.add(s);
         }
         Alphabet<String> alphabet = MealyAlphabet.inputs(abstraction);
+        HeldOutFolds heldOut = ForecastTraining.heldOut(learnedSpecs, read, alphabet, tuned, confirm);
         ForecastModel forecast = DeadlineTraining.train(ForecastTraining.train(learnedSpecs, read,
-                LearnedModels.machines(learned), alphabet, tuned, confirm), learnedSpecs, read, tuned);
+                LearnedModels.machines(learned), tuned, heldOut), heldOut, tuned);
         return new Learned(List.copyOf(learned), tuned, forecast);
     }
 

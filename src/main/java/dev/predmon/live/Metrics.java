@@ -123,8 +123,8 @@ final class Metrics {
                     }));
         }
         gauge("predmon_value", "The last reading of the property's value", cb -> forEachTile(t -> {
-                    if (number(t, "battery")) {
-                        cb.call(t.get("battery").asDouble(), labels(t));
+                    if (number(t, "value")) {
+                        cb.call(t.get("value").asDouble(), labels(t));
                     }
                 }));
         List<String> lights = new ArrayList<>();

@@ -36,7 +36,7 @@ final class RunAlarm {
             warningJson = node;
             warned = true;
             recovery = null;
-            note(TileJson.moment("warning", w.time(), w.line(), w.battery() == null ? Double.NaN : w.battery()));
+            note(TileJson.moment("warning", w.time(), w.line(), w.value() == null ? Double.NaN : w.value()));
         } else if (e instanceof MonitorEvent.Violation v && v.forecast()) { // the light follows the forecast's property
             note(TileJson.moment(violation == null ? "violation" : "violated again", v.time(), v.line(), v.value()));
             violation = violation == null ? v : violation; // the lead is the first violation's
@@ -114,6 +114,7 @@ final class RunAlarm {
             r.put("time", recovery.time());
             r.put("line", recovery.line());
             r.put("cause", recovery.cause());
+            r.put("value", recovery.value());
             r.put("battery", recovery.value());
             r.put("reason", recovery.reason());
         }

@@ -26,7 +26,7 @@ import static dev.predmon.live.TileJson.number;
 /**
  * What the live view shows of one watched log: its robot's {@link TileState} (waiting, ok, unknown, warning,
  * violation, ended) with its light, the forecast (probability and time to the violation, with what it rests on), the
- * warning's reason and the property's recommended action, the battery over the current run with the warning and the
+ * warning's reason and the property's recommended action, its value over the current run with the warning and the
  * violation, this run's history (a violation stays in it after the property holds again), the models still alive and
  * those eliminated with the reason, the last events, the lead once both happened, the run number, and the verdicts of
  * the earlier runs. A new run (or a rotated log) resets the light, the plot and the models.
@@ -58,7 +58,7 @@ public final class Tile {
     private JsonNode forecastJson;
     private final RunRest rest = new RunRest();
     private final Map<String, String> eliminated = new LinkedHashMap<>();
-    private final BatterySeries battery = new BatterySeries(PLOT_POINTS);
+    private final ValueSeries values = new ValueSeries(PLOT_POINTS);
     private final Deque<JsonNode> lastEvents = new ArrayDeque<>();
     private final Deque<ObjectNode> earlier = new ArrayDeque<>();
     private int earlierOmitted;
@@ -172,7 +172,7 @@ public final class Tile {
         forecastJson = null;
         rest.reset();
         eliminated.clear();
-        battery.clear();
+        values.clear();
     }
 
     /** A record of the log, after the monitor took it (so a new run has begun already if it begins one). */
@@ -185,7 +185,7 @@ public final class Tile {
         if (safety.isPresent()) {
             double v = safety.get().valueOf(r);
             if (!Double.isNaN(v)) {
-                battery.add(r.time(), v);
+                values.add(r.time(), v);
             }
         }
     }
@@ -204,7 +204,7 @@ public final class Tile {
      * @param quiet whether the log has not grown for the stale time
      */
     synchronized TileState state(boolean quiet) {
-        boolean data = safety.isPresent() ? !battery.isEmpty() : runRecords > 0;
+        boolean data = safety.isPresent() ? !values.isEmpty() : runRecords > 0;
         if (noVerdict != null) {
             return TileState.NO_VERDICT;
         }
@@ -266,7 +266,8 @@ public final class Tile {
         if (safety.isPresent()) {
             o.put("threshold", safety.get().floor());
         }
-        number(o, "battery", battery.last());
+        number(o, "value", values.last());
+        number(o, "battery", values.last()); // the older name of value, kept for existing readers of /status
         // Models that do not fit the log make no forecast worth showing.
         o.set("forecast", noVerdict == null ? forecastJson : null);
         if (shown.warnsAt() == null) {
@@ -289,7 +290,7 @@ public final class Tile {
         rest.running().forEach(running::add);
         o.set("models", TileJson.models(models, eliminated));
         ArrayNode points = o.putArray("series");
-        for (double[] p : battery.points()) {
+        for (double[] p : values.points()) {
             points.addArray().add(p[0]).add(p[1]);
         }
         ArrayNode events = o.putArray("events");

@@ -19,15 +19,17 @@ final class TileJson {
     }
 
     /**
-     * The warning: when, where, the battery, the faulty scenarios left (none for a forecast-rule warning), the rule and
-     * the clause that warned, its reason in an operator's words, and the forecast at the warning as the event's JSON gave it (or null).
+     * The warning: when, where, the value ({@code battery} too, its older name), the faulty scenarios left (none for a
+     * forecast-rule warning), the rule and the clause that warned, its reason in an operator's words, and the forecast
+     * at the warning as the event's JSON gave it (or null).
      */
     static ObjectNode warning(MonitorEvent.Warning w, JsonNode event) {
         ObjectNode o = JSON.createObjectNode();
         o.put("time", w.time());
         o.put("line", w.line());
-        if (w.battery() != null) {
-            o.put("battery", w.battery());
+        if (w.value() != null) {
+            o.put("value", w.value());
+            o.put("battery", w.value());
         }
         ArrayNode s = o.putArray("scenarios");
         w.scenarios().forEach(s::add);
@@ -42,6 +44,7 @@ final class TileJson {
         ObjectNode o = JSON.createObjectNode();
         o.put("time", v.time());
         o.put("line", v.line());
+        o.put("value", v.value());
         o.put("battery", v.value());
         return o;
     }
@@ -52,7 +55,7 @@ final class TileJson {
         o.put("what", what);
         o.put("time", time);
         o.put("line", line);
-        number(o, "battery", value);
+        number(o, "value", value);
         return o;
     }
 

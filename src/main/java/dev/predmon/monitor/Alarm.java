@@ -71,6 +71,14 @@ final class Alarm {
         matchingSpent |= w.clause() == MonitorEvent.Clause.MATCHING;
     }
 
+    /**
+     * The matching warned of another property than this alarm's (a faulty scenario that violates that one): it
+     * warns once a run, and this alarm stays as it was.
+     */
+    void matchingSpent() {
+        matchingSpent = true;
+    }
+
     /** The property is violated from this reading on. */
     void violatedNow() {
         violated = true;
@@ -110,10 +118,10 @@ final class Alarm {
      * @param warnsNow whether the forecast rule would warn on it now
      */
     void reading(LogRecord r, double value, Forecast f, boolean warnsNow, int run) {
-        if (active == null || violated || warnsNow || active.battery() == null) {
+        if (active == null || violated || warnsNow || active.value() == null) {
             return;
         }
-        double at = active.battery();
+        double at = active.value();
         double gap = Math.max(0, at - safety.floor());
         double floor = forecast == null ? Double.NaN : forecast.safeFloor();
         if (!(value > at && value - safety.floor() >= gap * (1 + RISE)) || value < floor) {

@@ -27,7 +27,11 @@ import java.util.function.Consumer;
  */
 public final class BoundWatch {
 
-    /** Told every forecast of a property, as {@link PredictiveMonitor#onEveryBoundForecast} says. */
+    /**
+     * Told every forecast of each bound property with a value forecast of its own (not the forecast's), as the property
+     * reads, one per pair and per new value of it: the stream of the held-out replays
+     * ({@link PredictiveMonitor#onEveryBoundForecast}).
+     */
     public interface Every {
         /** A forecast of {@code property} in run {@code run}. */
         void forecast(String property, Forecast f, int run);

@@ -53,6 +53,21 @@ final class DeadlineWatch {
 
         /** The forecast of {@code property}'s pending obligation changed as shown. */
         void changed(LogRecord r, Response property, Survival.Estimate estimate);
+
+        /**
+         * {@code property}'s pending obligation was judged at {@code r}, pending for {@code elapsed} (in its deadline's
+         * unit): {@code raw} is the estimate before the rule's calibration. Told at every judgement, before what it
+         * changes and warns.
+         */
+        default void judged(LogRecord r, Response property, double elapsed, Survival.Estimate raw) {
+        }
+
+        /**
+         * An obligation of {@code property} ended at {@code r} after {@code duration} (in its deadline's unit):
+         * {@code discharged}, or let go still pending (its deadline passed, or its scope closed).
+         */
+        default void ended(LogRecord r, Response property, double duration, boolean discharged) {
+        }
     }
 
     private final Response[] properties;
@@ -66,6 +81,8 @@ final class DeadlineWatch {
     /** Whether an obligation of each property ended at the last record, and whether it was discharged. */
     private final boolean[] ended;
     private final boolean[] discharged;
+    /** How long the obligation that ended at the last record was pending. */
+    private final double[] durations;
     /** Each pending obligation's elapsed time when it was last judged, NaN before. */
     private final double[] judgedAt;
 
@@ -80,6 +97,7 @@ final class DeadlineWatch {
         this.told = new String[n];
         this.ended = new boolean[n];
         this.discharged = new boolean[n];
+        this.durations = new double[n];
         this.judgedAt = new double[n];
         Arrays.fill(judgedAt, Double.NaN);
         for (int i = 0; i < n; i++) {
@@ -109,9 +127,13 @@ final class DeadlineWatch {
         return warned[index];
     }
 
-    /** An obligation of property {@code index} ended, {@code discharged} or let go (as the checker tells it). */
-    void closed(int index, boolean discharged) {
+    /**
+     * An obligation of property {@code index} ended after {@code duration}, {@code discharged} or let go (as the
+     * checker tells it).
+     */
+    void closed(int index, double duration, boolean discharged) {
         this.ended[index] = true;
+        this.durations[index] = duration;
         this.discharged[index] = discharged;
     }
 
@@ -123,6 +145,7 @@ final class DeadlineWatch {
             }
             if (ended[i]) {
                 ended[i] = false;
+                out.ended(r, properties[i], durations[i], discharged[i]);
                 if (warned[i] && discharged[i]) {
                     out.recovered(r, properties[i], "'" + properties[i].name() + "' (" + properties[i].id()
                             + "): the response came in time; the deadline warning is over");
@@ -144,6 +167,7 @@ final class DeadlineWatch {
             Deadline d = properties[i].within();
             Survival s = survival[i];
             Survival.Estimate raw = s.estimate(elapsed, d.amount());
+            out.judged(r, properties[i], elapsed, raw);
             Survival.Estimate e = rules[i].calibrated(raw);
             current[i] = e;
             String shown = shown(e);

@@ -5,8 +5,11 @@ import dev.predmon.forecast.Forecast;
 import dev.predmon.matching.Matching;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 
 import java.util.List;
+import java.util.Map;
+import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.function.ObjIntConsumer;
 
@@ -26,6 +29,8 @@ final class ForecastFollow {
     private final WarningRule rule;
     private final String property;
     private final Consumer<MonitorEvent> events;
+    /** By faulty scenario, the property its runs violate when its {@code scenario.json} names one. */
+    private final Map<String, Property> violates;
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
     private MonitorEvent.Warning firstWarning;
     private MonitorEvent.Violation firstViolation;
@@ -36,9 +41,13 @@ final class ForecastFollow {
      * @param bound    the forecast's property, null without one
      * @param forecast the forecast, null for models without one
      * @param property the property's id, null without one
+     * @param violates by faulty scenario, the property its runs violate when its {@code scenario.json} names one
+     *                 ({@code violates}); a scenario not in it violates {@code property}
      */
     ForecastFollow(Bound bound, ForecastTracker forecast, Alarm alarm, WarningPolicy policy, Matching matching,
-                   RunState now, WarningRule rule, String property, Consumer<MonitorEvent> events) {
+                   RunState now, WarningRule rule, String property, Map<String, Property> violates,
+                   Consumer<MonitorEvent> events) {
+        this.violates = Map.copyOf(violates);
         this.bound = bound;
         this.forecast = forecast;
         this.alarm = alarm;
@@ -130,15 +139,29 @@ final class ForecastFollow {
         return f;
     }
 
+    /**
+     * Tells a warning. The matching's names the property the likeliest faulty scenario still matching violates (its
+     * {@code violates}): a warning of another property than the forecast's counts as the run's warning of some
+     * property, like a deadline's, and leaves the forecast's alarm as it was.
+     */
     private void warn(LogRecord trigger, List<String> faultyAlive, String reason, Forecast f,
                       MonitorEvent.Clause clause) {
+        String scenario = matching.likeliestFaulty(faultyAlive);
+        Property other = clause == MonitorEvent.Clause.MATCHING && scenario != null ? violates.get(scenario) : null;
+        String about = other == null ? property : other.id();
+        String why = Objects.equals(about, property) ? reason : "'" + other.name() + "' (" + other.id()
+                + "), which faulty scenario " + scenario + " violates: " + reason;
         MonitorEvent.Warning w = new MonitorEvent.Warning(trigger.time(), trigger.line(), faultyAlive, now.value,
-                now.pairs, trigger.clock(), now.run, rule, f, reason, clause, matching.likeliestFaulty(faultyAlive),
-                property);
-        now.warning = now.warning == null ? w : now.warning; // the run's outcome keeps its first warning
+                now.pairs, trigger.clock(), now.run, rule, f, why, clause, scenario, about);
+        if (Objects.equals(about, property)) {
+            now.warning = now.warning == null ? w : now.warning; // the run's outcome keeps its first warning
+            firstWarning = firstWarning == null ? w : firstWarning;
+            alarm.warned(w);
+        } else {
+            now.otherWarned(about);
+            alarm.matchingSpent();
+        }
         now.anyWarned(w);
-        firstWarning = firstWarning == null ? w : firstWarning;
-        alarm.warned(w);
         events.accept(w);
     }
 }

@@ -42,7 +42,7 @@ public final class LogWatcher implements AutoCloseable {
 
     /**
      * As the public constructor; {@code taken} also gets every record right after the monitor took it, so that the
-     * monitor's run and battery already include it (the live view plots each battery reading in its run).
+     * monitor's run and value already include it (the live view plots each reading of the value in its run).
      */
     public static LogWatcher withRecords(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
                                          Consumer<LogRecord> taken) {

@@ -43,7 +43,9 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param time      time of the record that triggered it
      * @param line      its line in the log
      * @param scenarios the faulty scenarios still matching
-     * @param battery   the last value seen on the safety property's channel (the battery level), or null
+     * @param value     the warned property's value at the warning: the last reading on the forecast's property's
+     *                  channel (e.g. the battery level), or null before any and for a deadline's warning (a bounded
+     *                  response has no value)
      * @param pairs     compacted query/reply pairs seen so far
      * @param clock     what {@code time} counts
      * @param run       the run of the log (0, 1, ... in a log that holds several)
@@ -58,37 +60,37 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param deadline  for {@link Clause#DEADLINE}, the deadline forecast that warned ({@code forecast} is then null);
      *                  else null
      */
-    record Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock, int run,
+    record Warning(double time, long line, List<String> scenarios, Double value, long pairs, Clock clock, int run,
                    WarningRule rule, Forecast forecast, String reason, Clause clause, String scenario,
                    String property, Survival.Estimate deadline) implements MonitorEvent {
 
         /** A warning of the forecast's property, or of the match rule. */
-        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+        public Warning(double time, long line, List<String> scenarios, Double value, long pairs, Clock clock,
                        int run, WarningRule rule, Forecast forecast, String reason, Clause clause, String scenario,
                        String property) {
-            this(time, line, scenarios, battery, pairs, clock, run, rule, forecast, reason, clause, scenario,
+            this(time, line, scenarios, value, pairs, clock, run, rule, forecast, reason, clause, scenario,
                     property, null);
         }
 
         /** A warning whose scenario is the first still matching, for a property not named. */
-        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+        public Warning(double time, long line, List<String> scenarios, Double value, long pairs, Clock clock,
                        int run, WarningRule rule, Forecast forecast, String reason, Clause clause) {
-            this(time, line, scenarios, battery, pairs, clock, run, rule, forecast, reason, clause,
+            this(time, line, scenarios, value, pairs, clock, run, rule, forecast, reason, clause,
                     scenarios.isEmpty() ? null : scenarios.get(0), null);
         }
 
         /** A warning whose clause its rule and reason tell (the match rule's, or the forecast rule's own words). */
-        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+        public Warning(double time, long line, List<String> scenarios, Double value, long pairs, Clock clock,
                        int run, WarningRule rule, Forecast forecast, String reason) {
-            this(time, line, scenarios, battery, pairs, clock, run, rule, forecast, reason,
+            this(time, line, scenarios, value, pairs, clock, run, rule, forecast, reason,
                     rule == WarningRule.MATCH || reason.startsWith(ONLY_FAULTY) ? Clause.MATCHING
                             : reason.contains(ForecastTracker.REACHES) ? Clause.FORECAST : Clause.NOVELTY);
         }
 
         /** A warning of the match rule without a forecast. */
-        public Warning(double time, long line, List<String> scenarios, Double battery, long pairs, Clock clock,
+        public Warning(double time, long line, List<String> scenarios, Double value, long pairs, Clock clock,
                        int run) {
-            this(time, line, scenarios, battery, pairs, clock, run, WarningRule.MATCH, null, onlyFaulty(scenarios));
+            this(time, line, scenarios, value, pairs, clock, run, WarningRule.MATCH, null, onlyFaulty(scenarios));
         }
 
         /** The match rule's reason, in an operator's words: the run can only be one of the faulty {@code scenarios}. */

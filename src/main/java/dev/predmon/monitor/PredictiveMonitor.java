@@ -38,9 +38,9 @@ import java.util.function.ObjIntConsumer;
  * The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
  * {@code confirm} more pairs ({@link Abstraction#confirm()}). Per record the work and the state are constant.
  *
- * <p>Every property of the abstraction is checked on every run ({@link SafetyMonitor}). The forecast's property
- * (the built-ins' {@code battery}, {@code level >= 20}) is followed here: its violation gives the lead of the
- * warning, and the {@link Alarm} says when a warning or a violation is over.
+ * <p>Every property of the abstraction is checked on every run, the others forecast on their own ({@link
+ * OtherForecasts}). The forecast's property (the built-ins' {@code battery}, {@code level >= 20}) is followed here:
+ * its violation gives the lead of the warning, and the {@link Alarm} says when a warning or a violation is over.
  */
 public final class PredictiveMonitor implements PipelineListener {
 
@@ -58,6 +58,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private final Alarm alarm;
+    /** The other properties' checks and forecasts. */
+    private final OtherForecasts others;
     /** The forecast property's value, violation, forecast and warnings. */
     private final ForecastFollow follow;
     private TickSeconds ticks = TickSeconds.NONE;
@@ -94,15 +96,11 @@ public final class PredictiveMonitor implements PipelineListener {
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety, forecast, this.events);
         WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
-        this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
-                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null,
-                new DeadlineEvents(now, rule, this.events));
-        this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
-                properties.forecastId(), this.events);
-        if (rule == WarningRule.FORECAST) { // the other bound properties' forecasts, warning by the same rule
-            follow.forecastBounds(properties.forecastBounds(new BoundWatch(abstraction.properties(), models, rule, now,
-                    this.events), () -> !matching.nominalAlive()));
-        }
+        this.others = new OtherForecasts(models, abstraction, rule, matching, now, this.events);
+        this.properties = others.properties();
+        this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule, properties.forecastId(),
+                others.violates(), this.events);
+        others.followedBy(follow);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
@@ -190,7 +188,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * what forecasts it and its latest forecast (the forecast's property's is {@link #forecast()}).
      */
     public List<PropertyStatus> properties() {
-        return properties.statuses(!alarm.quiet() && !alarm.violated(), forecast().orElse(null));
+        return properties.statuses(!alarm.quiet() && !alarm.violated(), forecast().orElse(null), now.othersWarned);
     }
 
     /** What all runs since the start add up to. */
@@ -267,14 +265,17 @@ public final class PredictiveMonitor implements PipelineListener {
         follow.onEveryForecast(each);
     }
 
-    /**
-     * Also tells {@code each} every forecast of each bound property with a value forecast of its own (not the
-     * forecast's), as the property reads, one per pair and per new value of it (for the held-out replays).
-     */
+    /** Also tells {@code each} every forecast of each other bound property ({@link BoundWatch.Every}). */
     public void onEveryBoundForecast(BoundWatch.Every each) {
-        if (properties.bounds() != null) {
-            properties.bounds().onEveryForecast(each);
-        }
+        others.onEveryBoundForecast(each);
+    }
+
+    /**
+     * Also tells {@code each} every raw deadline forecast and how each obligation so forecast ended ({@link
+     * DeadlineSteps}); nothing without deadline forecasts (the match rule, models without obligations).
+     */
+    public void onEveryDeadlineForecast(DeadlineSteps each) {
+        others.onEveryDeadlineForecast(each);
     }
 
     /**

@@ -1,5 +1,8 @@
 package dev.predmon.monitor;
 
+import java.util.HashSet;
+import java.util.Set;
+
 /**
  * What the current run has shown the {@link PredictiveMonitor} so far: its number and first line, its first warnings
  * and violation, the forecast property's last value, the pairs matched and where the thesis's rule first held. All of
@@ -15,6 +18,8 @@ final class RunState {
     MonitorEvent.Warning warning;
     /** The first warning of any property: {@link #warning}, or a deadline's; null before one. */
     MonitorEvent.Warning anyWarning;
+    /** The properties other than the forecast's that the matching warned of (a faulty scenario's {@code violates}). */
+    final Set<String> othersWarned = new HashSet<>();
     /** The forecast property's first violation, or null. */
     MonitorEvent.Violation violation;
     /** Whether a point came where no model, nominal or faulty, matched the run any more. */
@@ -32,11 +37,17 @@ final class RunState {
         firstLine = line;
         warning = null;
         anyWarning = null;
+        othersWarned.clear();
         violation = null;
         noMatch = false;
         value = null;
         pairs = 0;
         matchRuleAt = -1;
+    }
+
+    /** The matching warned of property {@code id}, not the forecast's. */
+    void otherWarned(String id) {
+        othersWarned.add(id);
     }
 
     /** A warning of some property: kept when it is the run's first. */

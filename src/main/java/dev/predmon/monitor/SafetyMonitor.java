@@ -13,6 +13,7 @@ import dev.predmon.property.Verdict;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 
@@ -60,11 +61,6 @@ final class SafetyMonitor {
         }
     }
 
-    /** The other bound properties' value forecasts, or null. */
-    BoundWatch bounds() {
-        return bounds;
-    }
-
     /** As above, telling {@code told} what the deadline forecasts of {@code deadlines} say. */
     SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events, DeadlineWatch deadlines,
                   DeadlineWatch.Listener told) {
@@ -75,7 +71,7 @@ final class SafetyMonitor {
         this.forecastId = forecast.map(Bound::id).orElse(null);
         this.checker = new PropertyChecker(abstraction.properties(), this::violated);
         if (deadlines != null) {
-            checker.onObligations((index, p, duration, discharged) -> deadlines.closed(index, discharged));
+            checker.onObligations((index, p, duration, discharged) -> deadlines.closed(index, duration, discharged));
         }
         this.events = events;
     }
@@ -135,8 +131,10 @@ final class SafetyMonitor {
      *
      * @param forecastWarned whether a warning of the forecast's property is up
      * @param forecastNow    the forecast's property's latest forecast, or null
+     * @param matchingWarned the other properties the matching warned of in the run (a faulty scenario's
+     *                       {@code violates})
      */
-    List<PropertyStatus> statuses(boolean forecastWarned, Forecast forecastNow) {
+    List<PropertyStatus> statuses(boolean forecastWarned, Forecast forecastNow, Set<String> matchingWarned) {
         List<PropertyStatus> all = new ArrayList<>(checker.properties().size());
         for (int i = 0; i < checker.properties().size(); i++) {
             Property p = checker.properties().get(i);
@@ -146,13 +144,16 @@ final class SafetyMonitor {
                         forecastNow));
             } else if (bounds != null && bounds.forecasts(i)) {
                 all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST,
-                        bounds.warned(i) && !(v instanceof Verdict.Violated), null, null, bounds.current(i)));
+                        (bounds.warned(i) || matchingWarned.contains(p.id())) && !(v instanceof Verdict.Violated),
+                        null, null, bounds.current(i)));
             } else if (deadlines != null && deadlines.forecasts(i)) {
                 Deadline d = ((Response) p).within();
                 all.add(new PropertyStatus(p, v, PropertyStatus.Model.DEADLINE,
-                        deadlines.warned(i) && !(v instanceof Verdict.Violated), deadlines.current(i), d.unit().key));
+                        (deadlines.warned(i) || matchingWarned.contains(p.id())) && !(v instanceof Verdict.Violated),
+                        deadlines.current(i), d.unit().key));
             } else {
-                all.add(new PropertyStatus(p, v, PropertyStatus.Model.NONE, false, null, null));
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.NONE,
+                        matchingWarned.contains(p.id()) && !(v instanceof Verdict.Violated), null, null));
             }
         }
         return all;

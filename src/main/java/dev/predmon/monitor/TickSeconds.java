@@ -65,7 +65,7 @@ public record TickSeconds(double seconds) {
     /** {@code e} with its time in seconds and its forecast too, when it counts ticks. */
     public MonitorEvent event(MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w && on(w.clock())) {
-            return new MonitorEvent.Warning(times(w.time()), w.line(), w.scenarios(), w.battery(), w.pairs(),
+            return new MonitorEvent.Warning(times(w.time()), w.line(), w.scenarios(), w.value(), w.pairs(),
                     Clock.SECONDS, w.run(), w.rule(), forecast(w.forecast()), w.reason(), w.clause(), w.scenario(),
                     w.property(), w.deadline());
         }

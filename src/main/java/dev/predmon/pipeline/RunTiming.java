@@ -68,50 +68,8 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
      * @param property   the property's id
      * @param duration   how long it was pending, in the deadline's unit
      * @param discharged whether its response came (else it was let go still pending: a censored duration)
-     * @param deadline   the property's deadline, in the same unit: the obligation missed it when {@code duration}
-     *                   is past it
-     * @param steps      how long it had been pending after each record while it was, in order: where a monitor
-     *                   following the log forecast it
      */
-    // An array: one number per record, read in order; an obligation is compared by its outcome only.
-    @SuppressWarnings("ArrayRecordComponent")
-    public record Obligation(String property, double duration, boolean discharged, double deadline, double[] steps) {
-
-        /** An obligation whose steps are not known, against no deadline. */
-        public Obligation(String property, double duration, boolean discharged) {
-            this(property, duration, discharged, Double.POSITIVE_INFINITY, new double[0]);
-        }
-
-        public Obligation {
-            steps = steps.clone();
-        }
-
-        /** Whether it was still pending past its deadline: the deadline was missed. */
-        public boolean missed() {
-            return duration > deadline;
-        }
-
-        @Override
-        public double[] steps() {
-            return steps.clone();
-        }
-
-        @Override
-        public boolean equals(Object o) {
-            return o instanceof Obligation b && property.equals(b.property) && Double.compare(duration, b.duration) == 0
-                    && discharged == b.discharged && Double.compare(deadline, b.deadline) == 0;
-        }
-
-        @Override
-        public int hashCode() {
-            return property.hashCode() * 31 + Double.hashCode(duration);
-        }
-
-        @Override
-        public String toString() {
-            return "Obligation[" + property + ", " + duration + (discharged ? " discharged" : " censored") + ", deadline "
-                    + deadline + ", " + steps.length + " steps]";
-        }
+    public record Obligation(String property, double duration, boolean discharged) {
     }
 
     /**

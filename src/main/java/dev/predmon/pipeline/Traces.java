@@ -11,7 +11,6 @@ import dev.predmon.parse.RecordSource;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
-import dev.predmon.property.Response;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -177,8 +176,6 @@ public final class Traces {
         /** The safety property's position among the checked ones, or -1. */
         private final int safetyIndex;
         private List<RunTiming.Obligation> obligations = new ArrayList<>();
-        /** By property index, the bounded-response ones: how long the pending obligation was after each record. */
-        private final Steps[] steps;
         /** The run's outcome: when each property was first violated. */
         private Map<String, Double> violations = new TreeMap<>();
         /** By property index, the bound properties but the safety one: each change of their value in the run. */
@@ -193,12 +190,6 @@ public final class Traces {
                     (i, p, v) -> violations.putIfAbsent(p.id(), v.time()));
             this.safetyIndex = safety.map(b -> abstraction.properties().indexOf(b)).orElse(-1);
             List<Property> properties = abstraction.properties();
-            this.steps = new Steps[properties.size()];
-            for (int i = 0; i < steps.length; i++) {
-                if (properties.get(i) instanceof Response) {
-                    steps[i] = new Steps();
-                }
-            }
             @SuppressWarnings("unchecked")
             List<RunTiming.Reading>[] o = new List[properties.size()];
             this.others = o;
@@ -209,22 +200,13 @@ public final class Traces {
                 }
             }
             Arrays.fill(otherValues, Double.NaN);
-            checker.onObligations((i, p, duration, discharged) -> {
-                double deadline = p instanceof Response r ? r.within().amount() : Double.POSITIVE_INFINITY;
-                obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, deadline,
-                        steps[i] == null ? new double[0] : steps[i].take()));
-            });
+            checker.onObligations((i, p, duration, discharged) -> obligations.add(new RunTiming.Obligation(p.id(),
+                    duration, discharged)));
         }
 
         @Override
         public void record(LogRecord record) {
             checker.accept(record);
-            for (int i = 0; i < steps.length; i++) {
-                double elapsed = steps[i] == null ? Double.NaN : checker.elapsed(i);
-                if (!Double.isNaN(elapsed)) {
-                    steps[i].add(elapsed); // where watch forecasts the obligation: after each record while pending
-                }
-            }
             if (!Double.isNaN(record.time())) {
                 endTime = record.time();
             }
@@ -328,25 +310,6 @@ public final class Traces {
         List<LogTrace.Run> runs() {
             finish();
             return List.copyOf(done);
-        }
-    }
-
-    /** A growing list of numbers, taken and emptied when its obligation ends. */
-    private static final class Steps {
-        private double[] values = new double[16];
-        private int size;
-
-        void add(double v) {
-            if (size == values.length) {
-                values = Arrays.copyOf(values, size * 2);
-            }
-            values[size++] = v;
-        }
-
-        double[] take() {
-            double[] out = Arrays.copyOf(values, size);
-            size = 0;
-            return out;
         }
     }
 

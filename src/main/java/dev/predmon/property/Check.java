@@ -63,7 +63,10 @@ abstract class Check {
         if (p instanceof Precedence q) {
             return new PrecedenceCheck(q);
         }
-        return new ResponseCheck((Response) p, readings);
+        if (p instanceof Response r) {
+            return new ResponseCheck(r, readings);
+        }
+        throw new IllegalArgumentException("no check for a property of kind '" + p.kind() + "'"); // a new kind's
     }
 
     private static final class BoundCheck extends Check {

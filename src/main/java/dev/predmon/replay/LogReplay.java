@@ -3,7 +3,9 @@ package dev.predmon.replay;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.Survival;
 import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.DeadlineSteps;
 import dev.predmon.monitor.LogWatcher;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
@@ -12,10 +14,12 @@ import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.PipelineListener;
+import dev.predmon.property.Response;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -25,7 +29,8 @@ import java.util.function.ObjIntConsumer;
  * Replays one complete log exactly as {@code watch --no-follow} judges it: the {@link LogWatcher} reads the file
  * through the parser into a {@link PredictiveMonitor} (built-in safety monitor included), and what the monitor makes
  * of it is kept per run instead of printed: its pairs and gaps (seen through {@link PredictiveMonitor#tee}), every
- * forecast with the record that made it ({@link PredictiveMonitor#onEveryForecast}), and its events.
+ * forecast with the record that made it ({@link PredictiveMonitor#onEveryForecast}), every deadline forecast of each
+ * obligation with how it ended ({@link PredictiveMonitor#onEveryDeadlineForecast}), and its events.
  */
 public final class LogReplay {
 
@@ -70,6 +75,22 @@ public final class LogReplay {
                 of(runs, monitor.run()).pairs.add(new ReplayedRun.Pair(pair, trigger.time(), trigger.line()));
             }
         });
+        monitor.onEveryDeadlineForecast(new DeadlineSteps() {
+            @Override
+            public void forecast(int run, Response property, LogRecord record, double elapsed,
+                                 Survival.Estimate raw) {
+                of(runs, run).pending.computeIfAbsent(property.id(), id -> new Pending()).steps
+                        .add(new ReplayedRun.Step(raw, elapsed, record.time(), record.line()));
+            }
+
+            @Override
+            public void ended(int run, Response property, LogRecord record, double duration, boolean discharged) {
+                Pending p = of(runs, run).pending.remove(property.id());
+                of(runs, run).obligations.add(new ReplayedRun.Obligation(property,
+                        p == null ? List.of() : p.steps, duration, discharged, record.time(), record.line(),
+                        p == null ? Double.NaN : p.warnedAt));
+            }
+        });
         monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
                 current[0].time(), current[0].line(), monitor.pairs())));
         monitor.onEveryBoundForecast((property, f, run) -> of(runs, run).bound(property, new ReplayedRun.Timed(f,
@@ -87,7 +108,7 @@ public final class LogReplay {
             Builder b = of(runs, o.run());
             out.add(new ReplayedRun(o.run(), o, b.pairs, b.gaps, b.forecasts,
                     b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt,
-                    b.bounds, b.boundsBefore));
+                    b.obligations, b.bounds, b.boundsBefore));
         }
         return new ReplayedLog(log, out, problems, lines, monitor);
     }
@@ -116,6 +137,9 @@ public final class LogReplay {
         int violatedAfter = -1;
         List<ReplayedRun.Fate> models = List.of();
         long matchRuleAt = -1;
+        final List<ReplayedRun.Obligation> obligations = new ArrayList<>();
+        /** By property id, the deadline forecasts of its obligation pending now. */
+        final Map<String, Pending> pending = new HashMap<>();
         /** By bound property id, its forecasts; and how many came before its first violation, once it came. */
         final Map<String, List<ReplayedRun.Timed>> bounds = new TreeMap<>();
         final Map<String, Integer> boundsBefore = new TreeMap<>();
@@ -138,6 +162,18 @@ public final class LogReplay {
             if (e instanceof MonitorEvent.Violation v && v.forecast() && violatedAfter < 0) {
                 violatedAfter = forecasts.size();
             }
+            if (e instanceof MonitorEvent.Warning w && w.clause() == MonitorEvent.Clause.DEADLINE) {
+                Pending p = pending.get(w.property());
+                if (p != null && !p.steps.isEmpty()) {
+                    p.warnedAt = p.steps.get(p.steps.size() - 1).elapsed(); // told right after the forecast that warned
+                }
+            }
         }
+    }
+
+    /** One pending obligation's deadline forecasts so far, and when its warning came. */
+    private static final class Pending {
+        final List<ReplayedRun.Step> steps = new ArrayList<>();
+        double warnedAt = Double.NaN;
     }
 }

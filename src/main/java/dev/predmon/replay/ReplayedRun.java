@@ -2,10 +2,12 @@ package dev.predmon.replay;
 
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.Survival;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.RunOutcome;
+import dev.predmon.property.Response;
 
 import java.util.ArrayList;
 import java.util.Collections;
@@ -28,6 +30,9 @@ import java.util.TreeMap;
  * @param events    every event the monitor told in the run, in order
  * @param models    every model as the monitor's matching left it at the run's end, in model order
  * @param matchRuleAt the pair after which the thesis's match rule first held ({@code confirm} included), or -1
+ * @param obligations every obligation of a bounded response that the monitor forecast and that ended in the run (its
+ *                    response came, or it was let go: its deadline passed or its scope closed), in the order they
+ *                    ended; one still pending at the run's end has no outcome and is not among them
  * @param boundForecasts by id, every bound property with a value forecast of its own (not the forecast's property):
  *                  every forecast of it, one after each pair and each new value of it, as the property reads, each
  *                  with the record that made it
@@ -36,10 +41,11 @@ import java.util.TreeMap;
  */
 public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Long> gaps, List<Timed> forecasts,
                           int forecastsBeforeViolation, List<MonitorEvent> events, List<Fate> models,
-                          long matchRuleAt, Map<String, List<Timed>> boundForecasts,
+                          long matchRuleAt, List<Obligation> obligations, Map<String, List<Timed>> boundForecasts,
                           Map<String, Integer> boundForecastsBeforeViolation) {
 
     public ReplayedRun {
+        obligations = List.copyOf(obligations);
         models = List.copyOf(models);
         pairs = List.copyOf(pairs);
         gaps = List.copyOf(gaps);
@@ -84,6 +90,40 @@ public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Lo
      * @param pairs the run's pairs taken when it was made (a forecast after a pair counts that pair)
      */
     public record Timed(Forecast forecast, double time, long line, long pairs) {
+    }
+
+    /**
+     * One obligation of a bounded response as the monitor forecast it ({@code DeadlineWatch}) and as it ended.
+     *
+     * @param property   the property
+     * @param forecasts  every deadline forecast of it, raw (before the rule's calibration), in order: one at each
+     *                   elapsed time the monitor judged it at
+     * @param duration   how long it was pending, in its deadline's unit
+     * @param discharged whether its response came; else it was let go still pending
+     * @param time       the time of the record that ended it
+     * @param line       that record's line
+     * @param warnedAt   how long it had been pending when the monitor warned of its deadline, NaN when it did not
+     */
+    public record Obligation(Response property, List<Step> forecasts, double duration, boolean discharged,
+                             double time, long line, double warnedAt) {
+
+        public Obligation {
+            forecasts = List.copyOf(forecasts);
+        }
+
+        /** Whether it was let go past its deadline: the deadline was missed (the property's violation). */
+        public boolean missed() {
+            return !discharged && duration > property.within().amount();
+        }
+    }
+
+    /**
+     * A deadline forecast and the record that made it.
+     *
+     * @param estimate the raw estimate
+     * @param elapsed  how long the obligation had been pending, in its deadline's unit
+     */
+    public record Step(Survival.Estimate estimate, double elapsed, double time, long line) {
     }
 
     /** The forecasts made before the forecast property's first violation: what a forecast is scored on. */

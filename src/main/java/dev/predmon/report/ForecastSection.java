@@ -23,17 +23,13 @@ final class ForecastSection {
             return;
         }
         h.append(String.format(Locale.ROOT, "<p>Over %d held-out runs: Brier score %.3f, against %.3f for always "
-                        + "saying the training runs' share of violations (lower is better); expected calibration error "
-                        + "%.3f. Warnings here follow the <code>%s</code> rule.</p>\n", s.runs(), s.brier(), s.baseBrier(),
-                s.ece(), Svg.esc(e.rule())));
-        h.append("<table><tr><th>P in</th><th>forecasts</th><th>runs' worth</th><th>predicted</th><th>observed</th>"
-                + "</tr>\n");
-        for (ForecastScore.Bin b : s.reliability()) {
-            h.append(String.format(Locale.ROOT, "<tr><td>%.1f - %.1f</td><td>%d</td><td>%.1f</td><td>%.2f</td>"
-                    + "<td>%.2f</td></tr>\n", b.from(), b.to(), b.forecasts(), b.weight(), b.predicted(), b.observed()));
-        }
-        h.append("</table>\n<p>Reliability: the forecasts binned by their probability, against how often their run "
-                + "did violate. Every run weighs the same, however many forecasts it had.</p>\n");
+                        + "saying the training runs' share of violations (lower is better); %s. Warnings here follow the "
+                        + "<code>%s</code> rule.</p>\n", s.runs(), s.brier(), s.baseBrier(),
+                ReliabilityRows.ece(s.ece(), s.eceChance()), Svg.esc(e.rule())));
+        ReliabilityRows.html(h, s.reliability());
+        h.append("<p>Reliability: the forecasts binned by their probability, against how often their run "
+                + "did violate. Every run weighs the same, however many forecasts it had. The ")
+                .append(Svg.esc(ReliabilityRows.CHANCE)).append(" (in bold).</p>\n");
         double[] chosen = e.runs().stream().filter(r -> r.forecast() != null)
                 .mapToDouble(r -> r.forecast().threshold()).filter(t -> t >= 0 && t <= 1).sorted().toArray();
         h.append("<h3 id=sweep>Threshold sweep</h3>\n<div class=sweepbox>")

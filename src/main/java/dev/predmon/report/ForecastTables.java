@@ -22,14 +22,11 @@ final class ForecastTables {
             return;
         }
         out.printf(Locale.ROOT, "forecast over %d held-out runs (warning rule: %s): Brier score %.3f (always saying the"
-                        + " training base rate: %.3f; lower is better), expected calibration error %.3f%n", s.runs(),
-                e.rule(), s.brier(), s.baseBrier(), s.ece());
-        out.println("reliability: predicted probability against observed frequency of violation (runs weigh the same)");
-        out.printf(Locale.ROOT, "  %-11s %9s %8s %10s %9s%n", "P in", "forecasts", "runs", "predicted", "observed");
-        for (ForecastScore.Bin b : s.reliability()) {
-            out.printf(Locale.ROOT, "  %.1f - %.1f  %9d %8.1f %10.2f %9.2f%n", b.from(), b.to(), b.forecasts(),
-                    b.weight(), b.predicted(), b.observed());
-        }
+                        + " training base rate: %.3f; lower is better), %s%n", s.runs(),
+                e.rule(), s.brier(), s.baseBrier(), ReliabilityRows.ece(s.ece(), s.eceChance()));
+        out.println("reliability: predicted probability against observed frequency of violation (runs weigh the same);"
+                + " " + ReliabilityRows.CHANCE);
+        ReliabilityRows.text(out, "  ", s.reliability());
         out.println("baseline, chosen by the same cross-validation: what the learned machines add");
         for (ValueRule r : List.of(s.judged(), s.rawValue())) {
             out.printf(Locale.ROOT, "  %-66s %s%n", r.rule(), words(r));

@@ -121,7 +121,7 @@ public final class HtmlReport {
         h.append("<h2 id=summary>Summary</h2>\n<table><tr><th class=l>scenario</th><th class=l>kind</th><th>runs</th>"
                 + "<th>warned</th><th>hits</th><th>false alarms</th><th>missed</th><th>of which late</th>"
                 + "<th>no violation</th><th>no match</th><th>sudden violations</th><th>lead: median [min..max]</th>"
-                + "<th>battery at warning: median [min..max]</th></tr>\n");
+                + "<th>value at warning: median [min..max]</th></tr>\n");
         for (ScenarioSummary s : e.scenarios()) {
             h.append("<tr><td class=l>").append(Svg.esc(s.scenario())).append("</td><td class=l>")
                     .append(s.faulty() ? "faulty" : "nominal").append("</td>");
@@ -130,7 +130,7 @@ public final class HtmlReport {
                 h.append("<td>").append(v).append("</td>");
             }
             h.append("<td>").append(s.lead().n() == 0 ? "-" : TextReport.stats(s.lead()) + " " + s.leadUnit())
-                    .append("</td><td>").append(TextReport.stats(s.batteryAtWarning())).append("</td></tr>\n");
+                    .append("</td><td>").append(TextReport.stats(s.valueAtWarning())).append("</td></tr>\n");
         }
         h.append("</table>\n<p>Missed: a faulty run without a warning strictly before its violation (late warnings "
                 + "included). No violation: a faulty run whose log ends before the property is violated. No match: "

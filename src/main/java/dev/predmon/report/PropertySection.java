@@ -34,10 +34,13 @@ final class PropertySection {
         }
         h.append("</table>\n<p>A bound's warnings come from its own value forecast, learned from the training runs "
                 + "labelled by its own violation. A deadline's come from its forecast: how long the obligation has been "
-                + "pending against how long the training runs' took. A property without a forecast (an absence, a precedence) "
-                + "is listed so that its violations are seen. The baseline of a deadline, chosen by the same cross-validation, warns "
+                + "pending against how long the training runs' took. The matching warns of the property a faulty "
+                + "scenario's runs violate (its <code>violates</code>) when it is the only one left. A property without "
+                + "a forecast (an absence, a precedence) is listed so that its violations are seen. The baseline of a "
+                + "deadline, chosen by the same cross-validation, warns "
                 + "as soon as an obligation is pending longer than every training obligation: what the learned "
                 + "durations add over \"later than ever seen\". Leads are in the runs' unit.</p>\n");
+        PropertyForecastTables.html(h, others);
     }
 
     /** A median as the tables show it: one decimal, or "-" without any. */

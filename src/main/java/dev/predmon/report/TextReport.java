@@ -32,11 +32,11 @@ public final class TextReport {
                 + e.abstraction() + "'");
         out.println();
         Table scenarios = new Table("scenario", "kind", ">runs", ">warned", ">hits", ">false", ">missed", ">late",
-                ">no-vio", ">no-match", ">sudden", "lead: median [min..max]", "battery@warning: median [min..max]");
+                ">no-vio", ">no-match", ">sudden", "lead: median [min..max]", "value@warning: median [min..max]");
         for (ScenarioSummary s : e.scenarios()) {
             scenarios.row(s.scenario(), s.faulty() ? "faulty" : "nominal", s.runs(), s.warned(), s.hits(),
                     s.falseAlarms(), s.missed(), s.late(), s.noViolation(), s.noMatch(), s.sudden(),
-                    s.lead().n() == 0 ? "-" : stats(s.lead()) + " " + s.leadUnit(), stats(s.batteryAtWarning()));
+                    s.lead().n() == 0 ? "-" : stats(s.lead()) + " " + s.leadUnit(), stats(s.valueAtWarning()));
         }
         scenarios.print(out);
         out.println();
@@ -53,7 +53,7 @@ public final class TextReport {
         if (!others.isEmpty()) {
             out.println();
             out.println("the other properties (warnings from their own forecasts: a bound's value forecast, a deadline's "
-                    + "forecast; lead in the runs' unit)");
+                    + "forecast; or the matching of a faulty scenario that violates them; lead in the runs' unit)");
             Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median",
                     ">baseline: warned ahead", ">false alarms", "lead: median");
             for (PropertyScore p : others) {
@@ -63,6 +63,7 @@ public final class TextReport {
             t.print(out);
             out.println("baseline (deadlines): warn once an obligation is pending longer than every training "
                     + "obligation of the fold (the elapsed-time rule, chosen by the same cross-validation)");
+            PropertyForecastTables.print(out, others);
         }
         out.println();
         out.println("times from the start of each run");

@@ -108,8 +108,8 @@ final class EventPrinter {
         }
         if (e instanceof MonitorEvent.Warning w) {
             warning = w;
-            return String.format(Locale.ROOT, "%s line %d: WARNING: %s; battery %s", at(w.time(), w.clock()), w.line(),
-                    w.reason(), battery(w.battery()));
+            return String.format(Locale.ROOT, "%s line %d: WARNING: %s; %s %s", at(w.time(), w.clock()), w.line(),
+                    w.reason(), named(w.property()), value(w.value()));
         }
         if (e instanceof MonitorEvent.ForecastChanged f && f.deadline() != null) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast of %s: %s", at(f.time(), f.clock()),
@@ -132,10 +132,11 @@ final class EventPrinter {
         }
         if (e instanceof MonitorEvent.Violation v) {
             String lead = warning == null ? "no warning came before it"
-                    : String.format(Locale.ROOT, "lead of the warning: %s, battery %s at the warning vs %s now",
-                    span(v.time() - warning.time(), v.clock()), battery(warning.battery()), battery(v.value()));
+                    : String.format(Locale.ROOT, "lead of the warning: %s, %s %s at the warning vs %s now",
+                    span(v.time() - warning.time(), v.clock()), named(v.property()), value(warning.value()),
+                    value(v.value()));
             return String.format(Locale.ROOT, "%s line %d: VIOLATION of '%s': %s; %s", at(v.time(), v.clock()), v.line(),
-                    v.name(), battery(v.value()), lead);
+                    v.name(), value(v.value()), lead);
         }
         if (e instanceof MonitorEvent.Eliminated x) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: model %s (%s) eliminated: %s", at(x.time(), x.clock()),
@@ -178,7 +179,12 @@ final class EventPrinter {
                 : String.format(Locale.ROOT, "%.3f s", amount);
     }
 
-    private static String battery(Double b) {
-        return b == null ? "unknown" : String.format(Locale.ROOT, "%.2f", b);
+    /** What a value is of: the property's id ({@code battery 27.83}), or {@code value} when it has none. */
+    private static String named(String property) {
+        return property == null ? "value" : property;
+    }
+
+    private static String value(Double v) {
+        return v == null ? "unknown" : String.format(Locale.ROOT, "%.2f", v);
     }
 }

@@ -64,7 +64,7 @@ export function plot(t) {
     s.appendChild(svg('text', {class: 'label-threshold', x: L + 3, y: y(t.threshold) - 3}, 'limit ' + value(t.threshold)));
   }
   if (pts.length > 0) {
-    s.appendChild(svg('polyline', {class: 'battery',
+    s.appendChild(svg('polyline', {class: 'series',
       points: pts.map(p => x(p[0]).toFixed(1) + ',' + y(p[1]).toFixed(1)).join(' ')}));
   }
   const mark = (time, kind, label, anchorRight, y0) => {

@@ -204,13 +204,13 @@ export function renderTile(tile, t, ui) {
   const status = el('div', 'status');
   const words = el('div', 'words');
   words.append(el('div', 'property', t.property || 'prediction'), el('div', 'verdict', verdict(t)));
-  status.append(words, el('div', 'battery-now', t.battery === null ? '' : pct(t.battery, t.threshold)));
+  status.append(words, el('div', 'value-now', t.value === null ? '' : pct(t.value, t.threshold)));
 
   const lead = el('p', t.lead === null ? 'lead none' : 'lead');
   if (t.lead !== null) {
     lead.textContent = 'lead ' + (t.unit === 'ticks' ? num(t.lead, 0) + ' ticks' : num(t.lead, 2) + ' s')
-      + ': warning at ' + pct(t.warning.battery, t.threshold) + ', violation at '
-      + pct(t.violation.battery, t.threshold);
+      + ': warning at ' + pct(t.warning.value, t.threshold) + ', violation at '
+      + pct(t.violation.value, t.threshold);
   }
   const parts = [head, status, propertyList(t)];
   for (const p of [actionLine(t), forecastLine(t, ui), whyLine(t), recoveryLine(t)]) if (p) parts.push(p);
@@ -301,7 +301,7 @@ export function renderRow(row, t, ui) {
   name.title = t.log;
   const line1 = el('div', 'line1');
   const chip = worstChip(t);
-  line1.append(name, ...badges(t, true), ...(chip ? [chip] : []), el('span', 'value', t.battery === null ? '' : pct(t.battery, t.threshold)));
+  line1.append(name, ...badges(t, true), ...(chip ? [chip] : []), el('span', 'value', t.value === null ? '' : pct(t.value, t.threshold)));
   // another property's alarm first: which, and what to do
   const w = shownState(t) !== t.state ? t.worst : null;
   const alarm = w ? w.property + ' ' + PROPERTY_WORDS[w.state].toUpperCase() + (w.action ? ' \u2192 ' + w.action : '')

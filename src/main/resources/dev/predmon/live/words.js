@@ -118,7 +118,7 @@ function warningWords(t) {
 export function recoveryWords(t) {
   const r = t.recovery;
   if (!r) return null;
-  return 'recovered ' + at(r.time, t.unit) + ' (' + pct(r.battery, t.threshold) + '): ' + r.reason;
+  return 'recovered ' + at(r.time, t.unit) + ' (' + pct(r.value, t.threshold) + '): ' + r.reason;
 }
 
 /** The state in a sentence: what holds now, and why. */
@@ -126,7 +126,7 @@ export function verdict(t) {
   const thr = t.threshold;
   switch (t.state) {
     case 'violation':
-      return 'VIOLATED since ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
+      return 'VIOLATED since ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.value, thr) + ')'
         + (t.warning ? ', predicted ' + span(t.lead, t.unit) + ' ahead' : ', not predicted');
     case 'warning':
       return warningWords(t);
@@ -136,9 +136,9 @@ export function verdict(t) {
       return 'NO VERDICT: ' + t.noVerdict;
     case 'ok':
       if (t.recovered) {
-        return 'RECOVERED: ' + (t.recovery.cause === 'property' ? 'the property holds again (' + pct(t.battery, thr)
-          + '); violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
-          : 'the warning\u2019s cause ended ' + at(t.recovery.time, t.unit) + ' (' + pct(t.recovery.battery, thr)
+        return 'RECOVERED: ' + (t.recovery.cause === 'property' ? 'the property holds again (' + pct(t.value, thr)
+          + '); violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.value, thr) + ')'
+          : 'the warning\u2019s cause ended ' + at(t.recovery.time, t.unit) + ' (' + pct(t.recovery.value, thr)
             + ')' + (t.recovery.cause === 'action' ? ', by the action' : ''));
       }
       return 'OK: the property holds and no warning is raised';
@@ -164,8 +164,8 @@ function unknownWhy(t) {
 function runOutcome(t) {
   const thr = t.threshold;
   const parts = [];
-  parts.push(t.violation ? 'violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.battery, thr) + ')'
-    : 'the property held' + (t.battery === null ? '' : ' (last ' + pct(t.battery, thr) + ')'));
+  parts.push(t.violation ? 'violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.value, thr) + ')'
+    : 'the property held' + (t.value === null ? '' : ' (last ' + pct(t.value, thr) + ')'));
   if (t.warning) parts.push('warned at ' + at(t.warning.time, t.unit));
   if (t.noMatch) parts.push('no model matched');
   return parts.join(', ');
@@ -182,10 +182,12 @@ export function eventText(e, t) {
     case 'warning':
       if (e.clause === 'deadline') return where + 'WARNING of ' + e.property + ': ' + e.reason.split(';')[0];
       // The reason's first clause: the whole of it is under the tile's verdict.
-      return where + 'WARNING at ' + pct(e.battery, thr) + ': '
+      return where + 'WARNING at ' + pct(e.value, thr) + ': '
         + (e.reason ? e.reason.split(';')[0] : 'only ' + e.scenarios.join(', ') + ' left');
     case 'violation':
-      return where + 'VIOLATION of ' + e.property + ': ' + (missing(e.battery) ? e.what || '' : pct(e.battery, thr));
+      // the forecast's property's value in the tile's terms; another property's in its own words
+      return where + 'VIOLATION of ' + e.property + ': '
+        + (missing(e.value) || e.name !== t.property ? e.what || '' : pct(e.value, thr));
     case 'no-match':
       return where + 'no learned scenario matches this run any more';
     case 'run':
@@ -205,7 +207,7 @@ export function eventText(e, t) {
 /** This run's moments: "warned t=27.91 s (32.10%)". */
 export function momentText(m, t) {
   const words = {warning: 'warned', violation: 'violated', recovered: 'recovered', 'violated again': 'violated again'};
-  return (words[m.what] || m.what) + ' ' + at(m.time, t.unit) + ' (' + pct(m.battery, t.threshold) + ')';
+  return (words[m.what] || m.what) + ' ' + at(m.time, t.unit) + ' (' + pct(m.value, t.threshold) + ')';
 }
 
 /** An earlier run in one line. */

@@ -68,8 +68,11 @@ class CliEndToEndTest {
         JsonNode violation = events.stream().filter(e -> e.get("event").asText().equals("violation")).findFirst().orElseThrow();
         assertEquals("depleted", warning.get("scenario").asText());
         assertTrue(warning.get("time").asDouble() < violation.get("time").asDouble());
-        assertTrue(warning.get("battery").asDouble() > 20.0);
-        assertEquals(18.0, violation.get("battery").asDouble(), 1e-9);
+        assertTrue(warning.get("value").asDouble() > 20.0);
+        assertEquals(18.0, violation.get("value").asDouble(), 1e-9);
+        // the older name, kept for existing scripts
+        assertEquals(warning.get("value"), warning.get("battery"));
+        assertEquals(violation.get("value"), violation.get("battery"));
         assertEquals("end", events.get(events.size() - 1).get("event").asText());
     }
 

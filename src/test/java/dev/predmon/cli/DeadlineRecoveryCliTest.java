@@ -61,7 +61,8 @@ class DeadlineRecoveryCliTest {
     void aWarnedNavigationThatArrivesRecoversAndTheHooksHearBoth() throws Exception {
         Path log = Files.writeString(dir.resolve("late.txt"), lateArrival());
         Path heard = dir.resolve("heard.txt");
-        String hook = "echo \"$PREDMON_EVENT $PREDMON_PROPERTY $PREDMON_CAUSE\" >> " + heard;
+        String hook = "echo \"$PREDMON_EVENT $PREDMON_PROPERTY $PREDMON_CAUSE|$PREDMON_VALUE|$PREDMON_BATTERY\" >> "
+                + heard;
         Cli r = Cli.run("watch", "--log", log.toString(), "--models", "models", "--no-follow", "--json",
                 "--on-warning", hook, "--on-recovered", hook);
         ObjectMapper json = new ObjectMapper();
@@ -71,6 +72,10 @@ class DeadlineRecoveryCliTest {
             JsonNode e = json.readTree(line);
             String kind = e.get("event").asText();
             if ("navigation-in-time".equals(e.path("property").asText())) {
+                if (!kind.equals("forecast")) {
+                    // a bounded response has no value: not the battery's, which the log reads all along
+                    assertTrue(e.get("value").isNull() && e.get("battery").isNull(), line);
+                }
                 told.add(kind + (kind.equals("forecast") ? " " + (e.get("deadline").get("novel").asBoolean() ? "novel"
                         : e.get("deadline").get("probability").asText()) : kind.equals("recovered")
                         ? " " + e.get("cause").asText() : " " + e.get("clause").asText()) + " tick "
@@ -96,7 +101,7 @@ class DeadlineRecoveryCliTest {
         assertEquals("deadline", nav.get("forecast").get("model").asText());
         assertEquals("no forecast: no obligation pending", nav.get("forecast").get("words").asText());
         List<String> lines = Files.readAllLines(heard);
-        assertEquals(List.of("recovered navigation-in-time discharged", "warning navigation-in-time "),
+        assertEquals(List.of("recovered navigation-in-time discharged||", "warning navigation-in-time ||"),
                 lines.stream().sorted().toList(), "each hook ran once, naming the property");
     }
 

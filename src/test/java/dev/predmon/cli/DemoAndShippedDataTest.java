@@ -67,7 +67,8 @@ class DemoAndShippedDataTest {
         int warning = out.indexOf("WARNING");
         int violation = out.indexOf("VIOLATION");
         assertTrue(warning > 0 && violation > warning, out);
-        assertTrue(out.contains("predicted") && out.contains("ahead"), out);
+        assertTrue(out.matches("(?s).*predicted [0-9.]+ s ahead: warning at battery [0-9.]+%, violation at [0-9.]+%.*"),
+                out);
         assertTrue(out.contains("run ended with no warning and no violation"), out);
     }
 

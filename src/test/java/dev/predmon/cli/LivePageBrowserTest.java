@@ -253,6 +253,25 @@ class LivePageBrowserTest {
             Files.writeString(warned, tail(depleted, at[1]), StandardOpenOption.APPEND);
             scene.follow(warned);
             waitFor(page, r1 + ".dataset.state === 'violation'", "r1 violated");
+            // the watched value, as /status gives it, wherever the tile shows one
+            JsonNode shown = JSON.readTree(page.eval("JSON.stringify((() => { const t = " + r1 + ";"
+                    + " const text = s => (t.querySelector(s) || {}).textContent || '';"
+                    + " return {now: text('.value-now'), verdict: text('.verdict'), lead: text('.lead'),"
+                    + " history: text('.history'), warning: text('.events li.warning'),"
+                    + " violation: [...t.querySelectorAll('.events li.violation')].map(l => l.textContent)"
+                    + ".find(l => l.includes('VIOLATION of battery')) || '',"
+                    + " series: t.querySelectorAll('svg.plot polyline.series').length}; })())"));
+            String percent = "\\d+\\.\\d\\d%";
+            assertTrue(shown.get("now").asText().matches(percent), shown.toString());
+            assertTrue(shown.get("verdict").asText().matches("VIOLATED since t=.* \\(" + percent + "\\), predicted .*"),
+                    shown.toString());
+            assertTrue(shown.get("lead").asText().matches("lead .*: warning at " + percent + ", violation at "
+                    + percent), shown.toString());
+            assertTrue(shown.get("history").asText().matches("this run: warned t=.* \\(" + percent + "\\) \u2192 "
+                    + "violated t=.* \\(" + percent + "\\).*"), shown.toString());
+            assertTrue(shown.get("warning").asText().matches(".*WARNING at " + percent + ": .*"), shown.toString());
+            assertTrue(shown.get("violation").asText().matches(".*VIOLATION of battery: " + percent), shown.toString());
+            assertEquals(1, shown.get("series").asInt(), "the value over the run: " + shown);
             waitFor(page, r1 + ".dataset.ack === 'false'", "a new state lifts the acknowledgement");
             assertEquals("acknowledge", page.eval(r1 + ".querySelector('button.ack').textContent"));
             waitFor(page, "window.__notes.length > 0", "a notification of the violation");

@@ -6,7 +6,12 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
+import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.Survival;
+import dev.predmon.learn.DeadlineTraining;
+import dev.predmon.learn.HeldOutFolds;
 import dev.predmon.learn.HeldOutRun;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
@@ -14,6 +19,8 @@ import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.RunLabel;
+import dev.predmon.property.Property;
+import dev.predmon.property.Response;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
 import dev.predmon.replay.ReplayedRun;
@@ -60,6 +67,7 @@ class ReplayDifferentialTest {
         assertEquals(List.of(), disagreements(logs, paths));
         assertTrue(paths.forecasts > 500, "forecasts compared: " + paths.forecasts);
         assertTrue(paths.warnings > 5, "warnings compared: " + paths.warnings);
+        assertTrue(paths.deadlines >= 30, "deadline forecasts compared: " + paths.deadlines);
     }
 
     @Test
@@ -92,6 +100,9 @@ class ReplayDifferentialTest {
         Paths paths = new Paths(Path.of("models"));
         assertEquals(List.of(), disagreements(logs, paths));
         assertTrue(paths.forecasts > 200, "forecasts compared: " + paths.forecasts);
+        assertTrue(paths.deadlines >= 20, "deadline forecasts compared: " + paths.deadlines);
+        assertTrue(paths.deadlineWarnings >= 1 && paths.letGo >= 1, "the navigation that never arrives: warned "
+                + paths.deadlineWarnings + ", let go " + paths.letGo);
     }
 
     @Test
@@ -107,6 +118,7 @@ class ReplayDifferentialTest {
         Paths paths = new Paths(models);
         assertEquals(List.of(), disagreements(logs, paths));
         assertTrue(paths.forecasts > 1000, "forecasts compared: " + paths.forecasts);
+        assertTrue(paths.deadlines >= 100, "deadline forecasts compared: " + paths.deadlines);
     }
 
     /** Models that forecast two more bound properties, a reserve floor and a ceiling, each its own forecasts. */
@@ -147,6 +159,40 @@ class ReplayDifferentialTest {
         assertEquals(List.of(), none);
     }
 
+    /** Nor is the deadlines': one of learn's deadline forecasts nudged by the last bit of its double disagrees. */
+    @Test
+    void aDeadlineForecastOffByOneUlpIsADisagreement() throws Exception {
+        Path log = Path.of("sample-logs/recharge/recharge-3.log");
+        Paths paths = new Paths(Path.of("models"));
+        HeldOutRun run = HeldOutRun.replay(log, RunLabel.ALL, paths.models, paths.abstraction, paths.confirm,
+                paths.rule).get(0);
+        String id = "navigation-in-time";
+        DeadlineRule rule = paths.models.forecast().deadlineRule(id);
+        Response navigation = (Response) paths.abstraction.properties().stream().filter(p -> p.id().equals(id))
+                .findFirst().orElseThrow();
+        List<String> learned = Learned.of(run, navigation, paths.models.forecast()).forecasts();
+        assertTrue(learned.size() > 10, "deadline forecasts: " + learned);
+        List<ReplayedRun.Obligation> mine = run.obligations().stream().filter(o -> o.property().id().equals(id))
+                .toList();
+        List<String> told = new ArrayList<>();
+        for (ReplayedRun.Obligation o : mine) {
+            for (ReplayedRun.Step s : o.forecasts()) {
+                Survival.Estimate e = rule.calibrated(s.estimate());
+                told.add(deadline(s.line(), e.novel() ? null : e.probability(), e.timeLeft()));
+            }
+        }
+        List<String> none = new ArrayList<>();
+        subsequence(none, id, learned, told);
+        assertEquals(List.of(), none);
+        ReplayedRun.Step middle = mine.get(0).forecasts().get(1);
+        Survival.Estimate e = rule.calibrated(middle.estimate());
+        told.set(1, deadline(middle.line(), Math.nextUp(e.probability()), e.timeLeft()));
+        List<String> differ = new ArrayList<>();
+        subsequence(differ, id, learned, told);
+        assertEquals(1, differ.size(), differ.toString());
+        assertTrue(differ.get(0).contains(middle.line() + " "), differ.get(0));
+    }
+
     /** The models of one directory, as every command loads them, and counts of what was compared. */
     private static final class Paths {
         final Path dir;
@@ -157,6 +203,11 @@ class ReplayDifferentialTest {
         int forecasts;
         int warnings;
         int boundForecasts;
+        /** Deadline forecasts of learn's held-out obligations that watch told and that were compared. */
+        int deadlines;
+        /** Deadline warnings and obligations let go past their deadline or scope that learn's held-out replay has. */
+        int deadlineWarnings;
+        int letGo;
 
         Paths(Path dir) throws Exception {
             this.dir = dir;
@@ -218,6 +269,7 @@ class ReplayDifferentialTest {
                     ofRun(events, "violation", run.run()).stream().map(e -> e.get("line").asLong() + " "
                             + e.get("property").asText()).toList());
         }
+        deadlines(differ, log, paths, reference, events);
         JsonNode end = events.get(events.size() - 1);
         if (!end.get("event").asText().equals("end")) {
             differ.add("watch: " + log + " ends with no end event");
@@ -322,6 +374,126 @@ class ReplayDifferentialTest {
                 same(differ, "learn", where + " " + id + " violated", bv != null, b.violated());
             }
         }
+    }
+
+    /**
+     * {@code learn}'s held-out deadline forecasts ({@link HeldOutRun#obligations}, what {@code DeadlineTraining}
+     * chooses each deadline's threshold and calibration on), given the same models, against {@code watch}'s: per run
+     * and bounded response, every deadline forecast watch tells of an obligation learn judged is one learn has, in
+     * order, at the same line with the same calibrated probability and time left (as doubles, as watch's JSON writes
+     * them); the deadline warnings and the property's violations are at the lines learn has them.
+     */
+    private static void deadlines(List<String> differ, Path log, Paths paths, ReplayedLog reference,
+                                  List<JsonNode> events) throws IOException {
+        if (paths.models.forecast() == null || paths.rule != WarningRule.FORECAST) {
+            return; // no deadline forecast without the forecast rule
+        }
+        List<HeldOutRun> held = HeldOutRun.replay(log, RunLabel.ALL, paths.models, paths.abstraction, paths.confirm,
+                paths.rule);
+        List<ReplayedRun> scored = reference.runs().stream().filter(r -> !r.pairs().isEmpty()).toList();
+        if (held.size() != scored.size()) {
+            return; // told by learn()
+        }
+        for (int i = 0; i < held.size(); i++) {
+            int run = scored.get(i).run();
+            for (Property p : paths.abstraction.properties()) {
+                if (!(p instanceof Response r)) {
+                    continue;
+                }
+                Learned learned = Learned.of(held.get(i), r, paths.models.forecast());
+                String where = log + " run " + run + " " + r.id();
+                List<JsonNode> told = ofRun(events, "forecast", run).stream()
+                        .filter(e -> r.id().equals(text(e.get("property"))) && !e.get("deadline").isNull()
+                                && e.get("line").asLong() <= learned.lastForecast()).toList();
+                paths.deadlines += told.size();
+                paths.deadlineWarnings += learned.warnings().size();
+                paths.letGo += learned.letGo().size();
+                subsequence(differ, where + " deadline forecasts (line, probability, time left)", learned.forecasts(),
+                        told.stream().map(e -> deadline(e.get("line").asLong(), e.get("deadline").get("probability")
+                                .isNull() ? null : e.get("deadline").get("probability").asDouble(),
+                                e.get("deadline").get("timeLeft").asDouble())).toList());
+                same(differ, "watch", where + " deadline warnings (line), learn's held-out replay first",
+                        learned.warnings(),
+                        ofRun(events, "warning", run).stream().filter(e -> r.id().equals(text(e.get("property")))
+                                && e.get("clause").asText().equals("deadline")
+                                && e.get("line").asLong() <= learned.lastForecast())
+                                .map(e -> e.get("line").asLong()).toList());
+                same(differ, "watch", where + " violations (line), learn's held-out replay first", learned.letGo(),
+                        ofRun(events, "violation", run).stream().filter(e -> r.id().equals(text(e.get("property")))
+                                && e.get("line").asLong() <= learned.lastEnd())
+                                .map(e -> e.get("line").asLong()).toList());
+            }
+        }
+    }
+
+    /**
+     * One run's obligations of one property as learn has them: every deadline forecast (line, probability calibrated
+     * by the models' rule, time left), those of each obligation met or missed as {@link DeadlineTraining#heldOut}
+     * judges it (the raw probability and the time pending it chooses on), the others' as the held-out replay has
+     * them; the lines of the warnings and of the obligations let go still pending (the property's violations), the
+     * line of the last forecast and of the last end.
+     */
+    record Learned(List<String> forecasts, List<Long> warnings, List<Long> letGo, long lastForecast, long lastEnd) {
+
+        static Learned of(HeldOutRun run, Response property, ForecastModel forecast) {
+            DeadlineRule rule = forecast.deadlineRule(property.id());
+            double deadline = property.within().amount();
+            Iterator<DeadlineTraining.HeldOut> judged = DeadlineTraining.heldOut(property.id(), new HeldOutFolds(1,
+                    List.of(new HeldOutFolds.Fold(0, forecast.baseRate(), forecast.obligations(), true,
+                            List.of(run))))).iterator();
+            List<String> forecasts = new ArrayList<>();
+            List<Long> warnings = new ArrayList<>();
+            List<Long> letGo = new ArrayList<>();
+            long lastForecast = -1;
+            long lastEnd = -1;
+            for (ReplayedRun.Obligation o : run.obligations()) {
+                if (!o.property().id().equals(property.id())) {
+                    continue;
+                }
+                DeadlineTraining.HeldOut h = (o.discharged() || o.missed()) && judged.hasNext() ? judged.next() : null;
+                int k = 0;
+                for (ReplayedRun.Step s : o.forecasts()) {
+                    Survival.Estimate e = rule.calibrated(s.estimate());
+                    if (h != null && !e.novel()) { // learn's own numbers for what it chooses on
+                        double elapsed = h.elapsed().get(k);
+                        forecasts.add(deadline(s.line(), rule.calibration().apply(h.probabilities().get(k)),
+                                Math.max(0.0, deadline - elapsed)));
+                        k++;
+                    } else {
+                        forecasts.add(deadline(s.line(), e.novel() ? null : e.probability(), e.timeLeft()));
+                    }
+                    double warnedAt = h != null ? h.caughtAt() : o.warnedAt();
+                    if (s.elapsed() == warnedAt) {
+                        warnings.add(s.line());
+                    }
+                    lastForecast = s.line();
+                }
+                if (!o.discharged()) {
+                    letGo.add(o.line());
+                }
+                lastEnd = o.line();
+            }
+            return new Learned(forecasts, warnings, letGo, lastForecast, lastEnd);
+        }
+    }
+
+    /** Adds a disagreement unless {@code told} is, in order, a subsequence of {@code learned}: the first not found. */
+    static void subsequence(List<String> differ, String what, List<String> learned, List<String> told) {
+        Iterator<String> every = learned.iterator();
+        for (String t : told) {
+            boolean found = false;
+            while (!found && every.hasNext()) {
+                found = every.next().equals(t);
+            }
+            if (!found) {
+                differ.add("learn: " + what + ": watch told " + t + ", not one of learn's in order");
+                return;
+            }
+        }
+    }
+
+    private static String deadline(long line, Double probability, double timeLeft) {
+        return line + " " + probability + " " + timeLeft;
     }
 
     /** {@code explain --json}: the forecast after each pair, the forecasts scored, the warning and the exit code. */

@@ -145,7 +145,7 @@ class WatchHooksTest {
                 "--on-warning", "PATH='" + bin + "':$PATH; " + recipe);
         JsonNode warning = event(w, "warning");
         assertEquals("write ... /robot/predmon:i", Files.readString(dir.resolve("args")).strip());
-        assertEquals("warning depleted " + String.format(Locale.ROOT, "%.2f", warning.get("battery").asDouble()) + " "
+        assertEquals("warning depleted " + String.format(Locale.ROOT, "%.2f", warning.get("value").asDouble()) + " "
                 + warning.get("time").asDouble(), Files.readString(dir.resolve("bottle")).strip());
     }
 

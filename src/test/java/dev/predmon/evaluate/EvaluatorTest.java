@@ -116,15 +116,20 @@ class EvaluatorTest {
         assertFalse(j.has("models"));
         JsonNode s = j.get("scenarios").get(0);
         for (String f : List.of("scenario", "faulty", "runs", "warned", "hits", "falseAlarms", "missed", "late",
-                "noViolation", "noMatch", "lead", "batteryAtWarning")) {
+                "noViolation", "noMatch", "lead", "valueAtWarning", "batteryAtWarning")) {
             assertTrue(s.has(f), f);
         }
         assertTrue(s.get("lead").has("median"));
         JsonNode r = j.get("runs").get(0);
         for (String f : List.of("scenario", "log", "fold", "verdict", "warningTime", "violationTime", "lead",
-                "batteryAtWarning", "noMatch", "eliminations")) {
+                "valueAtWarning", "batteryAtWarning", "noMatch", "eliminations")) {
             assertTrue(r.has(f), f);
         }
+        // the older name of valueAtWarning stays, with the same value, for existing scripts
+        for (JsonNode x : List.of(s, r)) {
+            assertEquals(x.get("valueAtWarning"), x.get("batteryAtWarning"));
+        }
+        assertTrue(j.get("runs").findValues("valueAtWarning").stream().anyMatch(JsonNode::isNumber));
         assertTrue(j.get("runs").findValuesAsText("verdict").stream().allMatch(v -> v.matches("[a-z-]+")));
     }
 }

@@ -41,7 +41,7 @@ class ValueRuleTest {
     void runsWithoutAForecastHaveNoLearnedFloorAndAreLeftOut() {
         RunResult r = run(true, 40.0, 100.0, 70.0);
         RunResult without = new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(), r.warningTime(),
-                r.warningLine(), r.warningScenarios(), r.batteryAtWarning(), r.violationTime(), r.lead(), r.noMatch(),
+                r.warningLine(), r.warningScenarios(), r.valueAtWarning(), r.violationTime(), r.lead(), r.noMatch(),
                 r.noMatchTime(), r.records(), r.pairs(), r.problems(), r.eliminations(), r.safetyObserved(), r.unit(),
                 r.sudden(), r.start(), r.nearBound(), r.beforeViolation());
         assertEquals(0, ValueRule.rawValue(List.of(without)).violating());

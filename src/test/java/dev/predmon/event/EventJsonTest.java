@@ -1,6 +1,7 @@
 package dev.predmon.event;
 
 import dev.predmon.abstraction.UnmappedMessage;
+import dev.predmon.forecast.Survival;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.Clock;
@@ -26,7 +27,7 @@ class EventJsonTest {
                 1, WarningRule.MATCH, null, "the run can only be faulty scenario depleted");
         assertEquals("{\"event\":\"warning\",\"log\":\"robot-1.log\",\"time\":29.5,\"unit\":\"s\",\"line\":7127,"
                 + "\"run\":1,\"property\":null,\"scenario\":\"depleted\",\"scenarios\":[\"depleted\"],"
-                + "\"battery\":27.83,\"pairs\":14,\"rule\":\"match\",\"clause\":\"matching\","
+                + "\"value\":27.83,\"battery\":27.83,\"pairs\":14,\"rule\":\"match\",\"clause\":\"matching\","
                 + "\"reason\":\"the run can only be faulty scenario depleted\",\"forecast\":null,\"deadline\":null,"
                 + "\"wallTime\":\"2026-11-25T17:40:01.123Z\"}", EventJson.line(EventJson.of(w, "robot-1.log", AT)));
     }
@@ -39,6 +40,39 @@ class EventJsonTest {
                 + "\"property\":\"no-abort\",\"name\":\"navigation never aborts\",\"value\":null,\"battery\":null,"
                 + "\"before\":null,\"what\":\"GoTo/getStatus reply 3\",\"wallTime\":\"2026-11-25T17:40:01.123Z\"}",
                 EventJson.line(EventJson.of(v, null, AT)));
+    }
+
+    @Test
+    void theWatchedValueIsInValueAndUnderItsOlderNameBattery() {
+        MonitorEvent.Violation v = new MonitorEvent.Violation(34.6, 8219, "battery", 15.86, 20.18, Clock.SECONDS, 0);
+        assertEquals("{\"event\":\"violation\",\"time\":34.6,\"unit\":\"s\",\"line\":8219,\"run\":0,"
+                + "\"property\":\"battery\",\"name\":\"battery\",\"value\":15.86,\"battery\":15.86,"
+                + "\"before\":20.18,\"what\":null,\"wallTime\":\"2026-11-25T17:40:01.123Z\"}",
+                EventJson.line(EventJson.of(v, null, AT)));
+        MonitorEvent.Recovered r = new MonitorEvent.Recovered(41.2, 9950, "property", 21.5, "the property holds again",
+                Clock.SECONDS, 0, "battery");
+        assertEquals("{\"event\":\"recovered\",\"time\":41.2,\"unit\":\"s\",\"line\":9950,\"run\":0,"
+                + "\"cause\":\"property\",\"value\":21.5,\"battery\":21.5,\"reason\":\"the property holds again\","
+                + "\"property\":\"battery\",\"wallTime\":\"2026-11-25T17:40:01.123Z\"}",
+                EventJson.line(EventJson.of(r, null, AT)));
+    }
+
+    @Test
+    void aDeadlinesWarningAndRecoveryHaveNoValue() {
+        MonitorEvent.Warning w = new MonitorEvent.Warning(345, 7240, List.of(), null, 2, Clock.TICKS, 0,
+                WarningRule.FORECAST, null, "pending", MonitorEvent.Clause.DEADLINE, null, "navigation-in-time",
+                new Survival.Estimate(Double.NaN, 57, 0, 0, true));
+        assertEquals("{\"event\":\"warning\",\"time\":345.0,\"unit\":\"ticks\",\"line\":7240,\"run\":0,"
+                + "\"property\":\"navigation-in-time\",\"scenario\":null,\"scenarios\":[],\"value\":null,"
+                + "\"battery\":null,\"pairs\":2,\"rule\":\"forecast\",\"clause\":\"deadline\",\"reason\":\"pending\","
+                + "\"forecast\":null,\"deadline\":{\"probability\":null,\"timeLeft\":57.0,\"atRisk\":0,\"longer\":0,"
+                + "\"novel\":true},\"wallTime\":\"2026-11-25T17:40:01.123Z\"}", EventJson.line(EventJson.of(w, null, AT)));
+        MonitorEvent.Recovered r = new MonitorEvent.Recovered(352, 7415, "discharged", Double.NaN, "in time",
+                Clock.TICKS, 0, "navigation-in-time");
+        assertEquals("{\"event\":\"recovered\",\"time\":352.0,\"unit\":\"ticks\",\"line\":7415,\"run\":0,"
+                + "\"cause\":\"discharged\",\"value\":null,\"battery\":null,\"reason\":\"in time\","
+                + "\"property\":\"navigation-in-time\",\"wallTime\":\"2026-11-25T17:40:01.123Z\"}",
+                EventJson.line(EventJson.of(r, null, AT)));
     }
 
     @Test

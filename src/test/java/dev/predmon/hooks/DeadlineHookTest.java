@@ -15,7 +15,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 class DeadlineHookTest {
 
     private static MonitorEvent.Warning warning(Survival.Estimate e) {
-        return new MonitorEvent.Warning(120, 3500, List.of(), 64.5, 40, Clock.TICKS, 0, WarningRule.FORECAST, null,
+        return new MonitorEvent.Warning(120, 3500, List.of(), null, 40, Clock.TICKS, 0, WarningRule.FORECAST, null,
                 "pending", MonitorEvent.Clause.DEADLINE, null, "navigation-in-time", e);
     }
 
@@ -24,6 +24,8 @@ class DeadlineHookTest {
         Map<String, String> env = HookEnvironment.of("r1.log", warning(new Survival.Estimate(0.6249, 20, 5, 2, false)));
         assertEquals("navigation-in-time", env.get("PREDMON_PROPERTY"));
         assertEquals("0.62", env.get("PREDMON_PROBABILITY"));
+        assertEquals("", env.get("PREDMON_VALUE"), "a bounded response has no value");
+        assertEquals("", env.get("PREDMON_BATTERY"));
         Map<String, String> novel = HookEnvironment.of("r1.log",
                 warning(new Survival.Estimate(Double.NaN, 66, 0, 0, true)));
         assertEquals("", novel.get("PREDMON_PROBABILITY"), "no evidence, no number");

@@ -1,21 +1,18 @@
 package dev.predmon.learn;
 
-import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.Survival;
 import dev.predmon.parse.RecordKind;
-import dev.predmon.pipeline.LogTrace;
-import dev.predmon.pipeline.RunTiming;
 import dev.predmon.property.Deadline;
 import dev.predmon.property.Event;
 import dev.predmon.property.RecordMatch;
 import dev.predmon.property.Response;
 import dev.predmon.property.Scope;
+import dev.predmon.replay.ReplayedRun;
+import dev.predmon.replay.ReplayedRun.Obligation;
 import org.junit.jupiter.api.Test;
 
-import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.IntStream;
@@ -25,8 +22,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The deadline rule chosen by cross-validation on a handful of navigations with a deadline of 10 ticks, whose
- * forecasts are worked out by hand below.
+ * The deadline rule chosen by cross-validation on a handful of held-out navigations with a deadline of 10 ticks, as
+ * the replay of their logs forecast them; their forecasts are worked out by hand below.
  */
 class DeadlineTrainingTest {
 
@@ -37,8 +34,8 @@ class DeadlineTrainingTest {
             new Deadline(10, Deadline.Unit.TICKS, null));
 
     /**
-     * Two logs, two folds. Each log holds a navigation that arrived after 2 ticks (forecast after ticks 0 and 1) and
-     * one that was still pending at tick 11, past its deadline (forecast after ticks 0 to 10). Each fold's training
+     * Two logs, two folds. Each log holds a navigation that arrived after 2 ticks (forecast at ticks 0 and 1) and
+     * one that was still pending at tick 11, past its deadline (forecast at ticks 0 to 10). Each fold's training
      * obligations are then the other log's: discharged at 2, censored at 11, so S(10) = 1/2 and, with the prior of 2
      * runs at that base rate, P(miss) = (2 * 1/2 + 2 * 1/2) / 4 = 0.5 while both are pending (ticks 0 and 1) and
      * (1 * 1 + 2 * 1/2) / 3 = 2/3 once only the censored one is (ticks 2 to 10). The navigations that arrived peak
@@ -46,12 +43,8 @@ class DeadlineTrainingTest {
      */
     @Test
     void heldOutNavigationsChooseAThresholdBetweenTheArrivedAndTheMissedOnes() {
-        List<ScenarioSpec> specs = List.of(spec(Path.of("a.log"), Path.of("b.log")));
-        Map<Path, LogTrace> traces = Map.of(Path.of("a.log"), log("a.log", arrived(2), missed()),
-                Path.of("b.log"), log("b.log", arrived(2), missed()));
-        Map<Path, Integer> folds = ForecastTraining.folds(ForecastTraining.present(specs, traces));
-        assertEquals(Map.of(Path.of("a.log"), 0, Path.of("b.log"), 1), folds);
-        List<DeadlineTraining.HeldOut> judged = DeadlineTraining.heldOut(ID, specs, traces, folds, 2);
+        HeldOutFolds folds = twoFolds(List.of(arrived(2), missed()), List.of(arrived(2), missed()));
+        List<DeadlineTraining.HeldOut> judged = DeadlineTraining.heldOut(ID, folds);
         assertEquals(4, judged.size());
         for (DeadlineTraining.HeldOut h : judged) {
             assertEquals(h.missed() ? 2.0 / 3 : 0.5, h.peak(), 1e-12, h.toString());
@@ -76,11 +69,8 @@ class DeadlineTrainingTest {
     /** Without a missed deadline among the held-out navigations there is nothing to choose: the default, unvalidated. */
     @Test
     void noMissMeansTheDefaultRuleAndSaysSo() {
-        List<ScenarioSpec> specs = List.of(spec(Path.of("a.log"), Path.of("b.log")));
-        Map<Path, LogTrace> traces = Map.of(Path.of("a.log"), log("a.log", arrived(2), arrived(3)),
-                Path.of("b.log"), log("b.log", arrived(4), arrived(2)));
-        DeadlineRule rule = DeadlineTraining.rule(DeadlineTraining.heldOut(ID, specs, traces,
-                ForecastTraining.folds(ForecastTraining.present(specs, traces)), 2));
+        DeadlineRule rule = DeadlineTraining.rule(DeadlineTraining.heldOut(ID,
+                twoFolds(List.of(arrived(2), arrived(3)), List.of(arrived(4), arrived(2)))));
         assertFalse(rule.validated());
         assertEquals(0.5, rule.threshold());
         assertEquals(DeadlineRule.DEFAULT.calibration(), rule.calibration());
@@ -92,39 +82,60 @@ class DeadlineTrainingTest {
         assertTrue(rule.warns(s.estimate(7, 10), 7, 10, s));
     }
 
-    /** A navigation censored before its deadline (its run ended) has no known outcome and is not judged. */
+    /**
+     * A navigation let go before its deadline (its scope closed) has no known outcome and is not judged; one whose
+     * fold has no training obligation has no forecast and is not judged either.
+     */
     @Test
     void aNavigationLetGoBeforeItsDeadlineIsNotJudged() {
-        List<ScenarioSpec> specs = List.of(spec(Path.of("a.log"), Path.of("b.log")));
-        RunTiming.Obligation ended = new RunTiming.Obligation(ID, 5, false, 10, steps(5));
-        Map<Path, LogTrace> traces = Map.of(Path.of("a.log"), log("a.log", arrived(2), ended),
-                Path.of("b.log"), log("b.log", arrived(2), missed()));
-        assertEquals(3, DeadlineTraining.heldOut(ID, specs, traces, ForecastTraining.folds(ForecastTraining.present(specs, traces)), 2).size());
+        Obligation ended = new Obligation(NAVIGATION, steps(5, TRAINING), 5, false, 5, 5, Double.NaN);
+        assertEquals(3, DeadlineTraining.heldOut(ID, twoFolds(List.of(arrived(2), ended),
+                List.of(arrived(2), missed()))).size());
+        HeldOutFolds untrained = new HeldOutFolds(2, List.of(fold(0, List.of(arrived(2))),
+                new HeldOutFolds.Fold(1, 0.5, Map.of(), true, List.of(run(List.of(missed()))))));
+        assertEquals(1, DeadlineTraining.heldOut(ID, untrained).size());
     }
 
-    private static ScenarioSpec spec(Path... logs) {
-        return new ScenarioSpec("runs", false, "", List.of(logs));
+    /** The novelty clause's warning, as the replay tells it, is the obligation's catch whatever the threshold. */
+    @Test
+    void anObligationTheNoveltyClauseWarnedIsCaughtWhereItWarned() {
+        Obligation stuck = new Obligation(NAVIGATION, steps(11, TRAINING), 11, false, 11, 11, 7);
+        List<DeadlineTraining.HeldOut> judged = DeadlineTraining.heldOut(ID,
+                twoFolds(List.of(arrived(2), stuck), List.of(arrived(2), missed())));
+        assertEquals(List.of(Double.NaN, 7.0, Double.NaN, Double.NaN),
+                judged.stream().map(DeadlineTraining.HeldOut::caughtAt).toList());
     }
 
-    private static RunTiming.Obligation arrived(int ticks) {
-        return new RunTiming.Obligation(ID, ticks, true, 10, steps(ticks));
+    /** Each fold's training obligations: one discharged at 2 ticks, one censored at 11. */
+    private static final Survival TRAINING = new Survival(new double[] {2}, new double[] {11});
+
+    /** Two folds, each holding out one log's navigations, each trained on the other's ({@link #TRAINING}). */
+    private static HeldOutFolds twoFolds(List<Obligation> a, List<Obligation> b) {
+        return new HeldOutFolds(2, List.of(fold(0, a), fold(1, b)));
     }
 
-    private static RunTiming.Obligation missed() {
-        return new RunTiming.Obligation(ID, 11, false, 10, steps(11));
+    private static HeldOutFolds.Fold fold(int index, List<Obligation> held) {
+        return new HeldOutFolds.Fold(index, 0.5, Map.of(ID, TRAINING), true, List.of(run(held)));
     }
 
-    /** Pending after the records at ticks 0 to {@code duration - 1}: closed at the record of tick {@code duration}. */
-    private static double[] steps(int duration) {
-        return IntStream.range(0, duration).asDoubleStream().toArray();
+    private static HeldOutRun run(List<Obligation> obligations) {
+        return new HeldOutRun(false, List.of(), List.of(), Double.NaN, Double.NaN, obligations);
     }
 
-    private static LogTrace log(String name, RunTiming.Obligation... obligations) {
-        List<IoPair> pairs = List.of(new IoPair("goTo", "ok", null, null));
-        RunTiming timing = new RunTiming(new double[] {0}, new double[] {Double.NaN}, Double.NaN, 20, Double.NaN,
-                "ticks", List.of(), List.of(), List.of(obligations));
-        List<LogTrace.Run> runs = new ArrayList<>();
-        runs.add(new LogTrace.Run(0, 1, pairs, false, Map.of(), timing));
-        return new LogTrace(Path.of(name), pairs, List.of(), 1, 1, 1, Map.of(), runs, 1);
+    private static Obligation arrived(int ticks) {
+        return new Obligation(NAVIGATION, steps(ticks, TRAINING), ticks, true, ticks, ticks, Double.NaN);
+    }
+
+    private static Obligation missed() {
+        return new Obligation(NAVIGATION, steps(11, TRAINING), 11, false, 11, 11, Double.NaN);
+    }
+
+    /**
+     * The forecasts of an obligation judged at ticks 0 to {@code duration - 1}, as the monitor makes them from
+     * {@code survival}: closed at the record of tick {@code duration}.
+     */
+    private static List<ReplayedRun.Step> steps(int duration, Survival survival) {
+        return IntStream.range(0, duration).mapToObj(t -> new ReplayedRun.Step(survival.estimate(t, 10), t, t, t))
+                .toList();
     }
 }

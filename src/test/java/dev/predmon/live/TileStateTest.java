@@ -186,9 +186,11 @@ class TileStateTest {
         assertEquals("ok", s.get("state").asText(), "it holds again");
         assertTrue(s.get("recovered").asBoolean());
         assertEquals("property", s.get("recovery").get("cause").asText());
-        assertEquals(19.95, s.get("violation").get("battery").asDouble(), "the violation stays");
+        assertEquals(19.95, s.get("violation").get("value").asDouble(), "the violation stays");
         assertEquals(List.of("violation", "recovered"), moments(s));
-        assertEquals(96.7, s.get("history").get(1).get("battery").asDouble());
+        assertEquals(96.7, s.get("history").get(1).get("value").asDouble());
+        assertEquals(96.7, s.get("recovery").get("value").asDouble());
+        assertEquals(96.7, s.get("recovery").get("battery").asDouble(), "the older name stays");
         t.record(level(40, 12));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(40, 50, "battery", 12, 96.7, Clock.SECONDS, 0)));
         s = snap(b, "r.log");

@@ -73,7 +73,11 @@ class TileTest {
         s = snap(b, "robot.log");
         assertEquals("red", s.get("light").asText());
         assertEquals(5.0, s.get("lead").asDouble(), 1e-9);
-        assertEquals(18.0, s.get("battery").asDouble());
+        assertEquals(18.0, s.get("value").asDouble());
+        for (JsonNode o : List.of(s, s.get("warning"), s.get("violation"))) {
+            assertEquals(o.get("value"), o.get("battery"), "the older name of value stays in /status: " + o);
+        }
+        assertEquals(18.0, s.get("violation").get("value").asDouble());
         assertEquals(2, s.get("series").size());
         assertEquals(List.of("warning", "violation"), events(s));
     }

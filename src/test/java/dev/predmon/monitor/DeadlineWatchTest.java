@@ -154,7 +154,7 @@ class DeadlineWatchTest {
     /** A checker of the navigation whose obligations' ends {@code w} hears, as the safety monitor wires them. */
     private static PropertyChecker checker(DeadlineWatch w) {
         PropertyChecker c = new PropertyChecker(List.<Property>of(NAVIGATION), (i, p, v) -> { });
-        c.onObligations((i, p, d, discharged) -> w.closed(i, discharged));
+        c.onObligations((i, p, d, discharged) -> w.closed(i, d, discharged));
         return c;
     }
 

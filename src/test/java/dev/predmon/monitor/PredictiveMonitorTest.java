@@ -76,7 +76,7 @@ class PredictiveMonitorTest {
                 .map(e -> (MonitorEvent.Violation) e).findFirst().orElseThrow();
         assertEquals(List.of("depleted"), w.scenarios());
         // Recharge reached the station at medium_four; the depleted run's next level (33, medium_three) is new.
-        assertEquals(33.0, w.battery(), 1e-9);
+        assertEquals(33.0, w.value(), 1e-9);
         assertEquals(50.0, w.time(), 0.01);
         assertEquals(18.0, v.value(), 1e-9);
         assertTrue(w.time() < v.time());

@@ -193,7 +193,7 @@ class HtmlReportTest {
 
     private static RunResult withForecast(RunResult r, RunResult.ForecastTrace f) {
         return new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(), r.warningTime(), r.warningLine(),
-                r.warningScenarios(), r.batteryAtWarning(), r.violationTime(), r.lead(), r.noMatch(), r.noMatchTime(),
+                r.warningScenarios(), r.valueAtWarning(), r.violationTime(), r.lead(), r.noMatch(), r.noMatchTime(),
                 r.records(), r.pairs(), r.problems(), r.eliminations(), r.safetyObserved(), r.unit(), r.sudden(),
                 r.start(), r.nearBound(), r.beforeViolation(), f);
     }

@@ -66,7 +66,7 @@ class RunPlotTest {
         RunResult r = JudgedRuns.run("logs/depleted/depleted-1.log", true, warning, violation, noMatch, 0);
         double shift = start - JudgedRuns.START;
         RunResult moved = new RunResult(r.scenario(), true, r.log(), 0, r.verdict(), shift(r.warningTime(), shift),
-                r.warningLine(), r.warningScenarios(), r.batteryAtWarning(), shift(r.violationTime(), shift), r.lead(),
+                r.warningLine(), r.warningScenarios(), r.valueAtWarning(), shift(r.violationTime(), shift), r.lead(),
                 r.noMatch(), shift(r.noMatchTime(), shift), 1, 1, 0, List.of(), true, clock.unit(), false, start, 0, null);
         return RunView.of(1, moved);
     }
@@ -129,7 +129,7 @@ class RunPlotTest {
         RunResult.ForecastTrace f = new RunResult.ForecastTrace(List.of(0.2, 0.2, 0.9), null, null, 0.25, 0.6, null,
                 List.of(0.0, 10.0, 20.0));
         RunView withP = RunView.of(1, new RunResult(r.scenario(), r.faulty(), r.log(), r.fold(), r.verdict(),
-                r.warningTime(), r.warningLine(), r.warningScenarios(), r.batteryAtWarning(), r.violationTime(),
+                r.warningTime(), r.warningLine(), r.warningScenarios(), r.valueAtWarning(), r.violationTime(),
                 r.lead(), r.noMatch(), r.noMatchTime(), r.records(), r.pairs(), r.problems(), r.eliminations(),
                 r.safetyObserved(), r.unit(), r.sudden(), r.start(), r.nearBound(), r.beforeViolation(), f));
         assertFalse(RunPlot.svg(plain, t, RULE).contains("class=\"prob\""), "no forecast, no probability");

@@ -2,7 +2,6 @@ package dev.predmon.abstraction.file;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.abstraction.file.AbstractionValidator.Invalid;
-import dev.predmon.parse.RecordKind;
 import dev.predmon.property.Absence;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Condition;
@@ -10,7 +9,6 @@ import dev.predmon.property.Deadline;
 import dev.predmon.property.Event;
 import dev.predmon.property.Precedence;
 import dev.predmon.property.Property;
-import dev.predmon.property.RecordMatch;
 import dev.predmon.property.Response;
 import dev.predmon.property.Scope;
 import dev.predmon.property.UnderWay;
@@ -18,13 +16,21 @@ import dev.predmon.property.ValueReader;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.Iterator;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Pattern;
+
+import static dev.predmon.abstraction.file.PropertyParts.event;
+import static dev.predmon.abstraction.file.PropertyParts.keys;
+import static dev.predmon.abstraction.file.PropertyParts.line;
+import static dev.predmon.abstraction.file.PropertyParts.need;
+import static dev.predmon.abstraction.file.PropertyParts.number;
+import static dev.predmon.abstraction.file.PropertyParts.object;
+import static dev.predmon.abstraction.file.PropertyParts.scope;
+import static dev.predmon.abstraction.file.PropertyParts.text;
+import static dev.predmon.abstraction.file.PropertyParts.value;
 
 /**
  * The {@code properties} list of an abstraction file: read into {@link Property} values with each problem at its JSON
@@ -45,13 +51,25 @@ final class PropertySpecs {
 
     private static final Pattern ID = Pattern.compile("[a-z0-9][a-z0-9_-]{0,39}");
     private static final Set<String> COMMON = Set.of("id", "name", "kind", "action", "description", "scope");
-    private static final Map<String, Set<String>> KEYS = Map.of(
-            "bound", Set.of("value", "floor", "ceiling", "underWay"),
-            "absence", Set.of("event"),
-            "response", Set.of("trigger", "response", "cancelledBy", "within"),
-            "precedence", Set.of("first", "then"));
-    private static final Set<String> MATCH = Set.of("kind", "protocol", "command", "from", "to", "argument", "reply");
-    private static final Set<String> VALUE = Set.of("protocol", "command", "from", "to");
+    /** Every kind by the name the file gives it: adding a kind is adding it here. */
+    private static final Map<String, Kind> KINDS = Map.of(
+            "bound", new Kind(Set.of("value", "floor", "ceiling", "underWay"), PropertySpecs::bound),
+            "absence", new Kind(Set.of("event"), (node, at, id, name, action, scope) -> new Absence(id, name, action,
+                    scope, event(need(node, at, "event"), at + "/event"))),
+            "response", new Kind(Set.of("trigger", "response", "cancelledBy", "within"), PropertySpecs::response),
+            "precedence", new Kind(Set.of("first", "then"), (node, at, id, name, action, scope) -> new Precedence(id,
+                    name, action, scope, event(need(node, at, "first"), at + "/first"),
+                    event(need(node, at, "then"), at + "/then"))));
+
+    /** Reads a property of one kind from its own keys, the common ones read already. */
+    @FunctionalInterface
+    private interface Reader {
+        Property read(JsonNode node, String at, String id, String name, String action, Scope scope) throws Invalid;
+    }
+
+    /** A kind of property: the keys of its own, and how to read them. */
+    private record Kind(Set<String> keys, Reader reader) {
+    }
 
     private PropertySpecs() {
     }
@@ -79,12 +97,12 @@ final class PropertySpecs {
     private static Property property(JsonNode node, String at) throws Invalid {
         object(node, at, "a property: an object with id, name and kind");
         String kind = text(node, at, "kind", true);
-        Set<String> own = KEYS.get(kind);
+        Kind own = KINDS.get(kind);
         if (own == null) {
-            throw new Invalid(at + "/kind", "kind '" + kind + "' is not one of " + new TreeSet<>(KEYS.keySet()));
+            throw new Invalid(at + "/kind", "kind '" + kind + "' is not one of " + new TreeSet<>(KINDS.keySet()));
         }
         Set<String> allowed = new TreeSet<>(COMMON);
-        allowed.addAll(own);
+        allowed.addAll(own.keys());
         keys(node, at, allowed);
         String id = text(node, at, "id", true);
         if (!ID.matcher(id).matches()) {
@@ -95,13 +113,7 @@ final class PropertySpecs {
         String action = node.has("action") ? line(node, at, "action", AbstractionValidator.MAX_ACTION) : null;
         text(node, at, "description", false);
         Scope scope = node.has("scope") ? scope(node.get("scope"), at + "/scope") : Scope.GLOBAL;
-        return switch (kind) {
-            case "bound" -> bound(node, at, id, name, action, scope);
-            case "absence" -> new Absence(id, name, action, scope, event(need(node, at, "event"), at + "/event"));
-            case "precedence" -> new Precedence(id, name, action, scope, event(need(node, at, "first"), at + "/first"),
-                    event(need(node, at, "then"), at + "/then"));
-            default -> response(node, at, id, name, action, scope);
-        };
+        return own.reader().read(node, at, id, name, action, scope);
     }
 
     private static Bound bound(JsonNode node, String at, String id, String name, String action, Scope scope)
@@ -219,134 +231,4 @@ final class PropertySpecs {
         return new Deadline(amount, unit, null);
     }
 
-    private static Scope scope(JsonNode node, String at) throws Invalid {
-        object(node, at, "a scope: {\"from\": event, \"until\": event}");
-        keys(node, at, Set.of("from", "until"));
-        return new Scope(event(need(node, at, "from"), at + "/from"), event(need(node, at, "until"), at + "/until"));
-    }
-
-    private static ValueReader value(JsonNode node, String at) throws Invalid {
-        object(node, at, "a value: {\"protocol\": ..., \"command\": ...} with optional from and to ports");
-        keys(node, at, VALUE);
-        String from = text(node, at, "from", false);
-        String to = text(node, at, "to", false);
-        return new ValueReader(text(node, at, "protocol", true), text(node, at, "command", true),
-                from == null ? "" : from, to == null ? "" : to);
-    }
-
-    private static Event event(JsonNode node, String at) throws Invalid {
-        List<RecordMatch> matches = new ArrayList<>();
-        if (node.isArray()) {
-            if (node.isEmpty()) {
-                throw new Invalid(at, "expected at least one record matcher");
-            }
-            for (int i = 0; i < node.size(); i++) {
-                matches.add(match(node.get(i), at + "/" + i));
-            }
-        } else {
-            matches.add(match(node, at));
-        }
-        return new Event(matches);
-    }
-
-    private static RecordMatch match(JsonNode node, String at) throws Invalid {
-        object(node, at, "an event: a record matcher such as {\"protocol\": \"GoTo\", \"command\": \"getStatus\","
-                + " \"reply\": \"3\"}, or a list of them");
-        keys(node, at, MATCH);
-        if (node.isEmpty()) {
-            throw new Invalid(at, "an event needs at least one of " + new TreeSet<>(MATCH));
-        }
-        RecordKind kind = null;
-        String k = text(node, at, "kind", false);
-        if (k != null) {
-            kind = switch (k.toLowerCase(Locale.ROOT)) {
-                case "command" -> RecordKind.COMMAND;
-                case "reply" -> RecordKind.REPLY;
-                case "tick" -> RecordKind.TICK;
-                default -> throw new Invalid(at + "/kind", "kind '" + k + "' is not one of command, reply, tick");
-            };
-        }
-        return new RecordMatch(kind, text(node, at, "protocol", false), text(node, at, "command", false),
-                text(node, at, "from", false), text(node, at, "to", false), strings(node, at, "argument"),
-                strings(node, at, "reply"));
-    }
-
-    private static List<String> strings(JsonNode node, String at, String key) throws Invalid {
-        JsonNode v = node.get(key);
-        if (v == null) {
-            return null;
-        }
-        List<String> values = new ArrayList<>();
-        if (v.isTextual()) {
-            values.add(v.textValue());
-        } else if (v.isArray() && !v.isEmpty()) {
-            for (int i = 0; i < v.size(); i++) {
-                if (!v.get(i).isTextual()) {
-                    throw new Invalid(at + "/" + key + "/" + i, "expected a string");
-                }
-                values.add(v.get(i).textValue());
-            }
-        } else {
-            throw new Invalid(at + "/" + key, "expected a string or a non-empty list of strings (any of them)");
-        }
-        return values;
-    }
-
-    private static void object(JsonNode node, String at, String what) throws Invalid {
-        if (node == null || !node.isObject()) {
-            throw new Invalid(at, "expected " + what);
-        }
-    }
-
-    private static void keys(JsonNode node, String at, Set<String> allowed) throws Invalid {
-        for (Iterator<String> it = node.fieldNames(); it.hasNext(); ) {
-            String key = it.next();
-            if (!allowed.contains(key)) {
-                throw new Invalid(at + "/" + LocatedJson.escape(key), "unknown key '" + key + "' (allowed: "
-                        + String.join(", ", new TreeSet<>(allowed)) + ")");
-            }
-        }
-    }
-
-    private static JsonNode need(JsonNode node, String at, String key) throws Invalid {
-        JsonNode v = node.get(key);
-        if (v == null || v.isNull()) {
-            throw new Invalid(at, "missing required key '" + key + "'");
-        }
-        return v;
-    }
-
-    private static String text(JsonNode node, String at, String key, boolean required) throws Invalid {
-        JsonNode v = node.get(key);
-        if (v == null || v.isNull()) {
-            if (required) {
-                throw new Invalid(at, "missing required key '" + key + "'");
-            }
-            return null;
-        }
-        if (!v.isTextual() || v.textValue().isBlank()) {
-            throw new Invalid(at + "/" + key, "expected a non-blank string");
-        }
-        return v.textValue();
-    }
-
-    /** A string of one line of at most {@code max} characters. */
-    private static String line(JsonNode node, String at, String key, int max) throws Invalid {
-        String s = text(node, at, key, true);
-        if (s.length() > max || s.chars().anyMatch(Character::isISOControl)) {
-            throw new Invalid(at + "/" + key, "'" + key + "' must be one line of at most " + max + " characters");
-        }
-        return s;
-    }
-
-    private static Double number(JsonNode node, String at, String key) throws Invalid {
-        JsonNode v = node.get(key);
-        if (v == null || v.isNull()) {
-            return null;
-        }
-        if (!v.isNumber() || !Double.isFinite(v.doubleValue())) {
-            throw new Invalid(at + "/" + key, "expected a finite number");
-        }
-        return v.doubleValue();
-    }
 }

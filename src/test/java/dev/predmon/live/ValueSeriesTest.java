@@ -7,11 +7,11 @@ import java.util.List;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-class BatterySeriesTest {
+class ValueSeriesTest {
 
     @Test
     void keepsEveryReadingUntilFullThenThinsEvenlyKeepingTheFirstAndTheLatest() {
-        BatterySeries s = new BatterySeries(8);
+        ValueSeries s = new ValueSeries(8);
         for (int i = 0; i < 8; i++) {
             s.add(i, 100 - i);
         }

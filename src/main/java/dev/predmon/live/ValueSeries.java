@@ -4,12 +4,12 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The property's readings over one run (the battery over time), in constant memory for a run of any length: once
- * {@code capacity} points are kept, every other one is dropped and from then on only every second reading is kept
- * (then every fourth, ...). The latest reading is always part of {@link #points()}, so the plot ends where the
- * battery is now. A plot a few hundred pixels wide needs no more.
+ * The property's readings over one run (e.g. the battery level over time), in constant memory for a run of any
+ * length: once {@code capacity} points are kept, every other one is dropped and from then on only every second
+ * reading is kept (then every fourth, ...). The latest reading is always part of {@link #points()}, so the plot ends where the
+ * value is now. A plot a few hundred pixels wide needs no more.
  */
-final class BatterySeries {
+final class ValueSeries {
 
     private final int capacity;
     private final double[] times;
@@ -21,7 +21,7 @@ final class BatterySeries {
     private double lastValue;
     private boolean lastKept;
 
-    BatterySeries(int capacity) {
+    ValueSeries(int capacity) {
         if (capacity < 2 || capacity % 2 != 0) {
             throw new IllegalArgumentException("capacity must be even and at least 2, got " + capacity);
         }
