@@ -112,6 +112,20 @@ class BoundForecastCliTest {
         Matcher full = Pattern.compile("\nfull +24 +8 +(\\d+) ").matcher(r.out());
         assertTrue(full.find(), "every recharge run overcharges: " + r.out());
         assertTrue(Integer.parseInt(full.group(1)) > 0, r.out());
+        // and each bound's value forecast is scored per run in the block of the other properties' forecasts
+        Matcher reserveScore = scored("reserve").matcher(r.out());
+        assertTrue(reserveScore.find(), r.out());
+        assertEquals(violated, Integer.parseInt(reserveScore.group(1)), "the runs its table counts as violated");
+        Matcher fullScore = scored("full").matcher(r.out());
+        assertTrue(fullScore.find(), r.out());
+        assertEquals(8, Integer.parseInt(fullScore.group(1)), r.out());
+    }
+
+    /** The line of {@code property}'s value forecast in evaluate's text: its runs, violated ones, Brier scores. */
+    private static Pattern scored(String property) {
+        return Pattern.compile("\n  " + property + ": per run, 24 runs with forecasts, \\d+ forecasts, (\\d+) "
+                + "violated: Brier score \\d\\.\\d{3} \\(always saying the base rate: \\d\\.\\d{3}\\), expected "
+                + "calibration error \\d\\.\\d{3} ");
     }
 
     @Test
