@@ -4,6 +4,16 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.learn.ForecastTraining;
+import dev.predmon.learn.HeldOutFolds;
+import dev.predmon.learn.HeldOutRun;
+import dev.predmon.learn.ScenarioLayout;
+import dev.predmon.learn.ScenarioSpec;
+import dev.predmon.mealy.MealyAlphabet;
+import dev.predmon.pipeline.LogTrace;
+import dev.predmon.pipeline.Traces;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -11,6 +21,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -126,6 +138,37 @@ class BoundForecastCliTest {
         return Pattern.compile("\n  " + property + ": per run, 24 runs with forecasts, \\d+ forecasts, (\\d+) "
                 + "violated: Brier score \\d\\.\\d{3} \\(always saying the base rate: \\d\\.\\d{3}\\), expected "
                 + "calibration error \\d\\.\\d{3} ");
+    }
+
+    /**
+     * learn replays each held-out log once per fold for every property: the reserve's and the ceiling's held-out runs
+     * are the battery's runs of the same replays, each as the property saw them (its own violation).
+     */
+    @Test
+    void everyBoundIsJudgedOnTheSameHeldOutReplaysAsTheBattery() throws Exception {
+        Abstraction abstraction = AbstractionFiles.load(abstraction());
+        List<ScenarioSpec> specs = ScenarioLayout.scan(trainingLogs(), abstraction);
+        Map<Path, LogTrace> traces = Traces.readAll(specs.stream().flatMap(s -> s.logs().stream()).toList(),
+                abstraction);
+        HeldOutFolds held = ForecastTraining.heldOut(specs, traces, MealyAlphabet.inputs(abstraction), abstraction,
+                abstraction.confirm());
+        assertEquals(5, held.folds());
+        int runs = 0;
+        int reserveViolated = 0;
+        for (HeldOutFolds.Fold fold : held.judged()) {
+            assertEquals(Set.of("reserve", "full"), fold.bounds().keySet(), "fold " + fold.index());
+            for (HeldOutFolds.BoundFold b : fold.bounds().values()) {
+                assertEquals(fold.runs().size(), b.runs().size(), "the same held-out runs, fold " + fold.index());
+                assertTrue(b.baseRate() > 0 && b.baseRate() < 1, "trained on both outcomes: " + b.baseRate());
+            }
+            runs += fold.runs().size();
+            reserveViolated += (int) fold.bounds().get("reserve").runs().stream().filter(HeldOutRun::violated).count();
+        }
+        assertEquals(24, runs, "every training run held out once");
+        long inLogs = traces.values().stream().flatMap(t -> t.runs().stream())
+                .filter(r -> r.timing().violated("reserve")).count();
+        assertEquals(inLogs, reserveViolated, "labelled by the reserve's own violation");
+        assertTrue(reserveViolated > 8, "recharge runs cross the reserve and keep the battery's floor");
     }
 
     @Test
