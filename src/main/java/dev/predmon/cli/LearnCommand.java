@@ -79,7 +79,7 @@ final class LearnCommand implements Callable<Integer> {
         int machines = learned.stream().mapToInt(l -> l.machines().size()).sum();
         out.println("wrote " + models + ": " + machines + " machine(s) for " + learned.size() + " scenario(s), "
                 + "abstraction '" + abstraction.name() + "'");
-        result.forecast().scorecards().forEach(c -> c.lines().forEach(out::println));
+        result.forecast().allScorecards().forEach(c -> c.lines().forEach(out::println));
         out.flush();
         return ExitCodes.OK;
     }

@@ -135,7 +135,7 @@ final class WatchCommand implements Callable<Integer> {
                      session)) {
             if (set.forecast() != null) {
                 // How far to trust the models, once, before anything they say (and after what can refuse to start).
-                set.forecast().scorecards().forEach(c -> c.lines().forEach(l -> err.println("predmon: " + l)));
+                set.forecast().allScorecards().forEach(c -> c.lines().forEach(l -> err.println("predmon: " + l)));
             }
             sources.find().forEach(fleet::add);
             String stop = "end-of-file";

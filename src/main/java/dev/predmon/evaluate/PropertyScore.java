@@ -8,10 +8,11 @@ import java.util.Map;
 /**
  * How each of the abstraction's other properties (every one but the forecast's) fared on the judged runs: its
  * violations, how many a warning came before, its false alarms (runs that kept it but were warned about it), and the
- * lead. A deadline's warnings come from its forecast (how long the obligation has been pending against the training
- * runs'), and a property a faulty scenario's runs violate ({@code violates} in its {@code scenario.json}) is warned
- * of by the matching; a property without either (an absence, a precedence) is counted so its violations are seen.
- * How good each property's forecast was is {@link Reliability}'s score of its forecasts ({@link PropertyForecasts}).
+ * lead. A bound's warnings come from its own value forecast (learned from the training runs labelled by its own
+ * violation), a deadline's from its forecast (how long the obligation has been pending against the training runs'),
+ * and a property a faulty scenario's runs violate ({@code violates} in its {@code scenario.json}) is also warned of by
+ * the matching; a property without either (an absence, a precedence) is counted so its violations are seen. How good
+ * each property's forecast was is {@link Reliability}'s score of its forecasts ({@link PropertyForecasts}).
  *
  * <p>Beside them, the elapsed-time baseline, chosen by the same cross-validation: warn as soon as an obligation has
  * been pending longer than every training obligation of the fold's models. It is to a deadline what the raw-value

@@ -53,9 +53,9 @@ public record PropertyJson(String property, String name, String kind, String ver
         return verdicts.stream().map(PropertyJson::of).toList();
     }
 
-    /** Every property of the last run with its verdict and latest forecast ({@code last}: the forecast's, or null). */
-    public static List<PropertyJson> latest(List<PropertyStatus> statuses, Forecast last) {
-        return statuses.stream().map(s -> of(new PropertyVerdict(s.property(), s.verdict()), latest(s, last)))
+    /** Every property of the last run with its verdict and latest forecast. */
+    public static List<PropertyJson> latest(List<PropertyStatus> statuses) {
+        return statuses.stream().map(s -> of(new PropertyVerdict(s.property(), s.verdict()), latest(s)))
                 .toList();
     }
 
@@ -66,14 +66,15 @@ public record PropertyJson(String property, String name, String kind, String ver
     }
 
     /** As above, for the last run, each with its latest forecast: {@code ...: holds; no forecast: ...}. */
-    public static List<String> latestLines(List<PropertyStatus> statuses, Forecast last) {
+    public static List<String> latestLines(List<PropertyStatus> statuses) {
         return statuses.stream().map(s -> String.format(Locale.ROOT, "  %s (%s): %s; %s", s.property().id(),
-                s.property().name(), s.verdict().describe(), latest(s, last).words())).toList();
+                s.property().name(), s.verdict().describe(), latest(s).words())).toList();
     }
 
-    private static LatestJson latest(PropertyStatus s, Forecast last) {
+    private static LatestJson latest(PropertyStatus s) {
         String model = s.model().id();
         if (s.model() == PropertyStatus.Model.FORECAST) {
+            Forecast last = s.forecast();
             return last == null ? new LatestJson(model, null, null, null, false, "no forecast yet")
                     : new LatestJson(model, round(last.probability()), last.timeToViolation() == null ? null
                     : round(last.timeToViolation()), last.unit(), last.novel(),

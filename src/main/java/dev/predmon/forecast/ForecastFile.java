@@ -60,6 +60,24 @@ public final class ForecastFile {
             root.put(LEARN_ID, learnId);
         }
         root.put("unit", m.unit());
+        body(root, m);
+        if (!m.bounds().isEmpty()) {
+            ObjectNode bounds = root.putObject("bounds");
+            new TreeMap<>(m.bounds()).forEach((id, b) -> {
+                ObjectNode n = bounds.putObject(id);
+                n.put("side", b.side());
+                body(n, b.model());
+            });
+        }
+        try {
+            return JSON.writeValueAsString(root) + "\n";
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("a JSON tree does not write", e);
+        }
+    }
+
+    /** Everything of {@code m} but its format and unit, into {@code root}. */
+    private static void body(ObjectNode root, ForecastModel m) {
         number(root, "limit", m.limit());
         root.put("runs", m.runs());
         root.put("violating", m.violating());
@@ -88,11 +106,6 @@ public final class ForecastFile {
                 lows(n, s.lows());
             });
         });
-        try {
-            return JSON.writeValueAsString(root) + "\n";
-        } catch (JsonProcessingException e) {
-            throw new IllegalStateException("a JSON tree does not write", e);
-        }
     }
 
     /**
@@ -154,6 +167,33 @@ public final class ForecastFile {
         if (format != ForecastModel.FORMAT) {
             throw new IllegalArgumentException("format " + format + ", expected " + ForecastModel.FORMAT);
         }
+        String unit = required(root, "unit").asText();
+        ForecastModel m = body(root, format, unit);
+        JsonNode bounds = root.get("bounds");
+        if (bounds == null) {
+            return m;
+        }
+        if (!bounds.isObject()) {
+            throw new IllegalArgumentException("'bounds': expected an object");
+        }
+        Map<String, BoundModel> read = new TreeMap<>();
+        for (Iterator<Map.Entry<String, JsonNode>> it = bounds.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> e = it.next();
+            try {
+                if (!e.getValue().isObject()) {
+                    throw new IllegalArgumentException("expected an object");
+                }
+                read.put(e.getKey(), new BoundModel(required(e.getValue(), "side").asText(),
+                        body(e.getValue(), format, unit)));
+            } catch (IllegalArgumentException x) {
+                throw new IllegalArgumentException("'bounds/" + e.getKey() + "': " + x.getMessage(), x);
+            }
+        }
+        return m.withBounds(read);
+    }
+
+    /** The model {@link #body(ObjectNode, ForecastModel)} wrote into {@code root}. */
+    private static ForecastModel body(JsonNode root, int format, String unit) {
         Map<String, Map<Integer, StateStats>> states = new TreeMap<>();
         JsonNode machines = required(root, "states");
         for (Iterator<Map.Entry<String, JsonNode>> it = machines.fields(); it.hasNext(); ) {
@@ -203,7 +243,7 @@ public final class ForecastFile {
             throw new IllegalArgumentException("'threshold': " + root.get("threshold")
                     + " is not a probability (from 0 to 1)");
         }
-        return new ForecastModel(format, required(root, "unit").asText(), number(root, "limit"),
+        return new ForecastModel(format, unit, number(root, "limit"),
                 runs, violating, lows(root), threshold,
                 required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
                 starts, calibration, readScorecards(root), readObligations(root), readDeadlines(root));

@@ -1,7 +1,9 @@
 package dev.predmon.forecast;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * Everything the forecast learned from the training runs, stored beside the machines ({@code forecast.json}).
@@ -28,12 +30,16 @@ import java.util.Map;
  *                    the deadline forecast of that property ({@link Survival})
  * @param deadlines   by bounded-response property id, when its deadline forecast warns, chosen by cross-validation
  *                    over those obligations; a property without one has {@link DeadlineRule#DEFAULT}
+ * @param bounds      by id, every bound property but the one of {@code limit} (the abstraction's safety property): its
+ *                    own value forecast, learned as this one is from the runs labelled by its own violation
+ *                    ({@link BoundModel})
  */
 public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
                             double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
                             Calibration calibration, List<Scorecard> scorecards,
-                            Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines) {
+                            Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines,
+                            Map<String, BoundModel> bounds) {
 
     /** Current format. */
     public static final int FORMAT = 1;
@@ -48,6 +54,30 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         scorecards = List.copyOf(scorecards);
         obligations = Map.copyOf(obligations);
         deadlines = Map.copyOf(deadlines);
+        bounds = Map.copyOf(bounds);
+    }
+
+    /** A model without other bound properties' forecasts. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
+                         double threshold, String thresholdNote, boolean validated,
+                         Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
+                         Calibration calibration, List<Scorecard> scorecards,
+                         Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, scorecards, obligations, deadlines, Map.of());
+    }
+
+    /** Every property's scorecard: this model's, then each other bound property's by id. */
+    public List<Scorecard> allScorecards() {
+        List<Scorecard> all = new ArrayList<>(scorecards);
+        new TreeMap<>(bounds).values().forEach(b -> all.addAll(b.model().scorecards()));
+        return List.copyOf(all);
+    }
+
+    /** This model with {@code forecasts} as the other bound properties' forecasts, by property id. */
+    public ForecastModel withBounds(Map<String, BoundModel> forecasts) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, obligations, deadlines, forecasts);
     }
 
     /** A model whose deadline forecasts warn by the default rule. */
@@ -67,7 +97,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with {@code rules} as its deadline rules, by property id. */
     public ForecastModel withDeadlines(Map<String, DeadlineRule> rules) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, rules);
+                states, startInputs, calibration, scorecards, obligations, rules, bounds);
     }
 
     /** A model without deadline forecasts. */
@@ -146,19 +176,19 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs, calibration, scorecards, obligations, deadlines);
+                startInputs, calibration, scorecards, obligations, deadlines, bounds);
     }
 
     /** This model with another calibration (the threshold is left as it is). */
     public ForecastModel withCalibration(Calibration c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, c, scorecards, obligations, deadlines);
+                states, startInputs, c, scorecards, obligations, deadlines, bounds);
     }
 
     /** This model with {@code cards} as its scorecards. */
     public ForecastModel withScorecards(List<Scorecard> cards) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, cards, obligations, deadlines);
+                states, startInputs, calibration, cards, obligations, deadlines, bounds);
     }
 
     @Override
@@ -168,7 +198,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && lows.equals(m.lows)
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
                 && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration)
-                && scorecards.equals(m.scorecards) && obligations.equals(m.obligations) && deadlines.equals(m.deadlines);
+                && scorecards.equals(m.scorecards) && obligations.equals(m.obligations) && deadlines.equals(m.deadlines)
+                && bounds.equals(m.bounds);
     }
 
     @Override

@@ -37,6 +37,11 @@ public final class ForecastWords {
      * property reads and how fast it moves, and whether the run has done something new.
      */
     public static String evidence(Forecast f) {
+        return evidence(f, false);
+    }
+
+    /** As above, of a ceiling when {@code ceiling}: the training runs went as high as its value. */
+    public static String evidence(Forecast f, boolean ceiling) {
         StringBuilder b = new StringBuilder();
         switch (f.basis()) {
             case MATCHED -> b.append(f.violated()).append(" of ").append(f.runs())
@@ -50,7 +55,7 @@ public final class ForecastWords {
             default -> throw new IllegalStateException(f.basis().toString());
         }
         if (f.value() != null) {
-            b.append(" and went as low as ").append(fixed(f.value(), 2));
+            b.append(ceiling ? " and went as high as " : " and went as low as ").append(fixed(f.value(), 2));
         }
         b.append(" violated");
         if (f.drift() != null && f.value() != null) {

@@ -2,6 +2,8 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.BoundModel;
+import dev.predmon.forecast.BoundRuns;
 import dev.predmon.forecast.Calibration;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
@@ -10,6 +12,7 @@ import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -18,6 +21,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeMap;
 import java.util.function.Predicate;
 
 /**
@@ -44,7 +48,8 @@ public final class ForecastTraining {
     /**
      * The forecast of {@code machines} (by id), learned from the runs of {@code specs} in {@code traces}, with the
      * property's {@link Scorecard} from the same cross-validation. Each fold's held-out logs are replayed through
-     * {@code watch}'s own monitor ({@link HeldOutRun#replay}) with the models learned without them.
+     * {@code watch}'s own monitor ({@link HeldOutFolds}) with the models learned without them; every other bound
+     * property gets its forecast ({@link BoundModel}) from the same replays.
      *
      * @param abstraction the abstraction the traces were read with (tuned to the noise): its safety property is the
      *                    forecast's
@@ -63,8 +68,9 @@ public final class ForecastTraining {
     public static HeldOutFolds heldOut(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
                                        Alphabet<String> alphabet, Abstraction abstraction, int confirm)
             throws BadInputException {
-        return HeldOutFolds.replay(specs, traces, alphabet, abstraction, unit(runsOf(specs, traces, log -> true)),
-                limit(abstraction), confirm);
+        List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
+        return HeldOutFolds.replay(specs, traces, alphabet, abstraction, unit(runs), limit(abstraction),
+                sides(others(abstraction), runs), confirm);
     }
 
     /**
@@ -78,28 +84,81 @@ public final class ForecastTraining {
         List<LogTrace.Run> runs = runsOf(specs, traces, log -> true);
         String unit = unit(runs);
         ForecastModel stats = StatsLearner.learn(machines, runs, unit, limit);
+        List<Bound> others = others(abstraction);
+        Map<String, String> sides = sides(others, runs);
+        Map<String, BoundModel> boundStats = new TreeMap<>();
+        for (Bound b : others) {
+            String side = sides.get(b.id());
+            boundStats.put(b.id(), new BoundModel(side, StatsLearner.learn(machines, BoundRuns.view(b, side, runs),
+                    unit, BoundModel.limit(b, side))));
+        }
         if (heldOut.folds() == 0) {
-            return stats.withThreshold(ThresholdChoice.DEFAULT, "default " + ThresholdChoice.DEFAULT
-                    + ": too few logs to cross-validate", false);
+            String note = "default " + ThresholdChoice.DEFAULT + ": too few logs to cross-validate";
+            Map<String, BoundModel> bounds = new TreeMap<>();
+            boundStats.forEach((id, b) -> bounds.put(id, new BoundModel(b.side(),
+                    b.model().withThreshold(ThresholdChoice.DEFAULT, note, false))));
+            return stats.withThreshold(ThresholdChoice.DEFAULT, note, false).withBounds(bounds);
         }
         List<HeldOut> judged = new ArrayList<>();
+        Map<String, List<HeldOut>> boundJudged = new TreeMap<>();
+        others.forEach(b -> boundJudged.put(b.id(), new ArrayList<>()));
         for (HeldOutFolds.Fold fold : heldOut.judged()) {
             if (fold.bothOutcomes()) { // a fold that trains on one outcome only says nothing about where to draw the line
                 fold.runs().forEach(r -> judged.add(new HeldOut(fold.index(), r, fold.baseRate())));
             }
+            fold.bounds().forEach((id, b) -> b.runs().forEach(r -> boundJudged.get(id)
+                    .add(new HeldOut(fold.index(), r, b.baseRate()))));
         }
+        Map<String, BoundModel> bounds = new TreeMap<>();
+        for (Bound b : others) {
+            BoundModel m = boundStats.get(b.id());
+            bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), heldOut.folds(), unit,
+                    boundJudged.get(b.id()))));
+        }
+        return chosen(stats, property, heldOut.folds(), unit, judged).withBounds(bounds);
+    }
+
+    /**
+     * {@code stats} with the calibration, the threshold and the scorecard of {@code property} chosen on the held-out
+     * runs {@code judged}.
+     */
+    private static ForecastModel chosen(ForecastModel stats, String property, int used, String unit,
+                                        List<HeldOut> judged) {
         // The threshold is chosen on the calibrated scale, where even odds mean what they say.
         Calibration calibration = Calibration.fit(judged.stream().map(h -> new Calibration.Sample(
                 h.run().probabilities(), h.run().violated())).toList());
         ThresholdChoice.Choice c = ThresholdChoice.choose(judged.stream().map(h -> new ThresholdChoice.Peak(
                 calibration.apply(h.run().peak()), h.run().violated(), !Double.isNaN(h.run().warnedAt()))).toList());
-        List<Scorecard> cards = scorecards(property, heldOut.folds(), unit, judged);
+        List<Scorecard> cards = scorecards(property, used, unit, judged);
         if (!c.validated()) {
             return stats.withThreshold(c.threshold(), c.note(), false).withScorecards(cards);
         }
         double threshold = c.threshold();
         String note = String.format(Locale.ROOT, "%.2f %s", threshold, c.note());
         return stats.withCalibration(calibration).withThreshold(threshold, note, true).withScorecards(cards);
+    }
+
+    /**
+     * Every bound property of {@code abstraction} but its safety property, with a floor or a ceiling: each gets a value
+     * forecast of its own ({@link BoundModel}).
+     */
+    public static List<Bound> others(Abstraction abstraction) {
+        String safety = abstraction.safety().map(Bound::id).orElse(null);
+        List<Bound> out = new ArrayList<>();
+        for (Property p : abstraction.properties()) {
+            if (p instanceof Bound b && !b.id().equals(safety)
+                    && (b.hasFloor() || b.ceiling() != Double.POSITIVE_INFINITY)) {
+                out.add(b);
+            }
+        }
+        return out;
+    }
+
+    /** By id, the side of each of {@code others} its forecast predicts, as {@code runs} cross it. */
+    static Map<String, String> sides(List<Bound> others, List<LogTrace.Run> runs) {
+        Map<String, String> sides = new TreeMap<>();
+        others.forEach(b -> sides.put(b.id(), BoundRuns.side(b, runs)));
+        return sides;
     }
 
     /** What the runs' times count: the first run's unit, seconds without a run. */

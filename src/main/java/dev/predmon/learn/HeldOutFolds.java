@@ -2,6 +2,8 @@ package dev.predmon.learn;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.BoundModel;
+import dev.predmon.forecast.BoundRuns;
 import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.StatsLearner;
@@ -10,7 +12,9 @@ import dev.predmon.mealy.MealyTrace;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
+import dev.predmon.property.Bound;
 import net.automatalib.alphabet.Alphabet;
+import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -23,17 +27,19 @@ import java.util.function.Predicate;
 /**
  * The cross-validation's held-out replays, made once for every training that chooses on them: for each fold
  * ({@link ForecastTraining#folds}), the scenarios' machines and the forecast statistics learned without its logs, and
- * its logs replayed through {@code watch}'s own monitor with them ({@link HeldOutRun#replay}), one replay per held-out
- * log. The forecast's threshold ({@link ForecastTraining}) and every deadline's ({@link DeadlineTraining}) are chosen
- * on the same replays, so on the forecasts {@code watch} makes.
+ * its logs replayed through {@code watch}'s own monitor with them ({@link HeldOutRun#replayAll}), one replay per
+ * held-out log. The forecast's threshold ({@link ForecastTraining}), every other bound property's ({@link BoundModel})
+ * and every deadline's ({@link DeadlineTraining}) are chosen on the same replays, so on the forecasts {@code watch}
+ * makes.
  *
- * <p>The replayed models warn by the rules' other clauses alone (the forecast's threshold is {@link
- * HeldOutRun#NEVER}, every deadline's {@link DeadlineRule#NOVELTY_ONLY}): what those clauses catch is caught whatever
- * threshold is chosen after.
+ * <p>The replayed models warn by the rules' other clauses alone (the forecast's threshold and every bound property's
+ * are {@link HeldOutRun#NEVER}, every deadline's {@link DeadlineRule#NOVELTY_ONLY}): what those clauses catch is caught
+ * whatever threshold is chosen after.
  *
  * @param folds the folds used (0 with fewer than two logs: nothing to cross-validate)
  * @param judged every fold that was replayed, in fold order; a fold whose training runs have neither both outcomes
- *               nor an obligation says nothing and is left out
+ *               (of the forecast's property or of another bound property) nor an obligation says nothing and is left
+ *               out
  */
 public record HeldOutFolds(int folds, List<Fold> judged) {
 
@@ -51,12 +57,34 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
      * @param bothOutcomes  whether its training runs both violated the forecast's property and held it: only then does
      *                      it say where to draw the forecast's line
      * @param runs          its held-out runs, each of the runs its scenario learns from, in log order
+     * @param bounds        by id, every other bound property whose training runs (as it sees them, {@link BoundRuns})
+     *                      both violated and held it: the same held-out runs as it saw them in the same replays
      */
     public record Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
-                       List<HeldOutRun> runs) {
+                       List<HeldOutRun> runs, Map<String, BoundFold> bounds) {
 
         public Fold {
             obligations = Map.copyOf(obligations);
+            runs = List.copyOf(runs);
+            bounds = Map.copyOf(bounds);
+        }
+
+        /** A fold with no bound property of its own forecast. */
+        public Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
+                    List<HeldOutRun> runs) {
+            this(index, baseRate, obligations, bothOutcomes, runs, Map.of());
+        }
+    }
+
+    /**
+     * One bound property in one fold.
+     *
+     * @param baseRate the base rate of the fold's training runs as the property sees them
+     * @param runs     the fold's held-out runs as the property saw them: its own violation, forecasts and warning
+     */
+    public record BoundFold(double baseRate, List<HeldOutRun> runs) {
+
+        public BoundFold {
             runs = List.copyOf(runs);
         }
     }
@@ -68,11 +96,14 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
      * @param abstraction the abstraction the traces were read with (tuned to the noise)
      * @param unit        what the runs' times count
      * @param limit       the forecast property's threshold, NaN without one
+     * @param sides       by id, the side of every other bound property its forecast predicts
+     *                    ({@link ForecastTraining#others}, {@link BoundRuns#side})
      * @param confirm     the pairs a faulty machine must match after the last nominal one is eliminated
      */
     public static HeldOutFolds replay(List<ScenarioSpec> specs, Map<Path, LogTrace> traces,
                                       Alphabet<String> alphabet, Abstraction abstraction, String unit, double limit,
-                                      int confirm) throws BadInputException {
+                                      Map<String, String> sides, int confirm) throws BadInputException {
+        List<Bound> others = ForecastTraining.others(abstraction);
         List<ScenarioSpec> read = ForecastTraining.present(specs, traces);
         Map<Path, Integer> folds = ForecastTraining.folds(read);
         if (folds.isEmpty()) {
@@ -84,10 +115,16 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
             int fold = f;
             Predicate<Path> held = log -> folds.get(log) == fold;
             List<LogTrace.Run> training = ForecastTraining.runsOf(read, traces, held.negate());
-            boolean both = training.stream().anyMatch(LogTrace.Run::violated)
-                    && !training.stream().allMatch(LogTrace.Run::violated);
-            if (!both && StatsLearner.obligations(training).isEmpty()) {
-                continue; // nothing to draw a line with, for the forecast or for a deadline
+            boolean both = bothOutcomes(training);
+            Map<String, List<LogTrace.Run>> views = new TreeMap<>();
+            for (Bound b : others) {
+                List<LogTrace.Run> view = BoundRuns.view(b, sides.get(b.id()), training);
+                if (bothOutcomes(view)) {
+                    views.put(b.id(), view);
+                }
+            }
+            if (!both && views.isEmpty() && StatsLearner.obligations(training).isEmpty()) {
+                continue; // nothing to draw a line with, for the forecast, a bound property or a deadline
             }
             List<LearnedScenario> foldLearned = new ArrayList<>();
             for (ScenarioSpec s : read) {
@@ -97,27 +134,48 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
                     foldLearned.add(ScenarioLearner.learnSamples(s, samples, alphabet));
                 }
             }
-            ForecastModel stats = StatsLearner.learn(LearnedModels.machines(foldLearned), training, unit, limit);
+            Map<String, CompactMealy<String, String>> machines = LearnedModels.machines(foldLearned);
+            ForecastModel stats = StatsLearner.learn(machines, training, unit, limit);
             Map<String, DeadlineRule> noveltyOnly = new TreeMap<>();
             stats.obligations().keySet().forEach(id -> noveltyOnly.put(id, DeadlineRule.NOVELTY_ONLY));
-            ModelSet models = LearnedModels.modelSet(foldLearned, abstraction,
-                    stats.withThreshold(HeldOutRun.NEVER, "held out", true).withDeadlines(noveltyOnly));
+            Map<String, BoundModel> boundModels = new TreeMap<>();
+            for (Bound b : others) {
+                List<LogTrace.Run> view = views.get(b.id());
+                if (view != null) {
+                    String side = sides.get(b.id());
+                    boundModels.put(b.id(), new BoundModel(side, StatsLearner.learn(machines, view, unit,
+                            BoundModel.limit(b, side)).withThreshold(HeldOutRun.NEVER, "held out", true)));
+                }
+            }
+            ModelSet models = LearnedModels.modelSet(foldLearned, abstraction, stats.withThreshold(HeldOutRun.NEVER,
+                    "held out", true).withDeadlines(noveltyOnly).withBounds(boundModels));
             List<HeldOutRun> runs = new ArrayList<>();
+            Map<String, List<HeldOutRun>> boundRuns = new TreeMap<>();
+            boundModels.keySet().forEach(id -> boundRuns.put(id, new ArrayList<>()));
             for (ScenarioSpec s : read) {
                 for (Path log : s.logs()) {
                     if (!held.test(log)) {
                         continue;
                     }
                     try {
-                        runs.addAll(HeldOutRun.replay(log, s.runs(), models, abstraction, confirm,
-                                WarningRule.FORECAST));
+                        HeldOutRun.Judged replayed = HeldOutRun.replayAll(log, s.runs(), models, abstraction,
+                                confirm, WarningRule.FORECAST);
+                        runs.addAll(replayed.safety());
+                        replayed.bounds().forEach((id, rs) -> boundRuns.get(id).addAll(rs));
                     } catch (IOException e) {
                         throw BadInputException.cannotRead(log, e);
                     }
                 }
             }
-            judged.add(new Fold(fold, stats.baseRate(), stats.obligations(), both, runs));
+            Map<String, BoundFold> bounds = new TreeMap<>();
+            boundRuns.forEach((id, rs) -> bounds.put(id, new BoundFold(boundModels.get(id).model().baseRate(), rs)));
+            judged.add(new Fold(fold, stats.baseRate(), stats.obligations(), both, runs, bounds));
         }
         return new HeldOutFolds(used, judged);
+    }
+
+    /** Whether {@code runs} both violated their property and held it. */
+    private static boolean bothOutcomes(List<LogTrace.Run> runs) {
+        return runs.stream().anyMatch(LogTrace.Run::violated) && !runs.stream().allMatch(LogTrace.Run::violated);
     }
 }

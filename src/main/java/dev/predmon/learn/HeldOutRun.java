@@ -14,6 +14,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * One held-out run as {@code watch} forecasts it with a fold's models: every forecast before the property's violation,
@@ -52,7 +54,54 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
      */
     public static List<HeldOutRun> replay(Path log, RunLabel label, ModelSet models, Abstraction abstraction,
                                           int confirm, WarningRule rule) throws IOException {
+        return of(LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { }), label);
+    }
+
+    /**
+     * The same runs of one replay ({@link #replay}), as the forecast's property and as each bound property with a
+     * forecast of its own in {@code models} saw them.
+     *
+     * @param safety the runs as the forecast's property saw them
+     * @param bounds by bound property id, the runs as it saw them: its own violation, forecasts and warning
+     */
+    public record Judged(List<HeldOutRun> safety, Map<String, List<HeldOutRun>> bounds) {
+    }
+
+    /** As {@link #replay}, with every bound property's forecasts from the same replay. */
+    public static Judged replayAll(Path log, RunLabel label, ModelSet models, Abstraction abstraction, int confirm,
+                                   WarningRule rule) throws IOException {
         ReplayedLog replayed = LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { });
+        Map<String, List<HeldOutRun>> bounds = new TreeMap<>();
+        for (String id : models.forecast().bounds().keySet()) {
+            List<HeldOutRun> runs = new ArrayList<>();
+            for (ReplayedRun r : replayed.runs()) {
+                if (!r.pairs().isEmpty() && label.selects(r.violated())) {
+                    runs.add(ofProperty(r, id));
+                }
+            }
+            bounds.put(id, runs);
+        }
+        return new Judged(of(replayed, label), bounds);
+    }
+
+    /** Run {@code r} as bound property {@code id} saw it; the obligations go with the forecast property's run. */
+    private static HeldOutRun ofProperty(ReplayedRun r, String id) {
+        MonitorEvent.Violation v = null;
+        MonitorEvent.Warning w = null;
+        for (MonitorEvent e : r.events()) {
+            if (e instanceof MonitorEvent.Violation x && id.equals(x.property()) && v == null) {
+                v = x;
+            } else if (e instanceof MonitorEvent.Warning x && id.equals(x.property()) && v == null && w == null) {
+                w = x;
+            }
+        }
+        List<ReplayedRun.Timed> f = r.boundBeforeViolation(id);
+        return new HeldOutRun(v != null, f.stream().map(t -> t.forecast().probability()).toList(),
+                f.stream().map(ReplayedRun.Timed::time).toList(), w == null ? Double.NaN : w.time(),
+                v == null ? Double.NaN : v.time(), List.of());
+    }
+
+    private static List<HeldOutRun> of(ReplayedLog replayed, RunLabel label) {
         List<HeldOutRun> out = new ArrayList<>();
         for (ReplayedRun r : replayed.runs()) {
             if (r.pairs().isEmpty() || !label.selects(r.violated())) {

@@ -54,7 +54,7 @@ public final class Board {
     /** @param staleAfter a log that has not grown for this long is marked STALE (or its run ended, see Tile) */
     public Board(ModelSet models, Abstraction abstraction, Duration staleAfter, RobotNames names) {
         this(models.models(), abstraction.safety(), abstraction.properties(), staleAfter, System::currentTimeMillis,
-                names, models.forecast() == null ? List.of() : models.forecast().scorecards());
+                names, models.forecast() == null ? List.of() : models.forecast().allScorecards());
         warnsAt(PredictiveMonitor.defaultRule(models), models);
     }
 
@@ -92,7 +92,7 @@ public final class Board {
         this.clock = clock;
         this.names = names;
         this.metrics = new Metrics(() -> status(null), safety.map(Bound::name).orElse(""),
-                this.properties.stream().map(Property::id).toList());
+                this.properties.stream().map(Property::id).toList(), safety.map(Bound::id).orElse(null));
     }
 
     /** The tile of {@code log}, made on first use. */

@@ -57,6 +57,7 @@ final class Metrics {
     private final PrometheusRegistry registry = new PrometheusRegistry();
     private final Supplier<ObjectNode> status;
     private final String property;
+    private final String forecastId;
     private final Counter warnings;
     private final Counter violations;
     private final Counter propertyWarnings;
@@ -76,6 +77,15 @@ final class Metrics {
 
     /** As above, with the ids of every property of the abstraction. */
     Metrics(Supplier<ObjectNode> status, String property, List<String> properties) {
+        this(status, property, properties, null);
+    }
+
+    /**
+     * As above, {@code forecastId} the id of the property of the {@code property} label (null when not known): another
+     * bound property's warnings are its own, not that property's.
+     */
+    Metrics(Supplier<ObjectNode> status, String property, List<String> properties, String forecastId) {
+        this.forecastId = forecastId;
         this.status = status;
         this.property = property;
         this.properties = List.copyOf(properties);
@@ -209,7 +219,8 @@ final class Metrics {
         } else if (e instanceof MonitorEvent.Violation v && v.property() != null) {
             propertyViolations.labelValues(tile.log(), tile.name(), v.property()).inc();
         }
-        if (e instanceof MonitorEvent.Warning w && w.clause() != MonitorEvent.Clause.DEADLINE) {
+        if (e instanceof MonitorEvent.Warning w && w.clause() != MonitorEvent.Clause.DEADLINE
+                && (forecastId == null || w.property() == null || w.property().equals(forecastId))) {
             // this label is the forecast's property; a deadline's warnings are its own property's
             warnings.labelValues(tile.log(), tile.name(), property).inc();
         } else if (e instanceof MonitorEvent.Violation v && v.forecast()) {

@@ -3,6 +3,8 @@ package dev.predmon.live;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import dev.predmon.event.ForecastJson;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Survival;
 import dev.predmon.monitor.MonitorEvent;
@@ -71,9 +73,12 @@ final class PropertyLights {
         now = statuses;
     }
 
-    /** An event of another property than the forecast's: whether it is one of the lights'. */
+    /**
+     * An event of another property than the forecast's (a deadline's or another bound's warning, a recovery): whether
+     * it is one of the lights'.
+     */
     boolean event(MonitorEvent e) {
-        if (e instanceof MonitorEvent.Warning w && w.clause() == MonitorEvent.Clause.DEADLINE && w.property() != null) {
+        if (e instanceof MonitorEvent.Warning w && w.property() != null && !w.property().equals(forecastId)) {
             warnings.put(w.property(), w.reason());
             recoveries.remove(w.property());
             return true;
@@ -172,6 +177,9 @@ final class PropertyLights {
         ObjectNode o = base(p, v, light);
         o.put("words", words);
         o.put("model", s == null ? PropertyStatus.Model.NONE.id() : s.model().id());
+        if (s != null && s.model() == PropertyStatus.Model.FORECAST) {
+            return valueForecast(o, s, skill, light);
+        }
         if (e != null) {
             ObjectNode f = o.putObject("forecast");
             number(f, "probability", e.novel() ? Double.NaN : e.probability());
@@ -212,6 +220,29 @@ final class PropertyLights {
         }
         return "P(miss) " + Math.round(e.probability() * 100) + "%, " + left + (skill == null ? " (skill not measured)"
                 : "");
+    }
+
+    /** A bound property with a value forecast of its own: its latest forecast, as the forecast's property's. */
+    private ObjectNode valueForecast(ObjectNode o, PropertyStatus s, Boolean skill, Light light) {
+        Forecast f = s.forecast();
+        if (f == null) {
+            o.putNull("forecast");
+        } else {
+            o.set("forecast", JSON.valueToTree(ForecastJson.of(f)));
+        }
+        if (skill == null) {
+            o.putNull("skill");
+        } else {
+            o.put("skill", skill);
+        }
+        o.put("forecastWords", f == null ? "no forecast yet"
+                : f.basis() == Forecast.Basis.VIOLATED ? "no forecast: the property is violated"
+                : Boolean.FALSE.equals(skill) ? "no skill: the forecast did no better than the base rate"
+                : "P(violation) " + Math.round(f.probability() * 100) + "%, " + ForecastWords.time(f)
+                + (skill == null ? " (skill not measured)" : ""));
+        String recovery = recoveries.get(s.property().id());
+        o.put("recovery", light == Light.WARNING ? null : recovery);
+        return o;
     }
 
     /** The forecast's property: its light is the tile's. */

@@ -92,8 +92,10 @@ public final class Tile {
         JsonNode node = sent.json();
         if (e instanceof MonitorEvent.ForecastChanged f) {
             // Forecasts change often: the tile shows the latest, and the last events keep room for the rest. A
-            // deadline's forecast is its property's light's, from the monitor's statuses.
-            if (f.deadline() == null) {
+            // deadline's forecast, and another bound property's, is its property's light's, from the monitor's
+            // statuses.
+            if (f.deadline() == null && (f.property() == null
+                    || f.property().equals(safety.map(Bound::id).orElse(null)))) {
                 setForecast(f.forecast(), node);
             }
             return;

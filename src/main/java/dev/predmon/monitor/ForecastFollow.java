@@ -34,6 +34,8 @@ final class ForecastFollow {
     private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
     private MonitorEvent.Warning firstWarning;
     private MonitorEvent.Violation firstViolation;
+    /** The other bound properties' value forecasts, or null. */
+    private BoundWatch bounds;
 
     /**
      * @param bound    the forecast's property, null without one
@@ -91,6 +93,24 @@ final class ForecastFollow {
         if (d != null) {
             warn(trigger, step.faultyAlive(), d.reason(), f, d.clause());
         }
+        if (bounds != null) {
+            bounds.pair(pair, step, trigger);
+        }
+    }
+
+    /** A gap in the trace at {@code line}: the forecasts' runs are novel from there. */
+    void unseen(long line) {
+        if (forecast != null) {
+            forecast.unseen(line);
+        }
+        if (bounds != null) {
+            bounds.unseen(line);
+        }
+    }
+
+    /** Also forecasts the other bound properties after each pair ({@link BoundWatch#pair}). */
+    void forecastBounds(BoundWatch bounds) {
+        this.bounds = bounds;
     }
 
     /** Also tells {@code each} every forecast with its run ({@link PredictiveMonitor#onEveryForecast}). */

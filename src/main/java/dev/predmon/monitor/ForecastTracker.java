@@ -6,6 +6,9 @@ import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.matching.Matching;
 import dev.predmon.model.ModelSet;
+import net.automatalib.automaton.transducer.CompactMealy;
+
+import java.util.Map;
 
 /**
  * The forecast of the run being watched: a {@link Forecaster} over the models' machines, and which of its forecasts
@@ -36,6 +39,11 @@ final class ForecastTracker {
                 models.machines()));
     }
 
+    /** The tracker of the forecast {@code model} over {@code machines} (a bound property's own, {@link BoundWatch}). */
+    static ForecastTracker of(ForecastModel model, Map<String, CompactMealy<String, String>> machines) {
+        return new ForecastTracker(new Forecaster(model, machines));
+    }
+
     /** The probability at which the forecast rule warns, for runs that match learned machines. */
     double threshold() {
         return forecaster.stats().threshold();
@@ -54,11 +62,17 @@ final class ForecastTracker {
      * evidence, and {@code where} (the reading or pair that gave it).
      */
     String reason(Forecast f, String where) {
+        return reason(f, where, false);
+    }
+
+    /** As above, of a ceiling when {@code ceiling} ({@link ForecastWords#evidence(Forecast, boolean)}). */
+    String reason(Forecast f, String where, boolean ceiling) {
         String why = f.probability() >= threshold()
                 ? REACHES + ForecastWords.fixed(threshold(), 2)
-                : "beyond what the training runs that held did, with the value below the lowest they went to";
+                : "beyond what the training runs that held did, with the value " + (ceiling ? "above the highest"
+                : "below the lowest") + " they went to";
         return ForecastWords.probability(f) + " " + why + "; " + ForecastWords.time(f) + "; "
-                + ForecastWords.evidence(f) + "; " + where;
+                + ForecastWords.evidence(f, ceiling) + "; " + where;
     }
 
     /** A gap in the trace at {@code line}: the run is novel from there ({@link Forecaster#unseen}). */

@@ -8,17 +8,14 @@ import dev.predmon.matching.MatchRule;
 import dev.predmon.matching.Matching;
 import dev.predmon.matching.ModelTracker;
 import dev.predmon.model.LearnedModel;
-import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
-import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
 
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -41,9 +38,9 @@ import java.util.function.ObjIntConsumer;
  * The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
  * {@code confirm} more pairs ({@link Abstraction#confirm()}). Per record the work and the state are constant.
  *
- * <p>Every property of the abstraction is checked on every run ({@link SafetyMonitor}). The forecast's property
- * (the built-ins' {@code battery}, {@code level >= 20}) is followed here: its violation gives the lead of the
- * warning, and the {@link Alarm} says when a warning or a violation is over.
+ * <p>Every property of the abstraction is checked on every run, the others forecast on their own ({@link
+ * OtherForecasts}). The forecast's property (the built-ins' {@code battery}, {@code level >= 20}) is followed here:
+ * its violation gives the lead of the warning, and the {@link Alarm} says when a warning or a violation is over.
  */
 public final class PredictiveMonitor implements PipelineListener {
 
@@ -61,8 +58,8 @@ public final class PredictiveMonitor implements PipelineListener {
     private final WarningRule rule;
     private final ForecastTracker forecast;
     private final Alarm alarm;
-    /** The deadline forecasts' events. */
-    private final DeadlineEvents deadlineEvents;
+    /** The other properties' checks and forecasts. */
+    private final OtherForecasts others;
     /** The forecast property's value, violation, forecast and warnings. */
     private final ForecastFollow follow;
     private TickSeconds ticks = TickSeconds.NONE;
@@ -99,27 +96,12 @@ public final class PredictiveMonitor implements PipelineListener {
         this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety, forecast, this.events);
         WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
-        this.deadlineEvents = new DeadlineEvents(now, rule, this.events);
-        this.properties = new SafetyMonitor(abstraction, this.events, rule == WarningRule.FORECAST
-                ? new DeadlineWatch(abstraction.properties(), models.forecast()) : null, deadlineEvents);
-        this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule,
-                properties.forecastId(), violates(models, abstraction), this.events);
+        this.others = new OtherForecasts(models, abstraction, rule, matching, now, this.events);
+        this.properties = others.properties();
+        this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule, properties.forecastId(),
+                others.violates(), this.events);
+        others.followedBy(follow);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
-    }
-
-    /**
-     * By faulty scenario, the property its runs violate, of the scenarios whose {@code scenario.json} names one of
-     * {@code abstraction}'s properties.
-     */
-    private static Map<String, Property> violates(ModelSet models, Abstraction abstraction) {
-        Map<String, Property> out = new HashMap<>();
-        for (ModelIndex.Scenario s : models.index().scenarios()) {
-            if (s.faulty() && s.violates() != null) {
-                abstraction.properties().stream().filter(p -> p.id().equals(s.violates())).findFirst()
-                        .ifPresent(p -> out.put(s.name(), p));
-            }
-        }
-        return out;
     }
 
     /** Reports every time in seconds, a tick lasting {@code t} (a log without time stamps counts ticks). */
@@ -128,6 +110,7 @@ public final class PredictiveMonitor implements PipelineListener {
         if (forecast != null) {
             forecast.countTicksAs(t);
         }
+        properties.countTicksAs(t);
     }
 
     /** Takes the next record of the log. */
@@ -202,10 +185,10 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /**
      * Every property of the current run now, in the abstraction's order: its verdict, whether a warning of it is up,
-     * and what forecasts it (the forecast's property's latest forecast is {@link #forecast()}).
+     * what forecasts it and its latest forecast (the forecast's property's is {@link #forecast()}).
      */
     public List<PropertyStatus> properties() {
-        return properties.statuses(!alarm.quiet() && !alarm.violated(), now.othersWarned);
+        return properties.statuses(!alarm.quiet() && !alarm.violated(), forecast().orElse(null), now.othersWarned);
     }
 
     /** What all runs since the start add up to. */
@@ -236,9 +219,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void gap(LogRecord record) {
         tee.gap(record);
-        if (forecast != null) {
-            forecast.unseen(record.line());
-        }
+        follow.unseen(record.line());
     }
 
     @Override
@@ -284,13 +265,17 @@ public final class PredictiveMonitor implements PipelineListener {
         follow.onEveryForecast(each);
     }
 
+    /** Also tells {@code each} every forecast of each other bound property ({@link BoundWatch.Every}). */
+    public void onEveryBoundForecast(BoundWatch.Every each) {
+        others.onEveryBoundForecast(each);
+    }
+
     /**
-     * Also tells {@code each} every deadline forecast of a bounded response, raw, with its run, and how each obligation
-     * so forecast ended (for the deadlines' training; {@link MonitorEvent.ForecastChanged} tells only what the page
-     * shows). Nothing without deadline forecasts (the match rule, models without obligations).
+     * Also tells {@code each} every raw deadline forecast and how each obligation so forecast ended ({@link
+     * DeadlineSteps}); nothing without deadline forecasts (the match rule, models without obligations).
      */
     public void onEveryDeadlineForecast(DeadlineSteps each) {
-        deadlineEvents.steps(each);
+        others.onEveryDeadlineForecast(each);
     }
 
     /**
@@ -299,6 +284,11 @@ public final class PredictiveMonitor implements PipelineListener {
      */
     public void tee(PipelineListener also) {
         this.tee = also;
+    }
+
+    /** The id of the property the monitor's own forecast and the match rule's warnings are about, if any. */
+    public Optional<String> forecastProperty() {
+        return Optional.ofNullable(properties.forecastId());
     }
 
     /** The rule this monitor warns by. */

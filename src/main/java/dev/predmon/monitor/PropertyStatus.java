@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.Survival;
 import dev.predmon.property.Property;
 import dev.predmon.property.Verdict;
@@ -14,13 +15,24 @@ import dev.predmon.property.Verdict;
  * @param deadline for {@link Model#DEADLINE}, the forecast of the obligation pending now, or null when none is
  * @param unit     for {@link Model#DEADLINE}, what the deadline and {@code deadline}'s time left count
  *                 ({@code ticks}, {@code seconds}, {@code occurrences}); else null
+ * @param forecast for {@link Model#FORECAST}, its latest value forecast (the monitor's own for the forecast's
+ *                 property, a bound property's own for any other), null before one and for the other models
  */
 public record PropertyStatus(Property property, Verdict verdict, Model model, boolean warned,
-                             Survival.Estimate deadline, String unit) {
+                             Survival.Estimate deadline, String unit, Forecast forecast) {
+
+    /** A status without a value forecast of its own. */
+    public PropertyStatus(Property property, Verdict verdict, Model model, boolean warned, Survival.Estimate deadline,
+                          String unit) {
+        this(property, verdict, model, warned, deadline, unit, null);
+    }
 
     /** What forecasts a property. */
     public enum Model {
-        /** The run's forecast ({@code ForecastTracker}): the forecast's property, its probability and time. */
+        /**
+         * A value forecast ({@code ForecastTracker}): the run's forecast of the forecast's property, or a bound
+         * property's own ({@code BoundWatch}); a probability of violation and a time to it.
+         */
         FORECAST,
         /** A bounded response's deadline forecast from the training runs' obligations ({@code DeadlineWatch}). */
         DEADLINE,

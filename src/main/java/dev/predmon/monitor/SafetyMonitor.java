@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Deadline;
@@ -13,6 +14,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 
 /**
@@ -33,9 +35,30 @@ final class SafetyMonitor {
     /** The deadline forecasts, or null when nothing warns by them (the match rule, models without a forecast). */
     private final DeadlineWatch deadlines;
     private final DeadlineWatch.Listener told;
+    /** The other bound properties' value forecasts, or null when nothing warns by them. */
+    private BoundWatch bounds;
+    /** Whether no nominal model matches the run any more (what the bounds' novelty clause asks). */
+    private BooleanSupplier beyondNominal = () -> false;
 
     SafetyMonitor(Abstraction abstraction, Consumer<MonitorEvent> events) {
         this(abstraction, events, null, null);
+    }
+
+    /**
+     * Also forecasts the bound properties other than the forecast's by {@code bounds}, {@code beyondNominal} telling
+     * whether no nominal model matches the run any more; returns {@code bounds}.
+     */
+    BoundWatch forecastBounds(BoundWatch bounds, BooleanSupplier beyondNominal) {
+        this.bounds = bounds;
+        this.beyondNominal = beyondNominal;
+        return bounds;
+    }
+
+    /** Reports the other bound properties' forecast times in seconds, a tick lasting {@code t}. */
+    void countTicksAs(TickSeconds t) {
+        if (bounds != null) {
+            bounds.countTicksAs(t);
+        }
     }
 
     /** As above, telling {@code told} what the deadline forecasts of {@code deadlines} say. */
@@ -61,6 +84,9 @@ final class SafetyMonitor {
         if (deadlines != null) {
             deadlines.step(checker, r, told);
         }
+        if (bounds != null) {
+            bounds.record(checker, r, beyondNominal.getAsBoolean());
+        }
     }
 
     private void violated(int index, Property p, Verdict.Violated v) {
@@ -75,6 +101,9 @@ final class SafetyMonitor {
         checker.reset();
         if (deadlines != null) {
             deadlines.reset();
+        }
+        if (bounds != null) {
+            bounds.reset();
         }
     }
 
@@ -101,16 +130,22 @@ final class SafetyMonitor {
      * warned and the pending obligation's forecast.
      *
      * @param forecastWarned whether a warning of the forecast's property is up
+     * @param forecastNow    the forecast's property's latest forecast, or null
      * @param matchingWarned the other properties the matching warned of in the run (a faulty scenario's
      *                       {@code violates})
      */
-    List<PropertyStatus> statuses(boolean forecastWarned, Set<String> matchingWarned) {
+    List<PropertyStatus> statuses(boolean forecastWarned, Forecast forecastNow, Set<String> matchingWarned) {
         List<PropertyStatus> all = new ArrayList<>(checker.properties().size());
         for (int i = 0; i < checker.properties().size(); i++) {
             Property p = checker.properties().get(i);
             Verdict v = checker.verdict(i);
             if (i == forecastIndex) {
-                all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST, forecastWarned, null, null));
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST, forecastWarned, null, null,
+                        forecastNow));
+            } else if (bounds != null && bounds.forecasts(i)) {
+                all.add(new PropertyStatus(p, v, PropertyStatus.Model.FORECAST,
+                        (bounds.warned(i) || matchingWarned.contains(p.id())) && !(v instanceof Verdict.Violated),
+                        null, null, bounds.current(i)));
             } else if (deadlines != null && deadlines.forecasts(i)) {
                 Deadline d = ((Response) p).within();
                 all.add(new PropertyStatus(p, v, PropertyStatus.Model.DEADLINE,

@@ -44,6 +44,20 @@ final class WarningPolicy {
         return rule == WarningRule.FORECAST && f != null && forecast.warns(f, beyondNominal);
     }
 
+    /**
+     * Of a bound property other than the forecast's ({@link BoundWatch}), forecast {@code f} on its forecast's scale
+     * ({@code shown} as the property reads, {@code ceiling} when it is a ceiling's): the warning to raise, or null. Only the forecast rule warns of such a
+     * property (the thesis's matching is about the forecast's property), by the same clauses, once while no alarm of
+     * the property is up ({@code alarmUp}: a warning, or its violation).
+     */
+    static Decision ofBound(WarningRule rule, ForecastTracker tracker, Forecast f, Forecast shown, boolean ceiling,
+                            boolean beyondNominal, boolean alarmUp, String where) {
+        if (rule != WarningRule.FORECAST || f == null || alarmUp || !tracker.warns(f, beyondNominal)) {
+            return null;
+        }
+        return new Decision(tracker.clause(f), tracker.reason(shown, where, ceiling));
+    }
+
     /** At a new value {@code value} of the property, forecast {@code f}: the warning to raise, or null. */
     Decision atReading(Forecast f, double value, boolean beyondNominal) {
         if (!forecastWarns(f, beyondNominal) || alarm.violated() || !alarm.mayWarn(forecast.clause(f))) {

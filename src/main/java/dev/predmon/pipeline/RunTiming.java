@@ -1,8 +1,10 @@
 package dev.predmon.pipeline;
 
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * When the pairs of one run came and what the safety property's channel read then: the forecast learns from it how
@@ -24,12 +26,23 @@ import java.util.Map;
  *                      order: what the deadline forecast learns from
  * @param violations    the run's outcome: by property id, when the safety monitor first saw each property it violated
  *                      (in the log's unit; NaN for a record without a time), the properties it held absent
+ * @param bounds        by id, every bound property but the safety property: each change of its value in the run, in
+ *                      order, as {@code readings} holds the safety property's (what its own forecast learns from)
  */
 // Arrays: one number per pair, read by index; a run's timing is never compared or hashed.
 @SuppressWarnings("ArrayRecordComponent")
 public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
                         double lowestSafeValue, String unit, List<Reading> readings, List<Gap> gaps,
-                        List<Obligation> obligations, Map<String, Double> violations) {
+                        List<Obligation> obligations, Map<String, Double> violations,
+                        Map<String, List<Reading>> bounds) {
+
+    /** As above, without the other bound properties' readings. */
+    public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
+                     String unit, List<Reading> readings, List<Gap> gaps, List<Obligation> obligations,
+                     Map<String, Double> violations) {
+        this(times, values, violationTime, endTime, lowestSafeValue, unit, readings, gaps, obligations, violations,
+                Map.of());
+    }
 
     /** As above, without the outcome per property. */
     public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
@@ -89,6 +102,9 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
         gaps = List.copyOf(gaps);
         obligations = List.copyOf(obligations);
         violations = Map.copyOf(violations);
+        Map<String, List<Reading>> copy = new TreeMap<>();
+        bounds.forEach((id, r) -> copy.put(id, List.copyOf(r)));
+        bounds = Collections.unmodifiableMap(copy);
     }
 
     /** Whether the run violated the property {@code id} (its outcome as the safety monitor saw it). */

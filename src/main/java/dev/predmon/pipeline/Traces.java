@@ -9,6 +9,7 @@ import dev.predmon.parse.ParseProblem;
 import dev.predmon.parse.RecordSink;
 import dev.predmon.parse.RecordSource;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
 
 import java.io.IOException;
@@ -177,6 +178,9 @@ public final class Traces {
         private List<RunTiming.Obligation> obligations = new ArrayList<>();
         /** The run's outcome: when each property was first violated. */
         private Map<String, Double> violations = new TreeMap<>();
+        /** By property index, the bound properties but the safety one: each change of their value in the run. */
+        private final List<RunTiming.Reading>[] others;
+        private final double[] otherValues;
 
         RunCollector(Abstraction abstraction, List<IoPair> all) {
             this.abstraction = abstraction;
@@ -185,6 +189,17 @@ public final class Traces {
             this.checker = new PropertyChecker(abstraction.properties(),
                     (i, p, v) -> violations.putIfAbsent(p.id(), v.time()));
             this.safetyIndex = safety.map(b -> abstraction.properties().indexOf(b)).orElse(-1);
+            List<Property> properties = abstraction.properties();
+            @SuppressWarnings("unchecked")
+            List<RunTiming.Reading>[] o = new List[properties.size()];
+            this.others = o;
+            this.otherValues = new double[properties.size()];
+            for (int i = 0; i < others.length; i++) {
+                if (properties.get(i) instanceof Bound && i != safetyIndex) {
+                    others[i] = new ArrayList<>();
+                }
+            }
+            Arrays.fill(otherValues, Double.NaN);
             checker.onObligations((i, p, duration, discharged) -> obligations.add(new RunTiming.Obligation(p.id(),
                     duration, discharged)));
         }
@@ -196,6 +211,13 @@ public final class Traces {
                 endTime = record.time();
             }
             unit = record.clock().unit();
+            for (int i = 0; i < others.length; i++) {
+                double b = others[i] == null ? Double.NaN : checker.value(i);
+                if (!Double.isNaN(b) && b != otherValues[i]) {
+                    others[i].add(new RunTiming.Reading(record.time(), b, pairs.size()));
+                    otherValues[i] = b;
+                }
+            }
             if (safety.isEmpty()) {
                 return;
             }
@@ -260,8 +282,16 @@ public final class Traces {
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
             checker.finish();
             checker.reset();
+            Map<String, List<RunTiming.Reading>> bounds = new TreeMap<>();
+            for (int i = 0; i < others.length; i++) {
+                if (others[i] != null) {
+                    bounds.put(abstraction.properties().get(i).id(), List.copyOf(others[i]));
+                    others[i].clear();
+                }
+            }
+            Arrays.fill(otherValues, Double.NaN);
             RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
-                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations, violations);
+                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations, violations, bounds);
             changes = new ArrayList<>();
             gaps = new ArrayList<>();
             obligations = new ArrayList<>();

@@ -22,6 +22,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 import java.util.function.ObjIntConsumer;
 
 /**
@@ -92,6 +93,8 @@ public final class LogReplay {
         });
         monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
                 current[0].time(), current[0].line(), monitor.pairs())));
+        monitor.onEveryBoundForecast((property, f, run) -> of(runs, run).bound(property, new ReplayedRun.Timed(f,
+                current[0].time(), current[0].line(), monitor.pairs())));
         List<ParseProblem> problems = new ArrayList<>();
         long lines;
         try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, problems::add,
@@ -104,7 +107,8 @@ public final class LogReplay {
         for (RunOutcome o : monitor.runs()) {
             Builder b = of(runs, o.run());
             out.add(new ReplayedRun(o.run(), o, b.pairs, b.gaps, b.forecasts,
-                    b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt, b.obligations));
+                    b.violatedAfter < 0 ? b.forecasts.size() : b.violatedAfter, b.events, b.models, b.matchRuleAt,
+                    b.obligations, b.bounds, b.boundsBefore));
         }
         return new ReplayedLog(log, out, problems, lines, monitor);
     }
@@ -136,6 +140,13 @@ public final class LogReplay {
         final List<ReplayedRun.Obligation> obligations = new ArrayList<>();
         /** By property id, the deadline forecasts of its obligation pending now. */
         final Map<String, Pending> pending = new HashMap<>();
+        /** By bound property id, its forecasts; and how many came before its first violation, once it came. */
+        final Map<String, List<ReplayedRun.Timed>> bounds = new TreeMap<>();
+        final Map<String, Integer> boundsBefore = new TreeMap<>();
+
+        void bound(String property, ReplayedRun.Timed t) {
+            bounds.computeIfAbsent(property, k -> new ArrayList<>()).add(t);
+        }
 
         /** The run ends: how the matching left each model. */
         void end(PredictiveMonitor monitor) {
@@ -145,6 +156,9 @@ public final class LogReplay {
 
         void event(MonitorEvent e) {
             events.add(e);
+            if (e instanceof MonitorEvent.Violation v && v.property() != null) {
+                boundsBefore.putIfAbsent(v.property(), bounds.getOrDefault(v.property(), List.of()).size());
+            }
             if (e instanceof MonitorEvent.Violation v && v.forecast() && violatedAfter < 0) {
                 violatedAfter = forecasts.size();
             }

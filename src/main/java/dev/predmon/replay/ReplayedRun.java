@@ -10,8 +10,11 @@ import dev.predmon.monitor.RunOutcome;
 import dev.predmon.property.Response;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.TreeMap;
 
 /**
  * One run of a replayed log, as the monitor took it.
@@ -30,10 +33,16 @@ import java.util.Optional;
  * @param obligations every obligation of a bounded response that the monitor forecast and that ended in the run (its
  *                    response came, or it was let go: its deadline passed or its scope closed), in the order they
  *                    ended; one still pending at the run's end has no outcome and is not among them
+ * @param boundForecasts by id, every bound property with a value forecast of its own (not the forecast's property):
+ *                  every forecast of it, one after each pair and each new value of it, as the property reads, each
+ *                  with the record that made it
+ * @param boundForecastsBeforeViolation by id, how many of {@code boundForecasts} came before the property's first
+ *                  violation (absent in a run where it held)
  */
 public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Long> gaps, List<Timed> forecasts,
                           int forecastsBeforeViolation, List<MonitorEvent> events, List<Fate> models,
-                          long matchRuleAt, List<Obligation> obligations) {
+                          long matchRuleAt, List<Obligation> obligations, Map<String, List<Timed>> boundForecasts,
+                          Map<String, Integer> boundForecastsBeforeViolation) {
 
     public ReplayedRun {
         obligations = List.copyOf(obligations);
@@ -42,6 +51,16 @@ public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Lo
         gaps = List.copyOf(gaps);
         forecasts = List.copyOf(forecasts);
         events = List.copyOf(events);
+        Map<String, List<Timed>> copy = new TreeMap<>();
+        boundForecasts.forEach((id, f) -> copy.put(id, List.copyOf(f)));
+        boundForecasts = Collections.unmodifiableMap(copy);
+        boundForecastsBeforeViolation = Map.copyOf(boundForecastsBeforeViolation);
+    }
+
+    /** The forecasts of bound property {@code id} made before its first violation: what its forecast is scored on. */
+    public List<Timed> boundBeforeViolation(String id) {
+        List<Timed> all = boundForecasts.getOrDefault(id, List.of());
+        return all.subList(0, boundForecastsBeforeViolation.getOrDefault(id, all.size()));
     }
 
     /**

@@ -9,8 +9,8 @@ import java.util.Locale;
 
 /**
  * The report's section on the abstraction's other properties, as the text report prints it: per property, its
- * violations, the warnings ahead of them from its deadline forecast, its false alarms and lead, and beside them the
- * elapsed-time baseline's ({@link PropertyScore}).
+ * violations, the warnings ahead of them from its own forecast (a bound's value forecast, a deadline's forecast), its
+ * false alarms and lead, and beside them the elapsed-time baseline's ({@link PropertyScore}).
  */
 final class PropertySection {
 
@@ -32,10 +32,12 @@ final class PropertySection {
                     p.violating(), p.warned(), p.falseAlarms(), median(p.lead()), p.baselineWarned(),
                     p.baselineAlarms(), median(p.baselineLead())));
         }
-        h.append("</table>\n<p>A deadline's warnings come from its forecast: how long the obligation has been pending "
-                + "against how long the training runs' took. The matching warns of the property a faulty scenario's "
-                + "runs violate (its <code>violates</code>) when it is the only one left. A property without a forecast "
-                + "(an absence, a precedence) is listed so that its violations are seen. The baseline, chosen by the same cross-validation, warns "
+        h.append("</table>\n<p>A bound's warnings come from its own value forecast, learned from the training runs "
+                + "labelled by its own violation. A deadline's come from its forecast: how long the obligation has been "
+                + "pending against how long the training runs' took. The matching warns of the property a faulty "
+                + "scenario's runs violate (its <code>violates</code>) when it is the only one left. A property without "
+                + "a forecast (an absence, a precedence) is listed so that its violations are seen. The baseline of a "
+                + "deadline, chosen by the same cross-validation, warns "
                 + "as soon as an obligation is pending longer than every training obligation: what the learned "
                 + "durations add over \"later than ever seen\". Leads are in the runs' unit.</p>\n");
         PropertyForecastTables.html(h, others);

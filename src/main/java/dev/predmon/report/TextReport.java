@@ -52,8 +52,8 @@ public final class TextReport {
         List<PropertyScore> others = PropertyScore.of(e.runs());
         if (!others.isEmpty()) {
             out.println();
-            out.println("the other properties (warnings from their deadline forecasts, or the matching of a faulty "
-                    + "scenario that violates them; lead in the runs' unit)");
+            out.println("the other properties (warnings from their own forecasts: a bound's value forecast, a deadline's "
+                    + "forecast; or the matching of a faulty scenario that violates them; lead in the runs' unit)");
             Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median",
                     ">baseline: warned ahead", ">false alarms", "lead: median");
             for (PropertyScore p : others) {
@@ -61,8 +61,8 @@ public final class TextReport {
                         p.baselineWarned(), p.baselineAlarms(), PropertySection.median(p.baselineLead()));
             }
             t.print(out);
-            out.println("baseline: warn once an obligation is pending longer than every training obligation of the "
-                    + "fold (the elapsed-time rule, chosen by the same cross-validation)");
+            out.println("baseline (deadlines): warn once an obligation is pending longer than every training "
+                    + "obligation of the fold (the elapsed-time rule, chosen by the same cross-validation)");
             PropertyForecastTables.print(out, others);
         }
         out.println();

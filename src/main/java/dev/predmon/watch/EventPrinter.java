@@ -25,6 +25,8 @@ final class EventPrinter {
     private final String log;
     private final Stamp stamp;
     private MonitorEvent.Warning warning;
+    /** The id of the property the monitor's own forecast is about; another's warnings name their property. */
+    private String forecastId;
 
     /**
      * For one log of several, each event says which ({@code "log"} in JSON, a {@code log: } prefix in text).
@@ -39,6 +41,15 @@ final class EventPrinter {
         this.verbose = eliminations;
         this.log = log;
         this.stamp = stamp;
+    }
+
+    /**
+     * The id of the property the monitor's own forecast is about (null without one): the lead of its violation is
+     * from its warning, and another bound property's warnings and forecasts name their property.
+     */
+    EventPrinter forecastProperty(String id) {
+        this.forecastId = id;
+        return this;
     }
 
     /** Prints {@code e}, which happened at wall-clock time {@code at}. */
@@ -84,9 +95,14 @@ final class EventPrinter {
     record HeartbeatJson(String event, boolean present, long line, int run, long records, ForecastJson forecast) {
     }
 
+    /** Whether {@code property} is another than the one the monitor's own forecast is about. */
+    private boolean other(String property) {
+        return property != null && forecastId != null && !property.equals(forecastId);
+    }
+
     /** {@code e} as a text line (without the stamp), or null when it is not printed as text. */
     String toText(MonitorEvent e) {
-        if (e instanceof MonitorEvent.Warning w && w.deadline() != null) {
+        if (e instanceof MonitorEvent.Warning w && (w.deadline() != null || other(w.property()))) {
             return String.format(Locale.ROOT, "%s line %d: WARNING: %s", at(w.time(), w.clock()), w.line(),
                     w.reason());
         }
@@ -101,6 +117,10 @@ final class EventPrinter {
                     : "P(miss) " + ForecastWords.fixed(f.deadline().probability(), 2) + ", ")
                     + ForecastWords.fixed(f.deadline().timeLeft(), 0) + (f.unit() == null ? "" : " " + f.unit())
                     + " left") : null;
+        }
+        if (e instanceof MonitorEvent.ForecastChanged f && other(f.property())) {
+            return verbose ? String.format(Locale.ROOT, "%s line %d: forecast of %s: %s", at(f.time(), f.clock()),
+                    f.line(), f.property(), ForecastWords.line(f.forecast())) : null;
         }
         if (e instanceof MonitorEvent.ForecastChanged f) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: forecast: %s", at(f.time(), f.clock()), f.line(),

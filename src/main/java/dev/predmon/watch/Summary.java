@@ -68,7 +68,7 @@ final class Summary {
         RunOutcome first = all.firstWarned().orElse(runs.get(0));
         RunOutcome last = runs.get(runs.size() - 1);
         // the last run's properties with their latest forecasts, the earlier runs' with their verdicts
-        List<PropertyJson> latest = PropertyJson.latest(m.properties(), m.forecast().orElse(null));
+        List<PropertyJson> latest = PropertyJson.latest(m.properties());
         List<RunEnd> perRun = runs.stream().map(r -> new RunEnd(r.run(), r.firstLine(), r.pairs(),
                 r.warning() != null, r.violation() != null, r.lead().orElse(null), r.noMatch(),
                 ForecastJson.of(r.forecast()), r.run() == last.run() ? latest : PropertyJson.of(r.properties())))
@@ -130,7 +130,7 @@ final class Summary {
         PredictiveMonitor m = log.monitor();
         List<RunOutcome> runs = m.runs();
         boolean last = r.run() == runs.get(runs.size() - 1).run();
-        (last ? PropertyJson.latestLines(m.properties(), m.forecast().orElse(null)) : PropertyJson.lines(r.properties()))
+        (last ? PropertyJson.latestLines(m.properties()) : PropertyJson.lines(r.properties()))
                 .forEach(l -> out.println(stamp + l));
     }
 

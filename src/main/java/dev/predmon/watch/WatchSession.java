@@ -90,7 +90,9 @@ public final class WatchSession implements FleetListener, AutoCloseable {
     @Override
     public void added(WatchedLog log) {
         LogOutlet o = new LogOutlet(new EventPrinter(out, settings.json(), settings.eliminations(),
-                settings.several() ? log.name() : null, settings.stamp()), board == null ? null : board.tile(log.name()));
+                settings.several() ? log.name() : null, settings.stamp())
+                .forecastProperty(log.monitor().forecastProperty().orElse(null)),
+                board == null ? null : board.tile(log.name()));
         outlets.put(log, o);
         log.monitor().countTicksAs(settings.ticks());
         // A log named is said once what it held at the start is read; of those found in a directory or by a glob,

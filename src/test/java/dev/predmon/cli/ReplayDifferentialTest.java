@@ -121,6 +121,25 @@ class ReplayDifferentialTest {
         assertTrue(paths.deadlines >= 100, "deadline forecasts compared: " + paths.deadlines);
     }
 
+    /** Models that forecast two more bound properties, a reserve floor and a ceiling, each its own forecasts. */
+    @Test
+    void aReserveFloorAndACeilingForecastAlikeOnEveryPath() throws Exception {
+        Path models = tmp.resolve("bound-models");
+        Cli learned = Cli.run("learn", "--logs", BoundForecastCliTest.trainingLogs(tmp).toString(), "--models",
+                models.toString(), "--abstraction", BoundForecastCliTest.abstraction(tmp).toString());
+        assertEquals(0, learned.code(), learned.err());
+        List<Path> logs = List.of(BoundForecastCliTest.simulate(tmp, "recharge", "500"),
+                BoundForecastCliTest.simulate(tmp, "direct", "501"),
+                BoundForecastCliTest.simulate(tmp, "depleted", "502"),
+                BoundForecastCliTest.simulate(tmp, "recharge", "503", "--runs", "2", "--noise", "0.3", "--out",
+                        tmp.resolve("recharge-503.log").toString()));
+        Paths paths = new Paths(models);
+        assertEquals(2, paths.models.forecast().bounds().size());
+        assertEquals(List.of(), disagreements(logs, paths));
+        assertTrue(paths.boundForecasts > 200, "bound forecasts compared: " + paths.boundForecasts);
+        assertTrue(paths.warnings > 3, "warnings compared: " + paths.warnings);
+    }
+
     /** The comparison is not blind: one forecast nudged by the last bit of its double is a disagreement. */
     @Test
     void aForecastOffByOneUlpIsADisagreement() throws Exception {
@@ -183,6 +202,7 @@ class ReplayDifferentialTest {
         final WarningRule rule;
         int forecasts;
         int warnings;
+        int boundForecasts;
         /** Deadline forecasts of learn's held-out obligations that watch told and that were compared. */
         int deadlines;
         /** Deadline warnings and obligations let go past their deadline or scope that learn's held-out replay has. */
@@ -227,29 +247,16 @@ class ReplayDifferentialTest {
         Cli w = Cli.run("watch", "--no-follow", "--json", "--log", log.toString(), "--models", paths.dir.toString());
         same(differ, "watch", log + " exit code", code, w.code());
         List<JsonNode> events = w.jsonLines();
+        String forecastId = paths.abstraction.safety().map(b -> b.id()).orElse(null);
         for (ReplayedRun run : reference.runs()) {
             String where = log + " run " + run.run();
-            List<MonitorEvent.ForecastChanged> told = run.events().stream()
-                    .filter(MonitorEvent.ForecastChanged.class::isInstance).map(MonitorEvent.ForecastChanged.class::cast)
-                    .filter(c -> c.deadline() == null) // the forecast property's; a deadline's are its own property's
-                    .toList();
-            // What watch tells is a subsequence of every forecast the replay made, record for record.
-            Iterator<ReplayedRun.Timed> every = run.forecasts().iterator();
-            for (MonitorEvent.ForecastChanged c : told) {
-                boolean found = false;
-                while (!found && every.hasNext()) {
-                    ReplayedRun.Timed t = every.next();
-                    found = t.line() == c.line() && t.forecast().equals(c.forecast());
-                }
-                if (!found) {
-                    differ.add("replay: " + where + " forecast told at line " + c.line() + " is not one it made");
-                }
+            // the forecast property's, then each other bound's own (a deadline's are compared as warnings)
+            told(differ, where, forecastId, run.forecasts(), run, events);
+            for (String id : paths.models.forecast() == null ? List.<String>of()
+                    : paths.models.forecast().bounds().keySet()) {
+                paths.boundForecasts += run.boundForecasts().getOrDefault(id, List.of()).size();
+                told(differ, where + " " + id, id, run.boundForecasts().getOrDefault(id, List.of()), run, events);
             }
-            same(differ, "watch", where + " forecasts (line, probability, time to violation)",
-                    told.stream().map(c -> printed(c.line(), c.forecast())).toList(),
-                    ofRun(events, "forecast", run.run()).stream().filter(e -> !e.get("forecast").isNull())
-                            .map(e -> printed(e.get("line").asLong(),
-                            e.get("forecast"))).toList());
             same(differ, "watch", where + " warnings (line, clause, property, probability)",
                     run.warnings().stream().map(x -> warning(x.line(), x.clause().id(), x.property(),
                             x.forecast() == null ? null : round(x.forecast().probability()))).toList(),
@@ -272,6 +279,33 @@ class ReplayDifferentialTest {
         end.get("runs").forEach(r -> r.get("properties").forEach(p -> verdicts.add(r.get("run").asInt() + " "
                 + p.get("property").asText() + " " + p.get("verdict").asText())));
         same(differ, "watch", log + " verdicts (run, property, verdict)", verdicts(reference), verdicts);
+    }
+
+    /**
+     * The forecasts of {@code property} watch told in {@code run}: a subsequence of {@code every} forecast of it the
+     * replay made, record for record, and what watch printed of them.
+     */
+    private static void told(List<String> differ, String where, String property, List<ReplayedRun.Timed> every,
+                             ReplayedRun run, List<JsonNode> events) {
+        List<MonitorEvent.ForecastChanged> told = run.events().stream()
+                .filter(MonitorEvent.ForecastChanged.class::isInstance).map(MonitorEvent.ForecastChanged.class::cast)
+                .filter(c -> c.deadline() == null && Objects.equals(c.property(), property)).toList();
+        Iterator<ReplayedRun.Timed> made = every.iterator();
+        for (MonitorEvent.ForecastChanged c : told) {
+            boolean found = false;
+            while (!found && made.hasNext()) {
+                ReplayedRun.Timed t = made.next();
+                found = t.line() == c.line() && t.forecast().equals(c.forecast());
+            }
+            if (!found) {
+                differ.add("replay: " + where + " forecast told at line " + c.line() + " is not one it made");
+            }
+        }
+        same(differ, "watch", where + " forecasts (line, probability, time to violation)",
+                told.stream().map(c -> printed(c.line(), c.forecast())).toList(),
+                ofRun(events, "forecast", run.run()).stream().filter(e -> !e.get("forecast").isNull()
+                                && Objects.equals(text(e.get("property")), property))
+                        .map(e -> printed(e.get("line").asLong(), e.get("forecast"))).toList());
     }
 
     /** {@code evaluate}'s replay: each run's forecasts before the violation, its warning and its verdicts. */
@@ -307,8 +341,9 @@ class ReplayDifferentialTest {
         if (paths.models.forecast() == null) {
             return;
         }
-        List<HeldOutRun> held = HeldOutRun.replay(log, RunLabel.ALL, paths.models, paths.abstraction, paths.confirm,
-                paths.rule);
+        HeldOutRun.Judged judged = HeldOutRun.replayAll(log, RunLabel.ALL, paths.models, paths.abstraction,
+                paths.confirm, paths.rule);
+        List<HeldOutRun> held = judged.safety();
         List<ReplayedRun> scored = reference.runs().stream().filter(r -> !r.pairs().isEmpty()).toList();
         if (held.size() != scored.size()) {
             differ.add("learn: " + log + " " + held.size() + " runs, the replay " + scored.size());
@@ -325,6 +360,19 @@ class ReplayDifferentialTest {
             double warned = w != null && (v == null || w.line() < v.line()) ? w.time() : Double.NaN;
             same(differ, "learn", where + " warned at", warned, h.warnedAt());
             same(differ, "learn", where + " violated", run.violated(), h.violated());
+            for (String id : paths.models.forecast().bounds().keySet()) {
+                HeldOutRun b = judged.bounds().get(id).get(i);
+                same(differ, "learn", where + " " + id + " probabilities", run.boundBeforeViolation(id).stream()
+                        .map(t -> t.forecast().probability()).toList(), b.probabilities());
+                MonitorEvent.Violation bv = run.events().stream().filter(MonitorEvent.Violation.class::isInstance)
+                        .map(MonitorEvent.Violation.class::cast).filter(x -> id.equals(x.property())).findFirst()
+                        .orElse(null);
+                MonitorEvent.Warning bw = run.warnings().stream().filter(x -> id.equals(x.property())).findFirst()
+                        .orElse(null);
+                double bWarned = bw != null && (bv == null || bw.line() < bv.line()) ? bw.time() : Double.NaN;
+                same(differ, "learn", where + " " + id + " warned at", bWarned, b.warnedAt());
+                same(differ, "learn", where + " " + id + " violated", bv != null, b.violated());
+            }
         }
     }
 
