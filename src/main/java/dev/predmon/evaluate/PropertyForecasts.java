@@ -75,13 +75,16 @@ record PropertyForecasts(Reliability.Run run, String scope) {
         return out;
     }
 
-    /** The share of the models' training obligations of {@code p} that missed the deadline, null when not known. */
+    /**
+     * The share of the models' training obligations of {@code p} that missed the deadline, kept off 0 and 1 as the
+     * forecast's own prior is ({@link Survival#missRate}), null when not known.
+     */
     private static Double obligationRate(Property p, ForecastModel model) {
         if (!(p instanceof Response r) || model == null) {
             return null;
         }
         Survival s = model.obligations().get(r.id());
-        return s == null || s.size() == 0 ? null : s.survival(r.within().amount());
+        return s == null || s.size() == 0 ? null : s.missRate(r.within().amount());
     }
 
     /** One property's forecasts in the run so far. */
