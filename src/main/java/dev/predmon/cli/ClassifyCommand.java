@@ -4,6 +4,7 @@ import dev.predmon.Terminal;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.Classifier;
 import dev.predmon.pipeline.RunId;
+import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
 import dev.predmon.replay.ReplayedRun;
 import picocli.CommandLine.Command;
@@ -38,8 +39,9 @@ final class ClassifyCommand implements Callable<Integer> {
         ModelSet set = input.models();
         PrintWriter out = spec.commandLine().getOut();
         // One replay through watch's monitor, with its default rule and confirmation: its verdict is watch's, and
-        // Algorithm 7 scores the pairs it took.
-        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), input.tuned().confirm(), (r, run) -> { });
+        // Algorithm 7 scores the pairs it took. Its forecasts are not kept: a long log's replay stays small.
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), input.tuned().confirm(), (r, run) -> { },
+                LogReplay.Detail.VERDICTS);
         int code = ExitCodes.ofMonitor(replayed.monitor());
         // A log of several runs (the tick counter started again) is classified run by run.
         List<ReplayedRun> runs = replayed.runs().size() > 1

@@ -9,6 +9,7 @@ import dev.predmon.explain.Explanation;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.WarningRule;
+import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -44,7 +45,8 @@ final class ExplainCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         Abstraction abstraction = input.tuned();
         Replay.Approach approach = Explanation.approach(input.models(), abstraction);
-        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), confirm.value(abstraction), approach::record);
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), confirm.value(abstraction), approach::record,
+                LogReplay.Detail.FORECASTS);
         List<Explanation> runs = Explanation.of(replayed, input.models(), abstraction, approach);
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.

@@ -117,15 +117,16 @@ final class LogAgainstModels {
      * default rule, {@code confirm} and the abstraction tuned for them; refuses, as {@link #readLog} does, a log that
      * gives no evidence or that the abstraction does not fit, and prints its parse problems to {@code err}.
      *
-     * @param taken gets every record with its run right after the monitor took it
+     * @param taken  gets every record with its run right after the monitor took it
+     * @param detail what the replay keeps of each run
      */
-    ReplayedLog replay(PrintWriter err, int confirm, ObjIntConsumer<LogRecord> taken)
+    ReplayedLog replay(PrintWriter err, int confirm, ObjIntConsumer<LogRecord> taken, LogReplay.Detail detail)
             throws BadInputException, IOException {
         checkLog();
         ModelSet set = models();
         Abstraction abstraction = tuned();
         ReplayedLog replayed = LogReplay.replay(log(), set, abstraction, tolerance(), confirm,
-                PredictiveMonitor.defaultRule(set), taken);
+                PredictiveMonitor.defaultRule(set), taken, detail);
         Evidence evidence = replayed.evidence(abstraction);
         String missing = evidence.missing().or(evidence::fragment).orElse(null);
         if (missing != null) {

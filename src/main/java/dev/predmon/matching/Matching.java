@@ -73,9 +73,15 @@ public final class Matching {
                 contradicted);
     }
 
-    /** Whether some nominal model still matches the run. */
+    /** Whether some nominal model still matches the run. Asked after every record: a loop, no allocation. */
     public boolean nominalAlive() {
-        return trackers.stream().anyMatch(t -> t.alive() && !t.model().faulty());
+        for (int i = 0; i < trackers.size(); i++) {
+            ModelTracker t = trackers.get(i);
+            if (t.alive() && !t.model().faulty()) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The faulty scenarios some machine of which still matches the run, sorted. */

@@ -37,6 +37,17 @@ public final class LogReplay {
     private LogReplay() {
     }
 
+    /** What a replay keeps of each run beside its events, pairs and gaps. */
+    public enum Detail {
+        /** Every forecast, bound forecast and deadline forecast with its record: what learn, evaluate and explain read. */
+        FORECASTS,
+        /**
+         * The events, pairs and gaps only: what a verdict and the matching read ({@code classify}). The monitor judges
+         * exactly as with {@link #FORECASTS}; only what is kept differs, so a long log's replay stays small.
+         */
+        VERDICTS
+    }
+
     /**
      * Replays {@code log} against {@code models}, warning by {@code rule}.
      *
@@ -46,6 +57,13 @@ public final class LogReplay {
      */
     public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm,
                                      WarningRule rule, ObjIntConsumer<LogRecord> taken) throws IOException {
+        return replay(log, models, abstraction, tolerance, confirm, rule, taken, Detail.FORECASTS);
+    }
+
+    /** As above, keeping {@code detail} of each run. */
+    public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm,
+                                     WarningRule rule, ObjIntConsumer<LogRecord> taken, Detail detail)
+            throws IOException {
         List<Builder> runs = new ArrayList<>();
         PredictiveMonitor[] self = new PredictiveMonitor[1];
         LogRecord[] current = new LogRecord[1];
@@ -75,26 +93,9 @@ public final class LogReplay {
                 of(runs, monitor.run()).pairs.add(new ReplayedRun.Pair(pair, trigger.time(), trigger.line()));
             }
         });
-        monitor.onEveryDeadlineForecast(new DeadlineSteps() {
-            @Override
-            public void forecast(int run, Response property, LogRecord record, double elapsed,
-                                 Survival.Estimate raw) {
-                of(runs, run).pending.computeIfAbsent(property.id(), id -> new Pending()).steps
-                        .add(new ReplayedRun.Step(raw, elapsed, record.time(), record.line()));
-            }
-
-            @Override
-            public void ended(int run, Response property, LogRecord record, double duration, boolean discharged) {
-                Pending p = of(runs, run).pending.remove(property.id());
-                of(runs, run).obligations.add(new ReplayedRun.Obligation(property,
-                        p == null ? List.of() : p.steps, duration, discharged, record.time(), record.line(),
-                        p == null ? Double.NaN : p.warnedAt));
-            }
-        });
-        monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
-                current[0].time(), current[0].line(), monitor.pairs())));
-        monitor.onEveryBoundForecast((property, f, run) -> of(runs, run).bound(property, new ReplayedRun.Timed(f,
-                current[0].time(), current[0].line(), monitor.pairs())));
+        if (detail == Detail.FORECASTS) {
+            keepForecasts(monitor, runs, current);
+        }
         List<ParseProblem> problems = new ArrayList<>();
         long lines;
         try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, problems::add,
@@ -118,6 +119,30 @@ public final class LogReplay {
             throws IOException {
         return replay(log, models, abstraction, tolerance, confirm, PredictiveMonitor.defaultRule(models),
                 (r, run) -> { });
+    }
+
+    /** Keeps every forecast of {@code monitor}, of the forecast's property, every bound and every deadline. */
+    private static void keepForecasts(PredictiveMonitor monitor, List<Builder> runs, LogRecord[] current) {
+        monitor.onEveryDeadlineForecast(new DeadlineSteps() {
+            @Override
+            public void forecast(int run, Response property, LogRecord record, double elapsed,
+                                 Survival.Estimate raw) {
+                of(runs, run).pending.computeIfAbsent(property.id(), id -> new Pending()).steps
+                        .add(new ReplayedRun.Step(raw, elapsed, record.time(), record.line()));
+            }
+
+            @Override
+            public void ended(int run, Response property, LogRecord record, double duration, boolean discharged) {
+                Pending p = of(runs, run).pending.remove(property.id());
+                of(runs, run).obligations.add(new ReplayedRun.Obligation(property,
+                        p == null ? List.of() : p.steps, duration, discharged, record.time(), record.line(),
+                        p == null ? Double.NaN : p.warnedAt));
+            }
+        });
+        monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
+                current[0].time(), current[0].line(), monitor.pairs())));
+        monitor.onEveryBoundForecast((property, f, run) -> of(runs, run).bound(property, new ReplayedRun.Timed(f,
+                current[0].time(), current[0].line(), monitor.pairs())));
     }
 
     private static Builder of(List<Builder> runs, int run) {
