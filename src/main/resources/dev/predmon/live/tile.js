@@ -15,10 +15,12 @@ export function el(tag, cls, text) {
 /** States that ask for someone's attention: they can be acknowledged, and a warning or violation alerts. */
 export const NEEDS_ATTENTION = new Set(['violation', 'warning', 'unknown', 'no-verdict']);
 
+/** The robot's light: the worst of its properties', as the page counts it (a violated deadline is red too). */
 function light(t, small) {
-  const l = el('span', 'light ' + t.light + (small ? ' small' : ''), GLYPHS[t.state] || '');
+  const state = shownState(t);
+  const l = el('span', 'light ' + shownLight(t) + (small ? ' small' : ''), GLYPHS[state] || '');
   l.setAttribute('role', 'img');
-  l.setAttribute('aria-label', STATE_WORDS[t.state] || t.state);
+  l.setAttribute('aria-label', STATE_WORDS[state] || state);
   return l;
 }
 

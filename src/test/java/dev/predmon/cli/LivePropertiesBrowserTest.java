@@ -187,6 +187,10 @@ class LivePropertiesBrowserTest {
                     + ".map(t => t.dataset.log))"));
             assertEquals(aborts, order.get(0).asText(), "the robot with a property violated first: " + order);
             assertEquals(stuck, order.get(1).asText(), "then the one warned: " + order);
+            // the robot's own light, beside its name, is its worst property's, though its battery holds
+            String own = "(l => l.className.split(' ').pop() + ' ' + l.getAttribute('aria-label'))";
+            assertEquals("red VIOLATION", page.eval(own + "((" + of(aborts) + ").querySelector('.light'))"));
+            assertEquals("yellow WARNING", page.eval(own + "((" + of(stuck) + ").querySelector('.light'))"));
             screenshot(page, "live-properties.png");
 
             page.eval("document.getElementById('view').click(), 'ok'");
