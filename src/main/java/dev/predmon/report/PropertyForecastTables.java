@@ -45,7 +45,7 @@ final class PropertyForecastTables {
             h.append("<p>No other property has a forecast with a probability on these runs.</p>\n");
             return;
         }
-        h.append("<h3 id=property-forecasts>Their forecasts</h3>\n<p>").append(Svg.esc(HEADER)).append("</p>\n");
+        h.append("<h3 id=property-forecasts>Their forecasts</h3>\n<p>").append(Svg.esc(Character.toUpperCase(HEADER.charAt(0)) + HEADER.substring(1))).append("</p>\n");
         for (PropertyScore p : scores) {
             Reliability r = p.forecast();
             h.append("<p><b>").append(Svg.esc(p.property())).append("</b>: ").append(Svg.esc(summary(r, p.scope())))
