@@ -116,8 +116,8 @@ class ScopedBoundCliTest {
                 .flatMap(s -> s.logs().stream()).toList(), a).values().stream().flatMap(t -> t.runs().stream())
                 .toList();
         long scoped = runs.stream().filter(r -> r.timing().violated(ID)).count();
-        long raw = runs.stream().filter(r -> r.timing().bounds().get(ID).stream().anyMatch(x -> x.value() < 48))
-                .count();
+        // the battery's readings, the same value, read in every run's every record
+        long raw = runs.stream().filter(r -> r.timing().readings().stream().anyMatch(x -> x.value() < 48)).count();
         assertTrue(scoped > 0 && scoped < raw, "scoped " + scoped + ", below 48 anywhere " + raw);
         Path models = tmp.resolve("models");
         Cli learn = Cli.run("learn", "--logs", logs.toString(), "--models", models.toString(), "--abstraction",
@@ -125,6 +125,9 @@ class ScopedBoundCliTest {
         assertEquals(0, learn.code(), learn.err());
         JsonNode forecast = JSON.readTree(models.resolve("forecast.json").toFile()).get("bounds").get(ID);
         assertEquals(scoped, forecast.get("violating").asLong(), "labelled by the scoped verdict: " + forecast);
+        assertFalse(forecast.get("safeLows").isEmpty(), forecast.toString());
+        forecast.get("safeLows").forEach(low -> assertTrue(low.asDouble() >= 48,
+                "a safe run's lowest value is the lowest within the scope: " + forecast.get("safeLows")));
 
         // below the floor out of the scope, back up, then below it on the way to the kitchen
         Capture c = new Capture();
