@@ -24,6 +24,11 @@ import java.util.function.Consumer;
  * when the forecast no longer warns and the value moved back from the bound past where it warned (by
  * {@link Alarm#RISE} of its distance) and past every safe training run's extreme; the violation, when the property
  * holds again. Constant state per property.
+ *
+ * <p>A property with a scope is forecast and warned only while its scope is open, as the checker sees it ({@link
+ * PropertyChecker#inScope}): outside it the property cannot be violated, so nothing is told of it (no forecast, no
+ * warning) and its value outside counts for no violation. When the scope closes, a warning or a violation still up
+ * ends ({@link #SCOPE}); when it opens, the forecast starts over, as the check does, from the states the run is in.
  */
 public final class BoundWatch {
 
@@ -36,6 +41,9 @@ public final class BoundWatch {
         /** A forecast of {@code property} in run {@code run}. */
         void forecast(String property, Forecast f, int run);
     }
+
+    /** The cause of a recovery that the property's scope closed. */
+    static final String SCOPE = "scope";
 
     private Every every = (p, f, r) -> { };
 
@@ -50,6 +58,10 @@ public final class BoundWatch {
     /** Each property's value (forecast's scale) at its warning while one is up, else NaN. */
     private final double[] warnedAt;
     private final boolean[] violated;
+    /** Whether each property's scope is open (always, for the whole run). */
+    private final boolean[] open;
+    /** Whether each property's scope opened since its last value. */
+    private final boolean[] opened;
 
     /** The forecasts {@code models} carry for the bound {@code properties}; none without a forecast. */
     BoundWatch(List<Property> properties, ModelSet models, WarningRule rule, RunState now,
@@ -64,6 +76,8 @@ public final class BoundWatch {
         this.value = new double[n];
         this.warnedAt = new double[n];
         this.violated = new boolean[n];
+        this.open = new boolean[n];
+        this.opened = new boolean[n];
         for (int i = 0; i < n; i++) {
             BoundModel m = models.forecast() == null ? null : models.forecast().bounds().get(properties.get(i).id());
             if (properties.get(i) instanceof Bound b && m != null) {
@@ -85,9 +99,9 @@ public final class BoundWatch {
         return !Double.isNaN(warnedAt[index]);
     }
 
-    /** The latest forecast of property {@code index} as the property reads, or null before one. */
+    /** The latest forecast of property {@code index} as the property reads, or null before one or out of its scope. */
     Forecast current(int index) {
-        return trackers[index] == null ? null : models[index].shown(trackers[index].last());
+        return trackers[index] == null || !open[index] ? null : models[index].shown(trackers[index].last());
     }
 
     /** Reports every forecast's times in seconds, a tick lasting {@code t}. */
@@ -104,6 +118,10 @@ public final class BoundWatch {
         Arrays.fill(value, Double.NaN);
         Arrays.fill(warnedAt, Double.NaN);
         Arrays.fill(violated, false);
+        Arrays.fill(opened, false);
+        for (int i = 0; i < bounds.length; i++) {
+            open[i] = bounds[i] != null && bounds[i].scope().global();
+        }
         for (ForecastTracker f : trackers) {
             if (f != null) {
                 f.reset();
@@ -114,15 +132,24 @@ public final class BoundWatch {
     /** After {@code checker} took {@code r}: each property's new value, its forecast, warning and recovery. */
     void record(PropertyChecker checker, LogRecord r, boolean beyondNominal) {
         for (int i = 0; i < bounds.length; i++) {
-            double raw = bounds[i] == null ? Double.NaN : checker.value(i);
+            if (bounds[i] == null) {
+                continue;
+            }
+            scope(i, checker.inScope(i), r);
+            double raw = checker.value(i);
             if (Double.isNaN(raw)) {
                 continue;
             }
             double v = models[i].value(raw);
-            if (v == value[i]) {
+            if (v == value[i] && !opened[i]) {
                 continue;
             }
             value[i] = v;
+            opened[i] = false; // the segment's first value is judged, even if it did not change
+            if (!open[i]) {
+                trackers[i].reading(r.time(), v); // followed, not told: the property is not checked here
+                continue;
+            }
             if (bounds[i].violatedBy(raw)) {
                 violated[i] = true;
                 warnedAt[i] = Double.NaN; // the violation overtakes the warning
@@ -152,8 +179,11 @@ public final class BoundWatch {
             if (bounds[i] == null) {
                 continue;
             }
-            Forecast f = told(i, trackers[i].pair(pair.input(), pair.output(), trigger.time(), value[i],
-                    trigger.line()), trigger);
+            Forecast news = trackers[i].pair(pair.input(), pair.output(), trigger.time(), value[i], trigger.line());
+            if (!open[i]) {
+                continue;
+            }
+            Forecast f = told(i, news, trigger);
             decide(i, f, !step.nominalAlive(), trigger, "after " + pair.input() + " -> " + pair.output());
         }
     }
@@ -170,6 +200,31 @@ public final class BoundWatch {
     /** Also tells {@code each} every forecast. */
     void onEveryForecast(Every each) {
         this.every = each;
+    }
+
+    /**
+     * Property {@code i}'s scope is {@code in} after record {@code r}: when it opens, the forecast starts over (and
+     * tells its next forecast); when it closes, a warning or violation still up ends, for the property holds there.
+     */
+    private void scope(int i, boolean in, LogRecord r) {
+        if (in == open[i]) {
+            return;
+        }
+        open[i] = in;
+        if (in) {
+            trackers[i].startOver();
+            opened[i] = true;
+            return;
+        }
+        if (warned(i) || violated[i]) {
+            double raw = Double.isNaN(value[i]) ? Double.NaN : models[i].value(value[i]);
+            Bound b = bounds[i];
+            events.accept(new MonitorEvent.Recovered(r.time(), r.line(), SCOPE, raw, "'" + b.name() + "' ("
+                    + b.id() + "): out of its scope at " + b.scope().until().describe() + "; not checked until "
+                    + b.scope().from().describe() + " again", r.clock(), now.run, b.id()));
+        }
+        warnedAt[i] = Double.NaN;
+        violated[i] = false;
     }
 
     /** Reports {@code news} of property {@code i} if it is news; returns its latest forecast (forecast's scale). */

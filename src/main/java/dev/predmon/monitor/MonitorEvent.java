@@ -112,7 +112,7 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param line   its line
      * @param cause    {@code property} (the property holds again after its violation), {@code forecast} or
      *                 {@code action}; for a bounded response's deadline warning, {@code discharged} (the response came
-     *                 in time)
+     *                 in time); for a bound with a scope, {@code scope} (the scope closed)
      * @param value    the property's value there (NaN for a property without one, a bounded response)
      * @param reason   why, in an operator's words
      * @param clock    what {@code time} counts

@@ -212,7 +212,9 @@ public final class Traces {
             }
             unit = record.clock().unit();
             for (int i = 0; i < others.length; i++) {
-                double b = others[i] == null ? Double.NaN : checker.value(i);
+                // as the checker read it within the property's scope: a value outside it neither violates the
+                // property nor tells how low its safe runs went
+                double b = others[i] == null ? Double.NaN : checker.reading(i);
                 if (!Double.isNaN(b) && b != otherValues[i]) {
                     others[i].add(new RunTiming.Reading(record.time(), b, pairs.size()));
                     otherValues[i] = b;

@@ -156,6 +156,14 @@ public final class PropertyChecker {
         return slots[index] < 0 ? Double.NaN : readings.value(slots[index]);
     }
 
+    /**
+     * Whether property {@code index} is checked now, after the last record: its scope is the whole run, or a segment of
+     * it opened and has not closed (a segment's closing record was checked, and the scope is closed after it).
+     */
+    public boolean inScope(int index) {
+        return scopes[index].global() || open[index];
+    }
+
     /** The verdict of property {@code index} on the run so far. */
     public Verdict verdict(int index) {
         if (violated[index] != null) {
