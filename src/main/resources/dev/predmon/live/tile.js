@@ -15,10 +15,14 @@ export function el(tag, cls, text) {
 /** States that ask for someone's attention: they can be acknowledged, and a warning or violation alerts. */
 export const NEEDS_ATTENTION = new Set(['violation', 'warning', 'unknown', 'no-verdict']);
 
-/** The robot's light: the worst of its properties', as the page counts it (a violated deadline is red too). */
+/**
+ * A robot's light. Beside its name on a tile: the worst of its properties', as the page counts it (a violated deadline
+ * is red there too; the forecast property's own light is in the list below). On a compact row ({@code small}): the
+ * forecast property's own, with the worst of the others in a chip beside it.
+ */
 function light(t, small) {
-  const state = shownState(t);
-  const l = el('span', 'light ' + shownLight(t) + (small ? ' small' : ''), GLYPHS[state] || '');
+  const state = small ? t.state : shownState(t);
+  const l = el('span', 'light ' + (small ? t.light : shownLight(t)) + (small ? ' small' : ''), GLYPHS[state] || '');
   l.setAttribute('role', 'img');
   l.setAttribute('aria-label', STATE_WORDS[state] || state);
   return l;
