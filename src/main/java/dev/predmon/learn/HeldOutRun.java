@@ -49,17 +49,8 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
     }
 
     /**
-     * The runs of {@code log} that {@code label} selects and that have a pair, replayed against {@code models} (which
-     * carry a forecast) by {@code rule} with exact matching, as {@code watch} replays them.
-     */
-    public static List<HeldOutRun> replay(Path log, RunLabel label, ModelSet models, Abstraction abstraction,
-                                          int confirm, WarningRule rule) throws IOException {
-        return of(LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { }), label);
-    }
-
-    /**
-     * The same runs of one replay ({@link #replay}), as the forecast's property and as each bound property with a
-     * forecast of its own in {@code models} saw them.
+     * The runs of one replay, as the forecast's property and as each bound property with a forecast of its own in
+     * {@code models} saw them.
      *
      * @param safety the runs as the forecast's property saw them
      * @param bounds by bound property id, the runs as it saw them: its own violation, forecasts and warning
@@ -67,7 +58,11 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
     public record Judged(List<HeldOutRun> safety, Map<String, List<HeldOutRun>> bounds) {
     }
 
-    /** As {@link #replay}, with every bound property's forecasts from the same replay. */
+    /**
+     * The runs of {@code log} that {@code label} selects and that have a pair, replayed once against {@code models}
+     * (which carry a forecast) by {@code rule} with exact matching, as {@code watch} replays them: as the forecast's
+     * property and every bound property saw them.
+     */
     public static Judged replayAll(Path log, RunLabel label, ModelSet models, Abstraction abstraction, int confirm,
                                    WarningRule rule) throws IOException {
         ReplayedLog replayed = LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { });

@@ -44,7 +44,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * Every path that judges a log judges it alike: {@code learn}'s held-out replay ({@link HeldOutRun#replay}, which
+ * Every path that judges a log judges it alike: {@code learn}'s held-out replay ({@link HeldOutRun#replayAll}, which
  * chooses the threshold and the calibration), {@code evaluate}'s {@link Replay}, {@code explain}, {@code classify} and
  * {@code watch --no-follow --json}, each run in process, against the one replay of the log ({@link LogReplay}). Per
  * run they must give the same forecasts (probability and time to the violation, as numbers: exactly where a path
@@ -164,8 +164,8 @@ class ReplayDifferentialTest {
     void aDeadlineForecastOffByOneUlpIsADisagreement() throws Exception {
         Path log = Path.of("sample-logs/recharge/recharge-3.log");
         Paths paths = new Paths(Path.of("models"));
-        HeldOutRun run = HeldOutRun.replay(log, RunLabel.ALL, paths.models, paths.abstraction, paths.confirm,
-                paths.rule).get(0);
+        HeldOutRun run = HeldOutRun.replayAll(log, RunLabel.ALL, paths.models, paths.abstraction, paths.confirm,
+                paths.rule).safety().get(0);
         String id = "navigation-in-time";
         DeadlineRule rule = paths.models.forecast().deadlineRule(id);
         Response navigation = (Response) paths.abstraction.properties().stream().filter(p -> p.id().equals(id))
@@ -388,8 +388,8 @@ class ReplayDifferentialTest {
         if (paths.models.forecast() == null || paths.rule != WarningRule.FORECAST) {
             return; // no deadline forecast without the forecast rule
         }
-        List<HeldOutRun> held = HeldOutRun.replay(log, RunLabel.ALL, paths.models, paths.abstraction, paths.confirm,
-                paths.rule);
+        List<HeldOutRun> held = HeldOutRun.replayAll(log, RunLabel.ALL, paths.models, paths.abstraction,
+                paths.confirm, paths.rule).safety();
         List<ReplayedRun> scored = reference.runs().stream().filter(r -> !r.pairs().isEmpty()).toList();
         if (held.size() != scored.size()) {
             return; // told by learn()
