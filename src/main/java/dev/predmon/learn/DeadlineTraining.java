@@ -125,7 +125,7 @@ public final class DeadlineTraining {
             }
         }
         return new HeldOut(fold, o.missed(), o.duration(), ps, elapsed, o.warnedAt(),
-                survival.survival(o.property().within().amount()));
+                survival.missRate(o.property().within().amount()));
     }
 
     /** The rule {@code judged} choose: a threshold and a calibration when they validate one, else the default. */
