@@ -44,6 +44,16 @@ abstract class Check {
     void finish() {
     }
 
+    /**
+     * Whether {@code r}, just stepped, is evidence for the property: a record of what it speaks of (a bound's value, an
+     * absence's or a precedence's message, a response's trigger), whatever its argument or reply. Asked until the
+     * first such record of the run.
+     */
+    abstract boolean evidences(LogRecord r);
+
+    /** What no record of a run without evidence showed, in words: {@code no reading of BatteryReader/level}. */
+    abstract String unseen();
+
     /** Whether the check reads a value (a bound's, which the forecast follows even after the violation). */
     boolean reads() {
         return false;
@@ -102,6 +112,16 @@ abstract class Check {
         }
 
         @Override
+        boolean evidences(LogRecord r) {
+            return !Double.isNaN(reading);
+        }
+
+        @Override
+        String unseen() {
+            return "no reading of " + p.value().describeWithPorts();
+        }
+
+        @Override
         void reset() {
             last = Double.NaN;
         }
@@ -109,9 +129,22 @@ abstract class Check {
 
     private static final class AbsenceCheck extends Check {
         private final Absence p;
+        /** The event's messages, whatever their values: that one came is evidence that the event could have. */
+        private final Event messages;
 
         AbsenceCheck(Absence p) {
             this.p = p;
+            this.messages = p.event().messages();
+        }
+
+        @Override
+        boolean evidences(LogRecord r) {
+            return messages.matches(r);
+        }
+
+        @Override
+        String unseen() {
+            return "no " + messages.describe();
         }
 
         @Override
@@ -128,10 +161,23 @@ abstract class Check {
 
     private static final class PrecedenceCheck extends Check {
         private final Precedence p;
+        /** The messages of {@code then}, whatever their values. */
+        private final Event messages;
         private boolean seen;
 
         PrecedenceCheck(Precedence p) {
             this.p = p;
+            this.messages = p.then().messages();
+        }
+
+        @Override
+        boolean evidences(LogRecord r) {
+            return messages.matches(r);
+        }
+
+        @Override
+        String unseen() {
+            return "no " + messages.describe();
         }
 
         @Override

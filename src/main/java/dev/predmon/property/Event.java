@@ -33,6 +33,11 @@ public record Event(List<RecordMatch> alternatives) {
         return false;
     }
 
+    /** The messages this event picks records of, whatever their argument and reply ({@link RecordMatch#message}). */
+    public Event messages() {
+        return new Event(alternatives.stream().map(RecordMatch::message).distinct().toList());
+    }
+
     /** In a user's words, alternatives joined by {@code or}. */
     public String describe() {
         return alternatives.stream().map(RecordMatch::describe).collect(Collectors.joining(" or "));
