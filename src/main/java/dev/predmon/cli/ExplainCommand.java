@@ -120,6 +120,9 @@ final class ExplainCommand implements Callable<Integer> {
                 ? String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime())
                 : r.safetyObserved() ? "the safety property holds throughout the log"
                 : "the safety property is not observed in the log (no value for it): no verdict on it");
+        // a property none of whose records occurred: said, so that silence about it is not read as "holds"
+        r.properties().stream().filter(RunResult.PropertyResult::noEvidence)
+                .forEach(p -> out.println(p.property() + ": " + p.words() + ": no verdict on it"));
     }
 
     /** {@code explain --json}: the explanation with its forecasts as {@code watch --json} writes them. */

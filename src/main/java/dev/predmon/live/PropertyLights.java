@@ -25,7 +25,8 @@ import static dev.predmon.live.TileJson.number;
 /**
  * One light per property of a tile's run, worst first, as SCOPE's monitors show a robot's properties: red while the
  * property is violated, yellow while a warning of it is up, grey where nothing can be said (no reading yet, a run the
- * models cannot judge, an obligation pending longer than any training one), green while it holds, a pending obligation
+ * models cannot judge, an obligation pending longer than any training one, no evidence: nothing the property speaks of
+ * occurred in the run), green while it holds, a pending obligation
  * included (it is the robot's ordinary work: its forecast says how it is going; a warning makes it yellow). Each light
  * has its property's verdict in words and its forecast where there is one, or says that there is none.
  *
@@ -40,6 +41,7 @@ final class PropertyLights {
         VIOLATED("violated", "red"),
         WARNING("warning", "yellow"),
         UNKNOWN("unknown", "grey"),
+        NO_EVIDENCE("no-evidence", "grey"),
         PENDING("pending", "green"),
         HOLDS("holds", "green");
 
@@ -147,6 +149,8 @@ final class PropertyLights {
             o.put("since", x.since());
             o.put("deadline", x.deadline());
             o.put("unit", x.unit().key);
+        } else if (v instanceof Verdict.NoEvidence x) {
+            o.put("what", x.why());
         }
         o.put("action", p.action());
         return o;
@@ -167,6 +171,9 @@ final class PropertyLights {
         } else if (s.warned()) {
             light = Light.WARNING;
             words = warnings.getOrDefault(p.id(), "warned: " + v.describe());
+        } else if (v instanceof Verdict.NoEvidence) {
+            light = Light.NO_EVIDENCE;
+            words = v.describe();
         } else if (v instanceof Verdict.Pending && e != null && e.novel()) {
             light = Light.UNKNOWN;
             words = "no evidence: " + v.describe() + ", longer than any training obligation";
@@ -252,8 +259,9 @@ final class PropertyLights {
             case VIOLATION -> Light.VIOLATED;
             case WARNING -> Light.WARNING;
             case UNKNOWN, NO_VERDICT, WAITING -> Light.UNKNOWN;
-            case ENDED -> v instanceof Verdict.Violated ? Light.VIOLATED : Light.HOLDS;
-            case OK -> Light.HOLDS;
+            case ENDED -> v instanceof Verdict.Violated ? Light.VIOLATED : v instanceof Verdict.NoEvidence
+                    ? Light.NO_EVIDENCE : Light.HOLDS;
+            case OK -> v instanceof Verdict.NoEvidence ? Light.NO_EVIDENCE : Light.HOLDS;
         };
         ObjectNode o = base(p, v, light);
         o.put("words", switch (state) {
@@ -263,7 +271,8 @@ final class PropertyLights {
             case NO_VERDICT -> "no verdict: the models cannot judge this log";
             case WAITING -> "no reading yet";
             case ENDED -> "run ended: " + (v == null ? "holds" : v.describe());
-            case OK -> v instanceof Verdict.Violated ? "holds again" : "holds";
+            case OK -> v instanceof Verdict.Violated ? "holds again" : v instanceof Verdict.NoEvidence ? v.describe()
+                    : "holds";
         });
         o.put("model", PropertyStatus.Model.FORECAST.id());
         o.set("forecast", forecast == null ? null : forecast.deepCopy());

@@ -129,12 +129,12 @@ abstract class Check {
 
     private static final class AbsenceCheck extends Check {
         private final Absence p;
-        /** The event's messages, whatever their values: that one came is evidence that the event could have. */
+        /** That one came is evidence that the event could have ({@link Event#evidence}). */
         private final Event messages;
 
         AbsenceCheck(Absence p) {
             this.p = p;
-            this.messages = p.event().messages();
+            this.messages = p.event().evidence();
         }
 
         @Override
@@ -161,13 +161,13 @@ abstract class Check {
 
     private static final class PrecedenceCheck extends Check {
         private final Precedence p;
-        /** The messages of {@code then}, whatever their values. */
+        /** What tells that {@code then} could have come ({@link Event#evidence}). */
         private final Event messages;
         private boolean seen;
 
         PrecedenceCheck(Precedence p) {
             this.p = p;
-            this.messages = p.then().messages();
+            this.messages = p.then().evidence();
         }
 
         @Override

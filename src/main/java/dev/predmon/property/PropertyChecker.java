@@ -16,8 +16,10 @@ import java.util.List;
  * segment starts the property's check afresh and a response owed when a segment closes is violated there.
  *
  * <p>Evidence: a property that is neither violated nor pending holds only when something it speaks of occurred in
- * the run, within its scope: a bound's value was read, a record of an absence's or a precedence's ({@code then})
- * message came, whatever its argument or reply, a response's trigger came (or its condition's value was read).
+ * the run, within its scope: a bound's value was read; a record that tells an absence's (or a precedence's
+ * {@code then}) event could have come, its message with another value or, for an event that names no value, any
+ * message of its component ({@link Event#evidence}); a response's trigger, whatever its value (or a reading of its
+ * condition's value).
  * Otherwise its verdict is {@link Verdict.NoEvidence}: a misspelt name is never "holds".
  */
 public final class PropertyChecker {

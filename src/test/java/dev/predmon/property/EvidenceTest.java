@@ -76,6 +76,20 @@ class EvidenceTest {
         assertEquals("violated", verdict(noAbort, drained().status("kitchen", 3)).id());
     }
 
+    /**
+     * An absence of a message that names no value (a command that must never be called) holds once its component
+     * was heard from: that the command never came is the property holding, even when no log ever holds it.
+     */
+    @Test
+    void anAbsenceOfAValuelessMessageHoldsOnceItsComponentWasHeardFrom() {
+        Absence neverHalt = new Absence("no-halt", "the navigation is never halted", null, Scope.GLOBAL,
+                event(command("GoTo", "halt")));
+        assertEquals(Verdict.HOLDS, verdict(neverHalt, drained()), "GoTo was busy, and never halted");
+        assertEquals(new Verdict.NoEvidence("no GoTo/any message in the run"),
+                verdict(neverHalt, new Trace().tick().level(50)));
+        assertEquals("violated", verdict(neverHalt, drained().halt("kitchen")).id());
+    }
+
     @Test
     void aResponseWhoseTriggerNeverCameHasNoEvidence() {
         Deadline eight = new Deadline(8, Deadline.Unit.OCCURRENCES, event(command("ArmService", "closehand")));
@@ -108,7 +122,7 @@ class EvidenceTest {
                 Scope.GLOBAL, event(new RecordMatch(RecordKind.REPLY, "BatteryReader", "level", null, null, null,
                 null)), event(command("GoTo", "goTo")));
         assertEquals(Verdict.HOLDS, verdict(p, drained()));
-        assertEquals(new Verdict.NoEvidence("no GoTo/goTo command in the run"),
+        assertEquals(new Verdict.NoEvidence("no GoTo/any message in the run"),
                 verdict(p, new Trace().tick().level(40)), "no navigation: nothing came before or after anything");
     }
 
