@@ -16,14 +16,17 @@ import java.util.function.Function;
  *
  * <p>Every record matcher of a property is checked: each of its names on its own (protocol, command, ports), then
  * that some record is all of them together, then that one came with its argument and reply. An absence's event is
- * checked to its message only: that its value never came is the absence holding, not a typo. An event of several
- * alternatives is a problem when one of its names occurs nowhere, or when none of them occurs; an alternative that
- * is spelt right but never came (a {@code halt} no run needed) is none.
+ * checked to its message only: that its value never came is the absence holding, not a typo. Of an event of several
+ * alternatives, each name is checked, and the event must have come as one of them; an alternative whose names occur
+ * but that never came (a {@code getStatus} reply {@code 4} where every navigation replied {@code 2}) is none. A
+ * name that no log holds is told whether it is misspelt or only never came in these logs: the logs cannot tell.
  */
 public final class UnseenNames {
 
     /** Nearest names offered, at most. */
     private static final int NEAREST = 3;
+    /** The shortest name offered its nearest names. */
+    private static final int MIN_NEAR = 3;
 
     /**
      * A name no log holds.
@@ -109,10 +112,20 @@ public final class UnseenNames {
         }
         if (alternatives.size() == 1) {
             together(alternatives.get(0), at, values);
-        } else if (alternatives.stream().allMatch(m -> seen.matching(m).isEmpty())) {
-            add(at, e.messages().describe(), "no record matches any of " + e.messages().describe()
-                    + ": each name occurs, never together");
+        } else if (alternatives.stream().noneMatch(m -> came(m, values))) {
+            add(at, e.describe(), "no record is any of " + e.describe() + ", though each name occurs");
         }
+    }
+
+    /** Whether a record of {@code m} came (with its argument and reply, when {@code values}). */
+    private boolean came(RecordMatch m, boolean values) {
+        List<Vocabulary.Message> messages = seen.matching(m);
+        if (messages.isEmpty() || !values) {
+            return !messages.isEmpty();
+        }
+        return (m.replies() == null || !seen.allKept(messages, true) || seen.anyValue(messages, m.replies(), true))
+                && (m.arguments() == null || !seen.allKept(messages, false)
+                || seen.anyValue(messages, m.arguments(), false));
     }
 
     /** A bound's or a condition's value: its reply must have come, and been a number. */
@@ -202,19 +215,25 @@ public final class UnseenNames {
      * that occur.
      */
     static String unseen(String given, Set<String> names, String what) {
-        List<String> near = nearest(given, names);
+        // a short value (a status code, 1 for 0) is near any other: the values that occur say more
+        List<String> near = given.length() < MIN_NEAR ? List.of() : nearest(given, names);
         return "'" + given + "' occurs in no log (" + (!near.isEmpty() ? "nearest that occur: " + String.join(", ", near)
                 : names.isEmpty() ? "no " + what + " occurs" : "those that occur: " + some(names)) + ")";
     }
 
-    /** Up to {@value #NEAREST} of {@code names} within a third of the length of {@code given} (2 at least). */
+    /**
+     * Up to {@value #NEAREST} of {@code names} within a third of the length of {@code given} (2 at least), nearest
+     * first.
+     */
     static List<String> nearest(String given, Set<String> names) {
         LevenshteinDistance distance = new LevenshteinDistance(Math.max(2, given.length() / 3));
         record Near(String name, int distance) {
         }
+        // ties: the same length first (a transposition, getStatsu for getStatus, keeps it), then by name
         return names.stream().map(n -> new Near(n, distance.apply(given, n))).filter(n -> n.distance() >= 0)
-                .sorted(Comparator.comparingInt(Near::distance).thenComparing(Near::name)).limit(NEAREST)
-                .map(Near::name).toList();
+                .sorted(Comparator.comparingInt(Near::distance)
+                        .thenComparingInt(n -> Math.abs(n.name().length() - given.length())).thenComparing(Near::name))
+                .limit(NEAREST).map(Near::name).toList();
     }
 
     /** A few names, and how many more. */
