@@ -16,7 +16,6 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 import static dev.predmon.live.TileJson.JSON;
@@ -51,6 +50,16 @@ final class PropertyLights {
         Light(String id, String colour) {
             this.id = id;
             this.colour = colour;
+        }
+
+        /** The light whose {@code /status} state is {@code id}. */
+        static Light of(String id) {
+            for (Light l : values()) {
+                if (l.id.equals(id)) {
+                    return l;
+                }
+            }
+            throw new IllegalArgumentException("no light '" + id + "'");
         }
     }
 
@@ -123,7 +132,7 @@ final class PropertyLights {
                     state == TileState.NO_VERDICT, skills.get(p.name())));
         }
         // stable: the abstraction's order within a light
-        lights.sort(Comparator.comparing(o -> Light.valueOf(o.get("state").asText().toUpperCase(Locale.ROOT))));
+        lights.sort(Comparator.comparing(o -> Light.of(o.get("state").asText())));
         ArrayNode a = JSON.createArrayNode();
         lights.forEach(a::add);
         return a;
