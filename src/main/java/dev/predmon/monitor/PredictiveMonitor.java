@@ -93,7 +93,10 @@ public final class PredictiveMonitor implements PipelineListener {
         this.forecast = ForecastTracker.of(models);
         this.matching = new Matching(models.models(), tolerance, confirm);
         Bound safety = abstraction.safety().orElse(null);
-        this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
+        this.events = e -> { // in seconds once a tick's length is given
+            now.told(e);
+            events.accept(ticks.event(e));
+        };
         this.alarm = new Alarm(safety, forecast, this.events);
         WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
         this.others = new OtherForecasts(models, abstraction, rule, matching, now, this.events);
@@ -143,6 +146,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         tee.runStarted(number, first);
+        properties.ending(first, now.run); // a deadline the silence before it passed is violated, not dropped
         finished.add(current());
         startRun(runsBefore + number, first.line());
         events.accept(new MonitorEvent.RunStarted(now.run, first.time(), first.line(), first.clock()));
@@ -167,7 +171,7 @@ public final class PredictiveMonitor implements PipelineListener {
         return new RunOutcome(now.run, now.firstLine, (MonitorEvent.Warning) ticks.event(now.warning),
                 (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs, now.value != null,
                 forecast == null ? null : forecast.last(), properties.verdicts(),
-                (MonitorEvent.Warning) ticks.event(now.anyWarning));
+                (MonitorEvent.Warning) ticks.event(now.anyWarning), now.warningRead, now.violationRead);
     }
 
     /**
@@ -200,6 +204,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void record(LogRecord record) {
         tee.record(record);
+        now.read++;
         clock = ticks.clock(record.clock());
         int run = now.run;
         properties.accept(record, run);
