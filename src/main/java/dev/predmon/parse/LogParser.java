@@ -44,7 +44,7 @@ public final class LogParser {
     private LogLayout layout;
     /** While the layout is unknown: the last three lines, which a save file's first entry needs. */
     private final RecentLines recent = new RecentLines();
-    /** YARP's own lines before the layout was known ({@link YarpLines}). */
+    /** YARP's own lines about the monitor's port before the layout was known ({@link YarpLines}). */
     private long yarpLines;
 
     /**
@@ -183,7 +183,8 @@ public final class LogParser {
 
     /**
      * How many of the lines before the first record header (since construction or the last {@link #reset()}) were
-     * YARP's own ({@code Port /monitor active at ...}): what a monitor prints before the robot's first message.
+     * YARP's own about the monitor's port ({@code Port /monitor active at ...}): what a monitor prints before the
+     * robot's first message.
      */
     public long yarpLines() {
         return yarpLines;

@@ -3,12 +3,13 @@ package dev.predmon.parse;
 import java.util.regex.Pattern;
 
 /**
- * YARP's own lines: what every YARP program, the monitor included, prints of its ports and connections, such as
- * {@code [INFO] |yarp.os.Port| Port /monitor active at tcp://10.0.0.2:10032/} and
+ * YARP's own lines about the monitor's port: what YARP prints of the monitor's port and its connections when the
+ * monitor starts, such as {@code [INFO] |yarp.os.Port| Port /monitor active at tcp://10.0.0.2:10032/} and
  * {@code [INFO] |yarp.os.impl.PortCoreInputUnit| Receiving input from /tick/monitor to /monitor using tcp}, with
  * colour codes or without, YARP 3's {@code |yarp.os.Port|/monitor|} form and YARP 2's {@code yarp: Port ...}. A monitor
  * started before the robot prints these and no record until the robot's first message: a log that holds only them
- * is a monitor log still waiting for its first record, not another program's file.
+ * is a monitor log still waiting for its first record. YARP's lines of another program's ports ({@code Port /tool1
+ * active}) are not: that program's log is no monitor log.
  */
 final class YarpLines {
 
@@ -18,8 +19,9 @@ final class YarpLines {
     private YarpLines() {
     }
 
-    /** Whether {@code line} is one of YARP's own lines. */
+    /** Whether {@code line} is one of YARP's own lines about the monitor's port. */
     static boolean is(String line) {
-        return line.contains("yarp") && YARP.matcher(ConsoleLayout.withoutColours(line)).find();
+        return line.contains("yarp") && line.contains("monitor")
+                && YARP.matcher(ConsoleLayout.withoutColours(line)).find();
     }
 }

@@ -397,8 +397,9 @@ class LogParserTest {
     }
 
     /**
-     * YARP's own lines before the first record, as the monitor prints them when it starts (colour codes, YARP 3's
-     * two forms, YARP 2's prefix), are counted; other programs' lines and the records are not.
+     * YARP's own lines about the monitor's port before the first record, as the monitor prints them when it starts
+     * (colour codes, YARP 3's two forms, YARP 2's prefix), are counted; another program's ports, other programs' lines
+     * and the records are not.
      */
     @Test
     void yarpsStartUpLinesAreCountedBeforeTheFirstRecord() {
@@ -411,6 +412,7 @@ class LogParserTest {
             "[INFO]|yarp.os.Port|/monitor| Port /monitor active at tcp://10.0.0.7:10002/",
             "yarp: Port /monitor active at tcp://10.0.0.7:10002/",
             "GammaRay server listening on: tcp://127.0.0.1:11732",
+            "[INFO] |yarp.os.Port| Port /tool1 active at tcp://10.0.0.1:10002/",
             "[INFO] has grasped ret value 0",
             "robot: the yarp server is down",
         }) {
