@@ -93,10 +93,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.forecast = ForecastTracker.of(models);
         this.matching = new Matching(models.models(), tolerance, confirm);
         Bound safety = abstraction.safety().orElse(null);
-        this.events = e -> { // in seconds once a tick's length is given
-            now.told(e);
-            events.accept(ticks.event(e));
-        };
+        this.events = e -> events.accept(ticks.event(now.told(e))); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety, forecast, this.events);
         WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
         this.others = new OtherForecasts(models, abstraction, rule, matching, now, this.events);
@@ -174,10 +171,7 @@ public final class PredictiveMonitor implements PipelineListener {
                 (MonitorEvent.Warning) ticks.event(now.anyWarning), now.warningRead, now.violationRead);
     }
 
-    /**
-     * The outcome of every run so far, the current one last; of a log of more than {@value RunHistory#KEPT} runs,
-     * the latest of them ({@link #summary} counts them all).
-     */
+    /** Every run's outcome, the current one last: the latest {@value RunHistory#KEPT} ({@link #summary}: all). */
     public List<RunOutcome> runs() {
         return finished.withCurrent(current());
     }
@@ -284,8 +278,8 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
-     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before the
-     * monitor takes it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
+     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before it takes
+     * it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
      */
     public void tee(PipelineListener also) {
         this.tee = also;

@@ -68,10 +68,11 @@ final class RunState {
         }
     }
 
-    /** An event the monitor tells: the run's first violation is noted where it came in the order of reading. */
-    void told(MonitorEvent e) {
+    /** {@code e}, an event the monitor tells: the run's first violation is noted where it came in reading order. */
+    MonitorEvent told(MonitorEvent e) {
         if (e instanceof MonitorEvent.Violation && violationRead == 0) {
             violationRead = read;
         }
+        return e;
     }
 }
