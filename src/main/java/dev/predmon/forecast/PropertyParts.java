@@ -2,6 +2,7 @@ package dev.predmon.forecast;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Deadline;
 import dev.predmon.property.Property;
 import dev.predmon.property.Response;
 
@@ -124,8 +125,9 @@ public final class PropertyParts {
 
     /**
      * A training obligation discharged after more than its deadline would have been a violation, never a discharge
-     * (a response on the record past the deadline comes too late); a censored one may have been let go later than the
-     * deadline, at the record that passed it.
+     * (a response on the record past the deadline comes too late). A censored one may have been let go later than the
+     * deadline, at the record that passed it: for a deadline in ticks or occurrences one tick or occurrence past it at
+     * most, for one in seconds as late as the next record came.
      */
     private static String obligationProblem(Response r, Survival s) {
         double amount = r.within().amount();
@@ -133,6 +135,15 @@ public final class PropertyParts {
             if (d > amount + 1e-9 * Math.max(1, amount)) {
                 return String.format(Locale.ROOT, "an obligation discharged after %s %s, past the deadline of %s: "
                         + "training records no such discharge", shown(d), r.within().unit().key, r.within().describe());
+            }
+        }
+        if (r.within().unit() != Deadline.Unit.SECONDS) {
+            for (double c : s.censored()) {
+                if (c > Math.floor(amount) + 1) {
+                    return String.format(Locale.ROOT, "an obligation let go after %s %s, more than one past the "
+                            + "deadline of %s, where training lets go of it", shown(c), r.within().unit().key,
+                            r.within().describe());
+                }
             }
         }
         return null;

@@ -80,6 +80,24 @@ class ForecastPartsCliTest {
                 + "obligation discharged after 500.0 ticks, past the deadline of 400 ticks");
     }
 
+    /**
+     * A navigation let go after 5,000 ticks: training lets go of one at the tick past its deadline (401) at the
+     * latest. So long a "longest training obligation" would keep the deadline's novelty clause from ever warning.
+     */
+    @Test
+    void aCensoredDurationFarPastTheDeadline() throws IOException {
+        Path models = ModelFilesCliTest.copyOfShippedModels(tmp);
+        ObjectNode f = forecast(models);
+        ((ArrayNode) f.get("obligations").get("navigation-in-time").get("censored")).add(401.0);
+        write(models, f);
+        Cli accepted = Cli.run("classify", "--models", models.toString(), "--log", "sample-logs/direct/direct-1.log");
+        assertEquals(ExitCodes.OK, accepted.code(), "let go at the tick past the deadline: " + accepted.err());
+        ((ArrayNode) f.get("obligations").get("navigation-in-time").get("censored")).add(5000.0);
+        write(models, f);
+        ModelFilesCliTest.refused(models, models.resolve("forecast.json"), "'obligations/navigation-in-time': an "
+                + "obligation let go after 5000.0 ticks, more than one past the deadline of 400 ticks");
+    }
+
     @Test
     void anObligationOfAPropertyThatIsNoBoundedResponse() throws IOException {
         Path models = ModelFilesCliTest.copyOfShippedModels(tmp);
