@@ -24,7 +24,7 @@ final class ResponseCheck extends Check {
     private boolean answered;
     /** Whether the trigger's state (the condition held and no response lasted) held at the last reading. */
     private boolean owing;
-    /** Where the run was at the last record, in the deadline's unit. */
+    /** Where the run was at the last record, on the deadline's clock (the log's ticks for seconds of ticks). */
     private double now;
     /**
      * Seconds per tick of a log without time stamps, NaN when not given ({@link #countTicksAs}); and the open
