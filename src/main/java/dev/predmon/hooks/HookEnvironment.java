@@ -1,6 +1,7 @@
 package dev.predmon.hooks;
 
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.MonitorEvent;
 
 import java.math.BigDecimal;
@@ -45,7 +46,7 @@ public final class HookEnvironment {
             env.put("PREDMON_PROBABILITY", f != null ? fixed(f.probability(), 2, RoundingMode.HALF_UP)
                     : w.deadline() != null && !w.deadline().novel()
                     ? fixed(w.deadline().probability(), 2, RoundingMode.HALF_UP) : "");
-            env.put("PREDMON_TIME_TO_VIOLATION", f == null || f.timeToViolation() == null ? ""
+            env.put("PREDMON_TIME_TO_VIOLATION", f == null || !ForecastWords.inSight(f) ? ""
                     : span(f.timeToViolation(), w.clock().unit()));
         } else if (event instanceof MonitorEvent.Recovered r) {
             put(env, "recovered", log, r.run(), r.time(), r.clock().unit(), r.line(), r.property(),
