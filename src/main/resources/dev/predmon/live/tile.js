@@ -152,6 +152,9 @@ function forecastLine(t, ui) {
     return p;
   }
   const distance = state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+  // among several properties, the forecast says whose it is
+  const ownProperty = (t.properties || []).length > 1 ? (t.properties || []).find(q => q.model === 'forecast') : null;
+  if (ownProperty) p.append(el('span', 'forecast-of', ownProperty.property + ': '));
   if (distance) {
     p.append(el('span', 'chance distance', distance), el('small', 'basis', basisWords(f)));
   } else {

@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
@@ -100,6 +101,30 @@ class GraspVoiceTest {
         JsonNode cj = JSON.readTree(Cli.run("classify", "--log", FIXTURE.toString(), "--models", MODELS.toString(),
                 "--json").out());
         assertEquals("[\"grasp-in-time\"]", cj.get("outcome").get("violated").toString(), cj.toString());
+    }
+
+    @Test
+    void theShippedHookSendsTheViolatedPropertyWithItsWords() throws Exception {
+        // the shipped configuration's command, writing to a file instead of the robot's port
+        String shipped = Files.readAllLines(Path.of("docs/predmon-watch.conf")).stream()
+                .filter(l -> l.startsWith("on-violation = ")).findFirst().orElseThrow()
+                .substring("on-violation = ".length());
+        assertTrue(shipped.contains("$PREDMON_PROPERTY"), shipped);
+        Path sent = dir.resolve("sent.txt");
+        Path env = dir.resolve("env.txt");
+        String command = shipped.replace("| yarp write ... /robot/predmon:i", ">> '" + sent + "'")
+                + "; env | grep '^PREDMON_' >> '" + env + "'";
+        Cli r = Cli.run("watch", "--log", FIXTURE.toString(), "--models", MODELS.toString(), "--no-follow",
+                "--on-violation", command);
+        assertEquals(ExitCodes.UNWARNED_VIOLATION, r.code(), r.err());
+        assertEquals(List.of("violation grasp-in-time 634"), Files.readAllLines(sent));
+        List<String> vars = Files.readAllLines(env);
+        assertTrue(vars.contains("PREDMON_PROPERTY_NAME=a grasp succeeds within 8 attempts"), vars.toString());
+        assertTrue(vars.contains("PREDMON_WHAT=8 closeHand attempts since line 234, none answered by hasGrasped 1 or "
+                + "27503"), vars.toString());
+        assertTrue(vars.contains("PREDMON_ACTION=check the object and the hand"), vars.toString());
+        String readme = Files.readString(Path.of("README.md"));
+        assertTrue(readme.contains("--on-warning 'echo \"warning $PREDMON_PROPERTY "), "the README's hook names it");
     }
 
     @Test
