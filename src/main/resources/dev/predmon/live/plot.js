@@ -91,7 +91,9 @@ export function plot(t) {
     const close = t.warning && Math.abs(x(t.violation.time) - x(t.warning.time)) < 60;
     mark(t.violation.time, 'violation', name + 'violation', false, close ? T + 10 : T - 4);
   }
-  // every other property's violation, its id on its line, each a line lower than the one before
-  others.forEach((p, i) => mark(p.time, 'violation', p.property + ' violated', false, T + 10 + 12 * i));
+  // every other property's violation, its id on its line, each a line lower than the one before and below the
+  // forecast property's own labels
+  const below = t.warning || t.violation ? T + 22 : T + 10;
+  others.forEach((p, i) => mark(p.time, 'violation', p.property + ' violated', false, below + 12 * i));
   return s;
 }
