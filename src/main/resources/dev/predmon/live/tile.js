@@ -247,7 +247,8 @@ export function renderTile(tile, t, ui) {
     if (t.earlierRunsOmitted > 0) ul.appendChild(el('li', null, t.earlierRunsOmitted + ' earlier not shown'));
     for (const r of t.earlierRuns) {
       const li = el('li');
-      li.append(el('span', 'light small ' + r.light), earlierText(r, t.unit));
+      li.append(el('span', 'light small ' + r.light), earlierText(r, t.unit,
+        ((t.properties || []).find(p => p.model === 'forecast') || {}).property));
       ul.appendChild(li);
     }
     const runs = el('section', 'runs');

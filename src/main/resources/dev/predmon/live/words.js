@@ -238,9 +238,14 @@ export function momentText(m, t) {
   return (words[m.what] || m.what) + ' ' + at(m.time, t.unit) + ' (' + pct(m.value, t.threshold) + ')';
 }
 
-/** An earlier run in one line. */
-export function earlierText(r, unit) {
-  return 'run ' + r.run + ' (line ' + r.line + '): ' + (r.warning ? 'warned' : 'no warning') + ', '
+/**
+ * An earlier run in one line, worst first: the other properties it violated, then the forecast property's own
+ * ({@code ownId}) warning, violation and lead.
+ */
+export function earlierText(r, unit, ownId) {
+  const others = (r.violated || []).filter(id => id !== ownId);
+  return 'run ' + r.run + ' (line ' + r.line + '): ' + (others.length ? others.join(', ') + ' violated; '
+    + (ownId ? ownId + ' ' : '') : '') + (r.warning ? 'warned' : 'no warning') + ', '
     + (r.violation ? 'violated' + (r.recovered ? ', then held again' : '') : 'held')
     + (r.lead !== null ? ', lead ' + span(r.lead, unit) : '') + (r.noMatch ? ', no model matched' : '');
 }

@@ -15,6 +15,7 @@ import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
@@ -114,6 +115,28 @@ class GraspLiveTest {
                     && chart.contains("; grasp-in-time violated at t="), chart);
             assertEquals("grasp-in-time violated", page.eval("[...document.querySelectorAll('article.tile svg.plot "
                     + "text.label-violation')].map(t => t.textContent).join('|')"));
+
+            // a second run in the same log: the grasp run is an earlier run, red, that says what it violated
+            Path again = dir.resolve("again.log");
+            Cli second = Cli.run("simulate", "--scenario", "direct", "--seed", "4", "--out", again.toString());
+            assertEquals(0, second.code(), second.err());
+            Path both = Files.writeString(dir.resolve("both.log"), Files.readString(log) + Files.readString(again));
+            scene.follow(both);
+            JsonNode earlier = null;
+            for (JsonNode t : JSON.readTree(get(scene.url(), "/status")).get("logs")) {
+                earlier = t.get("log").asText().equals(both.toString()) ? t.get("earlierRuns").get(0) : earlier;
+            }
+            assertEquals("violation", earlier.get("state").asText(), String.valueOf(earlier));
+            assertEquals("[\"grasp-in-time\"]", earlier.get("violated").toString());
+            deadline = System.nanoTime() + 30_000_000_000L;
+            String shown = "[...document.querySelectorAll('article.tile')].map(t => (t.querySelector('.runs li') "
+                    + "|| {}).textContent || '').join('')";
+            while (!page.eval(shown).contains("run 0")) {
+                assertTrue(System.nanoTime() < deadline, "the earlier run never showed");
+                Thread.sleep(50);
+            }
+            assertTrue(page.eval(shown).startsWith("run 0 (line 1): grasp-in-time violated; battery no warning, held"),
+                    page.eval(shown));
         }
     }
 }
