@@ -167,7 +167,7 @@ public final class PredictiveMonitor implements PipelineListener {
         return new RunOutcome(now.run, now.firstLine, (MonitorEvent.Warning) ticks.event(now.warning),
                 (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs, now.value != null,
                 forecast == null ? null : forecast.last(), properties.verdicts(),
-                (MonitorEvent.Warning) ticks.event(now.anyWarning));
+                (MonitorEvent.Warning) ticks.event(now.anyWarning), RunOutcome.inSeconds(now.warnings, ticks::event));
     }
 
     /**
