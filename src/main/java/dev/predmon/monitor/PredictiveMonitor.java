@@ -168,7 +168,8 @@ public final class PredictiveMonitor implements PipelineListener {
         return new RunOutcome(now.run, now.firstLine, (MonitorEvent.Warning) ticks.event(now.warning),
                 (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs, now.value != null,
                 forecast == null ? null : forecast.last(), properties.verdicts(),
-                (MonitorEvent.Warning) ticks.event(now.anyWarning), now.warningRead, now.violationRead);
+                (MonitorEvent.Warning) ticks.event(now.anyWarning), RunOutcome.inSeconds(now.warnings, ticks::event),
+                now.warningRead, now.violationRead);
     }
 
     /** Every run's outcome, the current one last: the latest {@value RunHistory#KEPT} ({@link #summary}: all). */
@@ -256,10 +257,7 @@ public final class PredictiveMonitor implements PipelineListener {
         return before.unmapped(pipeline);
     }
 
-    /**
-     * Also tells {@code each} every forecast with its run, one per pair, before the events of that pair (for scoring;
-     * {@link MonitorEvent.ForecastChanged} tells only the changes that matter).
-     */
+    /** Also tells {@code each} every forecast with its run, one per pair, before that pair's events (for scoring). */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
         follow.onEveryForecast(each);
     }

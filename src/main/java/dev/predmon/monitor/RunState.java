@@ -1,6 +1,8 @@
 package dev.predmon.monitor;
 
 import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -18,6 +20,8 @@ final class RunState {
     MonitorEvent.Warning warning;
     /** The first warning of any property: {@link #warning}, or a deadline's; null before one. */
     MonitorEvent.Warning anyWarning;
+    /** Each property's first warning in the run, by id, in the order they came. */
+    final Map<String, MonitorEvent.Warning> warnings = new LinkedHashMap<>();
     /** The properties other than the forecast's that the matching warned of (a faulty scenario's {@code violates}). */
     final Set<String> othersWarned = new HashSet<>();
     /** The forecast property's first violation, or null. */
@@ -45,6 +49,7 @@ final class RunState {
         firstLine = line;
         warning = null;
         anyWarning = null;
+        warnings.clear();
         othersWarned.clear();
         violation = null;
         noMatch = false;
@@ -60,11 +65,17 @@ final class RunState {
         othersWarned.add(id);
     }
 
-    /** A warning of some property: kept when it is the run's first, with where it came in the order of reading. */
+    /**
+     * A warning of some property: kept when it is the run's first (with where it came in the order of reading), and
+     * when it is its property's first.
+     */
     void anyWarned(MonitorEvent.Warning w) {
         if (anyWarning == null) {
             anyWarning = w;
             warningRead = read;
+        }
+        if (w.property() != null) {
+            warnings.putIfAbsent(w.property(), w);
         }
     }
 

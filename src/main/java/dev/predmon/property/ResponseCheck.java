@@ -57,8 +57,7 @@ final class ResponseCheck extends Check {
             if (now > deadline) {
                 pending = false;
                 obligations.closed(inUnit(now - since()), false);
-                return new Verdict.Violated(r.line(), r.time(), null, null, "no " + p.response().describe()
-                        + " within " + d.describe() + " of " + p.describeTrigger() + " at line " + line);
+                return new Verdict.Violated(r.line(), r.time(), null, null, missed());
             }
             responds = p.response().matches(r);
             if (responds) {
@@ -111,8 +110,7 @@ final class ResponseCheck extends Check {
         double last = now;
         now = r.time();
         obligations.closed(now - since, false);
-        return new Verdict.Violated(r.line(), r.time(), null, null, "no " + p.response().describe() + " within "
-                + d.describe() + " of " + p.describeTrigger() + " at line " + line + " (nothing was logged from t="
+        return new Verdict.Violated(r.line(), r.time(), null, null, missed() + " (nothing was logged from t="
                 + Numbers.text(last) + " until this record, past the deadline)");
     }
 
@@ -167,7 +165,22 @@ final class ResponseCheck extends Check {
         pending = false;
         obligations.closed(inUnit(now - since()), false);
         return new Verdict.Violated(r.line(), r.time(), null, null, "the scope ended before "
-                + p.response().describe() + " answered " + p.describeTrigger() + " at line " + line);
+                + p.response().brief() + " answered " + p.briefTrigger() + " at line " + line);
+    }
+
+    /**
+     * The missed deadline in an operator's words: {@code 8 closeHand attempts since line 6650, none answered by
+     * hasGrasped 1 or 27503}; {@code no getStatus 2 or halt in 400 ticks since goTo at line 24}.
+     */
+    private String missed() {
+        String amount = Numbers.text(d.amount());
+        return switch (d.unit()) {
+            case OCCURRENCES -> amount + " " + d.counted().brief() + (d.amount() == 1 ? " attempt" : " attempts")
+                    + " since line " + line + ", none answered by " + p.response().brief();
+            case TICKS, SECONDS -> "no " + p.response().brief() + " in " + amount + " "
+                    + (d.unit() == Deadline.Unit.TICKS ? "ticks" : "s") + " since " + p.briefTrigger() + " at line "
+                    + line;
+        };
     }
 
     @Override

@@ -62,7 +62,7 @@ class WatchFollowTest {
         assertEquals(ExitCodes.WARNING, watch.code().get(), "interrupted after a warning: " + err);
         assertFalse(err.toString().contains("internal error"), err.toString());
         assertTrue(out.toString().contains("end of " + log + " (stopped: interrupted): "), out.toString());
-        assertTrue(out.toString().contains("; warning raised, property "), out.toString());
+        assertTrue((out.toString().contains("battery warned") || out.toString().contains("battery VIOLATED, warned")), out.toString());
     }
 
     /** Stopped before the log appeared: the summary, and no verdict on nothing (exit 3), not "no warning". */

@@ -9,6 +9,7 @@ import dev.predmon.property.Verdict;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;
+import java.util.Map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -98,13 +99,13 @@ class RunHistoryTest {
     @Test
     void beforeIsTheOrderOfReadingNotTheLines() {
         RunOutcome abortReadFirst = new RunOutcome(0, 1, null, null, false, 7, true, null,
-                List.of(violated("no-abort", 8996)), deadlineWarning(7127), 20_000, 10_000);
+                List.of(violated("no-abort", 8996)), deadlineWarning(7127), Map.of(), 20_000, 10_000);
         assertTrue(abortReadFirst.unwarnedViolation(), "the warning came 10,000 records after the abort");
         RunOutcome warningReadFirst = new RunOutcome(0, 1, null, null, false, 7, true, null,
-                List.of(violated("no-abort", 7127)), deadlineWarning(8996), 10_000, 20_000);
+                List.of(violated("no-abort", 7127)), deadlineWarning(8996), Map.of(), 10_000, 20_000);
         assertFalse(warningReadFirst.unwarnedViolation(), "the warning was read 10,000 records before the abort");
         RunOutcome sameRecord = new RunOutcome(0, 1, null, null, false, 7, true, null,
-                List.of(violated("no-abort", 8996)), deadlineWarning(8996), 10_000, 10_000);
+                List.of(violated("no-abort", 8996)), deadlineWarning(8996), Map.of(), 10_000, 10_000);
         assertTrue(sameRecord.unwarnedViolation(), "a warning at the violating record predicts nothing");
     }
 }
