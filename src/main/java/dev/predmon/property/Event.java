@@ -49,6 +49,11 @@ public record Event(List<RecordMatch> alternatives) {
                 : new RecordMatch(null, m.protocol(), null, m.from(), m.to(), null, null)).distinct().toList());
     }
 
+    /** In an operator's words, alternatives joined by {@code or}: {@code getStatus 2 or halt}. */
+    public String brief() {
+        return alternatives.stream().map(RecordMatch::brief).collect(Collectors.joining(" or "));
+    }
+
     /** In a user's words, alternatives joined by {@code or}. */
     public String describe() {
         return alternatives.stream().map(RecordMatch::describe).collect(Collectors.joining(" or "));

@@ -162,8 +162,8 @@ class PropertyEvidenceCliTest {
         assertEquals(ExitCodes.OK, Cli.run("learn", "--logs", logs.toString(), "--models", models.toString()).code());
         Cli explain = Cli.run("explain", "--log", logs.resolve("depleted/depleted-1.log").toString(), "--models",
                 models.toString());
-        assertTrue(explain.out().contains("grasp-in-time: no evidence (no ArmService/closeHand command (its trigger) "
-                + "in the run): no verdict on it"), explain.out());
-        assertFalse(explain.out().contains("no-abort: no evidence"), "getStatus replied, never 3: " + explain.out());
+        assertTrue(explain.out().lines().anyMatch(l -> l.equals("grasp-in-time no evidence (no ArmService/closeHand "
+                + "command (its trigger) in the run)")), explain.out());
+        assertFalse(explain.out().contains("no-abort no evidence"), "getStatus replied, never 3: " + explain.out());
     }
 }
