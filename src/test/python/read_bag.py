@@ -4,12 +4,16 @@
 Usage: read_bag.py FILE.mcap|FOLDER   (an MCAP file through mcap-ros2-support's decoder; a rosbag2 folder
 through rosbags)
 """
+import dataclasses
 import json
 import math
 import sys
 from pathlib import Path
 
 import numpy as np
+
+
+TYPESTORE = None
 
 
 def plain(v):
@@ -21,9 +25,14 @@ def plain(v):
         return v.item()
     if isinstance(v, float) and math.isnan(v):
         return v
-    if hasattr(v, '__slots__') or hasattr(v, '__dataclass_fields__'):
-        names = getattr(v, '__dataclass_fields__', None) or v.__slots__
-        return {n: plain(getattr(v, n)) for n in names if n != '__msgtype__'}
+    if isinstance(v, (bytes, bytearray)):
+        return list(v)
+    if TYPESTORE is not None and hasattr(v, '__msgtype__'):
+        return {n: plain(getattr(v, n)) for n, _ in TYPESTORE.fielddefs[v.__msgtype__][1]}
+    if dataclasses.is_dataclass(v):
+        return {f.name: plain(getattr(v, f.name)) for f in dataclasses.fields(v)}
+    if hasattr(v, '__slots__'):
+        return {n: plain(getattr(v, n)) for n in v.__slots__}
     return v
 
 
@@ -40,7 +49,8 @@ def main(path):
     else:
         from rosbags.rosbag2 import Reader
         from rosbags.typesys import Stores, get_typestore
-        ts = get_typestore(Stores.ROS2_JAZZY)
+        global TYPESTORE
+        ts = TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
         with Reader(path) as r:
             from rosbags.typesys import get_types_from_msg
             for c in r.connections:
