@@ -131,7 +131,7 @@ final class Summary {
         List<RunOutcome> runs = m.runs();
         boolean last = r.run() == runs.get(runs.size() - 1).run();
         (last ? PropertyJson.latestLines(m.properties()) : PropertyJson.lines(r.properties()))
-                .forEach(l -> out.println(stamp + l));
+                .forEach(l -> out.println(stamp + Terminal.line(l))); // a property's name is the abstraction's text
     }
 
     /** One run's verdict in the {@code end} event. */
