@@ -92,7 +92,7 @@ public final class Board {
         this.clock = clock;
         this.names = names;
         this.metrics = new Metrics(() -> status(null), safety.map(Bound::name).orElse(""),
-                this.properties.stream().map(Property::id).toList(), safety.map(Bound::id).orElse(null));
+                this.properties.stream().map(Property::id).toList(), safety.map(Bound::id).orElse(null), names::of);
     }
 
     /** The tile of {@code log}, made on first use. */
