@@ -13,7 +13,9 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
 import java.util.function.Function;
@@ -64,6 +66,8 @@ final class Metrics {
     private final Counter violations;
     private final Counter propertyWarnings;
     private final Counter propertyViolations;
+    /** Per log, the property labels its counters got from events beyond {@link #properties}. */
+    private final Map<String, Set<String>> counted = new HashMap<>();
     /** The robot's whole name of a log, the {@code robot} label. */
     private final Function<String, String> robots;
     /** The ids of the abstraction's properties, whose counters start at 0 with each tile. */
@@ -228,11 +232,33 @@ final class Metrics {
         }
     }
 
+    /** A tile left the board (its log was deleted long ago): its counters' series go with it. */
+    synchronized void removed(Tile tile) {
+        warnings.remove(tile.log(), tile.name(), property);
+        violations.remove(tile.log(), tile.name(), property);
+        Set<String> all = new LinkedHashSet<>(properties);
+        all.addAll(counted.getOrDefault(tile.log(), Set.of()));
+        counted.remove(tile.log());
+        for (String p : all) {
+            propertyWarnings.remove(tile.log(), tile.name(), p);
+            propertyViolations.remove(tile.log(), tile.name(), p);
+        }
+    }
+
+    /** A per-property counter of {@code tile} has a series for {@code id} (one not listed in advance too). */
+    private synchronized void counted(Tile tile, String id) {
+        if (!properties.contains(id)) {
+            counted.computeIfAbsent(tile.log(), l -> new LinkedHashSet<>()).add(id);
+        }
+    }
+
     /** An event of {@code tile}'s log. */
     void event(Tile tile, MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w && w.property() != null) {
+            counted(tile, w.property());
             propertyWarnings.labelValues(tile.log(), tile.name(), w.property()).inc();
         } else if (e instanceof MonitorEvent.Violation v && v.property() != null) {
+            counted(tile, v.property());
             propertyViolations.labelValues(tile.log(), tile.name(), v.property()).inc();
         }
         if (e instanceof MonitorEvent.Warning w && w.clause() != MonitorEvent.Clause.DEADLINE

@@ -129,6 +129,44 @@ class MetricsTest {
         assertEquals(violatedNow, counted, "the join on(robot) of the state and the counter");
     }
 
+    /**
+     * A deleted log's tile says so, with when it leaves; {@link Board#DELETED_KEPT} later it has left the page and
+     * every one of its series has left {@code /metrics}. A log that comes back gets its tile back.
+     */
+    @Test
+    void aDeletedLogsTileSaysSoAndLeavesWithItsSeries(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Board b = board();
+        Path gone = java.nio.file.Files.writeString(dir.resolve("r1.log"), "x");
+        Path kept = java.nio.file.Files.writeString(dir.resolve("r2.log"), "x");
+        for (Path p : List.of(gone, kept)) {
+            Tile t = b.tile(p.toString());
+            t.record(new Records().at(1).level(80).list().get(1));
+            b.event(t, LogEvent.of(p.toString(), new MonitorEvent.Violation(34.6, 8219, PROPERTY, 15.86, 20.85,
+                    Clock.SECONDS, 0)));
+        }
+        java.nio.file.Files.delete(gone);
+        b.status(null);
+        now.addAndGet(60_000);
+        com.fasterxml.jackson.databind.JsonNode tile = b.status(gone.toString()).get("logs").get(0);
+        assertEquals(60.0, tile.get("deleted").asDouble(), "deleted a minute ago: " + tile);
+        assertEquals(Board.DELETED_KEPT.toSeconds() - 60.0, tile.get("leavesIn").asDouble());
+        assertFalse(b.status(kept.toString()).get("logs").get(0).has("deleted"));
+        assertTrue(samples(b).keySet().stream().anyMatch(k -> k.contains(gone.toString())), "still there");
+
+        now.addAndGet(Board.DELETED_KEPT.toMillis());
+        com.fasterxml.jackson.databind.JsonNode logs = b.status(null).get("logs");
+        assertEquals(1, logs.size(), "the deleted log's tile has left");
+        assertEquals(kept.toString(), logs.get(0).get("log").asText());
+        Map<String, Double> s = samples(b);
+        assertTrue(s.keySet().stream().noneMatch(k -> k.contains(gone.toString())), s.keySet().toString());
+        assertEquals(1.0, s.get(series("predmon_violations_total", kept.toString(), "r2")), s.toString().replaceAll("predmon_property[^,]*, ", ""));
+
+        java.nio.file.Files.writeString(gone, "x");
+        Tile back = b.tile(gone.toString());
+        b.grew(back);
+        assertEquals(2, b.status(null).get("logs").size(), "a log written again is shown again");
+    }
+
     @Test
     void aNewLogHasItsStateAndCountersAtZeroButNoMadeUpForecastOrValue() {
         Board b = board();
