@@ -2,8 +2,10 @@ package dev.predmon.hooks;
 
 import dev.predmon.event.LogEvent;
 import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.property.Property;
 
 import java.time.Duration;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -40,6 +42,8 @@ public final class CommandHooks implements AutoCloseable {
     private final double bound;
     private final HookQueue queue = new HookQueue(THREADS, PER_LOG);
     private final AlarmHold hold;
+    /** Every property by id, for the words in the environment. */
+    private volatile Map<String, Property> properties = Map.of();
 
     /**
      * @param onWarning   command for each warning, or null
@@ -83,6 +87,17 @@ public final class CommandHooks implements AutoCloseable {
         this.hold = new AlarmHold(hold, report);
     }
 
+    /**
+     * Gives the hooks' environment each property's words ({@link HookEnvironment#of(String, MonitorEvent, double,
+     * Map)}); returns this.
+     */
+    public CommandHooks describing(List<Property> all) {
+        Map<String, Property> byId = new LinkedHashMap<>();
+        all.forEach(p -> byId.put(p.id(), p));
+        properties = Map.copyOf(byId);
+        return this;
+    }
+
     /** Queues the command for {@code sent}, if its event has one (a warning, a violation); returns at once. */
     public void event(LogEvent sent) {
         String log = sent.log();
@@ -100,7 +115,7 @@ public final class CommandHooks implements AutoCloseable {
         };
         // every alarm event goes through the hold, with a command or not: a recovery ends the robot's alarm
         Run run = command == null ? null
-                : new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound),
+                : new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound, properties),
                 sent.line());
         hold.event(log, property(event), run(event), kind, run == null ? () -> { } : () -> submit(log, run),
                 run == null ? "" : run.option + ": " + run.what);
