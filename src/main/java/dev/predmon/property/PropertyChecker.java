@@ -15,7 +15,7 @@ import java.util.List;
  * included) to the next occurrence of its {@code until} event (included, unless it is the opening record); each
  * segment starts the property's check afresh and a response owed when a segment closes is violated there.
  */
-public final class PropertyChecker {
+public final class PropertyChecker implements PropertyView {
 
     /** Told each property's first violation in a run. */
     @FunctionalInterface
@@ -66,6 +66,12 @@ public final class PropertyChecker {
     private final int[] slots;
     private final boolean[] open;
     private final Verdict.Violated[] violated;
+    /** Whether each property is violated now: since a violation, until it holds again or its segment closes. */
+    private final boolean[] now;
+    /** The violation the last record made of each property that was not violated just before it, or null. */
+    private final Verdict.Violated[] made;
+    /** Whether the last record's reading of each bound ended its violation. */
+    private final boolean[] again;
     private final Listener listener;
     private long ticks;
 
@@ -84,6 +90,9 @@ public final class PropertyChecker {
         }
         this.open = new boolean[checks.length];
         this.violated = new Verdict.Violated[checks.length];
+        this.now = new boolean[checks.length];
+        this.made = new Verdict.Violated[checks.length];
+        this.again = new boolean[checks.length];
     }
 
     /** Takes the next record of the run. */
@@ -95,6 +104,8 @@ public final class PropertyChecker {
         for (int i = 0; i < checks.length; i++) {
             Check c = checks[i];
             c.reading = Double.NaN;
+            made[i] = null;
+            again[i] = false;
             if (violated[i] != null && !c.reads()) {
                 continue; // the verdict is final; only a bound still reads its value, for the forecast
             }
@@ -119,10 +130,28 @@ public final class PropertyChecker {
                     c.reset();
                 }
             }
+            judge(i, c, v);
+            if (!inScope(i) && c.reads()) {
+                now[i] = false; // out of its scope a bound cannot be violated: its violation ends with the scope
+            }
             if (v != null && violated[i] == null) {
                 violated[i] = v;
                 listener.violated(i, properties.get(i), v);
             }
+        }
+    }
+
+    /**
+     * What record's step {@code v} does to property {@code i}'s violation now: a violation starts one (told as made
+     * when none was up); a bound's reading that holds ends one.
+     */
+    private void judge(int i, Check c, Verdict.Violated v) {
+        if (v != null) {
+            made[i] = now[i] ? null : v;
+            now[i] = true;
+        } else if (now[i] && !Double.isNaN(c.reading)) {
+            now[i] = false; // a bound's reading within its bounds: it holds again
+            again[i] = true;
         }
     }
 
@@ -144,6 +173,7 @@ public final class PropertyChecker {
     }
 
     /** The value the last record gave property {@code index} (a {@link Bound}), or NaN when it gave none. */
+    @Override
     public double reading(int index) {
         return checks[index].reading;
     }
@@ -152,6 +182,7 @@ public final class PropertyChecker {
      * The value the last record carried for bound {@code index} ({@link Bound#valueOf}), whether or not its scope is
      * open; NaN when it carried none (or the property is no bound).
      */
+    @Override
     public double value(int index) {
         return slots[index] < 0 ? Double.NaN : readings.value(slots[index]);
     }
@@ -160,11 +191,36 @@ public final class PropertyChecker {
      * Whether property {@code index} is checked now, after the last record: its scope is the whole run, or a segment of
      * it opened and has not closed (a segment's closing record was checked, and the scope is closed after it).
      */
+    @Override
     public boolean inScope(int index) {
         return scopes[index].global() || open[index];
     }
 
+    /**
+     * Whether property {@code index} is violated now, after the last record: a bound from a violating reading until
+     * it holds again (its next reading within its bounds) or its scope closes; any other kind from its violation to
+     * the end of the run (its verdict is final).
+     */
+    @Override
+    public boolean violatedNow(int index) {
+        return now[index];
+    }
+
+    /**
+     * The violation the last record made of property {@code index} when it was not violated just before (its first
+     * in the run, or a bound's next one after it held again), or null.
+     */
+    public Verdict.Violated violatedAt(int index) {
+        return made[index];
+    }
+
+    /** Whether the last record's reading of bound {@code index} (within its scope) ended its violation. */
+    public boolean holdsAgain(int index) {
+        return again[index];
+    }
+
     /** The verdict of property {@code index} on the run so far. */
+    @Override
     public Verdict verdict(int index) {
         if (violated[index] != null) {
             return violated[index];
@@ -182,6 +238,7 @@ public final class PropertyChecker {
     }
 
     /** The properties checked, in order. */
+    @Override
     public List<Property> properties() {
         return properties;
     }
@@ -200,6 +257,9 @@ public final class PropertyChecker {
             checks[i].reset();
             open[i] = false;
             violated[i] = null;
+            now[i] = false;
+            made[i] = null;
+            again[i] = false;
         }
     }
 }
