@@ -219,7 +219,7 @@ class ReplayDifferentialTest {
         }
 
         ReplayedLog reference(Path log) throws IOException {
-            return LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { });
+            return LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run, judged) -> { });
         }
     }
 

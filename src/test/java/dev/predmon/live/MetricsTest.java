@@ -92,7 +92,7 @@ class MetricsTest {
         Board b = board();
         Tile t = b.tile("robots/r1.log");
         b.tile("robots/r2.log");
-        t.record(new Records().at(1).level(80).list().get(1));
+        Judged.record(t, new Records().at(1).level(80).list().get(1));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0)));
         Map<String, Double> s = samples(b);
         assertEquals(0.42, s.get(series("predmon_violation_probability", "robots/r1.log", "r1")));
@@ -102,7 +102,7 @@ class MetricsTest {
         assertFalse(s.containsKey(series("predmon_violation_probability", "robots/r2.log", "r2")), "no forecast yet");
 
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Warning(30, 70, List.of("depleted"), 27.8, 14, Clock.SECONDS, 0)));
-        t.record(new Records().at(35).level(18).list().get(1));
+        Judged.record(t, new Records().at(35).level(18).list().get(1));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(35, 90, PROPERTY, 18.0, 21.0, Clock.SECONDS, 0)));
         s = samples(b);
         assertEquals(1.0, s.get(series("predmon_state", "robots/r1.log", "r1", "state", "violation")));
@@ -161,7 +161,7 @@ class MetricsTest {
     void theServerAnswersMetricsInTheTextFormat() throws Exception {
         Board b = board();
         Tile t = b.tile("r.log");
-        t.record(new Records().at(1).level(80).list().get(1));
+        Judged.record(t, new Records().at(1).level(80).list().get(1));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0)));
         try (LiveServer server = LiveServer.start(HttpAddress.parse("0"), b)) {
             URI url = server.url().resolve("/metrics");

@@ -1,0 +1,25 @@
+package dev.predmon.live;
+
+import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.PropertyView;
+
+/** Hands a tile a record as watch does: with the built-in properties as a checker judged it. */
+final class Judged {
+
+    private Judged() {
+    }
+
+    /** The built-in properties judged on {@code r} alone. */
+    static PropertyView of(LogRecord r) {
+        PropertyChecker c = new PropertyChecker(AbstractionFiles.defaults().properties(), (i, p, v) -> { });
+        c.accept(r);
+        return c;
+    }
+
+    /** Gives {@code tile} record {@code r}, judged. */
+    static void record(Tile tile, LogRecord r) {
+        tile.record(r, of(r));
+    }
+}
