@@ -1,6 +1,5 @@
 package dev.predmon.monitor;
 
-import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.Forecast;
@@ -43,9 +42,9 @@ final class PropertyFollows {
     private final Map<String, Integer> violates;
     private boolean matchingSpent;
 
-    PropertyFollows(ModelSet models, Abstraction abstraction, FollowContext c) {
+    /** Every one of {@code properties}, forecast as {@code models} learned them. */
+    PropertyFollows(ModelSet models, List<Property> properties, FollowContext c) {
         this.c = c;
-        List<Property> properties = abstraction.properties();
         this.checker = new PropertyChecker(properties, (i, p, v) -> { });
         this.follows = new PropertyFollow[properties.size()];
         ForecastModel forecast = models.forecast();

@@ -8,14 +8,17 @@ import dev.predmon.property.PropertyView;
 /** Hands a tile a record as watch does: with the built-in properties as a checker judged it. */
 final class Judged {
 
+    private static final PropertyChecker CHECKER = new PropertyChecker(AbstractionFiles.defaults().properties(),
+            (i, p, v) -> { });
+
     private Judged() {
     }
 
     /** The built-in properties judged on {@code r} alone. */
-    static PropertyView of(LogRecord r) {
-        PropertyChecker c = new PropertyChecker(AbstractionFiles.defaults().properties(), (i, p, v) -> { });
-        c.accept(r);
-        return c;
+    static synchronized PropertyView of(LogRecord r) {
+        CHECKER.reset();
+        CHECKER.accept(r);
+        return CHECKER;
     }
 
     /** Gives {@code tile} record {@code r}, judged. */

@@ -66,4 +66,20 @@ class AlarmTest {
         assertEquals(1.0, under.get(0).time(), 0.01);
         assertEquals(false, under.get(1).underWay(), "sent elsewhere: " + under.get(1));
     }
+
+    @Test
+    void anAlarmStillUpWhenItsRunEndsEndsWithTheRun() throws Exception {
+        // violated at 15, then a silence of 90 s: a new run begins; the violation's alarm ends with its run
+        Records r = new Records().at(0).level(50).at(10).level(15).at(100).level(80);
+        List<MonitorEvent> events = watch(r);
+        List<String> kinds = events.stream().map(e -> e.getClass().getSimpleName())
+                .filter(List.of("Violation", "Recovered", "RunStarted", "Warning")::contains).toList();
+        assertEquals(List.of("Violation", "Recovered", "RunStarted"), kinds);
+        MonitorEvent.Recovered rec = (MonitorEvent.Recovered) events.stream()
+                .filter(e -> e instanceof MonitorEvent.Recovered).findFirst().orElseThrow();
+        assertEquals("run-ended", rec.cause());
+        assertEquals(0, rec.run(), "the run that ended");
+        assertEquals(r.list().get(3).line(), rec.line(), "at the run's last record");
+        assertEquals("battery", rec.property());
+    }
 }
