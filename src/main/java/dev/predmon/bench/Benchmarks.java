@@ -193,7 +193,8 @@ public final class Benchmarks {
         for (Property p : abstraction.properties()) {
             boolean forecast = abstraction.safety().map(b -> b.id().equals(p.id())).orElse(false);
             boolean deadline = warns && p instanceof Response
-                    && models.forecast().obligations().containsKey(p.id());
+                    && models.forecast().obligations().containsKey(p.id())
+                    && models.forecast().obligations().get(p.id()).size() > 0;
             on.add(p.id() + (forecast ? " (forecast)" : deadline ? " (deadline forecast)" : ""));
         }
         return f("properties on in every benchmark: %d of abstraction %s: %s", on.size(), abstraction.name(),

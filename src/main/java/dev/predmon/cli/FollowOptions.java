@@ -49,7 +49,8 @@ final class FollowOptions {
 
     @Option(names = "--tick-seconds", paramLabel = "S", description = "How many seconds a tick of the tree lasts, for "
             + "logs without time stamps (a console capture), which are counted in ticks: every time shown (events, "
-            + "forecasts, leads, the page, hooks) is then in seconds. Logs with time stamps are not affected.")
+            + "forecasts, leads, the page, hooks) is then in seconds, and a deadline of T seconds is T seconds of "
+            + "ticks. Logs with time stamps are not affected.")
     void tickSeconds(double seconds) {
         if (!(seconds > 0) || Double.isInfinite(seconds)) {
             throw new ParameterException(mixee.commandLine(), "--tick-seconds must be a positive number of seconds, "

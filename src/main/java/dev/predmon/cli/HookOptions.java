@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.hooks.CommandHooks;
+import dev.predmon.property.Property;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -8,6 +9,7 @@ import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
 import java.time.Duration;
+import java.util.List;
 
 /** {@code --on-warning CMD}, {@code --on-violation CMD}, {@code --on-recovered CMD} and their timeout: the warning delivered to the robot. */
 final class HookOptions {
@@ -51,8 +53,9 @@ final class HookOptions {
      *
      * @param bound the property's bound, below which it is violated (NaN when there is none): values below it are
      *              rounded down in the hooks' environment, as on the page
+     * @param properties every property of the abstraction, whose words the hooks' environment gives
      */
-    CommandHooks open(PrintWriter err, double bound) {
+    CommandHooks open(PrintWriter err, double bound, List<Property> properties) {
         if (onWarning == null && onViolation == null && onRecovered == null) {
             return null;
         }
@@ -60,6 +63,6 @@ final class HookOptions {
                 line -> {
             err.println("predmon: " + line);
             err.flush();
-        });
+        }).describing(properties);
     }
 }

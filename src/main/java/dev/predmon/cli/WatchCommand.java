@@ -129,7 +129,7 @@ final class WatchCommand implements Callable<Integer> {
         WatchSettings settings = new WatchSettings(input.json, eliminations || input.json, several, noFollow,
                 follow.timestamps ? Stamp.WALL_CLOCK : Stamp.NONE, follow.heartbeatNanos(), follow.ticks());
         try (LiveServer server = liveView.start(err, board);
-             WatchSession session = new WatchSession(out, err, settings, hookOptions.open(err, bound(abstraction)),
+             WatchSession session = new WatchSession(out, err, settings, hookOptions.open(err, bound(abstraction), abstraction.properties()),
                      board, abstraction, p -> !sources.named(p));
              Fleet fleet = new Fleet(set, abstraction, input.tolerance(), confirm.value(abstraction), warnBy,
                      session)) {

@@ -76,7 +76,7 @@ public record PropertyJson(String property, String name, String kind, String ver
         if (s.model() == PropertyStatus.Model.FORECAST) {
             Forecast last = s.forecast();
             return last == null ? new LatestJson(model, null, null, null, false, "no forecast yet")
-                    : new LatestJson(model, round(last.probability()), last.timeToViolation() == null ? null
+                    : new LatestJson(model, round(last.probability()), !ForecastWords.inSight(last) ? null
                     : round(last.timeToViolation()), last.unit(), last.novel(),
                     last.basis() == Forecast.Basis.VIOLATED ? "no forecast: the property is violated"
                             : "forecast: " + ForecastWords.probability(last) + ", " + ForecastWords.time(last));

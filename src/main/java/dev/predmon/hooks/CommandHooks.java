@@ -2,11 +2,13 @@ package dev.predmon.hooks;
 
 import dev.predmon.event.LogEvent;
 import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.property.Property;
 
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -41,6 +43,8 @@ public final class CommandHooks implements AutoCloseable {
     private final Duration timeout;
     private final Consumer<String> report;
     private final double bound;
+    /** Every property by id, for the words in the environment. */
+    private volatile Map<String, Property> properties = Map.of();
     private final ThreadPoolExecutor pool;
 
     /**
@@ -86,6 +90,17 @@ public final class CommandHooks implements AutoCloseable {
         pool.allowCoreThreadTimeOut(true);
     }
 
+    /**
+     * Gives the hooks' environment each property's words ({@link HookEnvironment#of(String, MonitorEvent, double,
+     * Map)}); returns this.
+     */
+    public CommandHooks describing(List<Property> all) {
+        Map<String, Property> byId = new LinkedHashMap<>();
+        all.forEach(p -> byId.put(p.id(), p));
+        properties = Map.copyOf(byId);
+        return this;
+    }
+
     /** Queues the command for {@code sent}, if its event has one (a warning, a violation); returns at once. */
     public void event(LogEvent sent) {
         String log = sent.log();
@@ -96,7 +111,8 @@ public final class CommandHooks implements AutoCloseable {
         if (command == null) {
             return;
         }
-        Run run = new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound), sent.line());
+        Run run = new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound, properties),
+                sent.line());
         try {
             pool.execute(run);
         } catch (RejectedExecutionException full) {

@@ -22,7 +22,8 @@ import java.util.function.Supplier;
  * {@code /metrics}: what the live view shows, for Prometheus, in its text format, through the official Prometheus
  * Java client. Per log and per property (labels {@code log}, {@code robot}, {@code property}):
  * <ul>
- *   <li>{@code predmon_state{state=...}}: 1 for the tile's state, 0 for each other one (a state set);</li>
+ *   <li>{@code predmon_state{state=...}}: 1 for the robot's state, its worst property's, 0 for each other one (a state
+ *       set);</li>
  *   <li>{@code predmon_stale}: 1 while the log is STALE;</li>
  *   <li>{@code predmon_violation_probability}: the latest forecast's probability (0 to 1);</li>
  *   <li>{@code predmon_time_to_violation_seconds}, or {@code predmon_time_to_violation_ticks} for a log counted in

@@ -127,6 +127,23 @@ final class PropertyLights {
         return a;
     }
 
+    /**
+     * The run's outcome beside its lights, in {@code o}: {@code violated} and {@code warned}, the ids of the
+     * properties whose light is red and yellow, worst first.
+     */
+    static void outcome(ObjectNode o, ArrayNode lights) {
+        ArrayNode violated = o.putArray("violated");
+        ArrayNode warned = o.putArray("warned");
+        for (JsonNode p : lights) {
+            String state = p.path("state").asText();
+            if (state.equals(Light.VIOLATED.id)) {
+                violated.add(p.path("property").asText());
+            } else if (state.equals(Light.WARNING.id)) {
+                warned.add(p.path("property").asText());
+            }
+        }
+    }
+
     private ObjectNode base(Property p, Verdict v, Light light) {
         ObjectNode o = JSON.createObjectNode();
         o.put("property", p.id());

@@ -60,12 +60,9 @@ abstract class FollowBase implements PropertyFollow {
             opened(r);
         }
         boolean before = violated;
-        violated = checker.violatedNow(index);
-        Verdict.Violated made = checker.violatedAt(index);
+        Verdict.Violated made = violation(checker, r);
         if (made != null) {
             active = null; // the violation overtakes the warning
-            c.events.accept(new MonitorEvent.Violation(made.time(), made.line(), property.id(), property.name(),
-                    made.value(), made.before(), made.what(), r.clock(), c.now.run, headline()));
         } else if (checker.holdsAgain(index)) {
             double v = checker.reading(index);
             startOver();
@@ -80,6 +77,24 @@ abstract class FollowBase implements PropertyFollow {
             }
             active = null;
         }
+    }
+
+    @Override
+    public void overdue(PropertyChecker checker, LogRecord first) {
+        if (violation(checker, first) != null) {
+            active = null;
+        }
+    }
+
+    /** The checker's judgement of the last record: its violation, told when it made one, or null. */
+    private Verdict.Violated violation(PropertyChecker checker, LogRecord r) {
+        violated = checker.violatedNow(index);
+        Verdict.Violated made = checker.violatedAt(index);
+        if (made != null) {
+            c.events.accept(new MonitorEvent.Violation(made.time(), made.line(), property.id(), property.name(),
+                    made.value(), made.before(), made.what(), r.clock(), c.now.run, headline()));
+        }
+        return made;
     }
 
     /** The alarm of the property ended at {@code r}: told. */

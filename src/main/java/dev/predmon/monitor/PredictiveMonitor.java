@@ -85,10 +85,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.rule = rule;
         this.matching = new Matching(models.models(), tolerance, confirm);
         String headline = abstraction.safety().map(Bound::id).orElse(null);
-        this.events = e -> {
-            now.noted(e, headline);
-            events.accept(ticks.event(e)); // in seconds once a tick's length is given
-        };
+        this.events = e -> events.accept(ticks.event(now.told(e, headline))); // in seconds once a tick is given
         this.context = new FollowContext(now, rule, this.events, matching, headline);
         context.bounds = (p, f, run) -> {
             if (p.equals(context.headline)) {
@@ -138,7 +135,8 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         tee.runStarted(number, first);
-        properties.runEnded(now.last, "the run ended; a new run began at line " + first.line());
+        properties.ending(first); // a deadline the silence before it passed is violated, not dropped
+        properties.runEnded(first, "the run ended; a new run began at line " + first.line());
         finished.add(current());
         startRun(runsBefore + number, first.line());
         events.accept(new MonitorEvent.RunStarted(now.run, first.time(), first.line(), first.clock()));
@@ -159,14 +157,11 @@ public final class PredictiveMonitor implements PipelineListener {
         return new RunOutcome(now.run, now.firstLine, (MonitorEvent.Warning) ticks.event(now.warning),
                 (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs,
                 properties.headline() != null && properties.headline().observed(), forecast().orElse(null),
-                properties.verdicts(),
-                (MonitorEvent.Warning) ticks.event(now.anyWarning));
+                properties.verdicts(), (MonitorEvent.Warning) ticks.event(now.anyWarning),
+                RunOutcome.inSeconds(now.warnings, ticks::event), now.warningRead, now.violationRead);
     }
 
-    /**
-     * The outcome of every run so far, the current one last; of a log of more than {@value RunHistory#KEPT} runs,
-     * the latest of them ({@link #summary} counts them all).
-     */
+    /** Every run's outcome, the current one last: the latest {@value RunHistory#KEPT} ({@link #summary}: all). */
     public List<RunOutcome> runs() {
         return finished.withCurrent(current());
     }
@@ -193,6 +188,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void record(LogRecord record) {
         tee.record(record);
+        now.read++;
         clock = ticks.clock(record.clock());
         now.last = record;
         properties.record(record);
@@ -245,10 +241,7 @@ public final class PredictiveMonitor implements PipelineListener {
         return before.unmapped(pipeline);
     }
 
-    /**
-     * Also tells {@code each} every forecast with its run, one per pair, before the events of that pair (for scoring;
-     * {@link MonitorEvent.ForecastChanged} tells only the changes that matter).
-     */
+    /** Also tells {@code each} every forecast with its run, one per pair, before that pair's events (for scoring). */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
         this.everyForecast = each;
     }
@@ -267,8 +260,8 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
-     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before the
-     * monitor takes it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
+     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before it takes
+     * it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
      */
     public void tee(PipelineListener also) {
         this.tee = also;

@@ -39,6 +39,9 @@ interface PropertyFollow {
     default void closed(double duration, boolean discharged) {
     }
 
+    /** The run ends, {@code first} beginning the next: its violation there, if its deadline passed in between. */
+    void overdue(PropertyChecker checker, LogRecord first);
+
     /** Whether the thesis's matching may warn of the property now. */
     boolean takesMatching();
 

@@ -106,6 +106,17 @@ final class PropertyFollows {
         }
     }
 
+    /**
+     * The run ends, {@code first} beginning the next: a deadline that passed before it came is violated there, in
+     * the run that ends ({@link PropertyChecker#overdue}), and told.
+     */
+    void ending(LogRecord first) {
+        checker.overdue(first);
+        for (PropertyFollow f : follows) {
+            f.overdue(checker, first);
+        }
+    }
+
     /** The run ended at {@code last} ({@code why}): every alarm still up ends. */
     void runEnded(LogRecord last, String why) {
         if (last == null) {
@@ -126,6 +137,7 @@ final class PropertyFollows {
     }
 
     void countTicksAs(TickSeconds t) {
+        checker.countTicksAs(t.seconds());
         for (PropertyFollow f : follows) {
             f.countTicksAs(t);
         }

@@ -2,6 +2,8 @@ package dev.predmon.monitor;
 
 import dev.predmon.parse.LogRecord;
 
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Objects;
 
 /**
@@ -20,6 +22,8 @@ final class RunState {
     MonitorEvent.Warning warning;
     /** The first warning of any property: {@link #warning}, or a deadline's; null before one. */
     MonitorEvent.Warning anyWarning;
+    /** Each property's first warning in the run, by id, in the order they came. */
+    final Map<String, MonitorEvent.Warning> warnings = new LinkedHashMap<>();
     /** The forecast property's first violation, or null. */
     MonitorEvent.Violation violation;
     /** Whether a point came where no model, nominal or faulty, matched the run any more. */
@@ -30,6 +34,14 @@ final class RunState {
     long pairs;
     /** The pair at which the thesis's match rule first held (confirm included), or -1. */
     long matchRuleAt = -1;
+    /**
+     * The records the monitor has read since it started, the one it takes now included: the order of reading, which
+     * outlives runs and rotations (a run may hold records of two files, each with lines of its own).
+     */
+    long read;
+    /** Where in that order the run's first warning of any property, and its first violation, came; 0 before. */
+    long warningRead;
+    long violationRead;
 
     /** Run {@code number} begins at {@code line}: nothing seen yet. */
     void start(int number, long line) {
@@ -37,11 +49,14 @@ final class RunState {
         firstLine = line;
         warning = null;
         anyWarning = null;
+        warnings.clear();
         violation = null;
         noMatch = false;
         last = null;
         pairs = 0;
         matchRuleAt = -1;
+        warningRead = 0;
+        violationRead = 0;
     }
 
     /** The log's first warning and violation of the headline property (of any run): they outlive the run. */
@@ -49,10 +64,28 @@ final class RunState {
     MonitorEvent.Violation firstViolation;
 
     /**
-     * An event of the run, {@code headline} the id of the property its outcome headlines: keeps the run's first
-     * warning of any property, and the run's and the log's first warning and violation of the headline property.
+     * A warning of some property: kept when it is the run's first (with where it came in the order of reading), and
+     * when it is its property's first.
      */
-    void noted(MonitorEvent e, String headline) {
+    void anyWarned(MonitorEvent.Warning w) {
+        if (anyWarning == null) {
+            anyWarning = w;
+            warningRead = read;
+        }
+        if (w.property() != null) {
+            warnings.putIfAbsent(w.property(), w);
+        }
+    }
+
+    /**
+     * {@code e}, an event the monitor tells, {@code headline} the id of the property the outcome headlines: keeps the
+     * run's first warning of any property and of each, the run's and the log's first warning and violation of the
+     * headline property, and where in reading order the run's first violation came.
+     */
+    MonitorEvent told(MonitorEvent e, String headline) {
+        if (e instanceof MonitorEvent.Violation && violationRead == 0) {
+            violationRead = read;
+        }
         if (e instanceof MonitorEvent.Warning w) {
             anyWarned(w);
             if (Objects.equals(w.property(), headline)) {
@@ -63,10 +96,6 @@ final class RunState {
             violation = violation == null ? v : violation;
             firstViolation = firstViolation == null ? v : firstViolation;
         }
-    }
-
-    /** A warning of some property: kept when it is the run's first. */
-    void anyWarned(MonitorEvent.Warning w) {
-        anyWarning = anyWarning == null ? w : anyWarning;
+        return e;
     }
 }

@@ -277,6 +277,7 @@ public final class Traces {
 
         @Override
         public void runStarted(int run, LogRecord first) {
+            checker.overdue(first); // a deadline that passed in the silence before it is the run's violation
             finish();
             firstLine = first.line();
         }

@@ -44,6 +44,18 @@ abstract class Check {
     void finish() {
     }
 
+    /**
+     * The run ends and {@code r}, the first record after it, begins the next: the violation of an obligation whose
+     * deadline passed before {@code r} came, or null.
+     */
+    Verdict.Violated overdue(LogRecord r) {
+        return null;
+    }
+
+    /** A tick of a log without time stamps lasts {@code seconds} (NaN: unknown). */
+    void countTicksAs(double seconds) {
+    }
+
     /** Whether the check reads a value (a bound's, which the forecast follows even after the violation). */
     boolean reads() {
         return false;

@@ -33,6 +33,11 @@ public record Event(List<RecordMatch> alternatives) {
         return false;
     }
 
+    /** In an operator's words, alternatives joined by {@code or}: {@code getStatus 2 or halt}. */
+    public String brief() {
+        return alternatives.stream().map(RecordMatch::brief).collect(Collectors.joining(" or "));
+    }
+
     /** In a user's words, alternatives joined by {@code or}. */
     public String describe() {
         return alternatives.stream().map(RecordMatch::describe).collect(Collectors.joining(" or "));

@@ -243,6 +243,35 @@ public final class PropertyChecker implements PropertyView {
         return properties;
     }
 
+    /**
+     * The run ends, and {@code r} is the first record after it, which begins the next run: a bounded response whose
+     * deadline in seconds passed before {@code r} came (a robot frozen through the silence that began the new run) is
+     * violated at {@code r}, in this run, and told as every violation is; never dropped with the run.
+     */
+    public void overdue(LogRecord r) {
+        for (int i = 0; i < checks.length; i++) {
+            if (violated[i] == null && (scopes[i].global() || open[i])) {
+                Verdict.Violated v = checks[i].overdue(r);
+                if (v != null) {
+                    violated[i] = v;
+                    made[i] = now[i] ? null : v;
+                    now[i] = true;
+                    listener.violated(i, properties.get(i), v);
+                }
+            }
+        }
+    }
+
+    /**
+     * A tick of a log without time stamps lasts {@code seconds} ({@code watch --tick-seconds}): a deadline of T
+     * seconds in such a log is T seconds of ticks. NaN, the default: a tick counts as a second.
+     */
+    public void countTicksAs(double seconds) {
+        for (Check c : checks) {
+            c.countTicksAs(seconds);
+        }
+    }
+
     /** The run ends (a new run, the end of the log): obligations still open are told as censored. */
     public void finish() {
         for (Check c : checks) {

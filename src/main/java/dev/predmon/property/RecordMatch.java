@@ -60,6 +60,21 @@ public record RecordMatch(RecordKind kind, String protocol, String command, Stri
         return b.toString();
     }
 
+    /**
+     * In an operator's words, without kinds and ports: {@code hasGrasped 1 or 27503}, {@code goTo charging_station},
+     * {@code halt}.
+     */
+    public String brief() {
+        StringBuilder b = new StringBuilder(command != null ? command : protocol != null ? protocol : "any message");
+        if (arguments != null) {
+            b.append(' ').append(String.join(" or ", arguments));
+        }
+        if (replies != null) {
+            b.append(' ').append(String.join(" or ", replies));
+        }
+        return b.toString();
+    }
+
     /** Port patterns: {@code *} for any characters, anything else literally. */
     private static final class Ports {
         private Ports() {

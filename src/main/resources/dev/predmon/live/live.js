@@ -2,7 +2,7 @@
 // /status and refreshed at once when /events says that a log has news. Hand-written, no library, nothing fetched from
 // elsewhere. Acknowledgements and the alert switches are kept in this browser (localStorage): the server only shows.
 'use strict';
-import {STATES, STATE_WORDS} from './words.js';
+import {STATES, STATE_WORDS, alarmOf, own} from './words.js';
 import {NEEDS_ATTENTION, el, renderRow, renderTile, shownLight, shownState} from './tile.js';
 
 const tilesEl = document.getElementById('tiles');
@@ -162,10 +162,10 @@ function beep() {
 
 function alert(t) {
   if (ui.acked(t)) return;
-  const other = worstState(t) && !NEEDS_ATTENTION.has(t.state) ? t.worst : null; // another property's alarm
+  const other = alarmOf(t); // the worst property, when it is not the forecast's
   const title = t.name + ': ' + (other ? other.property + ' ' + other.state : STATE_WORDS[t.state]);
   const body = other ? other.words + (other.action ? '\nDo now: ' + other.action : '')
-    : (t.state === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
+    : (own(t) === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
   if (notify && 'Notification' in window && Notification.permission === 'granted') {
     new Notification(title, {body: body, tag: t.log});
   }

@@ -60,7 +60,12 @@ class CommandHooksTest {
                 "PREDMON_TIME", "29.581942", "PREDMON_UNIT", "s", "PREDMON_LINE", "7127", "PREDMON_PROPERTY", "",
                 "PREDMON_VALUE", "27.83", "PREDMON_BATTERY", "27.83", "PREDMON_SCENARIO", "depleted"),
                 Map.copyOf(without(env("env"), "PREDMON_SCENARIOS", "PREDMON_PROBABILITY",
-                        "PREDMON_TIME_TO_VIOLATION")));
+                        "PREDMON_TIME_TO_VIOLATION", "PREDMON_PROPERTY_NAME", "PREDMON_WHAT", "PREDMON_ACTION")));
+        // the event in words; a property the hooks were not told of has no name and no action
+        assertEquals("the run can only be faulty scenario depleted, late (every nominal model eliminated)",
+                env("env").get("PREDMON_WHAT"));
+        assertEquals("", env("env").get("PREDMON_PROPERTY_NAME"));
+        assertEquals("", env("env").get("PREDMON_ACTION"));
         assertEquals("depleted,late", env("env").get("PREDMON_SCENARIOS"));
         assertEquals("", env("env").get("PREDMON_PROBABILITY"), "a warning of the match rule has no forecast");
         assertEquals(List.of(), reports);

@@ -120,7 +120,10 @@ class PropertyLightsTest {
         assertEquals("violated at line 157: GoTo/getStatus reply 3", red.get("words").asText());
         assertEquals("no forecast: no model of this property", red.get("forecastWords").asText());
         JsonNode tile = b.status("a.log").get("logs").get(0);
-        assertEquals("ok", tile.get("state").asText(), "the battery, the forecast's property, holds");
+        assertEquals("violation", tile.get("state").asText(), "the robot's state is its worst property's");
+        assertEquals("red", tile.get("light").asText());
+        assertEquals("ok", tile.get("forecastState").asText(), "the battery, the forecast's property, holds");
+        assertEquals("[\"no-abort\"]", tile.get("violated").toString());
         assertEquals("no-abort", tile.get("worst").get("property").asText());
         assertEquals("a.log", b.status(null).get("logs").get(0).get("log").asText(),
                 "a robot with a property violated sorts before one whose properties all hold");

@@ -79,7 +79,7 @@ class AlarmTest {
                 .filter(e -> e instanceof MonitorEvent.Recovered).findFirst().orElseThrow();
         assertEquals("run-ended", rec.cause());
         assertEquals(0, rec.run(), "the run that ended");
-        assertEquals(r.list().get(3).line(), rec.line(), "at the run's last record");
+        assertEquals(r.list().get(4).line(), rec.line(), "at the record that began the next run");
         assertEquals("battery", rec.property());
     }
 }

@@ -95,7 +95,7 @@ class PropertyCheckerTest {
         Trace.Checked c = Trace.check(List.of(nav), late);
         Verdict.Violated v = violated(c.verdict(0));
         assertEquals(7, v.line());
-        assertEquals("no GoTo/getStatus reply 2 or GoTo/halt command within 3 ticks of GoTo/goTo command at line 2",
+        assertEquals("no getStatus 2 or halt in 3 ticks since goTo at line 2",
                 v.what());
         assertEquals(List.of("nav@7"), c.told());
     }
@@ -163,7 +163,7 @@ class PropertyCheckerTest {
         Trace away = new Trace().tick().level(35).goTo("charging_station").level(29).goTo("kitchen").ticks(3);
         Verdict.Violated v = violated(Trace.check(List.of(charger), away).verdict(0));
         assertEquals(12, v.line());
-        assertEquals("no GoTo/goTo command (charging_station) within 2 ticks of BatteryReader/level < 30 at line 8",
+        assertEquals("no goTo charging_station in 2 ticks since BatteryReader/level < 30 at line 8",
                 v.what());
     }
 
