@@ -250,6 +250,8 @@ public final class PropertyChecker implements PropertyView {
      */
     public void overdue(LogRecord r) {
         for (int i = 0; i < checks.length; i++) {
+            made[i] = null; // a judgement of its own: what the last record made is told already
+            again[i] = false;
             if (violated[i] == null && (scopes[i].global() || open[i])) {
                 Verdict.Violated v = checks[i].overdue(r);
                 if (v != null) {
