@@ -12,6 +12,7 @@ import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.replay.LogReplay;
+import dev.predmon.replay.RecordTaken;
 import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -22,7 +23,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import java.util.function.ObjIntConsumer;
 
 /**
  * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
@@ -123,7 +123,7 @@ final class LogAgainstModels {
      * @param taken  gets every record with its run right after the monitor took it
      * @param detail what the replay keeps of each run
      */
-    ReplayedLog replay(PrintWriter err, int confirm, ObjIntConsumer<LogRecord> taken, LogReplay.Detail detail)
+    ReplayedLog replay(PrintWriter err, int confirm, RecordTaken taken, LogReplay.Detail detail)
             throws BadInputException, IOException {
         checkLog();
         ModelSet set = models();
