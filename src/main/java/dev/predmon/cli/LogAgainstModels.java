@@ -5,7 +5,9 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.parse.LogReader;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
@@ -20,6 +22,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 /**
  * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
@@ -160,6 +163,38 @@ final class LogAgainstModels {
             throw new BadInputException(log + ": no such file; expected a log file");
         }
         checkLogIfPresent();
+    }
+
+    /**
+     * As {@link #checkLog()}, and refuses a whole file that holds no monitor record (a README, a config file): in one
+     * line, before anything else is printed. The file is read up to its first record only: a log costs nothing.
+     */
+    void checkLogHoldsRecords(Abstraction abstraction) throws BadInputException, IOException {
+        checkLog();
+        Path log = log();
+        ParseProblem[] first = {null};
+        long[] lines = {0};
+        try {
+            LogReader.read(log, r -> {
+                throw new FirstRecord();
+            }, p -> first[0] = first[0] == null ? p : first[0], n -> lines[0] = n);
+        } catch (FirstRecord found) {
+            return;
+        }
+        String missing = new Evidence(log, () -> lines[0], 0, 0, 0, Map.of(), abstraction, first[0], 0).missing()
+                .orElse(null);
+        if (missing != null) {
+            throw new BadInputException(missing);
+        }
+    }
+
+    /** Ends a read at its first record. */
+    private static final class FirstRecord extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        FirstRecord() {
+            super(null, null, false, false);
+        }
     }
 
     /** As {@link #checkLog()}, but a file that does not exist yet is fine ({@code watch} waits for it). */

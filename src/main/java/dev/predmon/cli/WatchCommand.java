@@ -109,7 +109,7 @@ final class WatchCommand implements Callable<Integer> {
         boolean several = sources.several();
         if (!several) {
             if (noFollow) {
-                input.checkLog();
+                input.checkLogHoldsRecords(abstraction);
             } else {
                 input.checkLogIfPresent();
             }
