@@ -82,6 +82,11 @@ public final class Ros2Format implements LogFormat {
         }
 
         @Override
+        public boolean wants(String topic, String type) {
+            return mapping.maps(topic, type); // a topic no rule maps is not even decoded
+        }
+
+        @Override
         public void problem(String line) {
             sink.problem(new ParseProblem(messages + 1, ParseProblem.Severity.ERROR, line));
         }
