@@ -44,8 +44,14 @@ public final class Ros2Format implements LogFormat {
         return LogFormat.yarp().read(file, sink);
     }
 
-    /** Whether {@code path} is read as a recording: by content, or, not written yet, by its name. */
+    /**
+     * Whether {@code path} is read as a recording: a folder (never a YARP log; its data files may not be written yet),
+     * a file by its content, or, not written yet, by its name.
+     */
     private boolean isBag(Path path) {
+        if (Files.isDirectory(path)) {
+            return true;
+        }
         if (Files.exists(path)) {
             return input.looksLikeBag(path);
         }
