@@ -11,6 +11,8 @@ import dev.predmon.pipeline.RunId;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
+import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.PropertyView;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
 import dev.predmon.replay.ReplayedRun;
@@ -126,23 +128,29 @@ public final class Replay {
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
                             scored.stream().map(ReplayedRun.Timed::time).toList()),
-                    others(abstraction, warnings, violations, beyond,
+                    others(abstraction, o.properties(), warnings, violations, beyond,
                             PropertyForecasts.of(r.events(), abstraction, models.forecast(), baseRates))));
         }
         return results;
     }
 
     /** Every property but the forecast's, with its first warning and violation in the run and its forecasts. */
-    private static List<RunResult.PropertyResult> others(Abstraction abstraction, Map<String, Double> warnings,
+    private static List<RunResult.PropertyResult> others(Abstraction abstraction,
+                                                         List<PropertyChecker.PropertyVerdict> verdicts,
+                                                         Map<String, Double> warnings,
                                                          Map<String, Double> violations, Map<String, Double> beyond,
                                                          Map<String, PropertyForecasts> forecasts) {
         String forecast = abstraction.safety().map(Property::id).orElse(null);
         List<RunResult.PropertyResult> out = new ArrayList<>();
+        Map<String, dev.predmon.property.Verdict> verdict = new HashMap<>(); // not evaluate's Verdict
+        verdicts.forEach(pv -> verdict.put(pv.property().id(), pv.verdict()));
         for (Property p : abstraction.properties()) {
             if (!p.id().equals(forecast)) {
                 PropertyForecasts f = forecasts.get(p.id());
+                dev.predmon.property.Verdict v = verdict.get(p.id());
                 out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id()),
-                        beyond.get(p.id()), f == null ? null : f.run(), f == null ? null : f.scope()));
+                        beyond.get(p.id()), f == null ? null : f.run(), f == null ? null : f.scope(),
+                        v == null ? null : v.id(), v == null ? null : v.describe()));
             }
         }
         return out;
@@ -152,11 +160,12 @@ public final class Replay {
      * Per run, the time of its first record and the readings near the bound on the way to its violation (since the
      * value was last above the band), seen after the
      * monitor took each record (so that {@link PredictiveMonitor#run()} already counts a record that starts a run).
-     * Read with the safety monitor's own {@link Bound#valueOf}, so the violation counted up to is the one it
-     * reported.
+     * The value and the violation are the monitor's checker's ({@link PropertyView}: the reading within the
+     * property's scope, and whether it is violated now), so the violation counted up to is the one it reported.
      */
     public static final class Approach {
         private final Bound rule;
+        private int index = -1;
         /** The lowest value a safe training run read: the raw-value baseline warns below it (NaN: never). */
         private final double floor;
         /** Per run, when the value first went below the floor, and when the current stretch below it began. */
@@ -173,17 +182,18 @@ public final class Replay {
             this.floor = floor;
         }
 
-        /** Takes record {@code r} of run {@code run}, after the monitor took it. */
-        public void record(LogRecord r, int run) {
+        /** Takes record {@code r} of run {@code run}, after the monitor took it and judged it as {@code judged}. */
+        public void record(LogRecord r, int run, PropertyView judged) {
             start.putIfAbsent(run, r.time());
             if (rule == null || violated.contains(run)) {
                 return;
             }
-            double v = rule.valueOf(r);
+            index = index < 0 ? judged.indexOf(rule.id()) : index;
+            double v = judged.reading(index);
             if (Double.isNaN(v)) {
                 return;
             }
-            if (rule.violatedBy(v)) {
+            if (judged.violatedNow(index)) {
                 violated.add(run);
                 Double stretch = below.get(run);
                 if (stretch != null) {

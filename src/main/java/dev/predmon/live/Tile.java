@@ -12,6 +12,7 @@ import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
+import dev.predmon.property.PropertyView;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -45,6 +46,8 @@ public final class Tile {
     private final String name;
     private final List<LearnedModel> models;
     private final Optional<Bound> safety;
+    /** The headline property's position among the checked ones, once known. */
+    private int index = -1;
 
     private int run;
     private long runLine = 1;
@@ -175,15 +178,19 @@ public final class Tile {
         values.clear();
     }
 
-    /** A record of the log, after the monitor took it (so a new run has begun already if it begins one). */
-    public synchronized void record(LogRecord r) {
+    /**
+     * A record of the log, after the monitor took it (so a new run has begun already if it begins one) and judged it
+     * as {@code judged}: the headline property's value is the checker's reading of it, whatever its scope.
+     */
+    public synchronized void record(LogRecord r, PropertyView judged) {
         records++;
         runRecords++;
         line = r.line();
         clock = r.clock();
         rest.record(r);
         if (safety.isPresent()) {
-            double v = safety.get().valueOf(r);
+            index = index < 0 ? judged.indexOf(safety.get().id()) : index;
+            double v = index < 0 ? Double.NaN : judged.value(index);
             if (!Double.isNaN(v)) {
                 values.add(r.time(), v);
             }
@@ -248,8 +255,14 @@ public final class Tile {
         ObjectNode o = JSON.createObjectNode();
         o.put("log", log);
         o.put("name", shown.name());
-        o.put("state", state.id());
-        o.put("light", state.light());
+        ArrayNode props = lights.json(state, noVerdict == null ? forecastJson : null, shown.skill(),
+                shown.skills());
+        // the robot's state is its worst property's; the forecast property's own stays beside it
+        TileState robot = TileState.worst(state, props);
+        o.put("state", robot.id());
+        o.put("light", robot.light());
+        o.put("forecastState", state.id());
+        o.put("forecastLight", state.light());
         // Quiet mid-run is STALE (a logger or robot that stopped); quiet at rest is a run that ended, and a log that
         // never had a record is still waiting.
         o.put("stale", quiet >= staleMillis && state != TileState.ENDED && records > 0);
@@ -276,8 +289,7 @@ public final class Tile {
             o.put("warnsAt", shown.warnsAt());
         }
         alarm.snapshot(o);
-        ArrayNode props = lights.json(state, noVerdict == null ? forecastJson : null, shown.skill(),
-                shown.skills());
+        PropertyLights.outcome(o, props);
         o.set("properties", props);
         // the worst property's light, for the compact view and the order of the tiles
         o.set("worst", props.isEmpty() ? null : props.get(0));
@@ -308,10 +320,13 @@ public final class Tile {
         o.put("line", runLine);
         alarm.verdict(o);
         o.put("noMatch", noMatch);
-        // A run that another followed is over: its light is what it came to.
-        TileState state = state(false);
+        // A run that another followed is over: its light is what it came to, its worst property's.
+        TileState own = state(false);
+        ArrayNode props = lights.json(own, null, null, Map.of());
+        TileState state = TileState.worst(own, props);
         o.put("state", state.id());
         o.put("light", state.light());
+        PropertyLights.outcome(o, props);
         number(o, "probability", forecast == null ? Double.NaN : forecast.probability());
         return o;
     }

@@ -14,8 +14,15 @@ import java.util.List;
  * <p>Scopes: a property with a scope is checked from an occurrence of its {@code from} event (that record
  * included) to the next occurrence of its {@code until} event (included, unless it is the opening record); each
  * segment starts the property's check afresh and a response owed when a segment closes is violated there.
+ *
+ * <p>Evidence: a property that is neither violated nor pending holds only when something it speaks of occurred in
+ * the run, within its scope: a bound's value was read; a record that tells an absence's (or a precedence's
+ * {@code then}) event could have come, its message with another value or, for an event that names no value, any
+ * message of its component ({@link Event#evidence}); a response's trigger, whatever its value (or a reading of its
+ * condition's value).
+ * Otherwise its verdict is {@link Verdict.NoEvidence}: a misspelt name is never "holds".
  */
-public final class PropertyChecker {
+public final class PropertyChecker implements PropertyView {
 
     /** Told each property's first violation in a run. */
     @FunctionalInterface
@@ -66,6 +73,18 @@ public final class PropertyChecker {
     private final int[] slots;
     private final boolean[] open;
     private final Verdict.Violated[] violated;
+    /** Per property, whether the run showed evidence for it ({@link Check#evidences}), and whether its scope opened. */
+    private final boolean[] evidenced;
+    private final boolean[] opened;
+    /** Per property, its verdict without evidence: nothing seen in its scope, and its scope never opened. */
+    private final Verdict.NoEvidence[] unseen;
+    private final Verdict.NoEvidence[] unopened;
+    /** Whether each property is violated now: since a violation, until it holds again or its segment closes. */
+    private final boolean[] now;
+    /** The violation the last record made of each property that was not violated just before it, or null. */
+    private final Verdict.Violated[] made;
+    /** Whether the last record's reading of each bound ended its violation. */
+    private final boolean[] again;
     private final Listener listener;
     private long ticks;
 
@@ -84,6 +103,19 @@ public final class PropertyChecker {
         }
         this.open = new boolean[checks.length];
         this.violated = new Verdict.Violated[checks.length];
+        this.evidenced = new boolean[checks.length];
+        this.opened = new boolean[checks.length];
+        this.unseen = new Verdict.NoEvidence[checks.length];
+        this.unopened = new Verdict.NoEvidence[checks.length];
+        for (int i = 0; i < checks.length; i++) {
+            unseen[i] = new Verdict.NoEvidence(checks[i].unseen() + (scopes[i].global() ? " in the run"
+                    : " within its scope"));
+            unopened[i] = scopes[i].global() ? unseen[i] : new Verdict.NoEvidence("its scope never opened: no "
+                    + scopes[i].from().describe());
+        }
+        this.now = new boolean[checks.length];
+        this.made = new Verdict.Violated[checks.length];
+        this.again = new boolean[checks.length];
     }
 
     /** Takes the next record of the run. */
@@ -95,6 +127,8 @@ public final class PropertyChecker {
         for (int i = 0; i < checks.length; i++) {
             Check c = checks[i];
             c.reading = Double.NaN;
+            made[i] = null;
+            again[i] = false;
             if (violated[i] != null && !c.reads()) {
                 continue; // the verdict is final; only a bound still reads its value, for the forecast
             }
@@ -102,16 +136,23 @@ public final class PropertyChecker {
             Verdict.Violated v;
             if (s.global()) {
                 v = c.step(r, ticks);
+                if (!evidenced[i]) {
+                    evidenced[i] = c.evidences(r);
+                }
             } else {
                 boolean opening = !open[i] && s.from().matches(r);
                 if (opening) {
                     open[i] = true;
+                    opened[i] = true;
                     c.reset();
                 }
                 if (!open[i]) {
                     continue;
                 }
                 v = c.step(r, ticks);
+                if (!evidenced[i]) {
+                    evidenced[i] = c.evidences(r); // before the segment closes: its closing record is in it
+                }
                 if (!opening && s.until().matches(r)) {
                     open[i] = false;
                     Verdict.Violated owed = c.close(r);
@@ -119,10 +160,28 @@ public final class PropertyChecker {
                     c.reset();
                 }
             }
+            judge(i, c, v);
+            if (!inScope(i) && c.reads()) {
+                now[i] = false; // out of its scope a bound cannot be violated: its violation ends with the scope
+            }
             if (v != null && violated[i] == null) {
                 violated[i] = v;
                 listener.violated(i, properties.get(i), v);
             }
+        }
+    }
+
+    /**
+     * What record's step {@code v} does to property {@code i}'s violation now: a violation starts one (told as made
+     * when none was up); a bound's reading that holds ends one.
+     */
+    private void judge(int i, Check c, Verdict.Violated v) {
+        if (v != null) {
+            made[i] = now[i] ? null : v;
+            now[i] = true;
+        } else if (now[i] && !Double.isNaN(c.reading)) {
+            now[i] = false; // a bound's reading within its bounds: it holds again
+            again[i] = true;
         }
     }
 
@@ -144,6 +203,7 @@ public final class PropertyChecker {
     }
 
     /** The value the last record gave property {@code index} (a {@link Bound}), or NaN when it gave none. */
+    @Override
     public double reading(int index) {
         return checks[index].reading;
     }
@@ -152,6 +212,7 @@ public final class PropertyChecker {
      * The value the last record carried for bound {@code index} ({@link Bound#valueOf}), whether or not its scope is
      * open; NaN when it carried none (or the property is no bound).
      */
+    @Override
     public double value(int index) {
         return slots[index] < 0 ? Double.NaN : readings.value(slots[index]);
     }
@@ -160,16 +221,48 @@ public final class PropertyChecker {
      * Whether property {@code index} is checked now, after the last record: its scope is the whole run, or a segment of
      * it opened and has not closed (a segment's closing record was checked, and the scope is closed after it).
      */
+    @Override
     public boolean inScope(int index) {
         return scopes[index].global() || open[index];
     }
 
-    /** The verdict of property {@code index} on the run so far. */
+    /**
+     * Whether property {@code index} is violated now, after the last record: a bound from a violating reading until
+     * it holds again (its next reading within its bounds) or its scope closes; any other kind from its violation to
+     * the end of the run (its verdict is final).
+     */
+    @Override
+    public boolean violatedNow(int index) {
+        return now[index];
+    }
+
+    /**
+     * The violation the last record made of property {@code index} when it was not violated just before (its first
+     * in the run, or a bound's next one after it held again), or null.
+     */
+    public Verdict.Violated violatedAt(int index) {
+        return made[index];
+    }
+
+    /** Whether the last record's reading of bound {@code index} (within its scope) ended its violation. */
+    public boolean holdsAgain(int index) {
+        return again[index];
+    }
+
+    /**
+     * The verdict of property {@code index} on the run so far: violated, pending, holds, or no evidence when nothing it
+     * speaks of occurred in its scope yet.
+     */
+    @Override
     public Verdict verdict(int index) {
         if (violated[index] != null) {
             return violated[index];
         }
-        return open[index] || scopes[index].global() ? checks[index].owed() : Verdict.HOLDS;
+        Verdict owed = open[index] || scopes[index].global() ? checks[index].owed() : Verdict.HOLDS;
+        if (evidenced[index] || owed instanceof Verdict.Pending) {
+            return owed;
+        }
+        return opened[index] ? unseen[index] : unopened[index];
     }
 
     /** Every property with its verdict on the run so far, in the checker's order. */
@@ -182,8 +275,40 @@ public final class PropertyChecker {
     }
 
     /** The properties checked, in order. */
+    @Override
     public List<Property> properties() {
         return properties;
+    }
+
+    /**
+     * The run ends, and {@code r} is the first record after it, which begins the next run: a bounded response whose
+     * deadline in seconds passed before {@code r} came (a robot frozen through the silence that began the new run) is
+     * violated at {@code r}, in this run, and told as every violation is; never dropped with the run.
+     */
+    public void overdue(LogRecord r) {
+        for (int i = 0; i < checks.length; i++) {
+            made[i] = null; // a judgement of its own: what the last record made is told already
+            again[i] = false;
+            if (violated[i] == null && (scopes[i].global() || open[i])) {
+                Verdict.Violated v = checks[i].overdue(r);
+                if (v != null) {
+                    violated[i] = v;
+                    made[i] = now[i] ? null : v;
+                    now[i] = true;
+                    listener.violated(i, properties.get(i), v);
+                }
+            }
+        }
+    }
+
+    /**
+     * A tick of a log without time stamps lasts {@code seconds} ({@code watch --tick-seconds}): a deadline of T
+     * seconds in such a log is T seconds of ticks. NaN, the default: a tick counts as a second.
+     */
+    public void countTicksAs(double seconds) {
+        for (Check c : checks) {
+            c.countTicksAs(seconds);
+        }
     }
 
     /** The run ends (a new run, the end of the log): obligations still open are told as censored. */
@@ -200,6 +325,11 @@ public final class PropertyChecker {
             checks[i].reset();
             open[i] = false;
             violated[i] = null;
+            evidenced[i] = false;
+            opened[i] = false;
+            now[i] = false;
+            made[i] = null;
+            again[i] = false;
         }
     }
 }

@@ -73,7 +73,7 @@ class BoundLightTest {
         Board b = new Board(List.<LearnedModel>of(), A.safety(), properties(), Duration.ofSeconds(10), now::get,
                 RobotNames.byFile(), List.of());
         Tile t = b.tile("a.log");
-        t.record(new Records().at(1).level(55).list().get(1));
+        Judged.record(t, new Records().at(1).level(55).list().get(1));
         Forecast f = new Forecast(0.62, 8.5, 6.5, 12.3, Forecast.Basis.MATCHED, null, 17, 11, 55.0, -1.8, "s");
         t.properties(statuses(f, false));
         JsonNode reserve = light(b, "reserve");
@@ -97,7 +97,9 @@ class BoundLightTest {
         assertEquals("yellow", reserve.get("light").asText());
         assertEquals(reason, reserve.get("words").asText());
         tile = b.status("a.log").get("logs").get(0);
-        assertEquals("ok", tile.get("state").asText(), "the battery's alarm is untouched: " + tile);
+        assertEquals("warning", tile.get("state").asText(), "the robot's state is its worst property's: " + tile);
+        assertEquals("ok", tile.get("forecastState").asText(), "the battery's alarm is untouched: " + tile);
+        assertEquals("[\"reserve\"]", tile.get("warned").toString());
         String metrics = new String(b.metrics().scrape(), StandardCharsets.UTF_8);
         assertTrue(metrics.contains("predmon_property_warnings_total{log=\"a.log\",property=\"reserve\",robot=\"a\"}"
                 + " 1.0"), metrics);

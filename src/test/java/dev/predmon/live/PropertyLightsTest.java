@@ -87,7 +87,7 @@ class PropertyLightsTest {
     void modelsThatDoNotFitTheLogGiveNoGreenLight() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         t.properties(statuses(Map.of()));
         assertEquals("green", lights(b).get(0).get("light").asText());
         t.noVerdict("the models' abstraction does not fit this log");
@@ -96,13 +96,44 @@ class PropertyLightsTest {
         assertEquals("no verdict: the models cannot judge this log", lights.get(1).get("words").asText());
     }
 
+    /**
+     * A property none of whose records occurred in the run (no grasp tried; the battery on a misspelt command) is a
+     * grey light that says so, never a green "holds", in /status and /metrics.
+     */
+    @Test
+    void aPropertyWithNoEvidenceIsGreyNotGreen() {
+        Board b = board();
+        Tile t = b.tile("a.log");
+        Judged.record(t, level(1, 80));
+        Verdict none = new Verdict.NoEvidence("no ArmService/closeHand command (its trigger) in the run");
+        Verdict unread = new Verdict.NoEvidence("no reading of BatteryReader/levle in the run");
+        t.properties(statuses(Map.of("grasp-in-time", new PropertyStatus(property("grasp-in-time"), none,
+                PropertyStatus.Model.NONE, false, null, null), "battery", new PropertyStatus(property("battery"),
+                unread, PropertyStatus.Model.FORECAST, false, null, null))));
+        JsonNode lights = lights(b);
+        assertEquals("battery no-evidence, grasp-in-time no-evidence, charger-in-time holds, no-abort holds, "
+                + "navigation-in-time holds", ids(lights), "grey before green");
+        JsonNode grasp = lights.get(1);
+        assertEquals("grey", grasp.get("light").asText());
+        assertEquals("no-evidence", grasp.get("verdict").asText());
+        assertEquals("no evidence (no ArmService/closeHand command (its trigger) in the run)",
+                grasp.get("words").asText());
+        assertEquals("grey", lights.get(0).get("light").asText(), "the forecast's property too");
+        assertEquals("no evidence (no reading of BatteryReader/levle in the run)", lights.get(0).get("words").asText());
+        String metrics = new String(b.metrics().scrape(), StandardCharsets.UTF_8);
+        assertTrue(metrics.contains("predmon_property_state{log=\"a.log\",property=\"grasp-in-time\",robot=\"a\","
+                + "state=\"no-evidence\"} 1.0"), metrics);
+        assertTrue(metrics.contains("predmon_property_state{log=\"a.log\",property=\"grasp-in-time\",robot=\"a\","
+                + "state=\"holds\"} 0.0"), metrics);
+    }
+
     @Test
     void anAbortIsARedLightOfNoAbortWithItsEventFirstWhileTheBatteryStaysGreen() {
         Board b = board();
         Tile t = b.tile("a.log");
         Tile calm = b.tile("b.log");
-        t.record(level(1, 80));
-        calm.record(level(1, 80));
+        Judged.record(t, level(1, 80));
+        Judged.record(calm, level(1, 80));
         calm.properties(statuses(Map.of()));
         Verdict.Violated abort = new Verdict.Violated(157, 5, null, null, "GoTo/getStatus reply 3");
         t.properties(statuses(Map.of("no-abort", new PropertyStatus(property("no-abort"), abort,
@@ -120,7 +151,10 @@ class PropertyLightsTest {
         assertEquals("violated at line 157: GoTo/getStatus reply 3", red.get("words").asText());
         assertEquals("no forecast: no model of this property", red.get("forecastWords").asText());
         JsonNode tile = b.status("a.log").get("logs").get(0);
-        assertEquals("ok", tile.get("state").asText(), "the battery, the forecast's property, holds");
+        assertEquals("violation", tile.get("state").asText(), "the robot's state is its worst property's");
+        assertEquals("red", tile.get("light").asText());
+        assertEquals("ok", tile.get("forecastState").asText(), "the battery, the forecast's property, holds");
+        assertEquals("[\"no-abort\"]", tile.get("violated").toString());
         assertEquals("no-abort", tile.get("worst").get("property").asText());
         assertEquals("a.log", b.status(null).get("logs").get(0).get("log").asText(),
                 "a robot with a property violated sorts before one whose properties all hold");
@@ -142,7 +176,7 @@ class PropertyLightsTest {
     void aPendingNavigationIsGreenWithItsChanceOfAMissAndTimeLeft() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         // pending since tick 1, due by tick 401; after 100 ticks 8 training navigations were still pending, 1 of them
         // past the deadline: P(miss) 0.12 with the prior, 300 ticks left
         Verdict.Pending pending = new Verdict.Pending(24, 1, 401, Deadline.Unit.TICKS);
@@ -183,7 +217,7 @@ class PropertyLightsTest {
         Board b = new Board(List.<LearnedModel>of(), A.safety(), A.properties(), Duration.ofSeconds(10), now::get,
                 RobotNames.byFile(), List.of(none));
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         t.properties(statuses(Map.of("navigation-in-time", new PropertyStatus(property("navigation-in-time"),
                 new Verdict.Pending(24, 1, 401, Deadline.Unit.TICKS), PropertyStatus.Model.DEADLINE, false,
                 new Survival.Estimate(0.12, 300, 8, 1, false), "ticks"))));
@@ -197,7 +231,7 @@ class PropertyLightsTest {
     void aDeadlineWarnedThenDischargedIsYellowThenGreenWithItsRecoveryAndTheBatteryAlarmIsUntouched() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         Property nav = property("navigation-in-time");
         Verdict.Pending pending = new Verdict.Pending(24, 1, 401, Deadline.Unit.TICKS);
         Survival.Estimate e = new Survival.Estimate(0.62, 20, 5, 2, false);
