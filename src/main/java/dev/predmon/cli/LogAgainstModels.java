@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
+import dev.predmon.ros2.Recordings;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
@@ -165,10 +166,11 @@ final class LogAgainstModels {
     /** As {@link #checkLog()}, but a file that does not exist yet is fine ({@code watch} waits for it). */
     void checkLogIfPresent() throws BadInputException {
         Path log = log();
-        if (Files.isDirectory(log)) {
-            throw new BadInputException(log + ": is a directory; expected a log file");
+        boolean recording = Recordings.isRecording(log);
+        if (Files.isDirectory(log) && !recording) {
+            throw new BadInputException(log + ": is a directory; expected a log file or a ROS 2 recording");
         }
-        if (Files.exists(log) && !Files.isRegularFile(log)) {
+        if (Files.exists(log) && !Files.isRegularFile(log) && !recording) {
             throw new BadInputException(log + ": not a regular file; expected a log file");
         }
         if (Files.exists(log) && !Files.isReadable(log)) {

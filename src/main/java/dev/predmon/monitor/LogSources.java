@@ -2,6 +2,8 @@ package dev.predmon.monitor;
 
 import dev.predmon.BadInputException;
 
+import dev.predmon.ros2.Recordings;
+
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.FileSystemException;
@@ -48,7 +50,8 @@ public final class LogSources {
         }
         for (Path n : names) {
             // A name that exists is that file or directory, even with glob characters in it (robot[1].log).
-            this.names.add(new Name(n, Files.isDirectory(n) ? Kind.DIRECTORY
+            // A rosbag2 folder is one log, not a directory of logs.
+            this.names.add(new Name(n, Files.isDirectory(n) && !Recordings.isRecording(n) ? Kind.DIRECTORY
                     : !Files.exists(n) && isGlob(n) ? Kind.GLOB : Kind.FILE));
         }
     }
@@ -134,7 +137,8 @@ public final class LogSources {
             case GLOB -> glob(name.path());
             case DIRECTORY -> {
                 try (Stream<Path> files = Files.list(name.path())) {
-                    yield files.filter(p -> Files.isRegularFile(p) && isLogName(p)).sorted().toList();
+                    yield files.filter(p -> (Files.isRegularFile(p) && isLogName(p)) || Recordings.isRecording(p))
+                            .sorted().toList();
                 } catch (NoSuchFileException | NotDirectoryException gone) {
                     yield List.of(); // moved away or replaced: its logs are looked for again at the next rescan
                 }
@@ -149,7 +153,10 @@ public final class LogSources {
         return s.chars().anyMatch(c -> GLOB_CHARS.indexOf(c) >= 0);
     }
 
-    /** The log files of a directory: the names the monitor's captures and yarplogger's files have. */
+    /**
+     * The log files of a directory: the names the monitor's captures and yarplogger's files have (a directory's ROS 2
+     * recordings are its logs too, see {@link Recordings#isRecording}).
+     */
     static boolean isLogName(Path p) {
         String n = p.getFileName().toString();
         return n.endsWith(".log") || n.endsWith(".txt");

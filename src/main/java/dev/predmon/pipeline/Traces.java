@@ -47,7 +47,7 @@ public final class Traces {
         RunCollector runs = new RunCollector(abstraction, pairs);
         TracePipeline pipeline = new TracePipeline(abstraction, runs);
         long lines;
-        try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(pipeline::accept, p -> {
+        try (RecordSource source = abstraction.format().read(log, RecordSink.of(pipeline::accept, p -> {
             if (problems.size() < MAX_PROBLEMS) {
                 problems.add(p);
             }

@@ -68,7 +68,7 @@ public record Timeline(double start, double[] times, double[] values, Clock cloc
             public void pair(IoPair pair, LogRecord trigger) {
             }
         });
-        try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(pipeline[0]::accept, p -> { }))) {
+        try (RecordSource source = abstraction.format().read(log, RecordSink.of(pipeline[0]::accept, p -> { }))) {
             source.drain();
         }
         return thinned(points, first[0], maxPoints, clock[0]);
