@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /** A sink that keeps what a reader delivers, for tests. */
-final class Collected implements BagSink {
+class Collected implements BagSink {
 
     final List<BagMessage> messages = new ArrayList<>();
     final List<String> problems = new ArrayList<>();
