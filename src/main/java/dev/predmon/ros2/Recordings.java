@@ -1,6 +1,7 @@
 package dev.predmon.ros2;
 
 import dev.predmon.parse.LogFormat;
+import dev.predmon.rosbag.BagFollower;
 import dev.predmon.rosbag.BagSink;
 import dev.predmon.rosbag.Bags;
 
@@ -66,7 +67,18 @@ public final class Recordings {
 
         @Override
         public Follow follow(Path path, BagSink sink) {
-            throw new UnsupportedOperationException("MERGE-PENDING: the follower");
+            BagFollower follower = new BagFollower(path, sink);
+            return new Follow() {
+                @Override
+                public boolean poll() throws IOException {
+                    return follower.poll() > 0;
+                }
+
+                @Override
+                public void close() throws IOException {
+                    follower.close();
+                }
+            };
         }
     };
 }
