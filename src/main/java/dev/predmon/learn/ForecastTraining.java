@@ -6,13 +6,13 @@ import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.BoundRuns;
 import dev.predmon.forecast.Calibration;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.PropertyParts;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.ScorecardTally;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.property.Bound;
-import dev.predmon.property.Property;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -97,7 +97,8 @@ public final class ForecastTraining {
             Map<String, BoundModel> bounds = new TreeMap<>();
             boundStats.forEach((id, b) -> bounds.put(id, new BoundModel(b.side(),
                     b.model().withThreshold(ThresholdChoice.DEFAULT, note, false))));
-            return stats.withThreshold(ThresholdChoice.DEFAULT, note, false).withBounds(bounds);
+            return PropertyParts.covering(stats.withThreshold(ThresholdChoice.DEFAULT, note, false)
+                    .withBounds(bounds), abstraction);
         }
         List<HeldOut> judged = new ArrayList<>();
         Map<String, List<HeldOut>> boundJudged = new TreeMap<>();
@@ -115,7 +116,8 @@ public final class ForecastTraining {
             bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), heldOut.folds(), unit,
                     boundJudged.get(b.id()))));
         }
-        return chosen(stats, property, heldOut.folds(), unit, judged).withBounds(bounds);
+        return PropertyParts.covering(chosen(stats, property, heldOut.folds(), unit, judged).withBounds(bounds),
+                abstraction);
     }
 
     /**
@@ -143,15 +145,7 @@ public final class ForecastTraining {
      * forecast of its own ({@link BoundModel}).
      */
     public static List<Bound> others(Abstraction abstraction) {
-        String safety = abstraction.safety().map(Bound::id).orElse(null);
-        List<Bound> out = new ArrayList<>();
-        for (Property p : abstraction.properties()) {
-            if (p instanceof Bound b && !b.id().equals(safety)
-                    && (b.hasFloor() || b.ceiling() != Double.POSITIVE_INFINITY)) {
-                out.add(b);
-            }
-        }
-        return out;
+        return PropertyParts.others(abstraction);
     }
 
     /** By id, the side of each of {@code others} its forecast predicts, as {@code runs} cross it. */

@@ -38,7 +38,7 @@ public final class RecordingFolder {
     }
 
     /** The recordings under {@code dir}, sorted by path; a rosbag2 folder is one, the files in it none. */
-    static List<Path> logs(Path dir) throws BadInputException {
+    public static List<Path> logs(Path dir) throws BadInputException {
         try (Stream<Path> s = Files.walk(dir)) {
             List<Path> found = s.filter(p -> !p.equals(dir) && (isLog(p) || Recordings.isRecording(p))).sorted()
                     .toList();

@@ -34,6 +34,14 @@ final class RunState {
     long pairs;
     /** The pair at which the thesis's match rule first held (confirm included), or -1. */
     long matchRuleAt = -1;
+    /**
+     * The records the monitor has read since it started, the one it takes now included: the order of reading, which
+     * outlives runs and rotations (a run may hold records of two files, each with lines of its own).
+     */
+    long read;
+    /** Where in that order the run's first warning of any property, and its first violation, came; 0 before. */
+    long warningRead;
+    long violationRead;
 
     /** Run {@code number} begins at {@code line}: nothing seen yet. */
     void start(int number, long line) {
@@ -48,6 +56,8 @@ final class RunState {
         value = null;
         pairs = 0;
         matchRuleAt = -1;
+        warningRead = 0;
+        violationRead = 0;
     }
 
     /** The matching warned of property {@code id}, not the forecast's. */
@@ -55,11 +65,25 @@ final class RunState {
         othersWarned.add(id);
     }
 
-    /** A warning of some property: kept when it is the run's first, and when it is its property's first. */
+    /**
+     * A warning of some property: kept when it is the run's first (with where it came in the order of reading), and
+     * when it is its property's first.
+     */
     void anyWarned(MonitorEvent.Warning w) {
-        anyWarning = anyWarning == null ? w : anyWarning;
+        if (anyWarning == null) {
+            anyWarning = w;
+            warningRead = read;
+        }
         if (w.property() != null) {
             warnings.putIfAbsent(w.property(), w);
         }
+    }
+
+    /** {@code e}, an event the monitor tells: the run's first violation is noted where it came in reading order. */
+    MonitorEvent told(MonitorEvent e) {
+        if (e instanceof MonitorEvent.Violation && violationRead == 0) {
+            violationRead = read;
+        }
+        return e;
     }
 }

@@ -1,7 +1,7 @@
 package dev.predmon.rosbag;
 
-import dev.predmon.rosbag.MsgDefinitions.DefinitionException;
 import com.github.luben.zstd.Zstd;
+import dev.predmon.rosbag.MsgDefinitions.DefinitionException;
 import net.jpountz.lz4.LZ4FrameOutputStream;
 
 import java.io.ByteArrayOutputStream;

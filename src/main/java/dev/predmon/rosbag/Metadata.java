@@ -1,7 +1,6 @@
 package dev.predmon.rosbag;
 
 import dev.predmon.files.AtomicFiles;
-
 import org.snakeyaml.engine.v2.api.Dump;
 import org.snakeyaml.engine.v2.api.DumpSettings;
 import org.snakeyaml.engine.v2.common.FlowStyle;
