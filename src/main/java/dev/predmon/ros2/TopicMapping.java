@@ -21,7 +21,10 @@ import java.util.function.Consumer;
  */
 public final class TopicMapping {
 
-    /** The client port of every record: the monitor, which "calls" each topic. */
+    /**
+     * The client port of every record: the monitor, which "calls" each topic; with a rule's key, the key after it
+     * ({@code /predmon/FollowPath}).
+     */
     public static final String CLIENT = "/predmon";
 
     private final List<TopicRule> rules;
@@ -81,13 +84,14 @@ public final class TopicMapping {
                 if (rule.changes() && reply.equals(last.get(i).put(key, reply))) {
                     continue;
                 }
-                // An event's command names its word first, so that a matcher on the first argument (a property's
-                // event, what says an action is under way) tells a goal that starts from one that ends.
-                String arguments = rule.isValue() || key.isEmpty() ? (rule.isValue() ? key : reply)
-                        : reply + " " + key;
-                out.accept(new LogRecord(message.index(), time, "DEBUG", RecordKind.COMMAND, CLIENT, message.topic(),
+                // The key is the client's port (one connection per goal, node or logger: what tells them apart); an
+                // event's word is its argument too, so that a matcher on the argument (a property's event, what says
+                // an action is under way) tells a goal that starts from one that ends.
+                String client = key.isEmpty() ? CLIENT : CLIENT + "/" + key;
+                String arguments = rule.isValue() ? "" : reply;
+                out.accept(new LogRecord(message.index(), time, "DEBUG", RecordKind.COMMAND, client, message.topic(),
                         rule.protocol(), rule.command(), arguments, ""));
-                out.accept(new LogRecord(message.index(), time, "DEBUG", RecordKind.REPLY, message.topic(), CLIENT,
+                out.accept(new LogRecord(message.index(), time, "DEBUG", RecordKind.REPLY, message.topic(), client,
                         rule.protocol(), rule.command(), arguments, reply));
             }
         }

@@ -28,10 +28,18 @@ class TopicMappingTest {
         return out;
     }
 
-    /** The replies only, as {@code protocol/command argument=reply}. */
+    /** The replies only, as {@code protocol/command client argument=reply}; each command is the one before. */
     private static List<String> replies(List<LogRecord> records) {
+        for (int i = 0; i < records.size(); i += 2) {
+            LogRecord c = records.get(i);
+            LogRecord r = records.get(i + 1);
+            assertEquals(List.of(RecordKind.COMMAND, RecordKind.REPLY), List.of(c.kind(), r.kind()));
+            assertEquals(List.of(c.from(), c.to(), c.arguments()), List.of(r.to(), r.from(), r.arguments()),
+                    "a command and its reply on one connection");
+        }
         return records.stream().filter(r -> r.kind() == RecordKind.REPLY)
-                .map(r -> r.protocol() + "/" + r.command() + " " + r.arguments() + "=" + r.reply()).toList();
+                .map(r -> r.protocol() + "/" + r.command() + " " + r.to() + " " + r.arguments() + "=" + r.reply())
+                .toList();
     }
 
     @Test
@@ -55,8 +63,8 @@ class TopicMappingTest {
     void theScaleIsAFractionUntilAReadingShowsPercentagesAndNanIsNoReading() {
         List<String> got = replies(map(m.battery(1, 0.5), m.battery(2, Double.NaN), m.battery(3, 96.0),
                 m.battery(4, 1.0), m.battery(5, 0.5)));
-        assertEquals(List.of("battery/percentage =50", "battery/percentage =96", "battery/percentage =1",
-                "battery/percentage =0.5"), got, "NaN gives nothing; after 96 the topic publishes percentages");
+        assertEquals(List.of("battery/percentage /predmon =50", "battery/percentage /predmon =96",
+                "battery/percentage /predmon =1", "battery/percentage /predmon =0.5"), got, "NaN gives nothing; after 96 the topic publishes percentages");
     }
 
     @Test
@@ -71,10 +79,10 @@ class TopicMappingTest {
         String g1 = "00".repeat(15) + "01";
         String g2 = "00".repeat(15) + "02";
         assertEquals(List.of(
-                "navigate_to_pose/goal executing " + g1 + "=executing",
-                "navigate_to_pose/goal succeeded " + g1 + "=succeeded",
-                "navigate_to_pose/goal executing " + g2 + "=executing",
-                "navigate_to_pose/goal aborted " + g2 + "=aborted"), got);
+                "navigate_to_pose/goal /predmon/" + g1 + " executing=executing",
+                "navigate_to_pose/goal /predmon/" + g1 + " succeeded=succeeded",
+                "navigate_to_pose/goal /predmon/" + g2 + " executing=executing",
+                "navigate_to_pose/goal /predmon/" + g2 + " aborted=aborted"), got);
     }
 
     @Test
@@ -89,12 +97,12 @@ class TopicMappingTest {
                 m.diagnostics(7, "motors", 0),
                 m.diagnostics(8, "motors", 2)));
         assertEquals(List.of(
-                "behavior_tree/node RUNNING FollowPath=RUNNING",
-                "behavior_tree/node FAILURE FollowPath=FAILURE",
-                "rosout/log ERROR controller_server=ERROR",
-                "rosout/log FATAL bt_navigator=FATAL",
-                "diagnostics/level OK motors=OK",
-                "diagnostics/level ERROR motors=ERROR"), got, "a WARN log and a repeated level give nothing");
+                "behavior_tree/node /predmon/FollowPath RUNNING=RUNNING",
+                "behavior_tree/node /predmon/FollowPath FAILURE=FAILURE",
+                "rosout/log /predmon/controller_server ERROR=ERROR",
+                "rosout/log /predmon/bt_navigator FATAL=FATAL",
+                "diagnostics/level /predmon/motors OK=OK",
+                "diagnostics/level /predmon/motors ERROR=ERROR"), got, "a WARN log and a repeated level give nothing");
     }
 
     @Test
