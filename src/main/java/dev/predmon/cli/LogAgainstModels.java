@@ -16,7 +16,10 @@ import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.RecordTaken;
 import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.MissingParameterException;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -32,7 +35,10 @@ import java.util.Map;
  */
 final class LogAgainstModels {
 
-    @Option(names = "--log", required = true, paramLabel = "FILE",
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec spec;
+
+    @Option(names = "--log", paramLabel = "FILE",
             description = "The log. watch takes several: repeat it, or name a directory (its *.log and *.txt files, "
                     + "also those that appear later) or a quoted glob ('logs/robot-*.log').")
     List<Path> logs;
@@ -148,8 +154,18 @@ final class LogAgainstModels {
         return tolerance.value;
     }
 
+    /** The logs named; {@code --log} is required wherever logs are read ({@code watch --rosbridge} reads none). */
+    List<Path> logs() {
+        if (logs == null) {
+            throw new MissingParameterException(spec.commandLine(), spec.findOption("--log"),
+                    "Missing required option: '--log=FILE'");
+        }
+        return logs;
+    }
+
     /** The one log of verify, classify and explain (watch takes several). */
     Path log() throws BadInputException {
+        List<Path> logs = logs();
         if (logs.size() != 1) {
             throw new BadInputException("--log is given " + logs.size() + " times; this command judges one log "
                     + "(watch follows several)");

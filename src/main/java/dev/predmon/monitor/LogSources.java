@@ -49,8 +49,17 @@ public final class LogSources {
     private final Map<Object, Path> chosen = new HashMap<>();
 
     /** @param names files, directories or globs; at least one */
+    /** No log at all: what a watch of a source that is no file ({@code --rosbridge}) follows beside it. */
+    public static LogSources none() {
+        return new LogSources(List.of(), true);
+    }
+
     public LogSources(List<Path> names) {
-        if (names.isEmpty()) {
+        this(names, false);
+    }
+
+    private LogSources(List<Path> names, boolean none) {
+        if (names.isEmpty() && !none) {
             throw new IllegalArgumentException("no log named");
         }
         for (Path n : names) {

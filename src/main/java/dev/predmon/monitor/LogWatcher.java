@@ -50,10 +50,14 @@ public final class LogWatcher implements AutoCloseable {
                 DEFAULT_RELEASE);
     }
 
-    /** As {@link #withRecords}; a file gone from the path is closed once it has not grown for {@code release}. */
+    /**
+     * As {@link #withRecords}; a file gone from the path is closed once it has not grown for {@code release}; read
+     * in {@code format}, or in the abstraction's when null.
+     */
     static LogWatcher withRelease(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
-                                  Consumer<LogRecord> taken, Duration release) {
-        return new LogWatcher(formatOf(monitor), log, monitor, problems, record -> { }, taken, DEFAULT_QUIET, release);
+                                  Consumer<LogRecord> taken, Duration release, LogFormat format) {
+        return new LogWatcher(format == null ? formatOf(monitor) : format, log, monitor, problems, record -> { },
+                taken, DEFAULT_QUIET, release);
     }
 
     /** How the monitor's abstraction reads logs: YARP logs, and ROS 2 recordings when it maps their topics. */
