@@ -65,18 +65,29 @@ public final class StatsLearner {
 
     /** Per bounded-response property, how long the runs' obligations stayed pending, discharged or censored. */
     public static Map<String, Survival> obligations(List<LogTrace.Run> runs) {
-        Map<String, List<Double>> discharged = new TreeMap<>();
-        Map<String, List<Double>> censored = new TreeMap<>();
+        Map<String, List<RunTiming.Obligation>> byProperty = new TreeMap<>();
         for (LogTrace.Run r : runs) {
             for (RunTiming.Obligation o : r.timing().obligations()) {
-                discharged.computeIfAbsent(o.property(), k -> new ArrayList<>());
-                censored.computeIfAbsent(o.property(), k -> new ArrayList<>());
-                (o.discharged() ? discharged : censored).get(o.property()).add(o.duration());
+                byProperty.computeIfAbsent(o.property(), k -> new ArrayList<>()).add(o);
             }
         }
         Map<String, Survival> out = new TreeMap<>();
-        discharged.forEach((id, d) -> out.put(id, new Survival(toArray(d), toArray(censored.get(id)))));
+        byProperty.forEach((id, all) -> {
+            Map<String, List<RunTiming.Obligation>> byInput = new TreeMap<>();
+            all.stream().filter(o -> o.input() != null)
+                    .forEach(o -> byInput.computeIfAbsent(o.input(), k -> new ArrayList<>()).add(o));
+            Map<String, Survival> contexts = new TreeMap<>();
+            byInput.forEach((input, os) -> contexts.put(input, survival(os)));
+            out.put(id, survival(all).withContexts(contexts));
+        });
         return out;
+    }
+
+    /** The curve of {@code obligations}, discharged or censored. */
+    private static Survival survival(List<RunTiming.Obligation> obligations) {
+        return new Survival(toArray(obligations.stream().filter(RunTiming.Obligation::discharged)
+                .map(RunTiming.Obligation::duration).toList()), toArray(obligations.stream()
+                .filter(o -> !o.discharged()).map(RunTiming.Obligation::duration).toList()));
     }
 
     /** Per state of {@code machine}: counts, times and drift over the runs it takes. */

@@ -1,6 +1,9 @@
 package dev.predmon.forecast;
 
 import java.util.Arrays;
+import java.util.Collections;
+import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * How long the training runs' obligations stayed pending (a {@code goTo} until its destination, a low battery until
@@ -19,6 +22,13 @@ import java.util.Arrays;
  * of which missed, the next one misses about once in 80, not never. Past every training obligation there is no evidence: the estimate
  * says so ({@link Estimate#novel}) and gives only the time left.
  *
+ * <p>The curve may be conditioned on where the run was when the obligation began: the Mealy input of its trigger
+ * record (which skill was asked for, where the robot was sent: {@code goTo_ch} is another leg than {@code goTo_ki}).
+ * Each input with at least {@value #MIN_CONTEXT} training obligations has a curve of its own ({@link #at}); an input
+ * with fewer, or none, is judged by the pooled curve. The input, not a machine's state number, is the condition: the
+ * input means the same in every model learned from the same abstraction (each fold's, and the final one's), where a
+ * state number is only a name inside one machine.
+ *
  * <p>Immutable; the durations are kept sorted, and one estimate is two binary searches and a product over the
  * distinct discharge times (a few hundred at most).
  */
@@ -29,12 +39,25 @@ public final class Survival {
     /** Distinct discharge times, ascending, and the survival just after each. */
     private final double[] times;
     private final double[] after;
+    /** By the trigger's input, the curve of the obligations that began there (only inputs with enough of them). */
+    private final Map<String, Survival> contexts;
+
+    /**
+     * An input needs this many training obligations for a curve of its own: with ten, a new obligation from the same
+     * input outlasts all of them about once in eleven; with fewer, the pooled curve is the better evidence.
+     */
+    public static final int MIN_CONTEXT = 10;
 
     /**
      * @param discharged how long each obligation that was discharged took
      * @param censored   how long each obligation that was never discharged had been pending when it was let go
      */
     public Survival(double[] discharged, double[] censored) {
+        this(discharged, censored, Map.of());
+    }
+
+    private Survival(double[] discharged, double[] censored, Map<String, Survival> contexts) {
+        this.contexts = Collections.unmodifiableMap(new TreeMap<>(contexts));
         this.discharged = finiteSorted(discharged, "discharged");
         this.censored = finiteSorted(censored, "censored");
         double[] t = new double[this.discharged.length];
@@ -57,6 +80,31 @@ public final class Survival {
         }
         this.times = Arrays.copyOf(t, distinct);
         this.after = Arrays.copyOf(s, distinct);
+    }
+
+    /**
+     * This curve with {@code byInput} as the curves of the obligations by their trigger's input; inputs with fewer
+     * than {@link #MIN_CONTEXT} obligations are left out (they are judged by this pooled curve).
+     */
+    public Survival withContexts(Map<String, Survival> byInput) {
+        Map<String, Survival> kept = new TreeMap<>();
+        byInput.forEach((input, s) -> {
+            if (s.size() >= MIN_CONTEXT) {
+                kept.put(input, new Survival(s.discharged, s.censored));
+            }
+        });
+        return new Survival(discharged, censored, kept);
+    }
+
+    /** The curves by trigger input ({@link #withContexts}), each with enough obligations. */
+    public Map<String, Survival> contexts() {
+        return contexts;
+    }
+
+    /** The curve of obligations whose trigger was {@code input}: its own when it has one, else this pooled one. */
+    public Survival at(String input) {
+        Survival s = input == null ? null : contexts.get(input);
+        return s == null ? this : s;
     }
 
     /** How long each discharged obligation took, sorted. */
@@ -138,7 +186,8 @@ public final class Survival {
 
     @Override
     public boolean equals(Object o) {
-        return o instanceof Survival s && Arrays.equals(discharged, s.discharged) && Arrays.equals(censored, s.censored);
+        return o instanceof Survival s && Arrays.equals(discharged, s.discharged) && Arrays.equals(censored, s.censored)
+                && contexts.equals(s.contexts);
     }
 
     @Override

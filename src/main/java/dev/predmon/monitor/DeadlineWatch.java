@@ -13,6 +13,7 @@ import dev.predmon.property.Response;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Function;
 
 /**
  * The deadline forecast of every bounded-response property the models learned durations for: while an obligation is
@@ -85,9 +86,26 @@ final class DeadlineWatch {
     private final double[] durations;
     /** Each pending obligation's elapsed time when it was last judged, NaN before. */
     private final double[] judgedAt;
+    /**
+     * The curve each pending obligation is judged by: its trigger input's own ({@link Survival#at}), else the pooled
+     * one; null while none is pending.
+     */
+    private final Survival[] pending;
+    /** The Mealy input a trigger record maps to, or null. */
+    private final Function<LogRecord, String> inputOf;
 
-    /** The deadlines of {@code properties} that {@code model} learned durations for; none without a model. */
+    /** The deadlines of {@code properties} that {@code model} learned durations for, by the pooled curves alone. */
     DeadlineWatch(List<Property> properties, ForecastModel model) {
+        this(properties, model, r -> null);
+    }
+
+    /**
+     * The deadlines of {@code properties} that {@code model} learned durations for; none without a model. Each
+     * obligation is judged by the curve of its trigger's input ({@code inputOf}) when the model has one.
+     */
+    DeadlineWatch(List<Property> properties, ForecastModel model, Function<LogRecord, String> inputOf) {
+        this.inputOf = inputOf;
+        this.pending = new Survival[properties.size()];
         int n = properties.size();
         this.properties = new Response[n];
         this.survival = new Survival[n];
@@ -154,18 +172,23 @@ final class DeadlineWatch {
                 warned[i] = false;
                 current[i] = null;
                 told[i] = null;
+                pending[i] = null;
             }
             double elapsed = checker.elapsed(i);
             if (Double.isNaN(elapsed)) {
                 judgedAt[i] = Double.NaN;
+                pending[i] = null;
                 continue;
+            }
+            if (pending[i] == null) {
+                pending[i] = survival[i].at(inputOf.apply(r)); // r began the obligation: its trigger
             }
             if (elapsed == judgedAt[i] && current[i] != null) {
                 continue; // judged at this elapsed time already: a deadline in ticks changes at the next tick only
             }
             judgedAt[i] = elapsed;
             Deadline d = properties[i].within();
-            Survival s = survival[i];
+            Survival s = pending[i];
             Survival.Estimate raw = s.estimate(elapsed, d.amount());
             out.judged(r, properties[i], elapsed, raw);
             Survival.Estimate e = rules[i].calibrated(raw);
@@ -178,7 +201,7 @@ final class DeadlineWatch {
             if (warned[i]) {
                 continue;
             }
-            if (rules[i].warns(raw, elapsed, d.amount(), s)) {
+            if (rules[i].warns(raw, elapsed, d.amount(), s, survival[i])) {
                 warned[i] = true;
                 out.due(r, new Due(properties[i], e, elapsed, reason(properties[i], e, elapsed, s)));
             }
@@ -193,6 +216,7 @@ final class DeadlineWatch {
         Arrays.fill(ended, false);
         Arrays.fill(discharged, false);
         Arrays.fill(judgedAt, Double.NaN);
+        Arrays.fill(pending, null);
     }
 
     /**

@@ -73,8 +73,8 @@ final class WarningPolicy {
             return null;
         }
         MonitorEvent.Clause matching = MonitorEvent.Clause.MATCHING;
-        if (step.ruleWarns() && (rule == WarningRule.MATCH || ForecastTracker.takesMatching(f, step))
-                && alarm.mayWarn(matching)) {
+        if (step.ruleWarns() && (rule == WarningRule.MATCH || (ForecastTracker.takesMatching(f, step)
+                && (forecast == null || forecast.matchingWarns()))) && alarm.mayWarn(matching)) {
             return new Decision(matching, MonitorEvent.Warning.onlyFaulty(step.faultyAlive())
                     + (f == null ? "" : "; " + ForecastWords.line(f)));
         }
