@@ -155,28 +155,31 @@ public final class CrossValidation {
         return !Double.isNaN(lb) && (Double.isNaN(la) || la < lb);
     }
 
-    /** The rule {@code cases} learn: every variant and set of optional clauses tried, the best kept. */
+    /**
+     * The rule {@code cases} learn. Each variant is tried with every set of optional clauses, the best set kept (fewer
+     * wrong calls, then a longer lead, then fewer clauses: a clause earns its place). Of the variants, the earliest one
+     * that makes no more wrong calls on the cases than the baseline is kept: a later warning (a wider margin) is bought
+     * with the lead, which cases without a violation cannot measure, so it must be needed to do as well as the
+     * one-line rule. When no variant does as well, the one with the fewest wrong calls (then the longest lead).
+     */
     static Rule fit(List<Case> cases, Space space) {
         Calibration calibration = Calibration.fit(cases.stream()
                 .map(c -> new Calibration.Sample(c.probabilities(), c.violated())).toList());
-        Rule best = null;
-        Tally bestTally = null;
-        int bestKept = 0;
+        Tally baseline = new Tally();
+        cases.forEach(c -> baseline.add(c, c.baselineAt(), null));
+        Rule chosen = null;
+        Tally chosenTally = null;
         int variants = Math.max(1, space.variants());
         for (int v = 0; v < variants; v++) {
+            Rule best = null;
+            Tally bestTally = null;
+            int bestKept = 0;
             for (int mask = 0; mask < 1 << space.optional(); mask++) {
                 List<Boolean> kept = new ArrayList<>();
                 for (int i = 0; i < space.optional(); i++) {
                     kept.add((mask & (1 << i)) != 0);
                 }
-                int variant = v;
-                ThresholdChoice.Choice c = ThresholdChoice.choose(cases.stream().map(x -> new ThresholdChoice.Peak(
-                        calibration.apply(x.peak()), x.violated(), before(x.caughtAt(variant, kept), x))).toList(),
-                        space.what());
-                Rule r = c.validated()
-                        ? new Rule(calibration, c.threshold(), true, v, kept,
-                        String.format(Locale.ROOT, "%.2f %s", c.threshold(), c.note()))
-                        : new Rule(Calibration.IDENTITY, c.threshold(), false, v, kept, c.note());
+                Rule r = rule(cases, space, calibration, v, kept);
                 Tally t = new Tally();
                 cases.forEach(x -> t.add(x, r.warnedAt(x), r.calibration()));
                 int n = Integer.bitCount(mask);
@@ -186,8 +189,27 @@ public final class CrossValidation {
                     bestKept = n;
                 }
             }
+            if (bestTally.errors() <= baseline.errors()) {
+                return best; // the earliest variant that does as well as the baseline
+            }
+            if (chosen == null || better(bestTally, 0, chosenTally, 0)) {
+                chosen = best;
+                chosenTally = bestTally;
+            }
         }
-        return best;
+        return chosen;
+    }
+
+    /** The rule of {@code variant} and {@code kept} with its threshold chosen on {@code cases}. */
+    private static Rule rule(List<Case> cases, Space space, Calibration calibration, int variant,
+                             List<Boolean> kept) {
+        ThresholdChoice.Choice c = ThresholdChoice.choose(cases.stream().map(x -> new ThresholdChoice.Peak(
+                calibration.apply(x.peak()), x.violated(), before(x.caughtAt(variant, kept), x))).toList(),
+                space.what());
+        return c.validated()
+                ? new Rule(calibration, c.threshold(), true, variant, kept,
+                String.format(Locale.ROOT, "%.2f %s", c.threshold(), c.note()))
+                : new Rule(Calibration.IDENTITY, c.threshold(), false, variant, kept, c.note());
     }
 
     /** Fewer wrong calls, then a longer median lead, then fewer optional clauses (earlier variants come first). */

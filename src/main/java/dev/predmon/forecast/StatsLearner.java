@@ -4,6 +4,7 @@ import dev.predmon.compact.IoPair;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunTiming;
+import dev.predmon.pipeline.TriggerInputs;
 import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.util.ArrayList;
@@ -74,8 +75,15 @@ public final class StatsLearner {
         Map<String, Survival> out = new TreeMap<>();
         byProperty.forEach((id, all) -> {
             Map<String, List<RunTiming.Obligation>> byInput = new TreeMap<>();
-            all.stream().filter(o -> o.input() != null)
-                    .forEach(o -> byInput.computeIfAbsent(o.input(), k -> new ArrayList<>()).add(o));
+            for (RunTiming.Obligation o : all) {
+                if (o.input() != null) { // under its full condition, and under its trigger's input alone
+                    byInput.computeIfAbsent(o.input(), k -> new ArrayList<>()).add(o);
+                    String input = TriggerInputs.input(o.input());
+                    if (!input.equals(o.input())) {
+                        byInput.computeIfAbsent(input, k -> new ArrayList<>()).add(o);
+                    }
+                }
+            }
             Map<String, Survival> contexts = new TreeMap<>();
             byInput.forEach((input, os) -> contexts.put(input, survival(os)));
             out.put(id, survival(all).withContexts(contexts));

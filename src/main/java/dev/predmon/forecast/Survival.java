@@ -23,9 +23,10 @@ import java.util.TreeMap;
  * says so ({@link Estimate#novel}) and gives only the time left.
  *
  * <p>The curve may be conditioned on where the run was when the obligation began: the Mealy input of its trigger
- * record (which skill was asked for, where the robot was sent: {@code goTo_ch} is another leg than {@code goTo_ki}).
- * Each input with at least {@value #MIN_CONTEXT} training obligations has a curve of its own ({@link #at}); an input
- * with fewer, or none, is judged by the pooled curve. The input, not a machine's state number, is the condition: the
+ * record (which skill was asked for, where the robot was sent: {@code goTo_ch} is another leg than {@code goTo_ki}),
+ * after the input of the property's previous trigger ({@code goTo_ch_i>goTo_ki_i}, the way on after a recharge).
+ * Each condition with at least {@value #MIN_CONTEXT} training obligations has a curve of its own ({@link #at}); one
+ * with fewer falls back to its trigger's input alone, then to the pooled curve. The input, not a machine's state number, is the condition: the
  * input means the same in every model learned from the same abstraction (each fold's, and the final one's), where a
  * state number is only a name inside one machine.
  *
@@ -43,8 +44,11 @@ public final class Survival {
     private final Map<String, Survival> contexts;
 
     /**
-     * An input needs this many training obligations for a curve of its own: with ten, a new obligation from the same
-     * input outlasts all of them about once in eleven; with fewer, the pooled curve is the better evidence.
+     * A condition needs this many training obligations that were discharged (their response came) for a curve of its
+     * own: with ten, a new obligation from the same place outlasts all of them about once in eleven; with fewer, the
+     * pooled curve is the better evidence. Censored obligations do not count towards it: they tell only that the
+     * response took longer than they were watched, and a condition whose obligations were all let go early would
+     * call every later one novel.
      */
     public static final int MIN_CONTEXT = 10;
 
@@ -83,13 +87,13 @@ public final class Survival {
     }
 
     /**
-     * This curve with {@code byInput} as the curves of the obligations by their trigger's input; inputs with fewer
-     * than {@link #MIN_CONTEXT} obligations are left out (they are judged by this pooled curve).
+     * This curve with {@code byInput} as the curves of the obligations by where they began; conditions with fewer than
+     * {@link #MIN_CONTEXT} discharged obligations are left out (they are judged by this pooled curve).
      */
     public Survival withContexts(Map<String, Survival> byInput) {
         Map<String, Survival> kept = new TreeMap<>();
         byInput.forEach((input, s) -> {
-            if (s.size() >= MIN_CONTEXT) {
+            if (s.discharged.length >= MIN_CONTEXT) {
                 kept.put(input, new Survival(s.discharged, s.censored));
             }
         });
@@ -101,9 +105,20 @@ public final class Survival {
         return contexts;
     }
 
-    /** The curve of obligations whose trigger was {@code input}: its own when it has one, else this pooled one. */
-    public Survival at(String input) {
-        Survival s = input == null ? null : contexts.get(input);
+    /**
+     * The curve of obligations that began under {@code condition} ({@code goTo_ch_i>goTo_ki_i}: a trigger's input
+     * after the previous trigger's): its own when it has one, else that of the trigger's input alone (the part after
+     * the last {@code >}), else this pooled one.
+     */
+    public Survival at(String condition) {
+        if (condition == null) {
+            return this;
+        }
+        Survival s = contexts.get(condition);
+        if (s == null) {
+            int at = condition.lastIndexOf('>');
+            s = at < 0 ? null : contexts.get(condition.substring(at + 1));
+        }
         return s == null ? this : s;
     }
 

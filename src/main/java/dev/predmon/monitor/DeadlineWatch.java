@@ -5,6 +5,7 @@ import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Survival;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.TriggerInputs;
 import dev.predmon.property.Deadline;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
@@ -13,7 +14,6 @@ import dev.predmon.property.Response;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Function;
 
 /**
  * The deadline forecast of every bounded-response property the models learned durations for: while an obligation is
@@ -91,20 +91,21 @@ final class DeadlineWatch {
      * one; null while none is pending.
      */
     private final Survival[] pending;
-    /** The Mealy input a trigger record maps to, or null. */
-    private final Function<LogRecord, String> inputOf;
+    /** Where each obligation began (null: judged by the pooled curves alone). */
+    private final TriggerInputs triggers;
 
     /** The deadlines of {@code properties} that {@code model} learned durations for, by the pooled curves alone. */
     DeadlineWatch(List<Property> properties, ForecastModel model) {
-        this(properties, model, r -> null);
+        this(properties, model, null);
     }
 
     /**
      * The deadlines of {@code properties} that {@code model} learned durations for; none without a model. Each
-     * obligation is judged by the curve of its trigger's input ({@code inputOf}) when the model has one.
+     * obligation is judged by the curve of where it began ({@code triggers}, {@link Survival#at}) when the model has
+     * one.
      */
-    DeadlineWatch(List<Property> properties, ForecastModel model, Function<LogRecord, String> inputOf) {
-        this.inputOf = inputOf;
+    DeadlineWatch(List<Property> properties, ForecastModel model, TriggerInputs triggers) {
+        this.triggers = triggers;
         this.pending = new Survival[properties.size()];
         int n = properties.size();
         this.properties = new Response[n];
@@ -150,6 +151,9 @@ final class DeadlineWatch {
      * checker tells it).
      */
     void closed(int index, double duration, boolean discharged) {
+        if (triggers != null) {
+            triggers.closed(index);
+        }
         this.ended[index] = true;
         this.durations[index] = duration;
         this.discharged[index] = discharged;
@@ -157,6 +161,9 @@ final class DeadlineWatch {
 
     /** After {@code checker} took a record: tells {@code out} each warning, recovery and forecast it makes. */
     void step(PropertyChecker checker, LogRecord r, Listener out) {
+        if (triggers != null) {
+            triggers.record(checker, r);
+        }
         for (int i = 0; i < properties.length; i++) {
             if (properties[i] == null) {
                 continue;
@@ -181,7 +188,7 @@ final class DeadlineWatch {
                 continue;
             }
             if (pending[i] == null) {
-                pending[i] = survival[i].at(inputOf.apply(r)); // r began the obligation: its trigger
+                pending[i] = triggers == null ? survival[i] : survival[i].at(triggers.began(i));
             }
             if (elapsed == judgedAt[i] && current[i] != null) {
                 continue; // judged at this elapsed time already: a deadline in ticks changes at the next tick only
@@ -217,6 +224,9 @@ final class DeadlineWatch {
         Arrays.fill(discharged, false);
         Arrays.fill(judgedAt, Double.NaN);
         Arrays.fill(pending, null);
+        if (triggers != null) {
+            triggers.reset();
+        }
     }
 
     /**

@@ -4,7 +4,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.matching.Matching;
 import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
-import dev.predmon.pipeline.RunTiming;
+import dev.predmon.pipeline.TriggerInputs;
 import dev.predmon.property.Property;
 
 import java.util.HashMap;
@@ -32,7 +32,7 @@ final class OtherForecasts {
         this.deadlines = new DeadlineEvents(now, rule, events);
         this.properties = new SafetyMonitor(abstraction, events, forecasts
                 ? new DeadlineWatch(abstraction.properties(), models.forecast(),
-                r -> RunTiming.inputOf(abstraction, r)) : null, deadlines);
+                new TriggerInputs(abstraction, abstraction.properties())) : null, deadlines);
         // the other bound properties' forecasts warn by the same rule
         this.bounds = forecasts ? properties.forecastBounds(new BoundWatch(abstraction.properties(), models, rule, now,
                 events), () -> !matching.nominalAlive()) : null;

@@ -176,9 +176,8 @@ public final class Traces {
         /** The safety property's position among the checked ones, or -1. */
         private final int safetyIndex;
         private List<RunTiming.Obligation> obligations = new ArrayList<>();
-        /** By property index, the input the pending obligation's trigger mapped to (null: none pending, or none). */
-        private final String[] triggers;
-        private final boolean[] pending;
+        /** Where each pending obligation began: its deadline forecast's condition. */
+        private final TriggerInputs triggers;
         /** The run's outcome: when each property was first violated. */
         private Map<String, Double> violations = new TreeMap<>();
         /** By property index, the bound properties but the safety one: each change of their value in the run. */
@@ -203,23 +202,17 @@ public final class Traces {
                 }
             }
             Arrays.fill(otherValues, Double.NaN);
-            this.triggers = new String[properties.size()];
-            this.pending = new boolean[properties.size()];
+            this.triggers = new TriggerInputs(abstraction, properties);
             checker.onObligations((i, p, duration, discharged) -> {
-                obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, triggers[i]));
-                pending[i] = false;
+                obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, triggers.began(i)));
+                triggers.closed(i);
             });
         }
 
         @Override
         public void record(LogRecord record) {
             checker.accept(record);
-            for (int i = 0; i < pending.length; i++) {
-                if (!pending[i] && !Double.isNaN(checker.elapsed(i))) {
-                    pending[i] = true; // an obligation began at this record: its trigger
-                    triggers[i] = RunTiming.inputOf(abstraction, record);
-                }
-            }
+            triggers.record(checker, record);
             if (!Double.isNaN(record.time())) {
                 endTime = record.time();
             }
@@ -297,7 +290,7 @@ public final class Traces {
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
             checker.finish();
             checker.reset();
-            Arrays.fill(pending, false);
+            triggers.reset();
             Map<String, List<RunTiming.Reading>> bounds = new TreeMap<>();
             for (int i = 0; i < others.length; i++) {
                 if (others[i] != null) {
