@@ -58,7 +58,7 @@ public final class CrossValidation {
         /** When the clauses of {@code variant} and {@code kept} warned it first, NaN when none did. */
         double caughtAt(int variant, List<Boolean> kept) {
             double at = variants.isEmpty() ? Double.NaN : variants.get(variant);
-            for (int i = 0; i < optional.size(); i++) {
+            for (int i = 0; i < optional.size() && i < kept.size(); i++) { // a clause not offered is not kept
                 if (kept.get(i)) {
                     at = earliest(at, optional.get(i));
                 }

@@ -31,7 +31,8 @@ import java.util.TreeMap;
  * <p>An obligation let go before its deadline (its run ended, or its scope closed) has no known outcome and is left
  * out. Where the held-out obligations cannot choose a threshold (too few logs, or none missed its deadline), the
  * threshold stays the default, not validated, and the note says why; the clauses and the baseline are still chosen
- * and scored on the obligations met in time (their false alarms).
+ * on the obligations met in time (their false alarms), and the property gets no scorecard: there is no warning of a
+ * miss to score.
  */
 public final class DeadlineTraining {
 
@@ -74,7 +75,9 @@ public final class DeadlineTraining {
                     DeadlineRule.MARGINS.size(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(r.name(),
                     r.within().unit().key, Scorecard.OBLIGATIONS, Scorecard.FORECAST, Scorecard.ELAPSED));
             rules.put(r.id(), rule(c));
-            cards.add(c.scorecard());
+            if (cases.stream().anyMatch(CrossValidation.Case::violated)) {
+                cards.add(c.scorecard()); // without a missed deadline there is no warning to score (the note says so)
+            }
         }
         return model.withDeadlines(rules).withScorecards(cards);
     }
