@@ -1,7 +1,9 @@
 package dev.predmon.cli;
 
 import dev.predmon.Terminal;
+import dev.predmon.event.OutcomeJson;
 import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.PropertyOutcome;
 import dev.predmon.monitor.Classifier;
 import dev.predmon.pipeline.RunId;
 import dev.predmon.replay.LogReplay;
@@ -15,7 +17,9 @@ import picocli.CommandLine.Spec;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.function.DoubleFunction;
 
 /** {@code predmon classify}: Algorithm 7 on a complete log. */
 @Command(name = "classify", mixinStandardHelpOptions = true,
@@ -57,7 +61,9 @@ final class ClassifyCommand implements Callable<Integer> {
                         s.failure() == null ? null : s.failure().describe())).toList();
                 results.add(new Result(name, run.pairs().size(), scores,
                         r.best().map(s -> s.model().id()).orElse(null),
-                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty(), run.violated(), code));
+                        r.best().map(s -> s.model().scenario()).orElse(null), r.faulty(), run.violated(), code,
+                        OutcomeJson.of(PropertyOutcome.of(run.outcome(),
+                                replayed.monitor().forecastProperty().orElse(null)))));
             } else {
                 print(out, r, name, run.pairs().size());
             }
@@ -65,7 +71,14 @@ final class ClassifyCommand implements Callable<Integer> {
         if (input.json) {
             out.println(Json.line(results.size() == 1 ? results.get(0) : new Runs(input.log().toString(), results)));
         } else {
-            out.println("watch's verdict at the end of the log: " + words(code) + " (exit " + code + ")");
+            // per property, worst first, every run of the log together: what was violated and warned, then the rest
+            String forecastId = replayed.monitor().forecastProperty().orElse(null);
+            List<PropertyOutcome> outcome = PropertyOutcome.worstOver(replayed.runs().stream()
+                    .map(r -> PropertyOutcome.of(r.outcome(), forecastId)).toList());
+            DoubleFunction<String> span = l -> String.format(Locale.ROOT, "%.3f %s", l, replayed.unit());
+            out.println("watch's verdict at the end of the log: "
+                    + PropertyOutcome.sentence(outcome, replayed.monitor().summary().warned(), span)
+                    + (code == ExitCodes.NO_MATCH ? "; " + words(code) : "") + " (exit " + code + ")");
         }
         out.flush();
         return code;
@@ -101,8 +114,11 @@ final class ClassifyCommand implements Callable<Integer> {
                  String reason) {
     }
 
-    /** The {@code --json} document. */
+    /**
+     * The {@code --json} document: {@code outcome} per property, worst first; {@code violated} is the forecast
+     * property's alone (a deprecated alias, kept for one release).
+     */
     record Result(String log, int pairs, List<Score> models, String best, String scenario, boolean faulty,
-                  boolean violated, int watchExit) {
+                  boolean violated, int watchExit, OutcomeJson outcome) {
     }
 }

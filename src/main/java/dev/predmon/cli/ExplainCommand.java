@@ -5,9 +5,11 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.event.ForecastJson;
+import dev.predmon.event.OutcomeJson;
 import dev.predmon.explain.Explanation;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
+import dev.predmon.monitor.PropertyOutcome;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
@@ -17,10 +19,12 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.function.DoubleFunction;
 
 /** {@code predmon explain}: why did it warn, why did it not. */
 @Command(name = "explain", mixinStandardHelpOptions = true,
@@ -57,14 +61,14 @@ final class ExplainCommand implements Callable<Integer> {
                 if (i > 0) {
                     out.println();
                 }
-                print(out, runs.get(i));
+                print(out, runs.get(i), replayed.monitor().forecastProperty().orElse(null));
             }
         }
         out.flush();
         return ExitCodes.ofMonitor(replayed.monitor()); // watch's rule, on the monitor watch would have run
     }
 
-    private static void print(PrintWriter out, Explanation x) {
+    private static void print(PrintWriter out, Explanation x, String forecastId) {
         out.println("trace of " + Terminal.line(x.log()) + " (" + x.steps().size() + " compacted pairs):");
         for (Explanation.Step s : x.steps()) {
             StringBuilder ends = new StringBuilder();
@@ -98,38 +102,49 @@ final class ExplainCommand implements Callable<Integer> {
                 : lastNominal < 0 ? "the models hold no nominal scenario"
                 : "every nominal model was eliminated by pair " + lastNominal + ", but no faulty one still matched "
                 + "as many pairs after it as the rule confirms with";
+        // the outcome first, worst property first: what was violated and warned, then the rest
+        DoubleFunction<String> span = l -> String.format(Locale.ROOT, "%.3f %s", l, r.unit());
+        List<String> hold = new ArrayList<>();
+        for (PropertyOutcome p : x.outcome()) {
+            if (p.rank() == PropertyOutcome.HOLDS) {
+                hold.add(p.id());
+            } else {
+                out.println(p.words(span));
+            }
+        }
+        if (!hold.isEmpty()) {
+            out.println(String.join(", ", hold) + (hold.size() == 1 ? " holds" : " hold") + " throughout the log");
+        }
+        String about = forecastId == null ? "the forecast" : forecastId + "'s forecast";
         if (x.warning() != null) {
-            out.printf(Locale.ROOT, "watch WARNS at t=%.3f (line %d), rule %s: %s%n", x.warning().time(),
+            out.printf(Locale.ROOT, "watch WARNS%s at t=%.3f (line %d), rule %s: %s%n",
+                    x.warning().property() == null ? "" : " of " + x.warning().property(), x.warning().time(),
                     x.warning().line(), x.rule().id(), x.warning().reason());
         } else if (x.rule() == WarningRule.FORECAST && r.forecast() != null) {
             if (outlived && last != null && last.novelSince() != null) {
                 matching += ", which does not warn once the run is novel (line " + last.novelSince() + ")";
             }
-            out.printf(Locale.ROOT, "watch does not warn, rule forecast: the highest probability before any violation "
-                    + "was %.2f, under the threshold %.2f; the thesis's matching: %s%n", r.forecast().peak(),
+            out.printf(Locale.ROOT, "watch does not warn of any property, rule forecast: %s peaked at %.2f before any "
+                    + "violation, under the threshold %.2f; the thesis's matching: %s%n", about, r.forecast().peak(),
                     r.forecast().threshold(), matching);
         } else {
-            out.println("watch does not warn, rule " + x.rule().id() + ": " + matching);
+            out.println("watch does not warn of any property, rule " + x.rule().id() + ": " + matching);
         }
         if (r.noMatch()) {
             out.println("no model matches the whole run: it is unlike every learned scenario"
                     + (last != null && last.novelSince() != null ? "; the forecast went on, novel since line "
                     + last.novelSince() : " (no prediction)"));
         }
-        out.println(r.violationTime() != null
-                ? String.format(Locale.ROOT, "the safety property is violated at t=%.3f", r.violationTime())
-                : r.safetyObserved() ? "the safety property holds throughout the log"
-                : "the safety property is not observed in the log (no value for it): no verdict on it");
     }
 
     /** {@code explain --json}: the explanation with its forecasts as {@code watch --json} writes them. */
     record ExplanationJson(String log, List<StepJson> steps, List<Explanation.ModelFate> models, RunResult run,
-                           String rule, String warning) {
+                           String rule, String warning, OutcomeJson outcome) {
 
         static ExplanationJson of(Explanation x) {
             return new ExplanationJson(x.log(), x.steps().stream().map(s -> new StepJson(s.index(), s.time(),
                     s.line(), s.input(), s.output(), ForecastJson.of(s.forecast()))).toList(), x.models(), x.run(),
-                    x.rule().id(), x.warning() == null ? null : x.warning().reason());
+                    x.rule().id(), x.warning() == null ? null : x.warning().reason(), OutcomeJson.of(x.outcome()));
         }
     }
 

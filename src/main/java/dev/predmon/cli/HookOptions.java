@@ -1,6 +1,7 @@
 package dev.predmon.cli;
 
 import dev.predmon.hooks.CommandHooks;
+import dev.predmon.property.Property;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -8,6 +9,7 @@ import picocli.CommandLine.Spec;
 
 import java.io.PrintWriter;
 import java.time.Duration;
+import java.util.List;
 
 /** {@code --on-warning CMD}, {@code --on-violation CMD}, {@code --on-recovered CMD} and their timeout: the warning delivered to the robot. */
 final class HookOptions {
@@ -38,12 +40,28 @@ final class HookOptions {
     @Option(names = "--hook-timeout", paramLabel = "S", defaultValue = "10",
             description = "Kill a hook command still running after S seconds (default: ${DEFAULT-VALUE}).")
     void timeout(double seconds) {
-        if (!(seconds > 0) || Double.isInfinite(seconds)) {
+        if (!(seconds > 0) || seconds > 86_400) {
             // a usage error of its own: picocli would name the setter method, not the option
-            throw new ParameterException(mixee.commandLine(), "--hook-timeout must be a positive number of seconds, got "
-                    + seconds);
+            throw new ParameterException(mixee.commandLine(), "--hook-timeout must be a number of seconds above 0 "
+                    + "and at most 86400, got " + seconds);
         }
         timeoutSeconds = seconds;
+    }
+
+    private double holdSeconds = 5;
+
+    @Option(names = "--hook-hold", paramLabel = "S", defaultValue = "5",
+            description = "Run --on-recovered only once the alarm has stayed over for S seconds; a warning or "
+                    + "violation of the same property raised again before then runs no command (the robot's alarm "
+                    + "is still up), unless it is a violation after a warning, so that a reading flapping at the "
+                    + "bound runs a few commands, not three at every crossing. 0 runs every command at once "
+                    + "(default: ${DEFAULT-VALUE}).")
+    void hold(double seconds) {
+        if (!(seconds >= 0) || seconds > 86_400) {
+            throw new ParameterException(mixee.commandLine(), "--hook-hold must be a number of seconds from 0 to "
+                    + "86400, got " + seconds);
+        }
+        holdSeconds = seconds;
     }
 
     /**
@@ -51,15 +69,16 @@ final class HookOptions {
      *
      * @param bound the property's bound, below which it is violated (NaN when there is none): values below it are
      *              rounded down in the hooks' environment, as on the page
+     * @param properties every property of the abstraction, whose words the hooks' environment gives
      */
-    CommandHooks open(PrintWriter err, double bound) {
+    CommandHooks open(PrintWriter err, double bound, List<Property> properties) {
         if (onWarning == null && onViolation == null && onRecovered == null) {
             return null;
         }
-        return new CommandHooks(onWarning, onViolation, onRecovered, Duration.ofMillis(Math.round(timeoutSeconds * 1000)), bound,
-                line -> {
+        return new CommandHooks(onWarning, onViolation, onRecovered, Duration.ofMillis(Math.round(timeoutSeconds * 1000)),
+                Duration.ofMillis(Math.round(holdSeconds * 1000)), bound, line -> {
             err.println("predmon: " + line);
             err.flush();
-        });
+        }).describing(properties);
     }
 }

@@ -60,11 +60,20 @@ final class WatchCommand implements Callable<Integer> {
     @Option(names = "--eliminations", description = "Also print each model's elimination (--json always does).")
     boolean eliminations;
 
+    private long pollMillis = 2;
+
     @Option(names = "--poll-ms", paramLabel = "MS", defaultValue = "2",
             description = "How often to look for new lines in a log whose changes the operating system does not "
                     + "announce: on a network file system, in a directory that cannot be watched, or every log with "
-                    + "--polling (default: ${DEFAULT-VALUE}).")
-    long pollMillis;
+                    + "--polling; from 1 to 60000 (default: ${DEFAULT-VALUE}).")
+    void pollMillis(long millis) {
+        if (millis < 1 || millis > 60_000) {
+            // 0 or less would look without a pause, a core spent on nothing
+            throw new ParameterException(spec.commandLine(), "--poll-ms must be from 1 to 60000 milliseconds, got "
+                    + millis);
+        }
+        pollMillis = millis;
+    }
 
     @Option(names = "--polling", description = "Look at every log every --poll-ms instead of waiting for the "
             + "operating system's file-change notification (inotify), as for a file system whose notifications "
@@ -129,7 +138,7 @@ final class WatchCommand implements Callable<Integer> {
         WatchSettings settings = new WatchSettings(input.json, eliminations || input.json, several, noFollow,
                 follow.timestamps ? Stamp.WALL_CLOCK : Stamp.NONE, follow.heartbeatNanos(), follow.ticks());
         try (LiveServer server = liveView.start(err, board);
-             WatchSession session = new WatchSession(out, err, settings, hookOptions.open(err, bound(abstraction)),
+             WatchSession session = new WatchSession(out, err, settings, hookOptions.open(err, bound(abstraction), abstraction.properties()),
                      board, abstraction, p -> !sources.named(p));
              Fleet fleet = new Fleet(set, abstraction, input.tolerance(), confirm.value(abstraction), warnBy,
                      session)) {

@@ -5,7 +5,7 @@ import dev.predmon.forecast.ForecastWords;
 
 /**
  * A forecast as JSON: {@code probability} (0 to 1), {@code timeToViolation} in the log's {@code unit} (null when no
- * violation is in sight) with its interval {@code low}..{@code high} (null when open), what it rests on
+ * violation is in sight, a probability below 0.005 included) with its interval {@code low}..{@code high} (null when open), what it rests on
  * ({@code basis}: matched, resynchronised, value only, violated), {@code novelSince} (the line from which the run did
  * something no model does, or null), the training {@code runs} behind it and how many {@code violated}, and the same
  * in words ({@code explanation}).
@@ -18,7 +18,10 @@ public record ForecastJson(double probability, Double timeToViolation, Double lo
         if (f == null) {
             return null;
         }
-        return new ForecastJson(round(f.probability()), round(f.timeToViolation()), round(f.low()), round(f.high()),
+        // a probability that reads as 0 has no time to a violation beside it
+        boolean inSight = ForecastWords.inSight(f);
+        return new ForecastJson(round(f.probability()), inSight ? round(f.timeToViolation()) : null,
+                inSight ? round(f.low()) : null, inSight ? round(f.high()) : null,
                 f.unit(), f.basis().label(), f.novelSince(), f.runs(), f.violated(), round(f.value()),
                 f.drift() == null ? null : Math.round(f.drift() * 1e6) / 1e6, ForecastWords.line(f));
     }

@@ -11,6 +11,7 @@ import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
+import dev.predmon.monitor.PropertyOutcome;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.replay.LogReplay;
@@ -33,12 +34,13 @@ import java.util.List;
  * @param models every model's fate, in model order
  * @param run    the monitor's verdict on the run (scenario unknown: judged as nominal)
  * @param rule   the rule the monitor warned by
- * @param warning the warning as the monitor raised it, with its reason, or null
+ * @param warning the run's first warning of any property as the monitor raised it, with its reason, or null
  * @param matchRuleAt the pair after which the thesis's match rule held ({@code confirm} included), warning or not, or
  *                    -1
+ * @param outcome every property's outcome on the run, worst first ({@link PropertyOutcome#of})
  */
 public record Explanation(String log, List<Step> steps, List<ModelFate> models, RunResult run, WarningRule rule,
-                          MonitorEvent.Warning warning, long matchRuleAt) {
+                          MonitorEvent.Warning warning, long matchRuleAt, List<PropertyOutcome> outcome) {
 
     /**
      * One compacted pair.
@@ -95,12 +97,13 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
         List<RunResult> verdicts = Replay.of(replayed, "?", false, RunLabel.ALL, -1, models, abstraction, approach);
         List<Explanation> all = new ArrayList<>();
         for (int i = 0; i < replayed.runs().size(); i++) {
-            all.add(of(replayed.runs().get(i), verdicts.get(i), rule));
+            all.add(of(replayed.runs().get(i), verdicts.get(i), rule,
+                    replayed.monitor().forecastProperty().orElse(null)));
         }
         return List.copyOf(all);
     }
 
-    private static Explanation of(ReplayedRun replayed, RunResult run, WarningRule rule) {
+    private static Explanation of(ReplayedRun replayed, RunResult run, WarningRule rule, String forecastId) {
         List<Forecast> forecasts = replayed.afterPairs();
         List<Step> steps = new ArrayList<>();
         for (int i = 0; i < replayed.pairs().size(); i++) {
@@ -131,6 +134,7 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
             }
         }
         return new Explanation(run.log().name(), List.copyOf(steps), List.copyOf(fates), run, rule,
-                replayed.outcome().warning(), replayed.matchRuleAt());
+                replayed.outcome().firstWarning(), replayed.matchRuleAt(),
+                PropertyOutcome.of(replayed.outcome(), forecastId));
     }
 }

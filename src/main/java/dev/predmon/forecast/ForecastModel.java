@@ -122,6 +122,12 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 states, startInputs, calibration, scorecards, obligations, rules, bounds, clauses);
     }
 
+    /** This model with {@code training} as its obligations, by property id. */
+    public ForecastModel withObligations(Map<String, Survival> training) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, training, deadlines, bounds);
+    }
+
     /** A model without deadline forecasts. */
     public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows, double threshold,
                          String thresholdNote, boolean validated, Map<String, Map<Integer, StateStats>> states,

@@ -22,7 +22,7 @@ public final class ForecastWords {
 
     /** {@code about 8.3 s (8.2-9.0 s)}, {@code about 48 ticks (30 ticks or more)}, or {@code no violation in sight}. */
     public static String time(Forecast f) {
-        if (f.timeToViolation() == null) {
+        if (!inSight(f)) {
             return "no violation in sight";
         }
         String unit = f.unit();
@@ -30,6 +30,14 @@ public final class ForecastWords {
                 ? " (" + amount(f.low()) + " " + unit + " or more)"
                 : " (" + amount(f.low()) + "-" + amount(f.high()) + " " + unit + ")";
         return "about " + amount(f.timeToViolation()) + " " + unit + " to the violation" + range;
+    }
+
+    /**
+     * Whether a violation is in sight: a time to it, and a probability that does not read as 0 beside it (a
+     * {@code P(violation) 0.00} has no time to a violation, whatever the survival curve's median says).
+     */
+    public static boolean inSight(Forecast f) {
+        return f.timeToViolation() != null && f.probability() >= 0.005;
     }
 
     /**

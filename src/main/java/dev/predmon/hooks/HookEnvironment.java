@@ -1,9 +1,13 @@
 package dev.predmon.hooks;
 
+import dev.predmon.Terminal;
 import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.MonitorEvent;
+import dev.predmon.property.Property;
 
 import java.math.BigDecimal;
+import java.math.MathContext;
 import java.math.RoundingMode;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -20,7 +24,8 @@ public final class HookEnvironment {
     }
 
     /**
-     * PREDMON_EVENT ({@code warning}, {@code violation} or {@code recovered}), PREDMON_LOG, PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
+     * PREDMON_EVENT ({@code warning}, {@code violation} or {@code recovered}), PREDMON_LOG (control characters and
+     * bidirectional overrides escaped as on the terminal), PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
      * ({@code s} or {@code ticks}), PREDMON_LINE, PREDMON_PROPERTY (the property's id), PREDMON_VALUE (its last
      * value, two decimals; empty for a property without one, such as a bounded response) and PREDMON_BATTERY (the
      * same, the older name); for a warning PREDMON_SCENARIO (the faulty
@@ -36,6 +41,29 @@ public final class HookEnvironment {
      * @throws IllegalArgumentException for events that run no hook
      */
     public static Map<String, String> of(String log, MonitorEvent event, double bound) {
+        return of(log, event, bound, Map.of());
+    }
+
+    /**
+     * As above, with the property's words from {@code properties} (by id): PREDMON_PROPERTY_NAME (the property in
+     * words: {@code a grasp succeeds within 8 attempts}), PREDMON_ACTION (what an operator should do, or empty) and
+     * PREDMON_WHAT (the event in an operator's words: what violated the property, why it was warned of, why its alarm
+     * ended).
+     */
+    public static Map<String, String> of(String log, MonitorEvent event, double bound,
+                                         Map<String, Property> properties) {
+        Map<String, String> env = base(log, event, bound);
+        Property p = properties.get(env.get("PREDMON_PROPERTY"));
+        String name = event instanceof MonitorEvent.Violation v && v.name() != null ? v.name()
+                : p == null ? "" : p.name();
+        env.put("PREDMON_PROPERTY_NAME", name);
+        env.put("PREDMON_ACTION", p == null || p.action() == null ? "" : p.action());
+        env.put("PREDMON_WHAT", event instanceof MonitorEvent.Violation v ? v.what() == null ? "" : v.what()
+                : event instanceof MonitorEvent.Warning w ? w.reason() : ((MonitorEvent.Recovered) event).reason());
+        return env;
+    }
+
+    private static Map<String, String> base(String log, MonitorEvent event, double bound) {
         Map<String, String> env = new LinkedHashMap<>();
         if (event instanceof MonitorEvent.Warning w) {
             put(env, "warning", log, w.run(), w.time(), w.clock().unit(), w.line(), w.property(), value(w.value(), bound));
@@ -45,7 +73,7 @@ public final class HookEnvironment {
             env.put("PREDMON_PROBABILITY", f != null ? fixed(f.probability(), 2, RoundingMode.HALF_UP)
                     : w.deadline() != null && !w.deadline().novel()
                     ? fixed(w.deadline().probability(), 2, RoundingMode.HALF_UP) : "");
-            env.put("PREDMON_TIME_TO_VIOLATION", f == null || f.timeToViolation() == null ? ""
+            env.put("PREDMON_TIME_TO_VIOLATION", f == null || !ForecastWords.inSight(f) ? ""
                     : span(f.timeToViolation(), w.clock().unit()));
         } else if (event instanceof MonitorEvent.Recovered r) {
             put(env, "recovered", log, r.run(), r.time(), r.clock().unit(), r.line(), r.property(),
@@ -69,7 +97,8 @@ public final class HookEnvironment {
     private static void put(Map<String, String> env, String kind, String log, int run, double time, String unit,
                             long line, String property, String value) {
         env.put("PREDMON_EVENT", kind);
-        env.put("PREDMON_LOG", log);
+        // a file name's newline or ESC would make a one-line recipe (echo ... | yarp write) send two lines
+        env.put("PREDMON_LOG", Terminal.line(log));
         env.put("PREDMON_RUN", Integer.toString(run));
         env.put("PREDMON_TIME", Double.toString(time));
         env.put("PREDMON_UNIT", unit);
@@ -97,6 +126,10 @@ public final class HookEnvironment {
     }
 
     private static String fixed(double x, int digits, RoundingMode mode) {
+        if (Math.abs(x) >= 1e15) {
+            // past the digits a double holds: six significant ones in scientific notation, not hundreds of digits
+            return new BigDecimal(x).round(new MathContext(6)).stripTrailingZeros().toString().replace("E+", "e");
+        }
         return BigDecimal.valueOf(x).setScale(digits, mode).toPlainString();
     }
 }

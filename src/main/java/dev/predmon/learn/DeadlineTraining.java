@@ -47,7 +47,8 @@ public final class DeadlineTraining {
     public static ForecastModel train(ForecastModel model, HeldOutFolds heldOut, Abstraction abstraction) {
         Map<String, Response> responses = new TreeMap<>();
         for (Property p : abstraction.properties()) {
-            if (p instanceof Response r && model.obligations().containsKey(r.id())) {
+            if (p instanceof Response r && model.obligations().containsKey(r.id())
+                    && model.obligations().get(r.id()).size() > 0) { // none learned: no forecast to choose a rule for
                 responses.put(r.id(), r);
             }
         }

@@ -7,12 +7,12 @@ import dev.predmon.forecast.BoundRuns;
 import dev.predmon.forecast.Clauses;
 import dev.predmon.forecast.CrossValidation;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.PropertyParts;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.property.Bound;
-import dev.predmon.property.Property;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
@@ -96,7 +96,8 @@ public final class ForecastTraining {
             Map<String, BoundModel> bounds = new TreeMap<>();
             boundStats.forEach((id, b) -> bounds.put(id, new BoundModel(b.side(),
                     b.model().withThreshold(ThresholdChoice.DEFAULT, note, false))));
-            return stats.withThreshold(ThresholdChoice.DEFAULT, note, false).withBounds(bounds);
+            return PropertyParts.covering(stats.withThreshold(ThresholdChoice.DEFAULT, note, false)
+                    .withBounds(bounds), abstraction);
         }
         List<CrossValidation.Case> judged = new ArrayList<>();
         Map<String, List<CrossValidation.Case>> boundJudged = new TreeMap<>();
@@ -118,8 +119,8 @@ public final class ForecastTraining {
             bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), heldOut.folds(), unit,
                     boundJudged.get(b.id()), new CrossValidation.Space(1, 0, Scorecard.RUNS))));
         }
-        return chosen(stats, property, heldOut.folds(), unit, judged, new CrossValidation.Space(1, 1, Scorecard.RUNS))
-                .withBounds(bounds);
+        return PropertyParts.covering(chosen(stats, property, heldOut.folds(), unit, judged,
+                new CrossValidation.Space(1, 1, Scorecard.RUNS)).withBounds(bounds), abstraction);
     }
 
     /**
@@ -149,15 +150,7 @@ public final class ForecastTraining {
      * forecast of its own ({@link BoundModel}).
      */
     public static List<Bound> others(Abstraction abstraction) {
-        String safety = abstraction.safety().map(Bound::id).orElse(null);
-        List<Bound> out = new ArrayList<>();
-        for (Property p : abstraction.properties()) {
-            if (p instanceof Bound b && !b.id().equals(safety)
-                    && (b.hasFloor() || b.ceiling() != Double.POSITIVE_INFINITY)) {
-                out.add(b);
-            }
-        }
-        return out;
+        return PropertyParts.others(abstraction);
     }
 
     /** By id, the side of each of {@code others} its forecast predicts, as {@code runs} cross it. */

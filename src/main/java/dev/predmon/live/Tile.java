@@ -248,8 +248,14 @@ public final class Tile {
         ObjectNode o = JSON.createObjectNode();
         o.put("log", log);
         o.put("name", shown.name());
-        o.put("state", state.id());
-        o.put("light", state.light());
+        ArrayNode props = lights.json(state, noVerdict == null ? forecastJson : null, shown.skill(),
+                shown.skills());
+        // the robot's state is its worst property's; the forecast property's own stays beside it
+        TileState robot = TileState.worst(state, props);
+        o.put("state", robot.id());
+        o.put("light", robot.light());
+        o.put("forecastState", state.id());
+        o.put("forecastLight", state.light());
         // Quiet mid-run is STALE (a logger or robot that stopped); quiet at rest is a run that ended, and a log that
         // never had a record is still waiting.
         o.put("stale", quiet >= staleMillis && state != TileState.ENDED && records > 0);
@@ -276,8 +282,7 @@ public final class Tile {
             o.put("warnsAt", shown.warnsAt());
         }
         alarm.snapshot(o);
-        ArrayNode props = lights.json(state, noVerdict == null ? forecastJson : null, shown.skill(),
-                shown.skills());
+        PropertyLights.outcome(o, props);
         o.set("properties", props);
         // the worst property's light, for the compact view and the order of the tiles
         o.set("worst", props.isEmpty() ? null : props.get(0));
@@ -308,10 +313,13 @@ public final class Tile {
         o.put("line", runLine);
         alarm.verdict(o);
         o.put("noMatch", noMatch);
-        // A run that another followed is over: its light is what it came to.
-        TileState state = state(false);
+        // A run that another followed is over: its light is what it came to, its worst property's.
+        TileState own = state(false);
+        ArrayNode props = lights.json(own, null, null, Map.of());
+        TileState state = TileState.worst(own, props);
         o.put("state", state.id());
         o.put("light", state.light());
+        PropertyLights.outcome(o, props);
         number(o, "probability", forecast == null ? Double.NaN : forecast.probability());
         return o;
     }

@@ -1,5 +1,7 @@
 package dev.predmon.live;
 
+import com.fasterxml.jackson.databind.node.ArrayNode;
+
 /**
  * What a tile says about its robot now, worst first: the order the page sorts tiles in. Each state has a light in the
  * conventions of robot monitors (green, yellow, red), plus blue for a run the models cannot judge and slate for a run
@@ -27,6 +29,24 @@ enum TileState {
     TileState(String id, String light) {
         this.id = id;
         this.light = light;
+    }
+
+    /**
+     * The robot's state: a violated property makes it a violation, a warned one a warning unless the forecast
+     * property's own state says more (no verdict, a violation, a run that ended); else the forecast property's state.
+     *
+     * @param own   the forecast property's state ({@link Tile#state})
+     * @param props every property's light, worst first ({@link PropertyLights#json})
+     */
+    static TileState worst(TileState own, ArrayNode props) {
+        String w = props.isEmpty() ? "" : props.get(0).path("state").asText();
+        if (own == NO_VERDICT || own == VIOLATION) {
+            return own;
+        }
+        if (w.equals(PropertyLights.Light.VIOLATED.id)) {
+            return VIOLATION;
+        }
+        return w.equals(PropertyLights.Light.WARNING.id) && own != ENDED ? WARNING : own;
     }
 
     /** As in {@code /status}. */

@@ -2,7 +2,9 @@ package dev.predmon.model;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.PropertyParts;
 import dev.predmon.forecast.StateStats;
 import dev.predmon.property.Bound;
 
@@ -10,11 +12,13 @@ import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
- * Checks a forecast against the models beside it: its property's bound is the abstraction's, and it keeps
- * statistics only for machines the index lists and for states those machines have. A forecast that does not fit
- * would give every run of a machine it does not know the base rate, or warn on a bound nobody watches.
+ * Checks a forecast against the models beside it: its property's bound is the abstraction's, its per-property parts
+ * cover the abstraction's properties as learn writes them ({@link PropertyParts}), and it keeps statistics only for
+ * machines the index lists and for states those machines have. A forecast that does not fit would give every run of a
+ * machine it does not know the base rate, warn on a bound nobody watches, or drop a property's warnings unseen.
  */
 final class ForecastCheck {
 
@@ -33,18 +37,32 @@ final class ForecastCheck {
             throw new BadInputException(file + ": limit " + shown(forecast.limit()) + " is not the bound of the "
                     + "abstraction's safety property (" + shown(bound) + "); relearn with the abstraction in use");
         }
+        try {
+            PropertyParts.check(forecast, abstraction);
+        } catch (IllegalArgumentException e) {
+            throw new BadInputException(file + ": " + e.getMessage() + "; relearn");
+        }
         Map<String, Integer> sizes = new HashMap<>();
         models.forEach(m -> sizes.put(m.id(), m.machine().size()));
+        states(file, indexFile, "", forecast, sizes);
+        for (Map.Entry<String, BoundModel> b : new TreeMap<>(forecast.bounds()).entrySet()) {
+            states(file, indexFile, "'bounds/" + b.getKey() + "': ", b.getValue().model(), sizes);
+        }
+    }
+
+    /** {@code forecast} keeps statistics only for machines the index lists ({@code sizes}) and states they have. */
+    private static void states(Path file, Path indexFile, String where, ForecastModel forecast,
+                               Map<String, Integer> sizes) throws BadInputException {
         for (Map.Entry<String, Map<Integer, StateStats>> machine : forecast.states().entrySet()) {
             Integer size = sizes.get(machine.getKey());
             if (size == null) {
-                throw new BadInputException(file + ": machine '" + machine.getKey() + "' is not one "
+                throw new BadInputException(file + ": " + where + "machine '" + machine.getKey() + "' is not one "
                         + indexFile.getFileName() + " lists; relearn");
             }
             for (int state : machine.getValue().keySet()) {
                 if (state < 0 || state >= size) {
-                    throw new BadInputException(file + ": state " + state + " of machine '" + machine.getKey()
-                            + "' is not in its DOT file (states 0 to " + (size - 1) + "); relearn");
+                    throw new BadInputException(file + ": " + where + "state " + state + " of machine '"
+                            + machine.getKey() + "' is not in its DOT file (states 0 to " + (size - 1) + "); relearn");
                 }
             }
         }

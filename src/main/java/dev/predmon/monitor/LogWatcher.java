@@ -125,6 +125,11 @@ public final class LogWatcher implements AutoCloseable {
         return source.lines();
     }
 
+    /** Of those lines, YARP's own before the first record ({@link RecordSource#yarpLines()}). */
+    public long yarpLines() {
+        return source.yarpLines();
+    }
+
     public PredictiveMonitor monitor() {
         return monitor;
     }

@@ -93,7 +93,7 @@ public final class PredictiveMonitor implements PipelineListener {
         this.forecast = ForecastTracker.of(models);
         this.matching = new Matching(models.models(), tolerance, confirm);
         Bound safety = abstraction.safety().orElse(null);
-        this.events = e -> events.accept(ticks.event(e)); // in seconds once a tick's length is given
+        this.events = e -> events.accept(ticks.event(now.told(e))); // in seconds once a tick's length is given
         this.alarm = new Alarm(safety, forecast, this.events);
         WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
         this.others = new OtherForecasts(models, abstraction, rule, matching, now, this.events);
@@ -143,6 +143,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         tee.runStarted(number, first);
+        properties.ending(first, now.run); // a deadline the silence before it passed is violated, not dropped
         finished.add(current());
         startRun(runsBefore + number, first.line());
         events.accept(new MonitorEvent.RunStarted(now.run, first.time(), first.line(), first.clock()));
@@ -167,13 +168,11 @@ public final class PredictiveMonitor implements PipelineListener {
         return new RunOutcome(now.run, now.firstLine, (MonitorEvent.Warning) ticks.event(now.warning),
                 (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs, now.value != null,
                 forecast == null ? null : forecast.last(), properties.verdicts(),
-                (MonitorEvent.Warning) ticks.event(now.anyWarning));
+                (MonitorEvent.Warning) ticks.event(now.anyWarning), RunOutcome.inSeconds(now.warnings, ticks::event),
+                now.warningRead, now.violationRead);
     }
 
-    /**
-     * The outcome of every run so far, the current one last; of a log of more than {@value RunHistory#KEPT} runs,
-     * the latest of them ({@link #summary} counts them all).
-     */
+    /** Every run's outcome, the current one last: the latest {@value RunHistory#KEPT} ({@link #summary}: all). */
     public List<RunOutcome> runs() {
         return finished.withCurrent(current());
     }
@@ -200,6 +199,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void record(LogRecord record) {
         tee.record(record);
+        now.read++;
         clock = ticks.clock(record.clock());
         int run = now.run;
         properties.accept(record, run);
@@ -257,10 +257,7 @@ public final class PredictiveMonitor implements PipelineListener {
         return before.unmapped(pipeline);
     }
 
-    /**
-     * Also tells {@code each} every forecast with its run, one per pair, before the events of that pair (for scoring;
-     * {@link MonitorEvent.ForecastChanged} tells only the changes that matter).
-     */
+    /** Also tells {@code each} every forecast with its run, one per pair, before that pair's events (for scoring). */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
         follow.onEveryForecast(each);
     }
@@ -279,8 +276,8 @@ public final class PredictiveMonitor implements PipelineListener {
     }
 
     /**
-     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before the
-     * monitor takes it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
+     * Also tells {@code also} each record, gap, pair and run start the pipeline gives the monitor, just before it takes
+     * it: one stream for the replay ({@code dev.predmon.replay}), in the monitor's own order.
      */
     public void tee(PipelineListener also) {
         this.tee = also;

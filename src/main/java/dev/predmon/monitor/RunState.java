@@ -1,6 +1,8 @@
 package dev.predmon.monitor;
 
 import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -18,6 +20,8 @@ final class RunState {
     MonitorEvent.Warning warning;
     /** The first warning of any property: {@link #warning}, or a deadline's; null before one. */
     MonitorEvent.Warning anyWarning;
+    /** Each property's first warning in the run, by id, in the order they came. */
+    final Map<String, MonitorEvent.Warning> warnings = new LinkedHashMap<>();
     /** The properties other than the forecast's that the matching warned of (a faulty scenario's {@code violates}). */
     final Set<String> othersWarned = new HashSet<>();
     /** The forecast property's first violation, or null. */
@@ -30,6 +34,14 @@ final class RunState {
     long pairs;
     /** The pair at which the thesis's match rule first held (confirm included), or -1. */
     long matchRuleAt = -1;
+    /**
+     * The records the monitor has read since it started, the one it takes now included: the order of reading, which
+     * outlives runs and rotations (a run may hold records of two files, each with lines of its own).
+     */
+    long read;
+    /** Where in that order the run's first warning of any property, and its first violation, came; 0 before. */
+    long warningRead;
+    long violationRead;
 
     /** Run {@code number} begins at {@code line}: nothing seen yet. */
     void start(int number, long line) {
@@ -37,12 +49,15 @@ final class RunState {
         firstLine = line;
         warning = null;
         anyWarning = null;
+        warnings.clear();
         othersWarned.clear();
         violation = null;
         noMatch = false;
         value = null;
         pairs = 0;
         matchRuleAt = -1;
+        warningRead = 0;
+        violationRead = 0;
     }
 
     /** The matching warned of property {@code id}, not the forecast's. */
@@ -50,8 +65,25 @@ final class RunState {
         othersWarned.add(id);
     }
 
-    /** A warning of some property: kept when it is the run's first. */
+    /**
+     * A warning of some property: kept when it is the run's first (with where it came in the order of reading), and
+     * when it is its property's first.
+     */
     void anyWarned(MonitorEvent.Warning w) {
-        anyWarning = anyWarning == null ? w : anyWarning;
+        if (anyWarning == null) {
+            anyWarning = w;
+            warningRead = read;
+        }
+        if (w.property() != null) {
+            warnings.putIfAbsent(w.property(), w);
+        }
+    }
+
+    /** {@code e}, an event the monitor tells: the run's first violation is noted where it came in reading order. */
+    MonitorEvent told(MonitorEvent e) {
+        if (e instanceof MonitorEvent.Violation && violationRead == 0) {
+            violationRead = read;
+        }
+        return e;
     }
 }

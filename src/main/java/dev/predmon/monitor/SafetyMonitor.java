@@ -56,6 +56,7 @@ final class SafetyMonitor {
 
     /** Reports the other bound properties' forecast times in seconds, a tick lasting {@code t}. */
     void countTicksAs(TickSeconds t) {
+        checker.countTicksAs(t.seconds());
         if (bounds != null) {
             bounds.countTicksAs(t);
         }
@@ -94,6 +95,16 @@ final class SafetyMonitor {
             events.accept(new MonitorEvent.Violation(v.time(), v.line(), p.id(), p.name(), v.value(), v.before(),
                     v.what(), record.clock(), run, false));
         }
+    }
+
+    /**
+     * Run {@code run} ends, {@code first} beginning the next: a deadline that passed before it came is violated there,
+     * in run {@code run} ({@link PropertyChecker#overdue}).
+     */
+    void ending(LogRecord first, int run) {
+        this.record = first;
+        this.run = run;
+        checker.overdue(first);
     }
 
     /** A new run: every property starts over. */

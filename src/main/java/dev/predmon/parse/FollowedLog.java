@@ -120,6 +120,12 @@ final class FollowedLog implements RecordSource {
         return lines;
     }
 
+    /** The YARP lines of the file last taken up, before its first record ({@link LogParser#yarpLines()}). */
+    @Override
+    public long yarpLines() {
+        return current == null ? 0 : current.parser.yarpLines();
+    }
+
     @Override
     public boolean replacing() {
         return follower.replacing();

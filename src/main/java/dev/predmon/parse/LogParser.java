@@ -44,6 +44,8 @@ public final class LogParser {
     private LogLayout layout;
     /** While the layout is unknown: the last three lines, which a save file's first entry needs. */
     private final RecentLines recent = new RecentLines();
+    /** YARP's own lines about the monitor's port before the layout was known ({@link YarpLines}). */
+    private long yarpLines;
 
     /**
      * @param records  receives every complete record
@@ -63,6 +65,9 @@ public final class LogParser {
         }
         if (layout == null && !detect(text)) {
             recent.push(text);
+            if (YarpLines.is(text)) {
+                yarpLines++;
+            }
             return;
         }
         layout.line(text, lineNumber);
@@ -168,11 +173,21 @@ public final class LogParser {
         lineNumber = 0;
         layout = null;
         recent.clear();
+        yarpLines = 0;
     }
 
     /** The number of lines seen since construction or the last {@link #reset()}. */
     public long lineNumber() {
         return lineNumber;
+    }
+
+    /**
+     * How many of the lines before the first record header (since construction or the last {@link #reset()}) were
+     * YARP's own about the monitor's port ({@code Port /monitor active at ...}): what a monitor prints before the
+     * robot's first message.
+     */
+    public long yarpLines() {
+        return yarpLines;
     }
 
     /** What the records' times count, once the layout is known: ticks for a console capture, else seconds. */

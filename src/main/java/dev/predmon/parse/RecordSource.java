@@ -32,6 +32,14 @@ public interface RecordSource extends AutoCloseable {
     /** Lines read since the start or the last rotation. */
     long lines();
 
+    /**
+     * Of those lines, how many before the first record were YARP's own ({@code Port /monitor active at ...}): a
+     * monitor started before the robot prints them and nothing else until the robot's first message.
+     */
+    default long yarpLines() {
+        return 0;
+    }
+
     /** Whether a file found at the log's path waits for the one being read to be finished by a later poll. */
     default boolean replacing() {
         return false;

@@ -87,11 +87,14 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
     /**
      * While following, {@code millis} after its first line: a file whose first {@value #NOT_A_LOG_LINES} lines, or
      * lines for {@value #NOT_A_LOG_MILLIS} ms, held no monitor record is not a monitor log: the line that says so;
-     * else empty.
+     * else empty. YARP's own lines ({@code yarp} of them, {@code Port /monitor active at ...}) are a monitor log's
+     * preamble, not evidence against it: with one, only {@value #NOT_A_LOG_LINES} lines of other programs without a
+     * record make the file no monitor log, however long the monitor waits for the robot ({@link #preamble}).
      */
-    public Optional<String> notALog(long millis) {
+    public Optional<String> notALog(long millis, long yarp) {
         long n = records > 0 ? 0 : lines.getAsLong();
-        if (n == 0 || (n < NOT_A_LOG_LINES && millis < NOT_A_LOG_MILLIS)) {
+        long others = Math.max(0, n - yarp);
+        if (n == 0 || (others < NOT_A_LOG_LINES && (yarp > 0 || millis < NOT_A_LOG_MILLIS))) {
             return Optional.empty();
         }
         return Optional.of(log + ": not a monitor log? no YARP monitor record in " + (n < NOT_A_LOG_LINES
@@ -99,6 +102,20 @@ public record Evidence(Path log, LongSupplier lines, long records, long interfac
                 + " s" : "the first " + n + " lines") + " (the monitor prints 'Command intercepted:' and 'Reply intercepted:'"
                 + " records; see docs/logs.md)" + (firstProblem == null ? ""
                 : "; first problem: line " + firstProblem.line() + ": " + firstProblem.message()));
+    }
+
+    /**
+     * While following, {@code millis} after its first line: a file that after {@value #NOT_A_LOG_MILLIS} ms holds
+     * YARP's start-up lines ({@code yarp} of them) and no record yet is a monitor started before the robot: the line
+     * that says so, once, and that it is followed on; else empty.
+     */
+    public Optional<String> preamble(long millis, long yarp) {
+        if (records > 0 || yarp == 0 || millis < NOT_A_LOG_MILLIS) {
+            return Optional.empty();
+        }
+        return Optional.of(log + ": only YARP's start-up lines so far (" + yarp + (yarp == 1 ? " line" : " lines")
+                + " such as 'Port /monitor active at ...'), no monitor record yet: the monitor runs and waits for "
+                + "the robot; still watching");
     }
 
     /**

@@ -38,6 +38,15 @@ public record RecordMatch(RecordKind kind, String protocol, String command, Stri
                 && (replies == null || replies.contains(r.reply().trim()));
     }
 
+    /**
+     * The message this matcher picks records of, whatever their argument and reply: {@code GoTo/getStatus reply} of
+     * {@code GoTo/getStatus reply 3}. That the message occurs is what gives an absence of one of its values evidence.
+     */
+    public RecordMatch message() {
+        return arguments == null && replies == null ? this : new RecordMatch(kind, protocol, command, from, to, null,
+                null);
+    }
+
     /** In a user's words: {@code GoTo/getStatus reply 3}, {@code GoTo/goTo command charging_station}. */
     public String describe() {
         StringBuilder b = new StringBuilder();
@@ -56,6 +65,21 @@ public record RecordMatch(RecordKind kind, String protocol, String command, Stri
         }
         if (to != null) {
             b.append(" to ").append(to);
+        }
+        return b.toString();
+    }
+
+    /**
+     * In an operator's words, without kinds and ports: {@code hasGrasped 1 or 27503}, {@code goTo charging_station},
+     * {@code halt}.
+     */
+    public String brief() {
+        StringBuilder b = new StringBuilder(command != null ? command : protocol != null ? protocol : "any message");
+        if (arguments != null) {
+            b.append(' ').append(String.join(" or ", arguments));
+        }
+        if (replies != null) {
+            b.append(' ').append(String.join(" or ", replies));
         }
         return b.toString();
     }

@@ -36,6 +36,11 @@ public record Response(String id, String name, String action, Scope scope, Event
         return "response";
     }
 
+    /** The trigger in an operator's words, without kinds and ports ({@code goTo}). */
+    public String briefTrigger() {
+        return trigger != null ? trigger.brief() : condition.describe();
+    }
+
     /** The trigger in a user's words. */
     public String describeTrigger() {
         return trigger != null ? trigger.describe() : condition.describe();

@@ -1,6 +1,10 @@
 package dev.predmon.property;
 
+import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
+
+import java.math.BigDecimal;
+import java.math.MathContext;
 
 /**
  * The check of a {@link Response}: whether an obligation is open, since when and until when, the count of the
@@ -20,18 +24,40 @@ final class ResponseCheck extends Check {
     private boolean answered;
     /** Whether the trigger's state (the condition held and no response lasted) held at the last reading. */
     private boolean owing;
-    /** Where the run was at the last record, in the deadline's unit. */
+    /** Where the run was at the last record, on the deadline's clock (the log's ticks for seconds of ticks). */
     private double now;
+    /**
+     * Seconds per tick of a log without time stamps, NaN when not given ({@link #countTicksAs}); and the open
+     * obligation's: its deadline's seconds per unit of the log's clock (a tick's length for a deadline in seconds in
+     * such a log, else 1). The check runs on the log's clock; what it reports is in the deadline's unit.
+     */
+    private double tickSeconds = Double.NaN;
+    private double scale = 1;
 
     private final Readings readings;
     /** The condition's value's slot in {@link #readings}, or -1 for a trigger that is an event. */
     private final int slot;
+
+    /** The trigger's messages, whatever their values, or null for a trigger that is a condition. */
+    private final Event triggers;
 
     ResponseCheck(Response p, Readings readings) {
         this.p = p;
         this.d = p.within();
         this.readings = readings;
         this.slot = p.condition() == null ? -1 : readings.slot(p.condition().value());
+        this.triggers = p.trigger() == null ? null : p.trigger().messages();
+    }
+
+    @Override
+    boolean evidences(LogRecord r) {
+        return triggers != null ? triggers.matches(r) : !Double.isNaN(readings.value(slot));
+    }
+
+    @Override
+    String unseen() {
+        return triggers != null ? "no " + triggers.describe() + " (its trigger)"
+                : "no reading of " + p.condition().value().describeWithPorts() + " (its trigger's value)";
     }
 
     @Override
@@ -45,14 +71,13 @@ final class ResponseCheck extends Check {
             now = now(r, ticks);
             if (now > deadline) {
                 pending = false;
-                obligations.closed(now - since(), false);
-                return new Verdict.Violated(r.line(), r.time(), null, null, "no " + p.response().describe()
-                        + " within " + d.describe() + " of " + p.describeTrigger() + " at line " + line);
+                obligations.closed(inUnit(now - since()), false);
+                return new Verdict.Violated(r.line(), r.time(), null, null, missed());
             }
             responds = p.response().matches(r);
             if (responds) {
                 pending = false;
-                obligations.closed(now - since(), true);
+                obligations.closed(inUnit(now - since()), true);
             }
         }
         if (p.cancelledBy() != null) {
@@ -65,9 +90,43 @@ final class ResponseCheck extends Check {
             count = d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r) ? 1 : 0;
             since = now(r, ticks);
             now = since;
-            deadline = d.unit() == Deadline.Unit.OCCURRENCES ? d.amount() : since + d.amount();
+            // T seconds in a log that counts ticks of a known length are T / length ticks, as a decimal quotient
+            scale = d.unit() == Deadline.Unit.SECONDS && r.clock() == Clock.TICKS && !Double.isNaN(tickSeconds)
+                    ? tickSeconds : 1;
+            deadline = d.unit() == Deadline.Unit.OCCURRENCES ? d.amount() : since + (scale == 1 ? d.amount()
+                    : BigDecimal.valueOf(d.amount()).divide(BigDecimal.valueOf(scale), MathContext.DECIMAL64)
+                    .doubleValue());
         }
         return null;
+    }
+
+    /** A tick of a log without time stamps lasts {@code seconds} (NaN: unknown, a tick counts as a second). */
+    @Override
+    void countTicksAs(double seconds) {
+        tickSeconds = seconds;
+    }
+
+    /** {@code v}, on the log's clock, in the open obligation's deadline's unit. */
+    private double inUnit(double v) {
+        return scale == 1 ? v : BigDecimal.valueOf(v).multiply(BigDecimal.valueOf(scale)).doubleValue();
+    }
+
+    /**
+     * A deadline in seconds passes while the log is silent: a robot that freezes logs nothing, and the silence may
+     * begin a new run. {@code r}, the first record after it, is past the deadline: the obligation is violated there,
+     * never dropped with its run. Ticks and occurrences do not pass while nothing is logged.
+     */
+    @Override
+    Verdict.Violated overdue(LogRecord r) {
+        if (!pending || d.unit() != Deadline.Unit.SECONDS || r.clock() == Clock.TICKS || !(r.time() > deadline)) {
+            return null;
+        }
+        pending = false;
+        double last = now;
+        now = r.time();
+        obligations.closed(now - since, false);
+        return new Verdict.Violated(r.line(), r.time(), null, null, missed() + " (nothing was logged from t="
+                + Numbers.text(last) + " until this record, past the deadline)");
     }
 
     /** Where the obligation began, in the deadline's unit: occurrences count from none. */
@@ -77,13 +136,13 @@ final class ResponseCheck extends Check {
 
     @Override
     double elapsed() {
-        return pending ? now - since() : Double.NaN;
+        return pending ? inUnit(now - since()) : Double.NaN;
     }
 
     @Override
     void finish() {
         if (pending) {
-            obligations.closed(now - since(), false);
+            obligations.closed(inUnit(now - since()), false);
         }
     }
 
@@ -119,14 +178,29 @@ final class ResponseCheck extends Check {
             return null;
         }
         pending = false;
-        obligations.closed(now - since(), false);
+        obligations.closed(inUnit(now - since()), false);
         return new Verdict.Violated(r.line(), r.time(), null, null, "the scope ended before "
-                + p.response().describe() + " answered " + p.describeTrigger() + " at line " + line);
+                + p.response().brief() + " answered " + p.briefTrigger() + " at line " + line);
+    }
+
+    /**
+     * The missed deadline in an operator's words: {@code 8 closeHand attempts since line 6650, none answered by
+     * hasGrasped 1 or 27503}; {@code no getStatus 2 or halt in 400 ticks since goTo at line 24}.
+     */
+    private String missed() {
+        String amount = Numbers.text(d.amount());
+        return switch (d.unit()) {
+            case OCCURRENCES -> amount + " " + d.counted().brief() + (d.amount() == 1 ? " attempt" : " attempts")
+                    + " since line " + line + ", none answered by " + p.response().brief();
+            case TICKS, SECONDS -> "no " + p.response().brief() + " in " + amount + " "
+                    + (d.unit() == Deadline.Unit.TICKS ? "ticks" : "s") + " since " + p.briefTrigger() + " at line "
+                    + line;
+        };
     }
 
     @Override
     Verdict owed() {
-        return pending ? new Verdict.Pending(line, since, deadline, d.unit()) : Verdict.HOLDS;
+        return pending ? new Verdict.Pending(line, inUnit(since), inUnit(deadline), d.unit()) : Verdict.HOLDS;
     }
 
     @Override

@@ -22,6 +22,8 @@ final class LogOutlet {
     long firstLineNanos;
     /** The runs that began where the log was truncated or replaced, with which of the two. */
     final Map<Integer, String> restarts = new HashMap<>();
+    /** Whether the line that the file holds only YARP's start-up lines so far was given. */
+    boolean toldPreamble;
     /** Whether the line that the file is followed was given. */
     boolean announced;
     /** The commands of unmapped messages said at their first sighting. */

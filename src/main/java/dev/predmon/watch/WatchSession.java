@@ -202,8 +202,16 @@ public final class WatchSession implements FleetListener, AutoCloseable {
      */
     private boolean notALog(WatchedLog log, LogOutlet o) {
         long millis = o.firstLineNanos == 0 ? 0 : (System.nanoTime() - o.firstLineNanos) / 1_000_000;
-        Optional<String> not = evidence(log).notALog(millis);
+        Evidence evidence = evidence(log);
+        long yarp = log.watcher().yarpLines();
+        Optional<String> not = evidence.notALog(millis, yarp);
         if (not.isEmpty()) {
+            if (!o.toldPreamble) { // a monitor started before the robot: said once, and followed on
+                evidence.preamble(millis, yarp).ifPresent(p -> {
+                    o.toldPreamble = true;
+                    notices.say(p);
+                });
+            }
             return false;
         }
         noVerdict(log, o, not.get());

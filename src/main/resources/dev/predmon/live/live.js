@@ -2,7 +2,7 @@
 // /status and refreshed at once when /events says that a log has news. Hand-written, no library, nothing fetched from
 // elsewhere. Acknowledgements and the alert switches are kept in this browser (localStorage): the server only shows.
 'use strict';
-import {STATES, STATE_WORDS} from './words.js';
+import {STATES, STATE_WORDS, alarmOf, own} from './words.js';
 import {NEEDS_ATTENTION, el, renderRow, renderTile, shownLight, shownState} from './tile.js';
 
 const tilesEl = document.getElementById('tiles');
@@ -112,7 +112,9 @@ function show() {
 
 function summary(all) {
   const count = (s) => all.filter(t => shownState(t) === s).length;
-  const parts = STATES.filter(s => count(s) > 0).map(s => count(s) + ' ' + STATE_WORDS[s].toLowerCase());
+  // "2 violations", "1 warning": the words that count take a plural; "ok", "unknown", "run ended" do not
+  const word = (s, n) => STATE_WORDS[s].toLowerCase() + (n > 1 && (s === 'violation' || s === 'warning') ? 's' : '');
+  const parts = STATES.filter(s => count(s) > 0).map(s => count(s) + ' ' + word(s, count(s)));
   const stale = all.filter(t => t.stale).length;
   const acked = all.filter(t => ui.acked(t)).length;
   document.getElementById('summary').textContent = all.length + (all.length === 1 ? ' robot' : ' robots')
@@ -162,10 +164,10 @@ function beep() {
 
 function alert(t) {
   if (ui.acked(t)) return;
-  const other = worstState(t) && !NEEDS_ATTENTION.has(t.state) ? t.worst : null; // another property's alarm
+  const other = alarmOf(t); // the worst property, when it is not the forecast's
   const title = t.name + ': ' + (other ? other.property + ' ' + other.state : STATE_WORDS[t.state]);
   const body = other ? other.words + (other.action ? '\nDo now: ' + other.action : '')
-    : (t.state === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
+    : (own(t) === 'warning' && t.warning ? t.warning.reason : '') + (t.action ? '\nDo now: ' + t.action : '');
   if (notify && 'Notification' in window && Notification.permission === 'granted') {
     new Notification(title, {body: body, tag: t.log});
   }

@@ -25,16 +25,27 @@ export function ticks(lo, hi, count) {
 /** Enough decimals to tell ticks {@code step} apart. */
 const decimals = (step) => step >= 1 ? 0 : Math.min(3, Math.ceil(-Math.log10(step) - 1e-9));
 
-/** The plot of tile {@code t}: the property's readings, its threshold, the warning and the violation. */
+/**
+ * The plot of tile {@code t}: the forecast property's readings (named, one property among the others), its threshold,
+ * its warning and its violation, and where any other property was violated.
+ */
 export function plot(t) {
   const W = 440, H = 178, L = 40, R = 12, T = 16, B = 34;
+  const own = (t.properties || []).find(p => p.model === 'forecast');
+  const others = (t.properties || []).filter(p => p !== own && p.state === 'violated' && typeof p.time === 'number');
   const s = svg('svg', {class: 'plot', viewBox: '0 0 ' + W + ' ' + H, role: 'img',
-    'aria-label': (t.property || 'the property') + ' over time in run ' + t.run});
+    'aria-label': (own ? own.property + ' (' + own.name + ')' : t.property || 'the property') + ' over time in run '
+      + t.run + others.map(p => '; ' + p.property + ' violated ' + (t.unit === 'ticks' ? 'at tick ' : 'at t=')
+      + num(p.time, 2)).join('')});
   s.appendChild(svg('rect', {class: 'frame', x: L, y: T, width: W - L - R, height: H - T - B}));
+  if (own && (t.properties || []).length > 1) {
+    s.appendChild(svg('text', {class: 'series-name', x: 2, y: H - 4}, own.property));
+  }
   const pts = t.series;
   const times = pts.map(p => p[0]);
   if (t.warning) times.push(t.warning.time);
   if (t.violation) times.push(t.violation.time);
+  for (const p of others) times.push(p.time);
   if (times.length === 0) {
     s.appendChild(svg('text', {class: 'empty', x: L + 10, y: T + 24}, 'no reading of the property yet'));
     return s;
@@ -73,11 +84,16 @@ export function plot(t) {
     s.appendChild(svg('text', {class: 'label-' + kind, x: x(time) + (right ? -3 : 3), y: y0,
       'text-anchor': right ? 'end' : 'start'}, label));
   };
-  if (t.warning) mark(t.warning.time, 'warning', 'warning', !!t.violation, T - 4);
+  const name = own && others.length > 0 ? own.property + ' ' : '';
+  if (t.warning) mark(t.warning.time, 'warning', name + 'warning', !!t.violation, T - 4);
   if (t.violation) {
     // Close to the warning's mark, its label goes one line lower so that the two do not overlap.
     const close = t.warning && Math.abs(x(t.violation.time) - x(t.warning.time)) < 60;
-    mark(t.violation.time, 'violation', 'violation', false, close ? T + 10 : T - 4);
+    mark(t.violation.time, 'violation', name + 'violation', false, close ? T + 10 : T - 4);
   }
+  // every other property's violation, its id on its line, each a line lower than the one before and below the
+  // forecast property's own labels
+  const below = t.warning || t.violation ? T + 22 : T + 10;
+  others.forEach((p, i) => mark(p.time, 'violation', p.property + ' violated', false, below + 12 * i));
   return s;
 }

@@ -1,8 +1,8 @@
 // predmon live view: a tile (the full view) and a row (the compact view) of one robot. Text from logs goes into the
 // page through textContent only.
 'use strict';
-import {GLYPHS, PROPERTY_GLYPHS, PROPERTY_STATES, PROPERTY_WORDS, STATE_WORDS, at, basisWords, chance, distanceWords, earlierText, eventText, forecastWords, momentText,
-  num, pct, propertyForecast, recoveryWords, shortSpan, verdict, whenWords} from './words.js';
+import {GLYPHS, PROPERTY_GLYPHS, PROPERTY_STATES, PROPERTY_WORDS, STATE_WORDS, alarmOf, at, basisWords, chance, distanceWords, earlierText, eventText, forecastWords, momentText,
+  num, own, pct, propertyForecast, recoveryWords, shortSpan, verdict, whenWords} from './words.js';
 import {plot} from './plot.js';
 
 export function el(tag, cls, text) {
@@ -15,16 +15,11 @@ export function el(tag, cls, text) {
 /** States that ask for someone's attention: they can be acknowledged, and a warning or violation alerts. */
 export const NEEDS_ATTENTION = new Set(['violation', 'warning', 'unknown', 'no-verdict']);
 
-/**
- * A robot's light. Beside its name on a tile: the worst of its properties', as the page counts it (a violated deadline
- * is red there too; the forecast property's own light is in the list below). On a compact row ({@code small}): the
- * forecast property's own, with the worst of the others in a chip beside it.
- */
+/** A robot's light: its worst property's, as /status gives it (the forecast property's own is in the list). */
 function light(t, small) {
-  const state = small ? t.state : shownState(t);
-  const l = el('span', 'light ' + (small ? t.light : shownLight(t)) + (small ? ' small' : ''), GLYPHS[state] || '');
+  const l = el('span', 'light ' + t.light + (small ? ' small' : ''), GLYPHS[t.state] || '');
   l.setAttribute('role', 'img');
-  l.setAttribute('aria-label', STATE_WORDS[state] || state);
+  l.setAttribute('aria-label', STATE_WORDS[t.state] || t.state);
   return l;
 }
 
@@ -59,25 +54,14 @@ function propertyList(t) {
   return ul;
 }
 
-/**
- * The light a robot shows: its own state's, unless another property is worse (violated, or warned while the robot's
- * state is calmer).
- */
+/** The light a robot shows: its worst property's, which /status gives as the robot's. */
 export function shownLight(t) {
-  const w = t.worst;
-  if (!w || w.model === 'forecast') return t.light;
-  if (w.state === 'violated' && t.state !== 'violation') return 'red';
-  if (w.state === 'warning' && !['violation', 'warning'].includes(t.state)) return 'yellow';
   return t.light;
 }
 
-/**
- * The robot's state as the page counts and sorts it: its own, unless another property is violated (a violation) or
- * warned (a warning) while its own state is calmer.
- */
+/** The robot's state as the page counts and sorts it: its worst property's, as /status gives it. */
 export function shownState(t) {
-  const light = shownLight(t);
-  return light === t.light ? t.state : light === 'red' ? 'violation' : 'warning';
+  return t.state;
 }
 
 /**
@@ -126,7 +110,7 @@ function ackButton(t, ui, compact) {
 
 function badges(t, compact) {
   const out = [];
-  if (t.state === 'ended' && !compact) out.push(el('span', 'badge ended', 'RUN ENDED'));
+  if (own(t) === 'ended' && !compact) out.push(el('span', 'badge ended', 'RUN ENDED'));
   if (t.stale) {
     const b = el('span', 'badge stale', 'STALE' + (compact ? '' : ' ' + num(t.quietSeconds, 0) + ' s'));
     b.title = 'the log has not grown for ' + num(t.quietSeconds, 0) + ' s'
@@ -138,7 +122,7 @@ function badges(t, compact) {
 
 /** What to do, when something is to be done: or that the robot already does it. */
 function actionLine(t) {
-  if (!t.action || (t.state !== 'warning' && t.state !== 'violation')) return null;
+  if (!t.action || (own(t) !== 'warning' && own(t) !== 'violation')) return null;
   if (t.underWay) {
     const p = el('p', 'action under-way');
     p.append(el('b', null, 'Under way since ' + at(t.underWay.since, t.unit) + ': '), t.action);
@@ -156,7 +140,8 @@ function actionLine(t) {
  */
 function forecastLine(t, ui) {
   const f = t.forecast;
-  if (!f || t.state === 'ended' || t.state === 'violation' || t.state === 'no-verdict') return null;
+  const state = own(t);
+  if (!f || state === 'ended' || state === 'violation' || state === 'no-verdict') return null;
   const p = el('div', 'forecast');
   p.title = f.explanation || '';
   if (ui.noSkill(t)) {
@@ -166,7 +151,10 @@ function forecastLine(t, ui) {
         + chance(f.probability) + ', ' + whenWords(f)));
     return p;
   }
-  const distance = t.state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+  const distance = state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+  // among several properties, the forecast says whose it is
+  const ownProperty = (t.properties || []).length > 1 ? (t.properties || []).find(q => q.model === 'forecast') : null;
+  if (ownProperty) p.append(el('span', 'forecast-of', ownProperty.property + ': '));
   if (distance) {
     p.append(el('span', 'chance distance', distance), el('small', 'basis', basisWords(f)));
   } else {
@@ -178,13 +166,13 @@ function forecastLine(t, ui) {
 
 /** How the run recovered from its last alarm. */
 function recoveryLine(t) {
-  if (t.state !== 'ok' || !t.recovered) return null;
+  if (own(t) !== 'ok' || !t.recovered) return null;
   return el('p', 'recovery', recoveryWords(t));
 }
 
 /** Why the monitor warned, in its words (which rule, what the forecast rests on). */
 function whyLine(t) {
-  if (t.state !== 'warning' || !t.warning.reason) return null;
+  if (own(t) !== 'warning' || !t.warning || !t.warning.reason) return null;
   const p = el('p', 'why');
   p.append(el('b', null, 'Why: '), t.warning.reason);
   return p;
@@ -207,10 +195,19 @@ export function renderTile(tile, t, ui) {
   const ack = ackButton(t, ui);
   if (ack) head.append(ack);
 
+  // The headline is the worst property's; the big number is the forecast property's value, named, one property
+  // among the others.
   const status = el('div', 'status');
   const words = el('div', 'words');
-  words.append(el('div', 'property', t.property || 'prediction'), el('div', 'verdict', verdict(t)));
-  status.append(words, el('div', 'value-now', t.value === null ? '' : pct(t.value, t.threshold)));
+  const alarm = alarmOf(t);
+  words.append(el('div', 'property', alarm ? alarm.name : t.property || 'prediction'), el('div', 'verdict', verdict(t)));
+  const big = el('div', 'value-now');
+  const ownProperty = (t.properties || []).find(p => p.model === 'forecast');
+  if (t.value !== null) {
+    if (ownProperty && (t.properties || []).length > 1) big.append(el('small', 'value-of', ownProperty.property));
+    big.append(pct(t.value, t.threshold));
+  }
+  status.append(words, big);
 
   const lead = el('p', t.lead === null ? 'lead none' : 'lead');
   if (t.lead !== null) {
@@ -220,7 +217,7 @@ export function renderTile(tile, t, ui) {
   }
   const parts = [head, status, propertyList(t)];
   for (const p of [actionLine(t), forecastLine(t, ui), whyLine(t), recoveryLine(t)]) if (p) parts.push(p);
-  if (t.state !== 'no-verdict') parts.push(lead);
+  if (own(t) !== 'no-verdict') parts.push(lead);
   if (t.history.length > 0) {
     const h = el('p', 'history');
     h.append(el('b', null, 'this run: '), t.history.map(m => momentText(m, t)).join(' \u2192 '));
@@ -250,7 +247,8 @@ export function renderTile(tile, t, ui) {
     if (t.earlierRunsOmitted > 0) ul.appendChild(el('li', null, t.earlierRunsOmitted + ' earlier not shown'));
     for (const r of t.earlierRuns) {
       const li = el('li');
-      li.append(el('span', 'light small ' + r.light), earlierText(r, t.unit));
+      li.append(el('span', 'light small ' + r.light), earlierText(r, t.unit,
+        ((t.properties || []).find(p => p.model === 'forecast') || {}).property));
       ul.appendChild(li);
     }
     const runs = el('section', 'runs');
@@ -258,7 +256,9 @@ export function renderTile(tile, t, ui) {
     parts.push(runs);
   }
   parts.push(el('footer', null, t.log + ' \u00b7 ' + (t.exists === false ? 'no such file yet'
-    : t.records + ' records, line ' + t.line + ' \u00b7 log grew ' + num(t.quietSeconds, 1) + ' s ago')));
+    : t.records + ' records, line ' + t.line + ' \u00b7 ' + (typeof t.deleted === 'number'
+      ? 'log deleted; leaves the page in ' + num(t.leavesIn / 60, 0) + ' min'
+      : 'log grew ' + num(t.quietSeconds, 1) + ' s ago'))));
   if (ui.single) {
     // One robot alone uses the screen: its words beside a large plot.
     const plotEl = parts.find(p => p.tagName === 'svg');
@@ -275,8 +275,8 @@ export function renderTile(tile, t, ui) {
 /** The second line of a compact row: the state and what matters most about it. */
 function rowWords(t, ui) {
   const f = ui.noSkill(t) ? null : t.forecast; // a forecast without skill is no headline here either
-  const state = STATE_WORDS[t.state] || t.state;
-  switch (t.state) {
+  const state = STATE_WORDS[own(t)] || own(t);
+  switch (own(t)) {
     case 'violation':
       return state + ' since ' + at(t.violation.time, t.unit) + todo(t);
     case 'warning':
@@ -291,7 +291,7 @@ function rowWords(t, ui) {
       return (t.recovered ? 'OK, recovered ' + at(t.recovery.time, t.unit) : state)
         + (f ? ' \u00b7 ' + (distanceWords(f, t.warnsAt) || chance(f.probability)) : '');
     default:
-      return t.state === 'ended' ? state : t.exists === false ? 'no such file yet' : 'waiting for data';
+      return own(t) === 'ended' ? state : t.exists === false ? 'no such file yet' : 'waiting for data';
   }
 }
 
@@ -309,7 +309,7 @@ export function renderRow(row, t, ui) {
   const chip = worstChip(t);
   line1.append(name, ...badges(t, true), ...(chip ? [chip] : []), el('span', 'value', t.value === null ? '' : pct(t.value, t.threshold)));
   // another property's alarm first: which, and what to do
-  const w = shownState(t) !== t.state ? t.worst : null;
+  const w = alarmOf(t);
   const alarm = w ? w.property + ' ' + PROPERTY_WORDS[w.state].toUpperCase() + (w.action ? ' \u2192 ' + w.action : '')
     + ' \u00b7 ' : '';
   const line2 = el('div', 'line2', alarm + rowWords(t, ui));

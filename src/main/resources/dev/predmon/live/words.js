@@ -10,12 +10,25 @@ export const GLYPHS = {violation: '\u2715', warning: '!', unknown: '?', 'no-verd
   waiting: '\u2026', ended: '\u25A0'};
 
 /** A property's light, worst first, with its glyph and its name on the page. */
-export const PROPERTY_STATES = ['violated', 'warning', 'unknown', 'pending', 'holds'];
-export const PROPERTY_GLYPHS = {violated: '\u2715', warning: '!', unknown: '?', pending: '\u2026', holds: '\u2713'};
-export const PROPERTY_WORDS = {violated: 'violated', warning: 'warning', unknown: 'unknown', pending: 'pending',
-  holds: 'holds'};
+export const PROPERTY_STATES = ['violated', 'warning', 'unknown', 'no-evidence', 'pending', 'holds'];
+export const PROPERTY_GLYPHS = {violated: '\u2715', warning: '!', unknown: '?', 'no-evidence': '\u2205',
+  pending: '\u2026', holds: '\u2713'};
+export const PROPERTY_WORDS = {violated: 'violated', warning: 'warning', unknown: 'unknown',
+  'no-evidence': 'no evidence', pending: 'pending', holds: 'holds'};
 
 const missing = (x) => x === null || x === undefined || Number.isNaN(x);
+
+/**
+ * The forecast property's own state (the robot's {@code state} is its worst property's): what the forecast's words,
+ * its value, its warning and its violation are about.
+ */
+export const own = (t) => t.forecastState || t.state;
+
+/** The worst property when it is not the forecast's and is violated or warned: the tile's headline, or null. */
+export function alarmOf(t) {
+  const w = t.worst;
+  return w && w.model !== 'forecast' && (w.state === 'violated' || w.state === 'warning') ? w : null;
+}
 
 export const num = (x, digits) => missing(x) ? '?' : Number(x).toFixed(digits);
 
@@ -121,10 +134,25 @@ export function recoveryWords(t) {
   return 'recovered ' + at(r.time, t.unit) + ' (' + pct(r.value, t.threshold) + '): ' + r.reason;
 }
 
-/** The state in a sentence: what holds now, and why. */
+/**
+ * The state in a sentence, worst property first: another property violated or warned says so with its words; else
+ * what holds now of the forecast's property, and why.
+ */
 export function verdict(t) {
+  const w = alarmOf(t);
+  if (w) {
+    return w.state === 'violated'
+      ? 'VIOLATED: ' + w.property + ' \u2014 ' + (w.what ? 'line ' + w.line + ': ' + w.what : w.words)
+      : 'WARNING: ' + w.property + ' \u2014 ' + w.words;
+  }
+  return ownVerdict(t);
+}
+
+/** The forecast property's state in a sentence. */
+function ownVerdict(t) {
   const thr = t.threshold;
-  switch (t.state) {
+  const others = (t.properties || []).length > 1;
+  switch (own(t)) {
     case 'violation':
       return 'VIOLATED since ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.value, thr) + ')'
         + (t.warning ? ', predicted ' + span(t.lead, t.unit) + ' ahead' : ', not predicted');
@@ -141,7 +169,8 @@ export function verdict(t) {
           : 'the warning\u2019s cause ended ' + at(t.recovery.time, t.unit) + ' (' + pct(t.recovery.value, thr)
             + ')' + (t.recovery.cause === 'action' ? ', by the action' : ''));
       }
-      return 'OK: the property holds and no warning is raised';
+      return others ? 'OK: every property holds and no warning is raised'
+        : 'OK: the property holds and no warning is raised';
     case 'ended':
       return 'Run ended: ' + runOutcome(t);
     default:
@@ -210,9 +239,14 @@ export function momentText(m, t) {
   return (words[m.what] || m.what) + ' ' + at(m.time, t.unit) + ' (' + pct(m.value, t.threshold) + ')';
 }
 
-/** An earlier run in one line. */
-export function earlierText(r, unit) {
-  return 'run ' + r.run + ' (line ' + r.line + '): ' + (r.warning ? 'warned' : 'no warning') + ', '
+/**
+ * An earlier run in one line, worst first: the other properties it violated, then the forecast property's own
+ * ({@code ownId}) warning, violation and lead.
+ */
+export function earlierText(r, unit, ownId) {
+  const others = (r.violated || []).filter(id => id !== ownId);
+  return 'run ' + r.run + ' (line ' + r.line + '): ' + (others.length ? others.join(', ') + ' violated; '
+    + (ownId ? ownId + ' ' : '') : '') + (r.warning ? 'warned' : 'no warning') + ', '
     + (r.violation ? 'violated' + (r.recovered ? ', then held again' : '') : 'held')
     + (r.lead !== null ? ', lead ' + span(r.lead, unit) : '') + (r.noMatch ? ', no model matched' : '');
 }
@@ -227,7 +261,7 @@ export function propertyForecast(p, t) {
     if (!f) return 'no forecast yet';
     if (p.skill === false) return 'no skill: the forecast did no better than the base rate';
     if (f.basis === 'violated') return 'violated: no forecast to make';
-    const distance = t && t.state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+    const distance = t && own(t) !== 'warning' ? distanceWords(f, t.warnsAt) : null;
     return distance || chance(f.probability) + ' chance of a violation, ' + whenWords(f);
   }
   if (!f) return p.forecastWords;

@@ -106,7 +106,7 @@ class ForecastCliTest {
         long pairs = lines.stream().filter(l -> l.matches("\\s+\\d+\\s+t=.*")).count();
         long forecasts = lines.stream().filter(l -> l.startsWith("        P(violation) ")).count();
         assertTrue(pairs > 5 && forecasts == pairs, "a forecast under each of the " + pairs + " pairs: " + text.out());
-        String verdict = lines.stream().filter(l -> l.startsWith("watch WARNS at")).findFirst()
+        String verdict = lines.stream().filter(l -> l.startsWith("watch WARNS of battery at")).findFirst()
                 .orElseThrow(() -> new AssertionError(text.out()));
         assertTrue(verdict.contains("rule forecast: ") && verdict.contains("training runs"), verdict);
 

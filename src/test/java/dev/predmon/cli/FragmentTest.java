@@ -85,8 +85,7 @@ class FragmentTest {
         Path log = Files.writeString(tmp.resolve("shared.log"), text);
         Cli once = Cli.run("watch", "--no-follow", "--log", log.toString(), "--models", MODELS.toString());
         assertEquals(ExitCodes.WARNING, once.code(), once.out() + once.err());
-        assertTrue(once.out().contains("end of " + log + ": ") && once.out().contains("warning raised, property "
-                + "violated"), once.out());
+        assertTrue(once.out().contains("end of " + log + ": ") && once.out().contains("; battery VIOLATED, warned "), once.out());
         assertEquals(ExitCodes.WARNING, Cli.run("classify", "--log", log.toString(), "--models", MODELS.toString())
                 .code());
         Cli.Running followed = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());

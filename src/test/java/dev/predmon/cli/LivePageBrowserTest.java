@@ -196,21 +196,22 @@ class LivePageBrowserTest {
                     robots.resolve("blocked.log").toString());
             assertEquals(0, sim.code(), sim.err());
             String log = robots.resolve("blocked.log").toString();
-            waitFor(page, of(log) + ".dataset.state === 'unknown'", "the blocked robot's tile turns unknown");
+            // the run's two aborts violate no-abort: the robot's state is that violation; its battery's, no model
+            // matching the run, is unknown
+            waitFor(page, of(log) + ".querySelector('li.prop[data-property=battery]').dataset.state === 'unknown'",
+                    "the blocked robot's battery turns unknown");
             assertTrue(page.eval("document.getElementById('empty').hidden ? 'yes' : 'no'").equals("yes"));
             JsonNode tile = JSON.readTree(page.eval("JSON.stringify((() => { const t = " + of(log) + ";"
                     + " const light = t.querySelector('header .light');"
                     + " return {light: t.dataset.light, glyph: light.textContent, colour: getComputedStyle(light)"
                     + ".backgroundColor, verdict: t.querySelector('.verdict').textContent, name: t.querySelector('h2')"
                     + ".textContent, forecast: (t.querySelector('.forecast') || {}).textContent || ''}; })())"));
-            // the run's two aborts violate no-abort: the tile and the robot's own light are red, the worst of its
-            // properties, as the page counts it; the verdict below still says that no model matches
+            // the tile, the robot's own light and its sentence are the worst property's: no-abort, violated
             assertEquals("red", tile.get("light").asText());
             assertEquals("\u2715", tile.get("glyph").asText());
             String colour = tile.get("colour").asText();
             assertFalse(colour.equals("rgb(30, 158, 74)"), "never green: " + colour);
-            assertTrue(tile.get("verdict").asText().startsWith("UNKNOWN: no learned scenario matches this run since line"),
-                    tile.toString());
+            assertTrue(tile.get("verdict").asText().startsWith("VIOLATED: no-abort \u2014 line "), tile.toString());
             assertEquals("blocked", tile.get("name").asText(), "the robot's name, not the path");
             assertTrue(tile.get("forecast").asText().contains("warning at"), "how far from a warning: " + tile);
             screenshot(page, "live-unknown.png");
@@ -262,7 +263,8 @@ class LivePageBrowserTest {
                     + ".find(l => l.includes('VIOLATION of battery')) || '',"
                     + " series: t.querySelectorAll('svg.plot polyline.series').length}; })())"));
             String percent = "\\d+\\.\\d\\d%";
-            assertTrue(shown.get("now").asText().matches(percent), shown.toString());
+            // the big number is the battery's, named: one property among the others
+            assertTrue(shown.get("now").asText().matches("battery" + percent), shown.toString());
             assertTrue(shown.get("verdict").asText().matches("VIOLATED since t=.* \\(" + percent + "\\), predicted .*"),
                     shown.toString());
             assertTrue(shown.get("lead").asText().matches("lead .*: warning at " + percent + ", violation at "
@@ -383,8 +385,11 @@ class LivePageBrowserTest {
                 List<String> states = new ArrayList<>();
                 JSON.readTree(page.eval("JSON.stringify([...document.querySelectorAll('article.tile')]"
                         + ".map(t => t.dataset.state))")).forEach(s -> states.add(s.asText()));
-                // r3's aborts violate no-abort: its own state is unknown, and it sorts with the violations
-                assertEquals(List.of("violation", "unknown", "warning", "ok", "waiting", "ended"), states);
+                // r3's aborts violate no-abort: the robot's state is that violation, its worst property's; its
+                // battery's own state, no model matching the run, is unknown
+                assertEquals(List.of("violation", "violation", "warning", "ok", "waiting", "ended"), states);
+                assertEquals("unknown", page.eval("document.querySelectorAll('article.tile')[1]"
+                        + ".querySelector('li.prop[data-property=battery]').dataset.state"));
                 ObjectNode ticks = (ObjectNode) JSON.readTree(page.eval("JSON.stringify({x: [...document"
                         + ".querySelectorAll('article.tile')[0].querySelectorAll('svg.plot text.axis')].length})"));
                 assertTrue(ticks.get("x").asInt() >= 8, "several labelled ticks on the axes: " + ticks);

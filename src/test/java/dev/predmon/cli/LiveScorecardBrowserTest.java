@@ -135,7 +135,7 @@ class LiveScorecardBrowserTest {
         assertFalse(shown.get("card").asText().contains("no skill"), shown.toString());
         assertTrue(shown.get("headline").asBoolean(), "the probability is the headline: " + shown);
         // below the threshold the headline is how far the run is from a warning, not a countdown
-        assertTrue(shown.get("forecast").asText().startsWith("P 0."), shown.toString());
+        assertTrue(shown.get("forecast").asText().startsWith("battery: P 0."), "whose forecast: " + shown);
         assertTrue(shown.get("forecast").asText().contains("warning at"), shown.toString());
         assertTrue(shown.get("row").asText().contains("warning at"), "the row gives the distance: " + shown);
     }

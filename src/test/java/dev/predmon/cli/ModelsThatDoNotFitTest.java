@@ -53,7 +53,7 @@ class ModelsThatDoNotFitTest {
                 && last.contains("the models do not fit this log: no verdict; try --abstraction scope-fetch"), last);
         assertTrue(err.stream().anyMatch(l -> l.contains("GoTo/getCurrentPose (600 messages): no rule for this "
                 + "command")), "grouped by command: " + r.err());
-        assertTrue(!r.out().contains("best match") && !r.out().contains("property held")
+        assertTrue(!r.out().contains("best match") && !r.out().contains(" hold")
                 && !r.out().contains("matches scenario"), what + " gave a verdict: " + r.out());
     }
 

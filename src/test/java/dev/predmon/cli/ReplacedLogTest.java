@@ -14,6 +14,7 @@ import java.nio.file.StandardOpenOption;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -184,6 +185,66 @@ class ReplacedLogTest {
                     + "still written after the file now at the path gave records"), "told: " + w.err());
         }
         w.stop();
+    }
+
+    /**
+     * Two writers after a rename, as a red team found it: the robot's run goes on in the new file, the old writer adds
+     * an aborted navigation to the renamed file (line 9,000 or so there), and the new file's run warns 2 s later at a
+     * line of its own below that. The abort was read first: the violation came with no warning before it, exit 6.
+     * Comparing lines across the two files gave exit 1, a warning "before" a violation it came after.
+     */
+    @Test
+    @Timeout(90)
+    void aViolationReadFromTheRenamedFileBeforeTheNewFilesWarningIsUnwarned() throws Exception {
+        String run = FleetWatchTest.run(Scenario.DEPLETED, 9001);
+        Path whole = Files.writeString(dir.resolve("whole.log"), run);
+        Cli alone = Cli.run("watch", "--log", whole.toString(), "--models", MODELS.toString(), "--no-follow", "--json");
+        long warnedAt = Cli.firstEvent(alone.jsonLines(), "warning").orElseThrow().get("line").asLong();
+        String firstPart = lines(run, warnedAt / 2);
+        Path log = Files.writeString(dir.resolve("live.log"), probe("first") + "yarprun: a line of another program\n"
+                .repeat(9000));
+        Cli.Running w = Cli.start("watch", "--log", log.toString(), "--models", MODELS.toString());
+        try (OutputStream held = Files.newOutputStream(log, StandardOpenOption.APPEND)) {
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/first"), "watch follows: " + w.err());
+            Files.move(log, dir.resolve("live.log.1"));
+            Files.writeString(log, firstPart + probe("second"));
+            FleetWatchTest.await(() -> w.err().toString().contains("Probe/second"), "the new file is taken up");
+            held.write(aborted(lastTime(firstPart)).getBytes(StandardCharsets.UTF_8)); // line 9008 of live.log.1
+            held.flush();
+            FleetWatchTest.await(() -> w.out().toString().contains("VIOLATION"), "the abort is read: " + w.out());
+            assertFalse(w.out().toString().contains("WARNING"), "no warning yet: " + w.out());
+            Files.writeString(log, run.substring(firstPart.length()), StandardOpenOption.APPEND);
+            FleetWatchTest.await(() -> w.out().toString().contains("WARNING"), "the run warns: " + w.out());
+        }
+        w.stop();
+        String out = w.out().toString();
+        assertTrue(out.contains("line 9008"), out);
+        assertEquals(ExitCodes.UNWARNED_VIOLATION, w.code().get(), out + "\n" + w.err());
+    }
+
+    /** The first {@code n} lines of {@code text}. */
+    private static String lines(String text, long n) {
+        int at = 0;
+        for (long i = 0; i < n; i++) {
+            at = text.indexOf('\n', at) + 1;
+        }
+        return text.substring(0, at);
+    }
+
+    /** The time of the last record of {@code text}, a log of the column layout. */
+    private static String lastTime(String text) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(?m)^([0-9.]+)\tDEBUG").matcher(text);
+        String last = null;
+        while (m.find()) {
+            last = m.group(1);
+        }
+        return last;
+    }
+
+    /** A navigation's status reply ABORT (3) at {@code time}: what "navigation never aborts" forbids. */
+    private static String aborted(String time) {
+        return time + "\tDEBUG\tReply intercepted:\n  From      : /GoToComponent\n  To        : /GoToGoToClient/kitchen\n"
+                + "  Protocol  : GoTo\n  Command   : getStatus\n  Arguments : kitchen\n  Reply     : 3\n";
     }
 
     /** An interface message no rule maps: watch says so when it reads it. */

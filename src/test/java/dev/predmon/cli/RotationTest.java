@@ -92,12 +92,12 @@ class RotationTest {
         assertEquals(ExitCodes.WARNING, w.code().get(), "the warning before the rotation counts: " + out + w.err());
         List<String> lines = out.lines().toList();
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("run 0 (from line 1): ")
-                && l.contains("; warning raised, property violated, lead 30.000 s")), out);
+                && l.contains("; battery VIOLATED, warned 30.000 s before")), out);
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("run 1 (from line 1, after the log was replaced): ")
-                && l.contains("; no warning, property held")), out);
+                && l.contains("; no warning; ") && !l.contains("VIOLATED")), out);
         String end = lines.get(lines.size() - 1);
         assertTrue(end.startsWith("end of " + log + " (stopped: interrupted): ") && end.contains(" 2 runs, ")
-                && end.endsWith("; warning raised, property violated"), end);
+                && end.contains("; battery VIOLATED, warned "), end);
     }
 
     @Test

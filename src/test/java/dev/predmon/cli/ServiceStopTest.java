@@ -123,7 +123,7 @@ class ServiceStopTest {
                     + success + "; stderr: " + Files.readString(dir.resolve("stderr.txt")));
             assertEquals(ExitCodes.WARNING, code, "the run warned");
             assertTrue(out.stream().anyMatch(l -> l.startsWith("end of " + log + " (stopped: " + signal + "): ")
-                    && l.contains("warning raised")), "the end summary: " + out);
+                    && (l.contains("battery warned") || l.contains("battery VIOLATED, warned"))), "the end summary: " + out);
             assertEquals("warning", Files.readString(delivered).strip(), "the hook under way delivered its warning");
             assertTrue(left.stream().noneMatch(ProcessHandle::isAlive), "nothing left for the SIGKILL: " + left);
             assertTrue(took < timeout, "stopped in " + took + " s");

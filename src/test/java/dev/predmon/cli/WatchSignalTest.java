@@ -81,9 +81,9 @@ class WatchSignalTest {
         assertEquals(ExitCodes.OK, w.signal(signal), "SIG" + signal + " before a warning: " + w.out());
         // the end line, then the run's last forecast
         String end = w.out().stream().filter(l -> l.startsWith("end of ")).reduce((a, b) -> b).orElse("");
-        assertTrue(w.out().get(w.out().size() - 1).startsWith("last forecast: "), w.out().toString());
+        assertTrue(w.out().get(w.out().size() - 1).startsWith("last forecast of battery: "), w.out().toString());
         assertTrue(end.startsWith("end of " + log + " (stopped: SIG" + signal + "): ")
-                && end.endsWith("; no warning, property held"), end);
+                && end.contains("; no warning; ") && end.endsWith(" hold"), end);
     }
 
     /** After a warning, with --json: the last line is the end event. */

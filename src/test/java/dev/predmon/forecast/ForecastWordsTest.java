@@ -41,4 +41,15 @@ class ForecastWordsTest {
         assertEquals("P(violation) 0.05, about 8.30 ticks to the violation (8.20-9.00 ticks) [matched, 0 of 12 runs]",
                 ForecastWords.brief(g));
     }
+
+    /** A scoped bound outside its scope: P 0.004 reads 0.00, and a time to a violation beside it would contradict it. */
+    @Test
+    void aProbabilityThatReadsZeroHasNoTimeToAViolation() {
+        Forecast f = new Forecast(0.004, 765.0, 500.0, 900.0, Forecast.Basis.MATCHED, null, 12, 0, 80.0, null, "ticks");
+        assertEquals("P(violation) 0.00, no violation in sight [matched, 0 of 12 runs]", ForecastWords.brief(f));
+        assertEquals(null, dev.predmon.event.ForecastJson.of(f).timeToViolation(), "nor in the JSON");
+        Forecast g = new Forecast(0.005, 765.0, 500.0, 900.0, Forecast.Basis.MATCHED, null, 12, 1, 80.0, null, "ticks");
+        assertEquals("P(violation) 0.01, about 765 ticks to the violation (500-900 ticks) [matched, 1 of 12 runs]",
+                ForecastWords.brief(g));
+    }
 }

@@ -60,7 +60,12 @@ class CommandHooksTest {
                 "PREDMON_TIME", "29.581942", "PREDMON_UNIT", "s", "PREDMON_LINE", "7127", "PREDMON_PROPERTY", "",
                 "PREDMON_VALUE", "27.83", "PREDMON_BATTERY", "27.83", "PREDMON_SCENARIO", "depleted"),
                 Map.copyOf(without(env("env"), "PREDMON_SCENARIOS", "PREDMON_PROBABILITY",
-                        "PREDMON_TIME_TO_VIOLATION")));
+                        "PREDMON_TIME_TO_VIOLATION", "PREDMON_PROPERTY_NAME", "PREDMON_WHAT", "PREDMON_ACTION")));
+        // the event in words; a property the hooks were not told of has no name and no action
+        assertEquals("the run can only be faulty scenario depleted, late (every nominal model eliminated)",
+                env("env").get("PREDMON_WHAT"));
+        assertEquals("", env("env").get("PREDMON_PROPERTY_NAME"));
+        assertEquals("", env("env").get("PREDMON_ACTION"));
         assertEquals("depleted,late", env("env").get("PREDMON_SCENARIOS"));
         assertEquals("", env("env").get("PREDMON_PROBABILITY"), "a warning of the match rule has no forecast");
         assertEquals(List.of(), reports);
@@ -180,13 +185,13 @@ class CommandHooksTest {
     @Timeout(30)
     void aFullQueueDropsWithAReportAndNoEventRunsTwice() throws Exception {
         Path calls = dir.resolve("calls");
-        int events = CommandHooks.THREADS + CommandHooks.QUEUE + 2;
+        int events = CommandHooks.THREADS + CommandHooks.PER_LOG + 2;
         try (CommandHooks h = hooks("echo $PREDMON_LINE >> '" + calls + "'; sleep 5", null, Duration.ofSeconds(1))) {
             for (int i = 0; i < events; i++) {
                 h.event(LogEvent.of("a.log", new MonitorEvent.Warning(i, i, List.of("depleted"), null, i, Clock.SECONDS, 0)));
             }
         }
-        long rejected = reports.stream().filter(r -> r.endsWith("commands are already waiting")).count();
+        long rejected = reports.stream().filter(r -> r.endsWith("commands of a.log are already waiting")).count();
         assertTrue(rejected >= 2, reports.toString());
         List<String> ran = Files.readAllLines(calls);
         assertEquals(ran.size(), ran.stream().distinct().count(), "no event ran twice: " + ran);

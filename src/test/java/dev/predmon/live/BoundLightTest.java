@@ -97,7 +97,9 @@ class BoundLightTest {
         assertEquals("yellow", reserve.get("light").asText());
         assertEquals(reason, reserve.get("words").asText());
         tile = b.status("a.log").get("logs").get(0);
-        assertEquals("ok", tile.get("state").asText(), "the battery's alarm is untouched: " + tile);
+        assertEquals("warning", tile.get("state").asText(), "the robot's state is its worst property's: " + tile);
+        assertEquals("ok", tile.get("forecastState").asText(), "the battery's alarm is untouched: " + tile);
+        assertEquals("[\"reserve\"]", tile.get("warned").toString());
         String metrics = new String(b.metrics().scrape(), StandardCharsets.UTF_8);
         assertTrue(metrics.contains("predmon_property_warnings_total{log=\"a.log\",property=\"reserve\",robot=\"a\"}"
                 + " 1.0"), metrics);

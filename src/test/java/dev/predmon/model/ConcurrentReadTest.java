@@ -73,7 +73,8 @@ class ConcurrentReadTest {
         Map<String, Map<Integer, StateStats>> states = new TreeMap<>(f.states());
         states.remove("direct");
         ForecastModel forecast = new ForecastModel(f.format(), f.unit(), f.limit(), f.runs(), f.violating(), f.lows(),
-                f.threshold(), f.thresholdNote(), f.validated(), states, f.startInputs(), f.calibration());
+                f.threshold(), f.thresholdNote(), f.validated(), states, f.startInputs(), f.calibration(),
+                f.scorecards(), f.obligations(), f.deadlines());
         withoutDirect = new Written(new ModelIndex(i.format(), i.abstraction(), i.alphabet(), scenarios), fewer,
                 abstraction, forecast);
     }

@@ -9,6 +9,7 @@ import dev.predmon.property.Verdict;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;
+import java.util.Map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -88,5 +89,23 @@ class RunHistoryTest {
         assertTrue(s.warned() && s.warnedMatching(), "the deadline's warning is the log's");
         assertFalse(s.unwarnedViolation());
         assertTrue(h.summary(abortedUnwarned).unwarnedViolation());
+    }
+
+    /**
+     * Two writers after a rename rotation: a run holds records of two files, each numbered in its own. The abort read
+     * first (the renamed file's line 8996) and the deadline's warning read later (the new file's line 7127): the
+     * violation came with no warning before it, whatever their lines say. Read the other way round, it was warned.
+     */
+    @Test
+    void beforeIsTheOrderOfReadingNotTheLines() {
+        RunOutcome abortReadFirst = new RunOutcome(0, 1, null, null, false, 7, true, null,
+                List.of(violated("no-abort", 8996)), deadlineWarning(7127), Map.of(), 20_000, 10_000);
+        assertTrue(abortReadFirst.unwarnedViolation(), "the warning came 10,000 records after the abort");
+        RunOutcome warningReadFirst = new RunOutcome(0, 1, null, null, false, 7, true, null,
+                List.of(violated("no-abort", 7127)), deadlineWarning(8996), Map.of(), 10_000, 20_000);
+        assertFalse(warningReadFirst.unwarnedViolation(), "the warning was read 10,000 records before the abort");
+        RunOutcome sameRecord = new RunOutcome(0, 1, null, null, false, 7, true, null,
+                List.of(violated("no-abort", 8996)), deadlineWarning(8996), Map.of(), 10_000, 10_000);
+        assertTrue(sameRecord.unwarnedViolation(), "a warning at the violating record predicts nothing");
     }
 }

@@ -395,4 +395,34 @@ class LogParserTest {
         assertEquals(List.of(), c.problems);
         assertEquals(7, c.parser.lineNumber());
     }
+
+    /**
+     * YARP's own lines about the monitor's port before the first record, as the monitor prints them when it starts
+     * (colour codes, YARP 3's two forms, YARP 2's prefix), are counted; another program's ports, other programs' lines
+     * and the records are not.
+     */
+    @Test
+    void yarpsStartUpLinesAreCountedBeforeTheFirstRecord() {
+        LogParser parser = new LogParser(r -> { }, p -> { });
+        for (String line : new String[] {
+            "Detected ABI qt5_12-x86_64, using ABI qt5_12-x86_64.",
+            "[\u001b[01;34mINFO\u001b[00m] |yarp.os.Port| Port /monitor active at tcp://10.0.0.7:10032/",
+            "[\u001b[01;34mINFO\u001b[00m] |\u001b[01;34myarp.os.impl.PortCoreInputUnit\u001b[00m|\u001b[31m/monitor"
+                    + "\u001b[00m| Receiving input from /tick/monitor to /monitor using tcp",
+            "[INFO]|yarp.os.Port|/monitor| Port /monitor active at tcp://10.0.0.7:10002/",
+            "yarp: Port /monitor active at tcp://10.0.0.7:10002/",
+            "GammaRay server listening on: tcp://127.0.0.1:11732",
+            "[INFO] |yarp.os.Port| Port /tool1 active at tcp://10.0.0.1:10002/",
+            "[INFO] has grasped ret value 0",
+            "robot: the yarp server is down",
+        }) {
+            parser.acceptLine(line);
+        }
+        assertEquals(4, parser.yarpLines());
+        parser.acceptLine("[DEBUG] Tick intercepted:");
+        parser.acceptLine("[INFO] |yarp.os.impl.PortCoreInputUnit| Receiving input from /a to /monitor using tcp");
+        assertEquals(4, parser.yarpLines(), "after the first record, nothing more is the preamble");
+        parser.reset();
+        assertEquals(0, parser.yarpLines());
+    }
 }
