@@ -93,8 +93,7 @@ public final class Simulator {
             }
             List<SimEvent> events = recorded.events();
             RunFacts f = RunFacts.of(events, options.earlyWarning(), novelties.destination());
-            if (!f.tell(scenario, options.earlyWarning(), m.arrives(scenario), m.rechargeFloor(options.earlyWarning()),
-                    m.reachesStation())
+            if (!f.tell(scenario, options.earlyWarning(), m.arrives(scenario), m.rechargeFloor(options.earlyWarning()))
                     || !m.kept(scenario)) {
                 continue;
             }
