@@ -1,7 +1,6 @@
 package dev.predmon.cli;
 
 import dev.predmon.BadInputException;
-import dev.predmon.ros2.Recordings;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
@@ -15,6 +14,7 @@ import dev.predmon.pipeline.Traces;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.RecordTaken;
 import dev.predmon.replay.ReplayedLog;
+import dev.predmon.ros2.Recordings;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.MissingParameterException;
 import picocli.CommandLine.Model.CommandSpec;
@@ -189,6 +189,9 @@ final class LogAgainstModels {
     void checkLogHoldsRecords(Abstraction abstraction) throws BadInputException, IOException {
         checkLog();
         Path log = log();
+        if (Recordings.isRecording(log)) {
+            return; // a ROS 2 recording is read by its own format, which says what is wrong with it
+        }
         ParseProblem[] first = {null};
         long[] lines = {0};
         try {

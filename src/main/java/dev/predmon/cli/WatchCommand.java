@@ -110,6 +110,14 @@ final class WatchCommand implements Callable<Integer> {
         ModelSet set = input.models();
         Abstraction abstraction = input.abstraction();
         rosbridge.check(spec, input.logs != null, noFollow, abstraction);
+        // usage errors before anything is read
+        if (noFollow && liveView.http != null) {
+            throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
+        }
+        if (noFollow && follow.heartbeatNanos() > 0) {
+            throw new ParameterException(spec.commandLine(), "--heartbeat says that logs are followed: not with "
+                    + "--no-follow");
+        }
         LogSources sources = rosbridge.given() ? LogSources.none() : new LogSources(input.logs());
         boolean several = sources.several();
         if (rosbridge.given()) {
@@ -122,13 +130,6 @@ final class WatchCommand implements Callable<Integer> {
             }
         } else if (noFollow) {
             sources.requireFiles();
-        }
-        if (noFollow && liveView.http != null) {
-            throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
-        }
-        if (noFollow && follow.heartbeatNanos() > 0) {
-            throw new ParameterException(spec.commandLine(), "--heartbeat says that logs are followed: not with "
-                    + "--no-follow");
         }
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " has no faulty scenario, so no warning can ever be raised");

@@ -1,5 +1,7 @@
 package dev.predmon.ros2;
 
+import dev.predmon.parse.Glob;
+
 import java.util.Map;
 
 /**
@@ -69,28 +71,6 @@ public record TopicRule(String topic, String type, String field, String key, Str
         if (star < 0) {
             return pattern.equals(text);
         }
-        // Classic wildcard matching with backtracking over the last star.
-        int p = 0;
-        int t = 0;
-        int lastStar = -1;
-        int mark = 0;
-        while (t < text.length()) {
-            if (p < pattern.length() && pattern.charAt(p) == '*') {
-                lastStar = p++;
-                mark = t;
-            } else if (p < pattern.length() && pattern.charAt(p) == text.charAt(t)) {
-                p++;
-                t++;
-            } else if (lastStar >= 0) {
-                p = lastStar + 1;
-                t = ++mark;
-            } else {
-                return false;
-            }
-        }
-        while (p < pattern.length() && pattern.charAt(p) == '*') {
-            p++;
-        }
-        return p == pattern.length();
+        return Glob.matches(pattern, text);
     }
 }
