@@ -1,7 +1,6 @@
 package dev.predmon.monitor;
 
 import dev.predmon.BadInputException;
-
 import dev.predmon.ros2.Recordings;
 
 import java.io.IOException;

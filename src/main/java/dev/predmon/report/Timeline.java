@@ -3,7 +3,6 @@ package dev.predmon.report;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.Clock;
-import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordSink;
 import dev.predmon.parse.RecordSource;

@@ -7,7 +7,6 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordSink;
 import dev.predmon.parse.RecordSource;
 import dev.predmon.property.PropertyChecker;
-import dev.predmon.property.Verdict;
 import dev.predmon.ros2.TopicMapping;
 import dev.predmon.rosbag.BagMessage;
 import org.junit.jupiter.api.Test;
