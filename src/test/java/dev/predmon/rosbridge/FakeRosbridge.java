@@ -5,8 +5,10 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import com.fasterxml.jackson.dataformat.cbor.databind.CBORMapper;
 import dev.predmon.rosbag.BagMessage;
 import dev.predmon.rosbag.ByteArrays;
+import dev.predmon.rosbag.CdrMessages;
 import org.java_websocket.WebSocket;
 import org.java_websocket.handshake.ClientHandshake;
 import org.java_websocket.server.WebSocketServer;
@@ -22,6 +24,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 
 /**
@@ -47,8 +50,8 @@ public final class FakeRosbridge extends WebSocketServer {
     /** Each subscription's compression, in order ("none" when it asked for none). */
     public final List<String> compressions = new CopyOnWriteArrayList<>();
     /** The binary (cbor-raw) frames sent. */
-    public final java.util.concurrent.atomic.AtomicInteger binaryFrames = new java.util.concurrent.atomic.AtomicInteger();
-    private static final ObjectMapper CBOR = new com.fasterxml.jackson.dataformat.cbor.databind.CBORMapper();
+    public final AtomicInteger binaryFrames = new AtomicInteger();
+    private static final ObjectMapper CBOR = new CBORMapper();
     private final Map<WebSocket, List<String>> topics = new ConcurrentHashMap<>();
     /** The topics each connection asked for as cbor-raw. */
     private final Map<WebSocket, List<String>> raw = new ConcurrentHashMap<>();
@@ -116,7 +119,7 @@ public final class FakeRosbridge extends WebSocketServer {
         Map<String, Object> msg = new java.util.LinkedHashMap<>();
         msg.put("secs", m.logTimeNanos() / 1_000_000_000L);
         msg.put("nsecs", m.logTimeNanos() % 1_000_000_000L);
-        msg.put("bytes", dev.predmon.rosbag.CdrMessages.encode(m.type(), m.fields()));
+        msg.put("bytes", CdrMessages.encode(m.type(), m.fields()));
         Map<String, Object> op = new java.util.LinkedHashMap<>();
         op.put("op", "publish");
         op.put("topic", m.topic());
