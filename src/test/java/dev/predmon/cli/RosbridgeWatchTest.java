@@ -122,11 +122,18 @@ class RosbridgeWatchTest {
             await(() -> live.err().toString().contains("connected again"), "the reconnection said");
             String err = live.err().toString();
             assertEquals(1, err.lines().filter(l -> l.contains("connection lost")).count(), err);
-            // nothing judged across the gap: the run ends there, and an alarm still up ends with it, said as such
+            // nothing judged across the gap: the run ends there, and the alarms still up (the battery's violation)
+            // end with it, as at the end of any run: never told as a recovery of the property
+            await(() -> live.out().toString().contains("the connection to the robot was lost and made again: "
+                    + "monitoring starts over"), "the new run said");
             List<String> got = events(live.out().toString());
             assertEquals(expected, got.subList(0, Math.min(expected.size(), got.size())), "no verdict while disconnected");
-            assertTrue(got.subList(expected.size(), got.size()).stream()
-                    .allMatch(l -> l.contains("RECOVERED") && l.contains("(reconnected)")), got.toString());
+            List<String> after = got.subList(expected.size(), got.size());
+            assertFalse(after.isEmpty(), "the violated battery's alarm ends with the run: " + got);
+            assertTrue(after.stream().allMatch(l -> l.contains(": ALARM ENDS WITH ITS RUN: ") && l.endsWith(
+                    ": the run ended: the connection to the robot was lost and made again; what follows is a new run")),
+                    after.toString());
+            assertTrue(after.stream().anyMatch(l -> l.contains("(battery)")), after.toString());
         } finally {
             live.stop();
         }
