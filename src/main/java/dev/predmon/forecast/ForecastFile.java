@@ -24,11 +24,11 @@ import static dev.predmon.forecast.ForecastFileSections.number;
 import static dev.predmon.forecast.ForecastFileSections.numbers;
 import static dev.predmon.forecast.ForecastFileSections.readDeadlines;
 import static dev.predmon.forecast.ForecastFileSections.readObligations;
-import static dev.predmon.forecast.ForecastFileSections.readScorecards;
 import static dev.predmon.forecast.ForecastFileSections.required;
 import static dev.predmon.forecast.ForecastFileSections.writeCalibration;
 import static dev.predmon.forecast.ForecastFileSections.writeObligations;
-import static dev.predmon.forecast.ForecastFileSections.writeScorecards;
+import static dev.predmon.forecast.ScorecardJson.readScorecards;
+import static dev.predmon.forecast.ScorecardJson.writeScorecards;
 
 /**
  * The text of {@code forecast.json}: a {@link ForecastModel} as JSON, numbers that are not known written as
@@ -84,6 +84,7 @@ public final class ForecastFile {
         root.put("threshold", m.threshold());
         root.put("thresholdNote", m.thresholdNote());
         root.put("thresholdValidated", m.validated());
+        ForecastFileSections.writeClauses(root, m.clauses());
         writeCalibration(root, m.calibration());
         writeScorecards(root, m.scorecards());
         writeObligations(root, m.obligations(), m.deadlines());
@@ -246,12 +247,13 @@ public final class ForecastFile {
         return new ForecastModel(format, unit, number(root, "limit"),
                 runs, violating, lows(root), threshold,
                 required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
-                starts, calibration, readScorecards(root), readObligations(root), readDeadlines(root));
+                starts, calibration, readScorecards(root), readObligations(root), readDeadlines(root))
+                .withClauses(ForecastFileSections.readClauses(root));
     }
 
     /** One scorecard as {@code forecast.json} holds it (and {@code /status} shows it). */
     public static ObjectNode scorecard(Scorecard c) {
-        return ForecastFileSections.scorecard(c);
+        return ScorecardJson.scorecard(c);
     }
 
     private static void lows(ObjectNode n, Lows lows) {

@@ -59,9 +59,11 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
      * @param runs          its held-out runs, each of the runs its scenario learns from, in log order
      * @param bounds        by id, every other bound property whose training runs (as it sees them, {@link BoundRuns})
      *                      both violated and held it: the same held-out runs as it saw them in the same replays
+     * @param safeFloor     the lowest value a training run that held the forecast's property read (NaN without one):
+     *                      the raw-value baseline's line
      */
     public record Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
-                       List<HeldOutRun> runs, Map<String, BoundFold> bounds) {
+                       List<HeldOutRun> runs, Map<String, BoundFold> bounds, double safeFloor) {
 
         public Fold {
             obligations = Map.copyOf(obligations);
@@ -72,7 +74,7 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
         /** A fold with no bound property of its own forecast. */
         public Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
                     List<HeldOutRun> runs) {
-            this(index, baseRate, obligations, bothOutcomes, runs, Map.of());
+            this(index, baseRate, obligations, bothOutcomes, runs, Map.of(), Double.NaN);
         }
     }
 
@@ -81,8 +83,10 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
      *
      * @param baseRate the base rate of the fold's training runs as the property sees them
      * @param runs     the fold's held-out runs as the property saw them: its own violation, forecasts and warning
+     * @param safeFloor the lowest value, on the forecast's scale, a training run that held the property read (NaN
+     *                  without one): the raw-value baseline's line
      */
-    public record BoundFold(double baseRate, List<HeldOutRun> runs) {
+    public record BoundFold(double baseRate, List<HeldOutRun> runs, double safeFloor) {
 
         public BoundFold {
             runs = List.copyOf(runs);
@@ -168,8 +172,10 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
                 }
             }
             Map<String, BoundFold> bounds = new TreeMap<>();
-            boundRuns.forEach((id, rs) -> bounds.put(id, new BoundFold(boundModels.get(id).model().baseRate(), rs)));
-            judged.add(new Fold(fold, stats.baseRate(), stats.obligations(), both, runs, bounds));
+            boundRuns.forEach((id, rs) -> bounds.put(id, new BoundFold(boundModels.get(id).model().baseRate(), rs,
+                    boundModels.get(id).model().lows().safeFloor())));
+            judged.add(new Fold(fold, stats.baseRate(), stats.obligations(), both, runs, bounds,
+                    stats.lows().safeFloor()));
         }
         return new HeldOutFolds(used, judged);
     }

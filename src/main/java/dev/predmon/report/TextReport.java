@@ -61,8 +61,9 @@ public final class TextReport {
                         p.baselineWarned(), p.baselineAlarms(), PropertySection.median(p.baselineLead()));
             }
             t.print(out);
-            out.println("baseline (deadlines): warn once an obligation is pending longer than every training "
-                    + "obligation of the fold (the elapsed-time rule, chosen by the same cross-validation)");
+            out.println("baseline, on the same runs: a bound's raw-value rule (warn below the lowest value a safe "
+                    + "training run of the fold read, above the highest for a ceiling); a deadline's elapsed-time rule "
+                    + "(warn once an obligation is pending longer than every training obligation of the fold)");
             PropertyForecastTables.print(out, others);
         }
         out.println();
