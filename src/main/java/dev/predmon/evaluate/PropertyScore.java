@@ -16,9 +16,10 @@ import java.util.Set;
  * the matching; a property without either (an absence, a precedence) is counted so its violations are seen. How good
  * each property's forecast was is {@link Reliability}'s score of its forecasts ({@link PropertyForecasts}).
  *
- * <p>Beside them, the elapsed-time baseline, chosen by the same cross-validation: warn as soon as an obligation has
- * been pending longer than every training obligation of the fold's models. It is to a deadline what the raw-value
- * baseline is to a bound: what the learned durations add over "later than ever seen".
+ * <p>Beside them, the property's baseline on the same runs, chosen by the same cross-validation: a deadline's
+ * elapsed-time rule (warn as soon as an obligation has been pending longer than every training obligation of the
+ * fold's models: what the learned durations add over "later than ever seen"), a bound's raw-value rule (warn below
+ * the lowest value a safe training run of the fold read, above the highest for a ceiling).
  *
  * @param property        its id
  * @param runs            runs judged: those with evidence for it (a run in which nothing it speaks of occurred is
@@ -27,9 +28,9 @@ import java.util.Set;
  * @param warned          of those, runs warned about it before the violation
  * @param falseAlarms     runs that kept it but were warned about it
  * @param lead            lead of the warned violations, in the runs' unit
- * @param baselineWarned  violating runs the elapsed-time baseline warned before the violation
- * @param baselineAlarms  runs that kept it but the elapsed-time baseline warned
- * @param baselineLead    the elapsed-time baseline's lead
+ * @param baselineWarned  violating runs the baseline warned before the violation
+ * @param baselineAlarms  runs that kept it but the baseline warned
+ * @param baselineLead    the baseline's lead
  * @param forecast        how good its forecast was ({@link Reliability}: Brier score against the base rate,
  *                        calibration error, reliability table), or null when it has no forecast with a probability
  *                        on these runs

@@ -69,10 +69,10 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * @param warning   the time of its first warning (a deadline forecast, or the match rule's for a faulty scenario
      *                  that violates it), or null
      * @param violation the time of its violation, or null
-     * @param beyond    when its baseline first warned: for a deadline, when an obligation of it was first pending
-     *                  longer than every training obligation (the elapsed-time rule); for an absence or a precedence,
-     *                  the run's start where the training runs violated it at even odds or more (always saying the
-     *                  base rate); or null
+     * @param beyond    when its baseline warned, or null: a deadline's elapsed-time rule (an obligation first pending
+     *                  longer than every training obligation), a bound's raw-value rule (as the safety property's,
+     *                  {@link Replay.Approach#belowFloor}), an absence's or a precedence's base rate (the run's start
+     *                  where the training runs violated it at even odds or more)
      * @param forecasts what its forecast said before its violation (or the run's end), each forecast with its
      *                  outcome, and the base rate of the models that judged the run; null when it has no forecast
      * @param scope     what each forecast and its outcome are about: {@link #OBLIGATION} (a deadline forecast:

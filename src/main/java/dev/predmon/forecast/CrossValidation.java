@@ -12,15 +12,20 @@ import java.util.Locale;
  * calibrated scale ({@link ThresholdChoice}), one of the property's <em>variants</em> of its clause that warns
  * whatever the probability (a bound's: beyond the safe training runs and below their lowest value; a deadline's: past
  * every training obligation from the same input, at once or with half of the margin left), and any of its
- * <em>optional clauses</em> (a bound's: the thesis's matching). Each variant and each set of optional clauses is
- * tried with the threshold chosen for it; the fewest wrong calls win, then the longest median lead, then the fewest
- * optional clauses and the earliest variant: a clause is kept only where it does better on the cases than the rule
- * without it (it earns its place).
+ * <em>optional clauses</em> (a bound's: the thesis's matching). Rules are compared by their wrong calls (a false alarm
+ * and a missed violation cost the same), then by the violations they warn ahead (at the same cost, the rule that warns
+ * more: a missed violation cannot be taken back), then by their median lead. Each variant and each set of optional
+ * clauses is tried with the threshold chosen for it; the best set wins, the fewest optional clauses on a tie (a clause
+ * earns its place), and the earliest variant that does as well as the baseline.
  *
  * <p>The learned rule is scored out of fold: each fold is judged by the rule learned from the other folds only. Its
  * <em>baseline</em> (a one-line rule that needs no machine: the raw value against the lowest safe training reading,
- * the time pending against every training obligation) is scored on the same cases. The learned rule is chosen only
- * where it does at least as well: no more wrong calls, and with as many, no shorter median lead. Else the baseline is.
+ * the time pending against every training obligation) is scored on the same cases. The learned rule is chosen where
+ * it is at least as good as the baseline: it warns at least as many violations ahead, and where it warns no more of
+ * them, it raises no more false alarms and its median lead is no shorter (the baseline's recall, at the baseline's
+ * false alarms). Else the baseline alone warns. Where the learned rule warns more violations, the false alarms that
+ * come with them are those its threshold was chosen to trade for them (never below even odds), and both scorecards
+ * are printed side by side.
  */
 public final class CrossValidation {
 
@@ -143,24 +148,51 @@ public final class CrossValidation {
         return new Choice(rule, baseline, learnedCard);
     }
 
-    /** Whether {@code learned} did worse than {@code base}: more wrong calls, or as many and a shorter lead. */
+    /**
+     * Whether {@code learned} did worse than its baseline {@code base} on the same cases: fewer violations warned
+     * ahead; or as many and more false alarms; or as many of both and a shorter median lead. Where the models add no
+     * warned violation, the rule must add no false alarm and give away no lead.
+     */
     static boolean worse(Tally learned, Tally base) {
-        int a = learned.errors();
-        int b = base.errors();
-        if (a != b) {
-            return a > b;
+        if (learned.warned != base.warned) {
+            return learned.warned < base.warned;
         }
-        double la = Scorecard.median(learned.leads);
-        double lb = Scorecard.median(base.leads);
-        return !Double.isNaN(lb) && (Double.isNaN(la) || la < lb);
+        if (learned.alarms != base.alarms) {
+            return learned.alarms > base.alarms;
+        }
+        return compareLeads(learned, base) < 0;
     }
 
     /**
-     * The rule {@code cases} learn. Each variant is tried with every set of optional clauses, the best set kept (fewer
-     * wrong calls, then a longer lead, then fewer clauses: a clause earns its place). Of the variants, the earliest one
-     * that makes no more wrong calls on the cases than the baseline is kept: a later warning (a wider margin) is bought
-     * with the lead, which cases without a violation cannot measure, so it must be needed to do as well as the
-     * one-line rule. When no variant does as well, the one with the fewest wrong calls (then the longest lead).
+     * The order of rules on the same cases, positive when {@code a} is better: fewer wrong calls, then more violations
+     * warned ahead, then a longer median lead (a rule with a lead before one without); 0 when they tie on all three.
+     */
+    static int compare(Tally a, Tally b) {
+        if (a.errors() != b.errors()) {
+            return a.errors() < b.errors() ? 1 : -1;
+        }
+        if (a.warned != b.warned) {
+            return a.warned > b.warned ? 1 : -1;
+        }
+        return compareLeads(a, b);
+    }
+
+    /** Positive when {@code a}'s median lead is the longer (a rule with a lead before one without), 0 on a tie. */
+    private static int compareLeads(Tally a, Tally b) {
+        double la = Scorecard.median(a.leads);
+        double lb = Scorecard.median(b.leads);
+        if (Double.isNaN(la) || Double.isNaN(lb)) {
+            return Double.isNaN(la) == Double.isNaN(lb) ? 0 : Double.isNaN(la) ? -1 : 1;
+        }
+        return Double.compare(la, lb);
+    }
+
+    /**
+     * The rule {@code cases} learn. Each variant is tried with every set of optional clauses, the best set kept (by
+     * {@link #compare}, then fewer clauses: a clause earns its place). Of the variants, the earliest one that makes no
+     * more wrong calls on the cases than the baseline is kept: a later warning (a wider margin) is bought with the
+     * lead, which cases without a violation cannot measure, so it must be needed to do as well as the one-line rule.
+     * When no variant does as well, the best by {@link #compare}.
      */
     static Rule fit(List<Case> cases, Space space) {
         Calibration calibration = Calibration.fit(cases.stream()
@@ -169,8 +201,7 @@ public final class CrossValidation {
         cases.forEach(c -> baseline.add(c, c.baselineAt(), null));
         Rule chosen = null;
         Tally chosenTally = null;
-        int variants = Math.max(1, space.variants());
-        for (int v = 0; v < variants; v++) {
+        for (int v = 0; v < Math.max(1, space.variants()); v++) {
             Rule best = null;
             Tally bestTally = null;
             int bestKept = 0;
@@ -183,7 +214,8 @@ public final class CrossValidation {
                 Tally t = new Tally();
                 cases.forEach(x -> t.add(x, r.warnedAt(x), r.calibration()));
                 int n = Integer.bitCount(mask);
-                if (best == null || better(t, n, bestTally, bestKept)) {
+                int order = best == null ? 1 : compare(t, bestTally);
+                if (order > 0 || (order == 0 && n < bestKept)) {
                     best = r;
                     bestTally = t;
                     bestKept = n;
@@ -192,7 +224,7 @@ public final class CrossValidation {
             if (bestTally.errors() <= baseline.errors()) {
                 return best; // the earliest variant that does as well as the baseline
             }
-            if (chosen == null || better(bestTally, 0, chosenTally, 0)) {
+            if (chosen == null || compare(bestTally, chosenTally) > 0) {
                 chosen = best;
                 chosenTally = bestTally;
             }
@@ -210,22 +242,6 @@ public final class CrossValidation {
                 ? new Rule(calibration, c.threshold(), true, variant, kept,
                 String.format(Locale.ROOT, "%.2f %s", c.threshold(), c.note()))
                 : new Rule(Calibration.IDENTITY, c.threshold(), false, variant, kept, c.note());
-    }
-
-    /** Fewer wrong calls, then a longer median lead, then fewer optional clauses (earlier variants come first). */
-    private static boolean better(Tally t, int kept, Tally best, int bestKept) {
-        if (t.errors() != best.errors()) {
-            return t.errors() < best.errors();
-        }
-        double a = Scorecard.median(t.leads);
-        double b = Scorecard.median(best.leads);
-        if (!Double.isNaN(a) && (Double.isNaN(b) || a > b)) {
-            return true;
-        }
-        if (!Double.isNaN(b) && (Double.isNaN(a) || a < b)) {
-            return false;
-        }
-        return kept < bestKept;
     }
 
     private static boolean before(double at, Case c) {

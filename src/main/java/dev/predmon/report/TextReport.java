@@ -61,10 +61,11 @@ public final class TextReport {
                         p.baselineWarned(), p.baselineAlarms(), PropertySection.median(p.baselineLead()));
             }
             t.print(out);
-            out.println("baseline (deadlines): warn once an obligation is pending longer than every training "
-                    + "obligation of the fold (the elapsed-time rule, chosen by the same cross-validation); (absences "
-                    + "and precedences): always say the base rate, which warns every run where the fold's training "
-                    + "runs violated the property at even odds or more, else none");
+            out.println("baseline, on the same runs: a bound's raw-value rule (warn below the lowest value a safe "
+                    + "training run of the fold read, above the highest for a ceiling); a deadline's elapsed-time rule "
+                    + "(warn once an obligation is pending longer than every training obligation of the fold); an absence's or a precedence's "
+                    + "base rate (warn every run where the fold's training runs violated it at even odds or more, "
+                    + "else none)");
             PropertyForecastTables.print(out, others);
         }
         out.println();
