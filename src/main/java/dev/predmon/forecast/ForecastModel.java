@@ -207,18 +207,18 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     }
 
     /**
-     * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run is beyond what
-     * the training runs that held did (it is novel, or {@code beyondNominal}: no nominal machine matches it) and its
-     * property is below the lowest value those runs went to ({@link Lows#safeFloor}). The threshold was chosen on
-     * runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so without the
-     * second clause the rule would be blind exactly where the matching is.
+     * Whether the forecast rule warns on {@code f}: its property is below the lowest value the training runs that held
+     * went to ({@link Lows#safeFloor}), or the run does what the models know and its probability reaches the
+     * threshold. The first is the raw-value baseline, which every rule keeps: a run is warned at least where and when
+     * the one-line rule warns it. Once the run did something no learned machine does ({@link Forecast#novel}), no
+     * model fits it and the rule falls back to that baseline alone: the threshold was chosen on forecasts of runs the
+     * models knew, and a forecast resting on a re-synchronised suffix or on the value alone is no such forecast. Under
+     * {@link Clauses#baseline} the baseline alone throughout. {@code beyondNominal} (no nominal machine matches the
+     * run any more) adds nothing to the floor: such a run is warned by the same floor.
      */
     public boolean warns(Forecast f, boolean beyondNominal) {
-        if (clauses.baseline()) {
-            return f.value() != null && belowSafeFloor(f.value());
-        }
-        return f.probability() >= threshold
-                || ((f.novel() || beyondNominal) && f.value() != null && belowSafeFloor(f.value()));
+        boolean below = f.value() != null && belowSafeFloor(f.value());
+        return below || (!clauses.baseline() && !f.novel() && f.probability() >= threshold);
     }
 
     /** Whether the thesis's matching warns too, under the forecast rule ({@link Clauses#matching}). */

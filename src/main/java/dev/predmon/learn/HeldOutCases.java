@@ -52,8 +52,18 @@ final class HeldOutCases {
                 stretch = Double.NaN;
             }
         }
-        return new CrossValidation.Case(fold, h.violated(), h.violationTime(), h.probabilities(), h.times(),
-                List.of(novelty), List.of(h.matchingAt()), h.violated() ? stretch : first, baseRate);
+        double baseline = h.violated() ? stretch : first;
+        List<Double> ps = new ArrayList<>();
+        List<Double> ts = new ArrayList<>();
+        for (int i = 0; i < h.probabilities().size(); i++) {
+            if (i >= h.novel().size() || !h.novel().get(i)) { // the threshold speaks only where a model fits
+                ps.add(h.probabilities().get(i));
+                ts.add(h.times().get(i));
+            }
+        }
+        double clause = Double.isNaN(novelty) ? baseline : Double.isNaN(baseline) ? novelty : Math.min(novelty, baseline);
+        return new CrossValidation.Case(fold, h.violated(), h.violationTime(), ps, ts, List.of(clause),
+                List.of(h.matchingAt()), baseline, baseRate);
     }
 
     /**

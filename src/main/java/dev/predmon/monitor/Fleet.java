@@ -51,6 +51,7 @@ public final class Fleet implements AutoCloseable {
     private OpenFiles openFiles = new OpenFiles(OpenFiles.defaultBudget());
     /** While following: told of each log added. */
     private Wakeups wakeups;
+    private DeletedLogs deleted = new DeletedLogs(DeletedLogs.KEPT, DeletedLogs.EVERY);
 
     /**
      * @param tolerance discrepancies a model may accumulate and still match (0: exact matching)
@@ -75,6 +76,11 @@ public final class Fleet implements AutoCloseable {
         settings = new Settings(settings.models(), settings.abstraction(), settings.tolerance(), settings.confirm(),
                 settings.rule(), release);
         openFiles = new OpenFiles(budget);
+    }
+
+    /** For tests: a deleted log is forgotten {@code kept} after it is found gone, looked for every {@code every}. */
+    void forgetDeleted(Duration kept, Duration every) {
+        deleted = new DeletedLogs(kept, every);
     }
 
     /** How many files the fleet's logs hold open now. */
@@ -215,6 +221,7 @@ public final class Fleet implements AutoCloseable {
             long nextCheck = now + RESCAN_NANOS;
             long nextSafety = now + safetyNanos;
             long nextPulse = now + PULSE_NANOS;
+            long nextForget = now + deleted.everyNanos();
             long pause = listener.beat();
             long nextBeat = now + pause;
             while (!Thread.currentThread().isInterrupted()) {
@@ -234,6 +241,10 @@ public final class Fleet implements AutoCloseable {
                     rescan(sources);
                     lastScan = now;
                 }
+                if (growing && now - nextForget >= 0) {
+                    forget(sources, w);
+                    nextForget = now + deleted.everyNanos();
+                }
                 if (now - nextCheck >= 0) {
                     w.recheck();
                     nextCheck = now + (w.allWatched() ? safetyNanos : RESCAN_NANOS);
@@ -249,7 +260,8 @@ public final class Fleet implements AutoCloseable {
                     until = nextBeat;
                 }
                 if (growing) {
-                    until = Math.min(until, lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
+                    until = Math.min(Math.min(until, nextForget),
+                            lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
                 }
                 for (WatchedLog log : w.due(until - System.nanoTime())) {
                     poll(log);
@@ -274,6 +286,21 @@ public final class Fleet implements AutoCloseable {
         } catch (IOException e) {
             // A directory that went away or cannot be read while it was walked: the logs watched so far go on.
             listener.rescanFailed(e);
+        }
+    }
+
+    /** Forgets the logs found under a directory or glob that were deleted long enough ago ({@link DeletedLogs}). */
+    private void forget(LogSources sources, Wakeups w) {
+        for (WatchedLog log : deleted.due(logs.values(), l -> sources.named(l.path()), System.nanoTime())) {
+            logs.remove(log.path().toAbsolutePath().normalize());
+            w.remove(log);
+            openFiles.closed(log);
+            try {
+                log.watcher().close();
+            } catch (IOException e) {
+                listener.notice(log.name() + ": closing: " + DirectoryWatch.why(e));
+            }
+            listener.forgotten(log);
         }
     }
 

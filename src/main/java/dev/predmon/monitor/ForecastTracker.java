@@ -70,7 +70,7 @@ final class ForecastTracker {
         String why = forecaster.stats().clauses().baseline()
                 ? "with the value " + (ceiling ? "above the highest" : "below the lowest") + " any training run that"
                 + " held went to (the raw-value rule, which did better than the forecast on the held-out folds)"
-                : f.probability() >= threshold()
+                : f.probability() >= threshold() && !f.novel()
                 ? REACHES + ForecastWords.fixed(threshold(), 2)
                 : "beyond what the training runs that held did, with the value " + (ceiling ? "above the highest"
                 : "below the lowest") + " they went to";
@@ -121,7 +121,7 @@ final class ForecastTracker {
 
     /** The clause of the forecast rule that warns on {@code f} (only asked when {@link #warns} does). */
     MonitorEvent.Clause clause(Forecast f) {
-        return f.probability() >= threshold() && !forecaster.stats().clauses().baseline()
+        return f.probability() >= threshold() && !f.novel() && !forecaster.stats().clauses().baseline()
                 ? MonitorEvent.Clause.FORECAST : MonitorEvent.Clause.NOVELTY;
     }
 
