@@ -24,10 +24,10 @@ import static dev.predmon.forecast.ForecastFileSections.number;
 import static dev.predmon.forecast.ForecastFileSections.numbers;
 import static dev.predmon.forecast.ForecastFileSections.readDeadlines;
 import static dev.predmon.forecast.ForecastFileSections.readObligations;
-import static dev.predmon.forecast.ScorecardJson.readScorecards;
 import static dev.predmon.forecast.ForecastFileSections.required;
 import static dev.predmon.forecast.ForecastFileSections.writeCalibration;
 import static dev.predmon.forecast.ForecastFileSections.writeObligations;
+import static dev.predmon.forecast.ScorecardJson.readScorecards;
 import static dev.predmon.forecast.ScorecardJson.writeScorecards;
 
 /**
