@@ -2,7 +2,9 @@ package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.BoundModel;
+import dev.predmon.forecast.EventModel;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
@@ -11,7 +13,9 @@ import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.RunId;
 import dev.predmon.pipeline.RunLabel;
+import dev.predmon.property.Absence;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Precedence;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
 import dev.predmon.property.PropertyView;
@@ -151,18 +155,34 @@ public final class Replay {
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
                             scored.stream().map(ReplayedRun.Timed::time).toList()),
-                    others(abstraction, o.properties(), warnings, violations, beyond,
-                            PropertyForecasts.of(r.events(), abstraction, models.forecast(), baseRates))));
+                    others(abstraction, o.properties(), warnings, baseRateWarnings(abstraction, beyond, baseRates,
+                            approach.start(o.run())), violations, PropertyForecasts.of(r.events(), abstraction,
+                            models.forecast(), baseRates), models)));
         }
         return results;
+    }
+
+    /**
+     * {@code beyond} with the base rate's warning of every absence and precedence: at the run's {@code start} where its
+     * training runs violated it at even odds or more ({@link ThresholdChoice#DEFAULT}), never where they did not.
+     */
+    private static Map<String, Double> baseRateWarnings(Abstraction abstraction, Map<String, Double> beyond,
+                                                        Map<String, Double> baseRates, double start) {
+        for (Property p : abstraction.properties()) {
+            Double rate = baseRates.get(p.id());
+            if ((p instanceof Absence || p instanceof Precedence) && rate != null && rate >= ThresholdChoice.DEFAULT) {
+                beyond.putIfAbsent(p.id(), start);
+            }
+        }
+        return beyond;
     }
 
     /** Every property but the forecast's, with its first warning and violation in the run and its forecasts. */
     private static List<RunResult.PropertyResult> others(Abstraction abstraction,
                                                          List<PropertyChecker.PropertyVerdict> verdicts,
-                                                         Map<String, Double> warnings,
-                                                         Map<String, Double> violations, Map<String, Double> beyond,
-                                                         Map<String, PropertyForecasts> forecasts) {
+                                                         Map<String, Double> warnings, Map<String, Double> beyond,
+                                                         Map<String, Double> violations,
+                                                         Map<String, PropertyForecasts> forecasts, ModelSet models) {
         String forecast = abstraction.safety().map(Property::id).orElse(null);
         List<RunResult.PropertyResult> out = new ArrayList<>();
         Map<String, dev.predmon.property.Verdict> verdict = new HashMap<>(); // not evaluate's Verdict
@@ -171,9 +191,10 @@ public final class Replay {
             if (!p.id().equals(forecast)) {
                 PropertyForecasts f = forecasts.get(p.id());
                 dev.predmon.property.Verdict v = verdict.get(p.id());
+                EventModel e = models.forecast() == null ? null : models.forecast().events().get(p.id());
                 out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id()),
                         beyond.get(p.id()), f == null ? null : f.run(), f == null ? null : f.scope(),
-                        v == null ? null : v.id(), v == null ? null : v.describe()));
+                        v == null ? null : v.id(), v == null ? null : v.describe(), e == null ? null : e.why()));
             }
         }
         return out;

@@ -69,6 +69,7 @@ public final class ForecastFile {
                 body(n, b.model());
             });
         }
+        writeEvents(root, m.events());
         try {
             return JSON.writeValueAsString(root) + "\n";
         } catch (JsonProcessingException e) {
@@ -170,6 +171,7 @@ public final class ForecastFile {
         }
         String unit = required(root, "unit").asText();
         ForecastModel m = body(root, format, unit);
+        m = m.withEvents(readEvents(root, format, unit));
         JsonNode bounds = root.get("bounds");
         if (bounds == null) {
             return m;
@@ -191,6 +193,57 @@ public final class ForecastFile {
             }
         }
         return m.withBounds(read);
+    }
+
+    /**
+     * The optional {@code events}: by absence or precedence id, its forecast as a bound's is written, or without one
+     * the counts that say why ({@link EventModel#why}).
+     */
+    private static void writeEvents(ObjectNode root, Map<String, EventModel> events) {
+        if (events.isEmpty()) {
+            return;
+        }
+        ObjectNode all = root.putObject("events");
+        new TreeMap<>(events).forEach((id, e) -> {
+            ObjectNode n = all.putObject(id);
+            if (e.forecasts()) {
+                body(n, e.model());
+            } else {
+                n.put("runs", e.runs());
+                n.put("violating", e.violating());
+                n.put("noForecast", e.why());
+            }
+        });
+    }
+
+    private static Map<String, EventModel> readEvents(JsonNode root, int format, String unit) {
+        JsonNode events = root.get("events");
+        Map<String, EventModel> read = new TreeMap<>();
+        if (events == null) {
+            return read;
+        }
+        if (!events.isObject()) {
+            throw new IllegalArgumentException("'events': expected an object");
+        }
+        for (Iterator<Map.Entry<String, JsonNode>> it = events.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> e = it.next();
+            String at = "events/" + e.getKey();
+            try {
+                JsonNode n = e.getValue();
+                if (!n.isObject()) {
+                    throw new IllegalArgumentException("expected an object");
+                }
+                if (n.has("states")) {
+                    ForecastModel m = body(n, format, unit);
+                    read.put(e.getKey(), new EventModel(m.runs(), m.violating(), m));
+                } else {
+                    read.put(e.getKey(), new EventModel(count(n, "runs", null), count(n, "violating", null), null));
+                }
+            } catch (IllegalArgumentException x) {
+                throw new IllegalArgumentException("'" + at + "': " + x.getMessage(), x);
+            }
+        }
+        return read;
     }
 
     /** The model {@link #body(ObjectNode, ForecastModel)} wrote into {@code root}. */

@@ -6,6 +6,7 @@ import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.BoundRuns;
 import dev.predmon.forecast.Clauses;
 import dev.predmon.forecast.CrossValidation;
+import dev.predmon.forecast.EventModel;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.PropertyParts;
 import dev.predmon.forecast.Scorecard;
@@ -91,13 +92,14 @@ public final class ForecastTraining {
             boundStats.put(b.id(), new BoundModel(side, StatsLearner.learn(machines, BoundRuns.view(b, side, runs),
                     unit, BoundModel.limit(b, side))));
         }
+        Map<String, EventModel> events = EventTraining.train(machines, abstraction, runs, unit, heldOut);
         if (heldOut.folds() == 0) {
             String note = "default " + ThresholdChoice.DEFAULT + ": too few logs to cross-validate";
             Map<String, BoundModel> bounds = new TreeMap<>();
             boundStats.forEach((id, b) -> bounds.put(id, new BoundModel(b.side(),
                     b.model().withThreshold(ThresholdChoice.DEFAULT, note, false))));
             return PropertyParts.covering(stats.withThreshold(ThresholdChoice.DEFAULT, note, false)
-                    .withBounds(bounds), abstraction);
+                    .withBounds(bounds).withEvents(events), abstraction);
         }
         List<CrossValidation.Case> judged = new ArrayList<>();
         Map<String, List<CrossValidation.Case>> boundJudged = new TreeMap<>();
@@ -120,7 +122,7 @@ public final class ForecastTraining {
                     boundJudged.get(b.id()), new CrossValidation.Space(1, 0, Scorecard.RUNS))));
         }
         return PropertyParts.covering(chosen(stats, property, heldOut.folds(), unit, judged,
-                new CrossValidation.Space(1, 1, Scorecard.RUNS)).withBounds(bounds), abstraction);
+                new CrossValidation.Space(1, 1, Scorecard.RUNS)).withBounds(bounds).withEvents(events), abstraction);
     }
 
     /**

@@ -3,6 +3,7 @@ package dev.predmon.learn;
 import dev.predmon.forecast.CrossValidation;
 import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.Survival;
+import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.replay.ReplayedRun;
 
 import java.util.ArrayList;
@@ -63,6 +64,18 @@ final class HeldOutCases {
         double clause = Double.isNaN(novelty) ? baseline : Double.isNaN(baseline) ? novelty : Math.min(novelty, baseline);
         return new CrossValidation.Case(fold, h.violated(), h.violationTime(), ps, ts, List.of(clause),
                 List.of(h.matchingAt()), baseline, baseRate);
+    }
+
+    /**
+     * Held-out run {@code h} of an absence or a precedence, in a fold whose training runs violated it at the rate
+     * {@code baseRate}. It has no variant and no optional clause: its forecast's probability alone warns. Its baseline,
+     * always saying the base rate, warns it at its first forecast where that rate is at even odds or more, and never
+     * where it is not.
+     */
+    static CrossValidation.Case event(int fold, HeldOutRun h, double baseRate) {
+        double baseline = baseRate >= ThresholdChoice.DEFAULT && !h.times().isEmpty() ? h.times().get(0) : Double.NaN;
+        return new CrossValidation.Case(fold, h.violated(), h.violationTime(), h.probabilities(), h.times(),
+                List.of(), List.of(), baseline, baseRate);
     }
 
     /**

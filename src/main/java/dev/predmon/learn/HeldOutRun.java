@@ -67,7 +67,8 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
      * {@code models} saw them.
      *
      * @param safety the runs as the forecast's property saw them
-     * @param bounds by bound property id, the runs as it saw them: its own violation, forecasts and warning
+     * @param bounds by id, every bound property's, absence's and precedence's with a forecast of its own, the runs
+     *               as it saw them: its own violation, forecasts and warning
      */
     public record Judged(List<HeldOutRun> safety, Map<String, List<HeldOutRun>> bounds) {
     }
@@ -82,7 +83,13 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
         ReplayedLog replayed = LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run, judged) -> { });
         String safety = abstraction.safety().map(b -> b.id()).orElse(null);
         Map<String, List<HeldOutRun>> bounds = new TreeMap<>();
-        for (String id : models.forecast().bounds().keySet()) {
+        List<String> own = new ArrayList<>(models.forecast().bounds().keySet());
+        models.forecast().events().forEach((id, e) -> {
+            if (e.forecasts()) {
+                own.add(id);
+            }
+        });
+        for (String id : own) {
             List<HeldOutRun> runs = new ArrayList<>();
             for (ReplayedRun r : replayed.runs()) {
                 if (!r.pairs().isEmpty() && label.selects(r.violated())) {

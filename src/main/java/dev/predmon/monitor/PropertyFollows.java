@@ -27,7 +27,8 @@ import java.util.Map;
  * all on every record, and one {@link PropertyFollow} per property, in the abstraction's order, turns its judgement
  * into the property's events. Which follower a property gets depends only on its kind and on what the models learned
  * of it: a bound its value forecast ({@link BoundFollow}), a bounded response its deadline forecast
- * ({@link DeadlineFollow}), any other a check ({@link CheckedFollow}).
+ * ({@link DeadlineFollow}), an absence or a precedence its event forecast ({@link EventFollow}), any other a check
+ * ({@link CheckedFollow}).
  *
  * <p>Beside the properties' own forecasts, the thesis's matching warns once a run when every nominal model is
  * eliminated while a faulty one still matches: of the property the likeliest faulty scenario's {@code scenario.json}
@@ -77,6 +78,8 @@ final class PropertyFollows {
                 Survival s = forecast.obligations().get(r.id());
                 began = began != null || abstraction == null ? began : new TriggerInputs(abstraction, properties);
                 follows[i] = new DeadlineFollow(i, r, s, forecast.deadlineRule(r.id()), began, c);
+            } else if (forecast != null && forecast.events().get(p.id()) != null) {
+                follows[i] = new EventFollow(i, p, forecast.events().get(p.id()), models.machines(), c);
             } else {
                 follows[i] = new CheckedFollow(i, p, c);
             }
