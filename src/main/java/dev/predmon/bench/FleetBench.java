@@ -52,6 +52,7 @@ final class FleetBench {
      * @param idleCore      share of one core (0..1) the process spends following logs that do not grow
      * @param idleLoopCore  the same, of the following thread alone
      * @param paceRate      records per second appended to each log at robot pace
+     * @param paceRead      records per second read per log at robot pace (less when the bench's writer lagged)
      * @param paceCore      share of one core at robot pace
      * @param paceNanos     CPU ns per record at robot pace
      * @param millis        append-to-warning latencies, sorted
@@ -59,7 +60,7 @@ final class FleetBench {
     // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
     @SuppressWarnings("ArrayRecordComponent")
     record Result(int logs, double catchUpNanos, double idleCore, double idleLoopCore, double paceRate,
-                  double paceCore, double paceNanos, double[] millis) {
+                  double paceRead, double paceCore, double paceNanos, double[] millis) {
         double percentile(double q) {
             return millis[Math.min(millis.length - 1, (int) Math.ceil(q * millis.length) - 1)];
         }
@@ -159,7 +160,7 @@ final class FleetBench {
         }
         Arrays.sort(millis);
         RobotPace.Load load = pace.measure(logs, full ? phaseNanos : phaseNanos / 5);
-        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load.core(),
+        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load.readRate(), load.core(),
                 load.nanosPerRecord(), millis);
     }
 

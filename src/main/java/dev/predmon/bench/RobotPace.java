@@ -31,8 +31,9 @@ final class RobotPace {
     /**
      * @param core           share of one core (0..1) the process spent, the writer left out
      * @param nanosPerRecord CPU ns per record read
+     * @param readRate       records per second read per log: below the robot's pace when the writer fell behind
      */
-    record Load(double core, double nanosPerRecord) {
+    record Load(double core, double nanosPerRecord, double readRate) {
     }
 
     private final FleetSetup setup;
@@ -87,7 +88,7 @@ final class RobotPace {
                 wall = System.nanoTime() - start;
             }
             long records = fleet.logs().stream().mapToLong(l -> l.monitor().pipeline().records()).sum();
-            return new Load(used / wall, (double) used / Math.max(1, records));
+            return new Load(used / wall, (double) used / Math.max(1, records), records / (wall / 1e9) / logs);
         }
     }
 

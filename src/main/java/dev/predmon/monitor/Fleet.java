@@ -106,7 +106,7 @@ public final class Fleet implements AutoCloseable {
     public boolean poll() throws IOException {
         boolean any = false;
         for (WatchedLog log : logs.values()) {
-            any |= poll(log);
+            any |= poll(log, false);
         }
         return any;
     }
@@ -116,11 +116,11 @@ public final class Fleet implements AutoCloseable {
      * watched on; it never stops the others. When the fleet holds more files than it may, the logs idle longest
      * are closed, to be reopened when they change.
      */
-    private boolean poll(WatchedLog log) throws ClosedByInterruptException {
+    private boolean poll(WatchedLog log, boolean onlyWritten) throws ClosedByInterruptException {
         boolean grew = false;
         String trouble = null;
         try {
-            grew = log.watcher().poll();
+            grew = onlyWritten ? log.watcher().pollWritten() : log.watcher().poll();
         } catch (ClosedByInterruptException stop) {
             throw stop;
         } catch (IOException e) {
@@ -243,7 +243,7 @@ public final class Fleet implements AutoCloseable {
                     until = Math.min(until, lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
                 }
                 for (WatchedLog log : w.due(until - System.nanoTime())) {
-                    poll(log);
+                    poll(log, w.onlyWritten(log));
                     w.polled(log);
                 }
             }
