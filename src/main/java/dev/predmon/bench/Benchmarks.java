@@ -23,7 +23,7 @@ import java.util.function.Consumer;
 public final class Benchmarks {
 
     /** The benchmarks, as named on the command line. */
-    public enum Kind { BATCH, LATENCY, CPU, MEMORY, LEARN, FLEET }
+    public enum Kind { BATCH, LATENCY, CPU, MEMORY, LEARN, FLEET, BAG }
 
     /**
      * Sizes.
@@ -41,10 +41,12 @@ public final class Benchmarks {
      * @param fleetSeconds    how long the fleet benchmark runs at robot pace, and idle, per fleet size
      * @param fleetPolling    the fleet polls every log ({@code watch --polling}) instead of waiting for notifications
      * @param fleetIdleLogs   logs of the idle fleet whose cost is measured apart (0: none)
+     * @param bagMessages     messages in the ROS 2 bag of the bag benchmark
      */
     public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
                           long cpuRecords, List<Integer> learnRuns, int modelRuns, Path tempDir, List<Integer> fleetLogs,
-                          int fleetSamples, double fleetSeconds, boolean fleetPolling, int fleetIdleLogs) {
+                          int fleetSamples, double fleetSeconds, boolean fleetPolling, int fleetIdleLogs,
+                          long bagMessages) {
     }
 
     private Benchmarks() {
@@ -55,7 +57,7 @@ public final class Benchmarks {
         Abstraction abstraction = AbstractionFiles.defaults();
         ModelSet models = null;
         List<LearnedScenario> learned = null;
-        if (kinds.stream().anyMatch(k -> k != Kind.LEARN)) {
+        if (kinds.stream().anyMatch(k -> k != Kind.LEARN && k != Kind.BAG)) {
             learned = BenchData.learned(abstraction, o.modelRuns());
             models = BenchData.models(abstraction, learned, o.modelRuns());
             out.accept(f("models: %d machines learned from %d runs per scenario, with their forecast (rule %s)",
@@ -162,6 +164,24 @@ public final class Benchmarks {
                                 r.baseHeapMb(), r.kbPerLog(), r.descriptors(), r.baseFds(), r.maxFds(),
                                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage()));
                     }
+                }
+                case BAG -> {
+                    BagBench.Result r = BagBench.run(o.bagMessages(), 3, o.tempDir());
+                    double s = BatchBench.median(r.seconds());
+                    double y = BatchBench.median(r.yarpSeconds());
+                    out.accept(f("bag: read+decode of an MCAP file in zstd chunks, %d messages (battery, action "
+                                    + "status, rosout), %.1f MB: median %.3f s over %d passes, %.0f messages/s, %.1f "
+                                    + "MB/s", r.messages(), r.bytes() / 1e6, s, r.seconds().length, r.messages() / s,
+                            r.bytes() / 1e6 / s));
+                    out.accept(f("bag: beside it, the YARP parser on a log of the same size (%d records): median %.3f "
+                                    + "s, %.0f records/s, %.1f MB/s", r.yarpRecords(), y, r.yarpRecords() / y,
+                            r.bytes() / 1e6 / y));
+                    double p = BatchBench.median(r.pythonSeconds());
+                    out.accept(Double.isNaN(p) ? "bag: Python's mcap could not be run (no virtual environment with "
+                            + "mcap and mcap-ros2-support; .ci/run creates one)"
+                            : f("bag: Python mcap + mcap-ros2-support decoding the same file: median %.3f s, %.0f "
+                                    + "messages/s, %.1f MB/s (counted %d); predmon is %.1fx faster", p,
+                            r.pythonMessages() / p, r.bytes() / 1e6 / p, r.pythonMessages(), p / s));
                 }
                 case LEARN -> {
                     for (int n : o.learnRuns()) {

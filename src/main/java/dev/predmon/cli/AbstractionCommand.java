@@ -11,11 +11,15 @@ import picocli.CommandLine.Spec;
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 
-/** {@code predmon abstraction list|show NAME}: the built-in abstractions, to use by name or to start one's own from. */
+/**
+ * {@code predmon abstraction list|show NAME|check FILE LOGS...}: the built-in abstractions, to use by name or to start
+ * one's own from, and a check of a file's properties against logs.
+ */
 @Command(name = "abstraction", mixinStandardHelpOptions = true,
         description = "The built-in abstractions: 'list' names them, 'show NAME' prints one as JSON (save it, edit it, "
-                + "and pass the file to --abstraction).",
-        subcommands = {AbstractionCommand.List.class, AbstractionCommand.Show.class})
+                + "and pass the file to --abstraction); 'check FILE LOGS...' names every name of its properties that "
+                + "no record of the logs holds.",
+        subcommands = {AbstractionCommand.List.class, AbstractionCommand.Show.class, AbstractionCheckCommand.class})
 final class AbstractionCommand implements Runnable {
 
     @Spec

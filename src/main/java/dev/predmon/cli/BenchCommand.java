@@ -19,7 +19,8 @@ import java.util.concurrent.Callable;
         description = {"Measure predmon on this machine with simulated logs: batch throughput (vs grep), "
                 + "append-to-warning latency of watch, a following watch's CPU per record, its CPU per record and "
                 + "heap as the log grows, "
-                + "learning time and peak heap, and a fleet of logs watched in one process against one log.",
+                + "learning time and peak heap, a fleet of logs watched in one process against one log, and the reading "
+                + "of a ROS 2 bag (MCAP) beside the YARP parser and Python's mcap.",
                 "For the heap figure run: java -Xmx64m -jar predmon.jar bench --only memory"})
 final class BenchCommand implements Callable<Integer> {
 
@@ -85,6 +86,10 @@ final class BenchCommand implements Callable<Integer> {
                     + "(0: none; default: ${DEFAULT-VALUE}).")
     int fleetIdleLogs;
 
+    @Option(names = "--bag-messages", defaultValue = "300000",
+            description = "Messages in the ROS 2 bag (MCAP, zstd) the bag benchmark reads (default: ${DEFAULT-VALUE}).")
+    long bagMessages;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -92,7 +97,7 @@ final class BenchCommand implements Callable<Integer> {
                 : only.stream().map(this::kind).toList();
         Path dir = tmp != null ? tmp : Path.of(System.getProperty("java.io.tmpdir"));
         Benchmarks.run(kinds, new Benchmarks.Options(batchMb, latencyRuns, pollMicros, memoryRecords, cpuRecords, learnRuns,
-                modelRuns, dir, fleetLogs, fleetSamples, fleetSeconds, fleetPolling, fleetIdleLogs), line -> {
+                modelRuns, dir, fleetLogs, fleetSamples, fleetSeconds, fleetPolling, fleetIdleLogs, bagMessages), line -> {
             out.println(line);
             out.flush();
         });
@@ -104,7 +109,7 @@ final class BenchCommand implements Callable<Integer> {
             return Benchmarks.Kind.valueOf(name.trim().toUpperCase(Locale.ROOT));
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(),
-                    "--only: unknown benchmark '" + name + "' (expected batch, latency, memory, learn or fleet)");
+                    "--only: unknown benchmark '" + name + "' (expected batch, latency, cpu, memory, learn, fleet or bag)");
         }
     }
 }

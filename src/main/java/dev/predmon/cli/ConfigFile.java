@@ -10,6 +10,7 @@ import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.ParameterException;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.nio.ByteBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
@@ -28,7 +29,7 @@ import java.util.regex.Pattern;
  * A command's settings from one file, for a service: one {@code name = value} a line, {@code name} a long option of
  * the command without its dashes, {@code #} starting a comment line. The value is the rest of the line without the
  * blanks around it, taken as it is (no quotes, no escapes, no variables): what the option would get on the command
- * line. A switch takes {@code true} or {@code false}. An option that may be repeated ({@code log}) may be repeated;
+ * line. A value all in quotes is refused, since its quotes would reach the option. A switch takes {@code true} or {@code false}. An option that may be repeated ({@code log}) may be repeated;
  * any other is set once.
  *
  * <p>It is picocli's default-value provider of the command: an option given on the command line wins, and picocli
@@ -89,6 +90,12 @@ final class ConfigFile implements IDefaultValueProvider {
             if (value.isEmpty()) {
                 throw error(spec, file, n, "'" + name + "' has no value");
             }
+            if (quoted(value)) {
+                // taken as it is, the quotes would reach the option: a hook's shell would look for a command named
+                // "echo ..." and fail at the first warning
+                throw error(spec, file, n, "'" + name + "' is quoted: values are taken as they are, quotes included; "
+                        + "write it without the quotes around it");
+            }
             if (option.arity().max() == 0) {
                 checkSwitch(spec, file, n, option, value);
             } else {
@@ -108,10 +115,14 @@ final class ConfigFile implements IDefaultValueProvider {
             if (Files.isDirectory(file)) {
                 throw new BadInputException(file + ": cannot read: is a directory; --config names a settings file");
             }
-            if (Files.size(file) > MAX_BYTES) {
+            byte[] bytes;
+            try (InputStream in = Files.newInputStream(file)) {
+                // at most a byte past the limit: /dev/zero or a FIFO has no size to ask first
+                bytes = in.readNBytes(MAX_BYTES + 1);
+            }
+            if (bytes.length > MAX_BYTES) {
                 throw new BadInputException(file + ": larger than 1 MiB: not a settings file");
             }
-            byte[] bytes = Files.readAllBytes(file);
             String text = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
                     .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes)).toString();
             // a byte-order mark, as some editors write one, is no part of the first name
@@ -123,6 +134,16 @@ final class ConfigFile implements IDefaultValueProvider {
         } catch (BadInputException e) {
             throw unreadable(spec, e);
         }
+    }
+
+    /** Whether {@code value} is all in one pair of quotes, {@code "..."} or {@code '...'}, with none inside. */
+    static boolean quoted(String value) {
+        if (value.length() < 2) {
+            return false;
+        }
+        char q = value.charAt(0);
+        return (q == '"' || q == '\'') && value.charAt(value.length() - 1) == q
+                && value.indexOf(q, 1) == value.length() - 1;
     }
 
     private static ParameterException unreadable(CommandSpec spec, BadInputException e) {

@@ -52,9 +52,10 @@ final class FollowOptions {
             + "forecasts, leads, the page, hooks) is then in seconds, and a deadline of T seconds is T seconds of "
             + "ticks. Logs with time stamps are not affected.")
     void tickSeconds(double seconds) {
-        if (!(seconds > 0) || Double.isInfinite(seconds)) {
-            throw new ParameterException(mixee.commandLine(), "--tick-seconds must be a positive number of seconds, "
-                    + "got " + seconds);
+        if (!(seconds > 0) || seconds > 3600) {
+            // a tick of an hour is already no behaviour tree's; beyond, times overflow to Infinity
+            throw new ParameterException(mixee.commandLine(), "--tick-seconds must be a number of seconds above 0 "
+                    + "and at most 3600, got " + seconds);
         }
         ticks = new TickSeconds(seconds);
     }

@@ -40,12 +40,28 @@ final class HookOptions {
     @Option(names = "--hook-timeout", paramLabel = "S", defaultValue = "10",
             description = "Kill a hook command still running after S seconds (default: ${DEFAULT-VALUE}).")
     void timeout(double seconds) {
-        if (!(seconds > 0) || Double.isInfinite(seconds)) {
+        if (!(seconds > 0) || seconds > 86_400) {
             // a usage error of its own: picocli would name the setter method, not the option
-            throw new ParameterException(mixee.commandLine(), "--hook-timeout must be a positive number of seconds, got "
-                    + seconds);
+            throw new ParameterException(mixee.commandLine(), "--hook-timeout must be a number of seconds above 0 "
+                    + "and at most 86400, got " + seconds);
         }
         timeoutSeconds = seconds;
+    }
+
+    private double holdSeconds = 5;
+
+    @Option(names = "--hook-hold", paramLabel = "S", defaultValue = "5",
+            description = "Run --on-recovered only once the alarm has stayed over for S seconds; a warning or "
+                    + "violation of the same property raised again before then runs no command (the robot's alarm "
+                    + "is still up), unless it is a violation after a warning, so that a reading flapping at the "
+                    + "bound runs a few commands, not three at every crossing. 0 runs every command at once "
+                    + "(default: ${DEFAULT-VALUE}).")
+    void hold(double seconds) {
+        if (!(seconds >= 0) || seconds > 86_400) {
+            throw new ParameterException(mixee.commandLine(), "--hook-hold must be a number of seconds from 0 to "
+                    + "86400, got " + seconds);
+        }
+        holdSeconds = seconds;
     }
 
     /**
@@ -59,8 +75,8 @@ final class HookOptions {
         if (onWarning == null && onViolation == null && onRecovered == null) {
             return null;
         }
-        return new CommandHooks(onWarning, onViolation, onRecovered, Duration.ofMillis(Math.round(timeoutSeconds * 1000)), bound,
-                line -> {
+        return new CommandHooks(onWarning, onViolation, onRecovered, Duration.ofMillis(Math.round(timeoutSeconds * 1000)),
+                Duration.ofMillis(Math.round(holdSeconds * 1000)), bound, line -> {
             err.println("predmon: " + line);
             err.flush();
         }).describing(properties);

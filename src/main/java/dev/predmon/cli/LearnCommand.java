@@ -33,6 +33,11 @@ import java.util.concurrent.Callable;
                         + "<models>/abstraction.json atomically.",
                 "--models must be new, empty or a model directory learn wrote, and apart from --logs: anything "
                         + "else is refused (exit 3) and left untouched.",
+                "Names, one line each on stderr, every name of a property (a command, a port, a protocol, a reply) "
+                        + "that no training log holds, at its key in the abstraction file with the nearest names that "
+                        + "occur: a warning, since such a property reads \"no evidence\" on every run, never \"holds\" "
+                        + "('predmon abstraction check FILE LOGS...' checks the same before learning).",
+                "Prints per property how many training runs violated it and how many gave no evidence for it.",
                 "Ends with the models' scorecard, per property: the violations warned and the false alarms in "
                         + "cross-validation, the median lead, and the Brier score against the base rate's."})
 final class LearnCommand implements Callable<Integer> {
@@ -76,9 +81,13 @@ final class LearnCommand implements Callable<Integer> {
         if (learned.stream().allMatch(l -> l.spec().faulty())) {
             err.println("predmon: note: no scenario is nominal, so 'watch' warns at the first faulty match");
         }
+        String file = abstractionOption.value == null ? abstraction.name() : abstractionOption.value;
+        result.evidence().unseen().forEach(p -> err.println("predmon: warning: " + Terminal.line(file + ": "
+                + p.describe())));
         int machines = learned.stream().mapToInt(l -> l.machines().size()).sum();
         out.println("wrote " + models + ": " + machines + " machine(s) for " + learned.size() + " scenario(s), "
                 + "abstraction '" + abstraction.name() + "'");
+        result.evidence().runs().forEach(r -> out.println(r.line()));
         result.forecast().allScorecards().forEach(c -> c.lines().forEach(out::println));
         out.flush();
         return ExitCodes.OK;

@@ -21,7 +21,8 @@ final class UsageErrors implements IParameterExceptionHandler {
     public int handleParseException(ParameterException ex, String[] args) {
         CommandLine cl = ex.getCommandLine();
         PrintWriter err = cl.getErr();
-        err.println("predmon: " + Terminal.line(ex.getMessage()));
+        String spelt = otherSpelling(cl, args);
+        err.println("predmon: " + Terminal.line(spelt != null ? spelt : ex.getMessage()));
         if (ex.getCause() instanceof BadInputException) { // an input file named by an option cannot be read
             err.flush();
             return ExitCodes.BAD_INPUT;
@@ -30,5 +31,28 @@ final class UsageErrors implements IParameterExceptionHandler {
         err.println("see '" + cl.getCommandSpec().qualifiedName() + " --help'");
         err.flush();
         return cl.getCommandSpec().exitCodeOnInvalidInput();
+    }
+
+    /**
+     * An option the command does not know but spells with or without a final {@code s} ({@code watch --logs}, as
+     * {@code learn} spells it): what to write instead, or null. picocli would say first that {@code --log} is
+     * missing, which hides the slip.
+     */
+    static String otherSpelling(CommandLine cl, String[] args) {
+        for (String arg : args) {
+            if (!arg.startsWith("--")) {
+                continue;
+            }
+            String name = arg.contains("=") ? arg.substring(0, arg.indexOf('=')) : arg;
+            if (cl.getCommandSpec().findOption(name) != null) {
+                continue;
+            }
+            String other = name.endsWith("s") ? name.substring(0, name.length() - 1) : name + "s";
+            if (name.length() > 3 && cl.getCommandSpec().findOption(other) != null) {
+                return "unknown option '" + name + "': '" + cl.getCommandSpec().qualifiedName() + "' spells it '"
+                        + other + "'";
+            }
+        }
+        return null;
     }
 }

@@ -60,11 +60,20 @@ final class WatchCommand implements Callable<Integer> {
     @Option(names = "--eliminations", description = "Also print each model's elimination (--json always does).")
     boolean eliminations;
 
+    private long pollMillis = 2;
+
     @Option(names = "--poll-ms", paramLabel = "MS", defaultValue = "2",
             description = "How often to look for new lines in a log whose changes the operating system does not "
                     + "announce: on a network file system, in a directory that cannot be watched, or every log with "
-                    + "--polling (default: ${DEFAULT-VALUE}).")
-    long pollMillis;
+                    + "--polling; from 1 to 60000 (default: ${DEFAULT-VALUE}).")
+    void pollMillis(long millis) {
+        if (millis < 1 || millis > 60_000) {
+            // 0 or less would look without a pause, a core spent on nothing
+            throw new ParameterException(spec.commandLine(), "--poll-ms must be from 1 to 60000 milliseconds, got "
+                    + millis);
+        }
+        pollMillis = millis;
+    }
 
     @Option(names = "--polling", description = "Look at every log every --poll-ms instead of waiting for the "
             + "operating system's file-change notification (inotify), as for a file system whose notifications "

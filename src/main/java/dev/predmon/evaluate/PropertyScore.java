@@ -19,7 +19,8 @@ import java.util.Map;
  * baseline is to a bound: what the learned durations add over "later than ever seen".
  *
  * @param property        its id
- * @param runs            runs judged
+ * @param runs            runs judged: those with evidence for it (a run in which nothing it speaks of occurred is
+ *                        neither safe nor violating for it, so its warnings are no false alarms either)
  * @param violating       runs that violated it
  * @param warned          of those, runs warned about it before the violation
  * @param falseAlarms     runs that kept it but were warned about it
@@ -31,10 +32,19 @@ import java.util.Map;
  *                        calibration error, reliability table), or null when it has no forecast with a probability
  *                        on these runs
  * @param scope           what its forecasts are about ({@link RunResult.PropertyResult#scope}), null without one
+ * @param noEvidence      runs with no evidence for it ({@link RunResult.PropertyResult#noEvidence}), not judged
  */
 public record PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
                             int baselineWarned, int baselineAlarms, Stats baselineLead, Reliability forecast,
-                            String scope) {
+                            String scope, int noEvidence) {
+
+    /** A score on runs that all had evidence for the property. */
+    public PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
+                         int baselineWarned, int baselineAlarms, Stats baselineLead, Reliability forecast,
+                         String scope) {
+        this(property, runs, violating, warned, falseAlarms, lead, baselineWarned, baselineAlarms, baselineLead,
+                forecast, scope, 0);
+    }
 
     /** A score without a forecast. */
     public PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
@@ -56,9 +66,13 @@ public record PropertyScore(String property, int runs, int violating, int warned
                     forecasts.computeIfAbsent(p.property(), k -> new ArrayList<>()).add(p.forecasts());
                     scopes.putIfAbsent(p.property(), p.scope());
                 }
-                int[] c = counts.computeIfAbsent(p.property(), k -> new int[6]);
+                int[] c = counts.computeIfAbsent(p.property(), k -> new int[7]);
                 List<Double> l = leads.computeIfAbsent(p.property(), k -> new ArrayList<>());
                 List<Double> b = baselineLeads.computeIfAbsent(p.property(), k -> new ArrayList<>());
+                if (p.noEvidence()) {
+                    c[6]++;
+                    continue;
+                }
                 c[0]++;
                 if (p.violation() != null) {
                     c[1]++;
@@ -80,7 +94,7 @@ public record PropertyScore(String property, int runs, int violating, int warned
         counts.forEach((id, c) -> {
             Reliability f = Reliability.of(forecasts.getOrDefault(id, List.of()));
             out.add(new PropertyScore(id, c[0], c[1], c[2], c[3], Stats.of(leads.get(id)), c[4], c[5],
-                    Stats.of(baselineLeads.get(id)), f, f == null ? null : scopes.get(id)));
+                    Stats.of(baselineLeads.get(id)), f, f == null ? null : scopes.get(id), c[6]));
         });
         return out;
     }

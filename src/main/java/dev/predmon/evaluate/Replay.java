@@ -11,6 +11,7 @@ import dev.predmon.pipeline.RunId;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
+import dev.predmon.property.PropertyChecker;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
 import dev.predmon.replay.ReplayedRun;
@@ -126,23 +127,29 @@ public final class Replay {
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
                             scored.stream().map(ReplayedRun.Timed::time).toList()),
-                    others(abstraction, warnings, violations, beyond,
+                    others(abstraction, o.properties(), warnings, violations, beyond,
                             PropertyForecasts.of(r.events(), abstraction, models.forecast(), baseRates))));
         }
         return results;
     }
 
     /** Every property but the forecast's, with its first warning and violation in the run and its forecasts. */
-    private static List<RunResult.PropertyResult> others(Abstraction abstraction, Map<String, Double> warnings,
+    private static List<RunResult.PropertyResult> others(Abstraction abstraction,
+                                                         List<PropertyChecker.PropertyVerdict> verdicts,
+                                                         Map<String, Double> warnings,
                                                          Map<String, Double> violations, Map<String, Double> beyond,
                                                          Map<String, PropertyForecasts> forecasts) {
         String forecast = abstraction.safety().map(Property::id).orElse(null);
         List<RunResult.PropertyResult> out = new ArrayList<>();
+        Map<String, dev.predmon.property.Verdict> verdict = new HashMap<>(); // not evaluate's Verdict
+        verdicts.forEach(pv -> verdict.put(pv.property().id(), pv.verdict()));
         for (Property p : abstraction.properties()) {
             if (!p.id().equals(forecast)) {
                 PropertyForecasts f = forecasts.get(p.id());
+                dev.predmon.property.Verdict v = verdict.get(p.id());
                 out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id()),
-                        beyond.get(p.id()), f == null ? null : f.run(), f == null ? null : f.scope()));
+                        beyond.get(p.id()), f == null ? null : f.run(), f == null ? null : f.scope(),
+                        v == null ? null : v.id(), v == null ? null : v.describe()));
             }
         }
         return out;

@@ -76,9 +76,26 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * @param scope     what each forecast and its outcome are about: {@link #OBLIGATION} (a deadline forecast:
      *                  P(the pending obligation misses its deadline), outcome: that obligation missed it) or
      *                  {@link #RUN} (P(the run violates the property), outcome: it did); null without a forecast
+     * @param verdict   its verdict at the run's end ({@code holds}, {@code pending}, {@code violated} or
+     *                  {@code no-evidence}), or null where not known
+     * @param words     that verdict in words ({@code no evidence (no GoTo/getStatus reply in the run)}), or null
      */
     public record PropertyResult(String property, Double warning, Double violation, Double beyond,
-                                 Reliability.Run forecasts, String scope) {
+                                 Reliability.Run forecasts, String scope, String verdict, String words) {
+
+        /** A property whose verdict at the run's end is not known. */
+        public PropertyResult(String property, Double warning, Double violation, Double beyond,
+                              Reliability.Run forecasts, String scope) {
+            this(property, warning, violation, beyond, forecasts, scope, null, null);
+        }
+
+        /**
+         * Whether nothing the property speaks of occurred in the run: neither a safe run nor a violating one for it
+         * (a misspelt name, a scope that never opened).
+         */
+        public boolean noEvidence() {
+            return "no-evidence".equals(verdict);
+        }
 
         /** A deadline forecast's scope: one obligation. */
         public static final String OBLIGATION = "obligation";

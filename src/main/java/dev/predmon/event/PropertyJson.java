@@ -12,8 +12,8 @@ import java.util.Locale;
 
 /**
  * A property's verdict on a run as JSON: {@code property} its id, {@code name}, {@code kind}, {@code verdict}
- * ({@code holds}, {@code pending} or {@code violated}); a violation's {@code line}, {@code time}, {@code value} (of a
- * bound) and {@code what}; a pending response's trigger {@code line}, {@code since}, {@code deadline} and
+ * ({@code holds}, {@code pending}, {@code violated} or {@code no-evidence}); a violation's {@code line}, {@code time},
+ * {@code value} (of a bound) and {@code what}; for no evidence, what never occurred in {@code what}; a pending response's trigger {@code line}, {@code since}, {@code deadline} and
  * {@code unit} ({@code ticks}, {@code seconds} or {@code occurrences}); for the last run, its latest {@code forecast}
  * (null for the earlier runs).
  */
@@ -45,6 +45,9 @@ public record PropertyJson(String property, String name, String kind, String ver
         if (v instanceof Verdict.Pending p) {
             return new PropertyJson(id, name, kind, v.id(), p.line(), null, null, null, p.since(), p.deadline(),
                     p.unit().key, forecast);
+        }
+        if (v instanceof Verdict.NoEvidence n) {
+            return new PropertyJson(id, name, kind, v.id(), null, null, null, n.why(), null, null, null, forecast);
         }
         return new PropertyJson(id, name, kind, v.id(), null, null, null, null, null, null, null, forecast);
     }

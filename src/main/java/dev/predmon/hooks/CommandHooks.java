@@ -4,19 +4,11 @@ import dev.predmon.event.LogEvent;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.property.Property;
 
-import java.io.IOException;
-import java.io.OutputStream;
-import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.ThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 
 /**
@@ -27,15 +19,20 @@ import java.util.function.Consumer;
  * layer hears of the predicted failure while a recovery action can still help.
  *
  * <p>The monitor is never held up: {@link #event} only queues the command. At most {@value #THREADS} commands run at
- * once, started in event order; at most {@value #QUEUE} wait. A command that fails (exit code not 0, or cannot be
- * started), that outlives the timeout (it is killed, with its children) or that finds the queue full is reported in
- * one line and never retried, so no event runs its command twice. The command's standard output is discarded (it
- * must not mix with {@code --json} on stdout); its standard error is predmon's.
+ * once; each log's commands wait in a queue of their own, at most {@value #PER_LOG} of them, and the logs take turns
+ * ({@link HookQueue}), so one robot's storm never keeps another robot's warning from its command. A recovery runs
+ * its command only once the alarm has stayed over for the hold time ({@link AlarmHold}), so a reading flapping at the
+ * bound runs a handful of commands, not three at every crossing. A command that fails (exit code not 0, or cannot be
+ * started), that outlives the timeout (it is killed, with its process group, {@link HookProcess}) or that finds its
+ * log's queue full is reported in one line and never retried, so no event runs its command twice. The command's
+ * standard output is discarded (it must not mix with {@code --json} on stdout); its standard error is predmon's.
  */
 public final class CommandHooks implements AutoCloseable {
 
     static final int THREADS = 4;
-    static final int QUEUE = 64;
+    static final int PER_LOG = 16;
+    /** The hold time of {@link AlarmHold} unless told otherwise. */
+    public static final Duration HOLD = Duration.ofSeconds(5);
 
     private final String onWarning;
     private final String onViolation;
@@ -43,9 +40,10 @@ public final class CommandHooks implements AutoCloseable {
     private final Duration timeout;
     private final Consumer<String> report;
     private final double bound;
+    private final HookQueue queue = new HookQueue(THREADS, PER_LOG);
+    private final AlarmHold hold;
     /** Every property by id, for the words in the environment. */
     private volatile Map<String, Property> properties = Map.of();
-    private final ThreadPoolExecutor pool;
 
     /**
      * @param onWarning   command for each warning, or null
@@ -71,6 +69,12 @@ public final class CommandHooks implements AutoCloseable {
      */
     public CommandHooks(String onWarning, String onViolation, String onRecovered, Duration timeout, double bound,
                         Consumer<String> report) {
+        this(onWarning, onViolation, onRecovered, timeout, HOLD, bound, report);
+    }
+
+    /** As above, a recovery's command held for {@code hold} (zero: none, every event runs its command at once). */
+    public CommandHooks(String onWarning, String onViolation, String onRecovered, Duration timeout, Duration hold,
+                        double bound, Consumer<String> report) {
         if (timeout.isNegative() || timeout.isZero()) {
             throw new IllegalArgumentException("the hook timeout must be positive, got " + timeout);
         }
@@ -80,14 +84,7 @@ public final class CommandHooks implements AutoCloseable {
         this.timeout = timeout;
         this.report = report;
         this.bound = bound;
-        AtomicInteger n = new AtomicInteger();
-        this.pool = new ThreadPoolExecutor(THREADS, THREADS, 30, TimeUnit.SECONDS, new ArrayBlockingQueue<>(QUEUE),
-                r -> {
-                    Thread t = new Thread(r, "predmon-hook-" + n.incrementAndGet());
-                    t.setDaemon(true);
-                    return t;
-                });
-        pool.allowCoreThreadTimeOut(true);
+        this.hold = new AlarmHold(hold, report);
     }
 
     /**
@@ -105,39 +102,43 @@ public final class CommandHooks implements AutoCloseable {
     public void event(LogEvent sent) {
         String log = sent.log();
         MonitorEvent event = sent.event();
-        String command = event instanceof MonitorEvent.Warning ? onWarning
-                : event instanceof MonitorEvent.Violation ? onViolation
-                : event instanceof MonitorEvent.Recovered ? onRecovered : null;
-        if (command == null) {
+        AlarmHold.Kind kind = event instanceof MonitorEvent.Warning ? AlarmHold.Kind.WARNING
+                : event instanceof MonitorEvent.Violation ? AlarmHold.Kind.VIOLATION
+                : event instanceof MonitorEvent.Recovered ? AlarmHold.Kind.RECOVERY : AlarmHold.Kind.NONE;
+        if (kind == AlarmHold.Kind.NONE) {
             return;
         }
-        Run run = new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound, properties),
+        String command = switch (kind) {
+            case WARNING -> onWarning;
+            case VIOLATION -> onViolation;
+            default -> onRecovered;
+        };
+        // every alarm event goes through the hold, with a command or not: a recovery ends the robot's alarm
+        Run run = command == null ? null
+                : new Run(command, option(event), describe(log, event), HookEnvironment.of(log, event, bound, properties),
                 sent.line());
-        try {
-            pool.execute(run);
-        } catch (RejectedExecutionException full) {
-            report.accept(run.option + ": " + run.what + ": not run, " + QUEUE + " commands are already waiting");
+        hold.event(log, property(event), run(event), kind, run == null ? () -> { } : () -> submit(log, run),
+                run == null ? "" : run.option + ": " + run.what);
+    }
+
+    private void submit(String log, Run run) {
+        if (!queue.offer(log, run)) {
+            report.accept(run.option + ": " + run.what + ": not run, " + PER_LOG + " commands of " + log
+                    + " are already waiting");
         }
     }
 
     /**
-     * Lets running and queued commands finish, waiting at most the timeout (plus a second); what is still queued
-     * then is reported as not run and what still runs is killed. An interrupt of the caller (watch being stopped)
-     * does not cut this wait short; the interrupt status is kept.
+     * Runs the recoveries still held, then lets running and queued commands finish, waiting at most the timeout (plus
+     * a second); what is still queued then is reported as not run and what still runs is killed. An interrupt of the
+     * caller (watch being stopped) does not cut this wait short; the interrupt status is kept.
      */
     @Override
     public void close() {
         boolean interrupted = Thread.interrupted();
         try {
-            pool.shutdown();
-            if (!awaitQuietly(timeout.toMillis() + 1000)) {
-                List<Runnable> dropped = pool.shutdownNow();
-                for (Runnable r : dropped) {
-                    Run run = (Run) r;
-                    report.accept(run.option + ": " + run.what + ": not run, watch ended");
-                }
-                awaitQuietly(2000);
-            }
+            hold.close();
+            queue.close(timeout.toMillis() + 1000);
         } finally {
             if (interrupted) {
                 Thread.currentThread().interrupt();
@@ -145,12 +146,14 @@ public final class CommandHooks implements AutoCloseable {
         }
     }
 
-    private boolean awaitQuietly(long millis) {
-        try {
-            return pool.awaitTermination(millis, TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            return false;
-        }
+    private static String property(MonitorEvent e) {
+        return e instanceof MonitorEvent.Warning w ? w.property() : e instanceof MonitorEvent.Violation v
+                ? v.property() : ((MonitorEvent.Recovered) e).property();
+    }
+
+    private static int run(MonitorEvent e) {
+        return e instanceof MonitorEvent.Warning w ? w.run() : e instanceof MonitorEvent.Violation v
+                ? v.run() : ((MonitorEvent.Recovered) e).run();
     }
 
     private static String option(MonitorEvent e) {
@@ -172,7 +175,7 @@ public final class CommandHooks implements AutoCloseable {
     }
 
     /** One command for one event. */
-    private final class Run implements Runnable {
+    private final class Run implements HookQueue.Job {
         private final String command;
         private final String option;
         private final String what;
@@ -189,47 +192,27 @@ public final class CommandHooks implements AutoCloseable {
 
         @Override
         public void run() {
-            ProcessBuilder pb = new ProcessBuilder(shell(command));
-            pb.environment().putAll(env);
-            pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
-            pb.redirectError(ProcessBuilder.Redirect.INHERIT);
-            Process p;
+            HookProcess.Outcome outcome;
             try {
-                p = pb.start();
-            } catch (IOException e) {
-                report.accept(option + ": " + what + ": could not be started: " + e.getMessage());
-                return;
-            }
-            try (OutputStream in = p.getOutputStream()) {
-                in.write((json + "\n").getBytes(StandardCharsets.UTF_8));
-            } catch (IOException e) {
-                // The command ended or closed its input without reading it all: it need not read it.
-            }
-            try {
-                if (!p.waitFor(timeout.toMillis(), TimeUnit.MILLISECONDS)) {
-                    kill(p);
-                    report.accept(String.format(Locale.ROOT, "%s: %s: timed out after %s s, killed", option, what,
-                            seconds(timeout)));
-                    return;
-                }
+                outcome = HookProcess.run(command, env, json, timeout);
             } catch (InterruptedException e) {
-                kill(p);
                 report.accept(option + ": " + what + ": killed, watch ended");
                 return;
             }
-            if (p.exitValue() != 0) {
-                report.accept(option + ": " + what + ": failed with exit code " + p.exitValue());
+            if (outcome instanceof HookProcess.NotStarted n) {
+                report.accept(option + ": " + what + ": could not be started: " + n.why());
+            } else if (outcome instanceof HookProcess.TimedOut) {
+                report.accept(String.format(Locale.ROOT, "%s: %s: timed out after %s s, killed", option, what,
+                        seconds(timeout)));
+            } else if (outcome instanceof HookProcess.Exited x && x.code() != 0) {
+                report.accept(option + ": " + what + ": failed with exit code " + x.code());
             }
         }
-    }
 
-    /** Kills a command and whatever it started (a shell's children would otherwise live on). */
-    private static void kill(Process p) {
-        // The shell first, then what it started: a shell that outlives its children prints "Killed" for each on
-        // watch's stderr, beside the report line that already says so.
-        List<ProcessHandle> children = p.descendants().toList();
-        p.destroyForcibly();
-        children.forEach(ProcessHandle::destroyForcibly);
+        @Override
+        public void dropped() {
+            report.accept(option + ": " + what + ": not run, watch ended");
+        }
     }
 
     private static String seconds(Duration d) {

@@ -1,11 +1,13 @@
 package dev.predmon.hooks;
 
+import dev.predmon.Terminal;
 import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.property.Property;
 
 import java.math.BigDecimal;
+import java.math.MathContext;
 import java.math.RoundingMode;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -22,7 +24,8 @@ public final class HookEnvironment {
     }
 
     /**
-     * PREDMON_EVENT ({@code warning}, {@code violation} or {@code recovered}), PREDMON_LOG, PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
+     * PREDMON_EVENT ({@code warning}, {@code violation} or {@code recovered}), PREDMON_LOG (control characters and
+     * bidirectional overrides escaped as on the terminal), PREDMON_RUN, PREDMON_TIME, PREDMON_UNIT
      * ({@code s} or {@code ticks}), PREDMON_LINE, PREDMON_PROPERTY (the property's id), PREDMON_VALUE (its last
      * value, two decimals; empty for a property without one, such as a bounded response) and PREDMON_BATTERY (the
      * same, the older name); for a warning PREDMON_SCENARIO (the faulty
@@ -94,7 +97,8 @@ public final class HookEnvironment {
     private static void put(Map<String, String> env, String kind, String log, int run, double time, String unit,
                             long line, String property, String value) {
         env.put("PREDMON_EVENT", kind);
-        env.put("PREDMON_LOG", log);
+        // a file name's newline or ESC would make a one-line recipe (echo ... | yarp write) send two lines
+        env.put("PREDMON_LOG", Terminal.line(log));
         env.put("PREDMON_RUN", Integer.toString(run));
         env.put("PREDMON_TIME", Double.toString(time));
         env.put("PREDMON_UNIT", unit);
@@ -122,6 +126,10 @@ public final class HookEnvironment {
     }
 
     private static String fixed(double x, int digits, RoundingMode mode) {
+        if (Math.abs(x) >= 1e15) {
+            // past the digits a double holds: six significant ones in scientific notation, not hundreds of digits
+            return new BigDecimal(x).round(new MathContext(6)).stripTrailingZeros().toString().replace("E+", "e");
+        }
         return BigDecimal.valueOf(x).setScale(digits, mode).toPlainString();
     }
 }

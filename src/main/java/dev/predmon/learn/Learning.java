@@ -28,8 +28,16 @@ public final class Learning {
      *
      * @param scenarios every scenario learned, sorted by name
      * @param notes     what the user should know about the model directory (usually nothing)
+     * @param evidence  what the training logs say of each property: names no log holds, and how many runs violated
+     *                  it or gave no evidence for it
      */
-    public record Result(List<LearnedScenario> scenarios, List<String> notes, ForecastModel forecast) {
+    public record Result(List<LearnedScenario> scenarios, List<String> notes, ForecastModel forecast,
+                         TrainingEvidence evidence) {
+
+        /** A result without the properties' evidence. */
+        public Result(List<LearnedScenario> scenarios, List<String> notes, ForecastModel forecast) {
+            this(scenarios, notes, forecast, new TrainingEvidence(List.of(), List.of()));
+        }
     }
 
     /**
@@ -60,7 +68,8 @@ public final class Learning {
         List<String> notes = ModelStore.write(models, LearnedModels.index(learned.scenarios(), learned.tuned()),
                 LearnedModels.dots(learned.scenarios(), MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(),
                 learned.forecast(), step);
-        return new Result(learned.scenarios(), notes, learned.forecast());
+        return new Result(learned.scenarios(), notes, learned.forecast(),
+                TrainingEvidence.of(specs, traces, abstraction.properties()));
     }
 
     /**

@@ -37,7 +37,7 @@ public final class RecordingFolder {
     }
 
     /** The recordings under {@code dir}, sorted by path. */
-    static List<Path> logs(Path dir) throws BadInputException {
+    public static List<Path> logs(Path dir) throws BadInputException {
         try (Stream<Path> s = Files.walk(dir)) {
             return s.filter(RecordingFolder::isLog).sorted().toList();
         } catch (IOException e) {

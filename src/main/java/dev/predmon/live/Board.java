@@ -34,6 +34,12 @@ import static dev.predmon.live.TileJson.JSON;
  */
 public final class Board {
 
+    /**
+     * How long the tile of a deleted log stays, saying so: then it leaves the page and {@code /metrics}, so that a
+     * fleet whose logs come and go does not keep every log it ever watched.
+     */
+    public static final Duration DELETED_KEPT = Duration.ofMinutes(10);
+
     /** The order of {@code /status} and of the page: worst first (see {@link TileState}), then by robot. */
     private static final List<String> ORDER = List.of("violation", "warning", "unknown", "no-verdict", "ok", "waiting",
             "ended");
@@ -46,6 +52,8 @@ public final class Board {
     private final LongSupplier clock;
     private final RobotNames names;
     private final Map<String, Tile> tiles = new LinkedHashMap<>();
+    /** When each tile's log was first seen deleted (clock millis), for the tiles whose log is gone. */
+    private final Map<Tile, Long> deletedSince = new HashMap<>();
     private final EventStream stream = new EventStream();
     private final Metrics metrics;
     private volatile List<String> watching = List.of();
@@ -92,7 +100,7 @@ public final class Board {
         this.clock = clock;
         this.names = names;
         this.metrics = new Metrics(() -> status(null), safety.map(Bound::name).orElse(""),
-                this.properties.stream().map(Property::id).toList(), safety.map(Bound::id).orElse(null));
+                this.properties.stream().map(Property::id).toList(), safety.map(Bound::id).orElse(null), names::of);
     }
 
     /** The tile of {@code log}, made on first use. */
@@ -102,6 +110,34 @@ public final class Board {
             metrics.added(t);
             return t;
         });
+    }
+
+    /** A tile that left the board with its deleted log comes back when the log does. */
+    private synchronized void shown(Tile tile) {
+        if (tiles.putIfAbsent(tile.log(), tile) == null) {
+            metrics.added(tile);
+        }
+    }
+
+    /**
+     * Each tile whose log was deleted: since when, as {@code deleted} seconds in its snapshot; a tile deleted longer
+     * than {@link #DELETED_KEPT} leaves the board and its series leave {@code /metrics}. A log that never had a
+     * record is waited for, not deleted.
+     */
+    private synchronized Map<Tile, Long> sweepDeleted(long now) {
+        for (Tile t : new ArrayList<>(tiles.values())) {
+            if (t.empty() || exists(t)) {
+                deletedSince.remove(t);
+                continue;
+            }
+            long since = deletedSince.computeIfAbsent(t, k -> now);
+            if (now - since > DELETED_KEPT.toMillis()) {
+                tiles.remove(t.log());
+                deletedSince.remove(t);
+                metrics.removed(t);
+            }
+        }
+        return new HashMap<>(deletedSince);
     }
 
     /**
@@ -114,6 +150,7 @@ public final class Board {
 
     /** An event of {@code tile}'s log: the tile takes it, and {@code /events} sends its JSON (which names the log). */
     public void event(Tile tile, LogEvent e) {
+        shown(tile);
         tile.event(e);
         metrics.event(tile, e.event());
         stream.publish(e.line());
@@ -121,6 +158,7 @@ public final class Board {
 
     /** {@code tile}'s log grew now. */
     public void grew(Tile tile) {
+        shown(tile);
         tile.grew(clock.getAsLong());
     }
 
@@ -132,6 +170,7 @@ public final class Board {
      */
     public ObjectNode status(String log) {
         List<Tile> all;
+        Map<Tile, Long> deleted = sweepDeleted(clock.getAsLong());
         synchronized (this) {
             all = log == null ? new ArrayList<>(tiles.values())
                     : tiles.containsKey(log) ? List.of(tiles.get(log)) : List.of();
@@ -147,8 +186,14 @@ public final class Board {
         List<ObjectNode> snapshots = new ArrayList<>();
         for (Tile t : all) {
             String name = shown.getOrDefault(t, t.name());
-            snapshots.add(t.snapshot(now, staleMillis, new Tile.Shown(name, action, warnsAt, !t.empty() || exists(t),
-                    skill, skills)));
+            ObjectNode snapshot = t.snapshot(now, staleMillis, new Tile.Shown(name, action, warnsAt,
+                    !t.empty() || exists(t), skill, skills));
+            Long gone = deleted.get(t);
+            if (gone != null) {
+                snapshot.put("deleted", (now - gone) / 1000.0); // seconds since the log was found deleted
+                snapshot.put("leavesIn", Math.max(0, (DELETED_KEPT.toMillis() - (now - gone)) / 1000.0));
+            }
+            snapshots.add(snapshot);
         }
         snapshots.sort(Comparator.comparingInt(Board::rank).thenComparing(s -> s.get("name").asText())
                 .thenComparing(s -> s.get("log").asText()));

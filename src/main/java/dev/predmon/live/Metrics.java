@@ -13,14 +13,18 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.function.Supplier;
 
 /**
  * {@code /metrics}: what the live view shows, for Prometheus, in its text format, through the official Prometheus
- * Java client. Per log and per property (labels {@code log}, {@code robot}, {@code property}):
+ * Java client. Per log and per property (labels {@code log}, {@code robot}, {@code property}; {@code robot} is the
+ * robot's whole name, the same on every series and at every scrape):
  * <ul>
  *   <li>{@code predmon_state{state=...}}: 1 for the robot's state, its worst property's, 0 for each other one (a state
  *       set);</li>
@@ -63,6 +67,10 @@ final class Metrics {
     private final Counter violations;
     private final Counter propertyWarnings;
     private final Counter propertyViolations;
+    /** Per log, the property labels its counters got from events beyond {@link #properties}. */
+    private final Map<String, Set<String>> counted = new HashMap<>();
+    /** The robot's whole name of a log, the {@code robot} label. */
+    private final Function<String, String> robots;
     /** The ids of the abstraction's properties, whose counters start at 0 with each tile. */
     private final List<String> properties;
     /** The tiles of the scrape under way, as {@code /status} gives them; read by the gauges' callbacks. */
@@ -78,15 +86,18 @@ final class Metrics {
 
     /** As above, with the ids of every property of the abstraction. */
     Metrics(Supplier<ObjectNode> status, String property, List<String> properties) {
-        this(status, property, properties, null);
+        this(status, property, properties, null, RobotNames.byFile()::of);
     }
 
     /**
      * As above, {@code forecastId} the id of the property of the {@code property} label (null when not known): another
-     * bound property's warnings are its own, not that property's.
+     * bound property's warnings are its own, not that property's; {@code robots} gives each log its label
+     * of the robot.
      */
-    Metrics(Supplier<ObjectNode> status, String property, List<String> properties, String forecastId) {
+    Metrics(Supplier<ObjectNode> status, String property, List<String> properties, String forecastId,
+            Function<String, String> robots) {
         this.forecastId = forecastId;
+        this.robots = robots;
         this.status = status;
         this.property = property;
         this.properties = List.copyOf(properties);
@@ -136,7 +147,7 @@ final class Metrics {
                 + String.join(", ", lights) + ")", (cb, t, p) -> {
                     String now = p.get("state").asText();
                     for (String l : lights) {
-                        cb.call(l.equals(now) ? 1 : 0, t.get("log").asText(), t.get("name").asText(),
+                        cb.call(l.equals(now) ? 1 : 0, t.get("log").asText(), robot(t),
                                 p.get("property").asText(), l);
                     }
                 }, "state");
@@ -144,14 +155,14 @@ final class Metrics {
                 + " (of a missed deadline for a bounded response), 0 to 1", (cb, t, p) -> {
                     if (number(p.get("forecast"), "probability")) {
                         cb.call(p.get("forecast").get("probability").asDouble(), t.get("log").asText(),
-                                t.get("name").asText(), p.get("property").asText());
+                                robot(t), p.get("property").asText());
                     }
                 });
         propertyGauge("predmon_property_time_left", "A pending bounded response's time left before its deadline, in "
                 + "the unit of the label", (cb, t, p) -> {
                     if (number(p.get("forecast"), "timeLeft")) {
                         cb.call(p.get("forecast").get("timeLeft").asDouble(), t.get("log").asText(),
-                                t.get("name").asText(), p.get("property").asText(),
+                                robot(t), p.get("property").asText(),
                                 p.get("forecast").get("unit").asText());
                     }
                 }, "unit");
@@ -193,10 +204,19 @@ final class Metrics {
     private String[] labels(JsonNode tile, String... more) {
         String[] values = new String[LABELS.length + more.length];
         values[0] = tile.get("log").asText();
-        values[1] = tile.get("name").asText();
+        values[1] = robot(tile);
         values[2] = property;
         System.arraycopy(more, 0, values, LABELS.length, more.length);
         return values;
+    }
+
+    /**
+     * The {@code robot} label of a tile: its robot's whole name, as {@link Tile#name} has it from the first scrape on,
+     * the same on every series. Not the page's short name, which drops what all the logs' names share and so changes
+     * when a log appears.
+     */
+    private String robot(JsonNode tile) {
+        return robots.apply(tile.get("log").asText());
     }
 
     private static boolean number(JsonNode o, String field) {
@@ -213,11 +233,33 @@ final class Metrics {
         }
     }
 
+    /** A tile left the board (its log was deleted long ago): its counters' series go with it. */
+    synchronized void removed(Tile tile) {
+        warnings.remove(tile.log(), tile.name(), property);
+        violations.remove(tile.log(), tile.name(), property);
+        Set<String> all = new LinkedHashSet<>(properties);
+        all.addAll(counted.getOrDefault(tile.log(), Set.of()));
+        counted.remove(tile.log());
+        for (String p : all) {
+            propertyWarnings.remove(tile.log(), tile.name(), p);
+            propertyViolations.remove(tile.log(), tile.name(), p);
+        }
+    }
+
+    /** A per-property counter of {@code tile} has a series for {@code id} (one not listed in advance too). */
+    private synchronized void counted(Tile tile, String id) {
+        if (!properties.contains(id)) {
+            counted.computeIfAbsent(tile.log(), l -> new LinkedHashSet<>()).add(id);
+        }
+    }
+
     /** An event of {@code tile}'s log. */
     void event(Tile tile, MonitorEvent e) {
         if (e instanceof MonitorEvent.Warning w && w.property() != null) {
+            counted(tile, w.property());
             propertyWarnings.labelValues(tile.log(), tile.name(), w.property()).inc();
         } else if (e instanceof MonitorEvent.Violation v && v.property() != null) {
+            counted(tile, v.property());
             propertyViolations.labelValues(tile.log(), tile.name(), v.property()).inc();
         }
         if (e instanceof MonitorEvent.Warning w && w.clause() != MonitorEvent.Clause.DEADLINE

@@ -16,7 +16,6 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 import static dev.predmon.live.TileJson.JSON;
@@ -25,7 +24,8 @@ import static dev.predmon.live.TileJson.number;
 /**
  * One light per property of a tile's run, worst first, as SCOPE's monitors show a robot's properties: red while the
  * property is violated, yellow while a warning of it is up, grey where nothing can be said (no reading yet, a run the
- * models cannot judge, an obligation pending longer than any training one), green while it holds, a pending obligation
+ * models cannot judge, an obligation pending longer than any training one, no evidence: nothing the property speaks of
+ * occurred in the run), green while it holds, a pending obligation
  * included (it is the robot's ordinary work: its forecast says how it is going; a warning makes it yellow). Each light
  * has its property's verdict in words and its forecast where there is one, or says that there is none.
  *
@@ -40,6 +40,7 @@ final class PropertyLights {
         VIOLATED("violated", "red"),
         WARNING("warning", "yellow"),
         UNKNOWN("unknown", "grey"),
+        NO_EVIDENCE("no-evidence", "grey"),
         PENDING("pending", "green"),
         HOLDS("holds", "green");
 
@@ -49,6 +50,16 @@ final class PropertyLights {
         Light(String id, String colour) {
             this.id = id;
             this.colour = colour;
+        }
+
+        /** The light whose {@code /status} state is {@code id}. */
+        static Light of(String id) {
+            for (Light l : values()) {
+                if (l.id.equals(id)) {
+                    return l;
+                }
+            }
+            throw new IllegalArgumentException("no light '" + id + "'");
         }
     }
 
@@ -121,7 +132,7 @@ final class PropertyLights {
                     state == TileState.NO_VERDICT, skills.get(p.name())));
         }
         // stable: the abstraction's order within a light
-        lights.sort(Comparator.comparing(o -> Light.valueOf(o.get("state").asText().toUpperCase(Locale.ROOT))));
+        lights.sort(Comparator.comparing(o -> Light.of(o.get("state").asText())));
         ArrayNode a = JSON.createArrayNode();
         lights.forEach(a::add);
         return a;
@@ -164,6 +175,8 @@ final class PropertyLights {
             o.put("since", x.since());
             o.put("deadline", x.deadline());
             o.put("unit", x.unit().key);
+        } else if (v instanceof Verdict.NoEvidence x) {
+            o.put("what", x.why());
         }
         o.put("action", p.action());
         return o;
@@ -184,6 +197,9 @@ final class PropertyLights {
         } else if (s.warned()) {
             light = Light.WARNING;
             words = warnings.getOrDefault(p.id(), "warned: " + v.describe());
+        } else if (v instanceof Verdict.NoEvidence) {
+            light = Light.NO_EVIDENCE;
+            words = v.describe();
         } else if (v instanceof Verdict.Pending && e != null && e.novel()) {
             light = Light.UNKNOWN;
             words = "no evidence: " + v.describe() + ", longer than any training obligation";
@@ -269,8 +285,9 @@ final class PropertyLights {
             case VIOLATION -> Light.VIOLATED;
             case WARNING -> Light.WARNING;
             case UNKNOWN, NO_VERDICT, WAITING -> Light.UNKNOWN;
-            case ENDED -> v instanceof Verdict.Violated ? Light.VIOLATED : Light.HOLDS;
-            case OK -> Light.HOLDS;
+            case ENDED -> v instanceof Verdict.Violated ? Light.VIOLATED : v instanceof Verdict.NoEvidence
+                    ? Light.NO_EVIDENCE : Light.HOLDS;
+            case OK -> v instanceof Verdict.NoEvidence ? Light.NO_EVIDENCE : Light.HOLDS;
         };
         ObjectNode o = base(p, v, light);
         o.put("words", switch (state) {
@@ -280,7 +297,8 @@ final class PropertyLights {
             case NO_VERDICT -> "no verdict: the models cannot judge this log";
             case WAITING -> "no reading yet";
             case ENDED -> "run ended: " + (v == null ? "holds" : v.describe());
-            case OK -> v instanceof Verdict.Violated ? "holds again" : "holds";
+            case OK -> v instanceof Verdict.Violated ? "holds again" : v instanceof Verdict.NoEvidence ? v.describe()
+                    : "holds";
         });
         o.put("model", PropertyStatus.Model.FORECAST.id());
         o.set("forecast", forecast == null ? null : forecast.deepCopy());

@@ -11,7 +11,9 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.NotDirectoryException;
 import java.nio.file.Path;
 import java.nio.file.PathMatcher;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -27,7 +29,8 @@ import java.util.stream.Stream;
  *   <li>a glob ({@code logs/robot-*.log}, quoted so that the shell leaves it alone, {@code **} for any depth): the
  *       files below its fixed leading directories that match the rest, now and as they appear.</li>
  * </ul>
- * {@link #find()} lists the files in the order the names were given, each name's files sorted, each file once.
+ * {@link #find()} lists the files in the order the names were given, each name's files sorted, each file once, even
+ * one with several names (a {@code latest.log} link to the newest log).
  */
 public final class LogSources {
 
@@ -40,6 +43,8 @@ public final class LogSources {
     }
 
     private final List<Name> names = new ArrayList<>();
+    /** The name each file with several names was listed by at the latest {@link #find()}, by its identity. */
+    private final Map<Object, Path> chosen = new HashMap<>();
 
     /** @param names files, directories or globs; at least one */
     public LogSources(List<Path> names) {
@@ -76,7 +81,12 @@ public final class LogSources {
         return names.stream().anyMatch(n -> n.kind() != Kind.FILE);
     }
 
-    /** The files the names stand for now: files named as such whether or not they exist, plus what matches. */
+    /**
+     * The files the names stand for now: files named as such whether or not they exist, plus what matches. A file with
+     * several names (a {@code latest.log} link beside the file it points to, a hard link) is listed once, so that
+     * one robot is not watched twice: by the name given as a file, else by a name that is not a symbolic link, else
+     * by its first name.
+     */
     public List<Path> find() throws IOException {
         Map<Path, Path> found = new LinkedHashMap<>();
         for (Name name : names) {
@@ -84,7 +94,38 @@ public final class LogSources {
                 found.putIfAbsent(p.toAbsolutePath().normalize(), p);
             }
         }
-        return List.copyOf(found.values());
+        Map<Object, Path> byFile = new HashMap<>(); // a file's identity (device and inode) to the name it is kept by
+        Map<Path, Object> ids = new HashMap<>();
+        for (Path p : found.values()) {
+            Object id = identity(p);
+            if (id != null) {
+                ids.put(p, id);
+                byFile.merge(id, p, (kept, other) -> rank(other) < rank(kept) ? other : kept);
+            }
+        }
+        // a name chosen at an earlier look stays chosen while it names the same file: a second name given to a
+        // watched log later (a hard link) does not start a second watch of it
+        byFile.replaceAll((id, p) -> {
+            Path before = chosen.get(id);
+            return before != null && id.equals(ids.get(before)) ? before : p;
+        });
+        chosen.clear();
+        chosen.putAll(byFile);
+        return found.values().stream().filter(p -> !ids.containsKey(p) || byFile.get(ids.get(p)).equals(p)).toList();
+    }
+
+    /** The identity of the file at {@code p}, links followed; null when there is none to be had. */
+    private static Object identity(Path p) {
+        try {
+            return Files.readAttributes(p, BasicFileAttributes.class).fileKey();
+        } catch (IOException | UnsupportedOperationException e) {
+            return null; // not there (yet), or gone between the listing and now: it is its own
+        }
+    }
+
+    /** Which of a file's names to follow it by: lower first. */
+    private int rank(Path p) {
+        return named(p) ? 0 : Files.isSymbolicLink(p) ? 2 : 1;
     }
 
     /**

@@ -119,6 +119,9 @@ public record PropertyOutcome(Property property, Verdict verdict, MonitorEvent.W
         if (warning != null) {
             return id() + " warned at line " + warning.line() + ", not violated";
         }
+        if (observed && verdict instanceof Verdict.NoEvidence n) {
+            return id() + " " + n.describe(); // what never occurred
+        }
         return id() + " " + state();
     }
 

@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 
 /**
@@ -28,13 +29,23 @@ import java.util.TreeMap;
  *                      (in the log's unit; NaN for a record without a time), the properties it held absent
  * @param bounds        by id, every bound property but the safety property: each change of its value in the run, in
  *                      order, as {@code readings} holds the safety property's (what its own forecast learns from)
+ * @param unobserved    the ids of the properties the run gave no evidence for (nothing they speak of occurred:
+ *                      {@link dev.predmon.property.Verdict.NoEvidence}), neither safe nor violating for them
  */
 // Arrays: one number per pair, read by index; a run's timing is never compared or hashed.
 @SuppressWarnings("ArrayRecordComponent")
 public record RunTiming(double[] times, double[] values, double violationTime, double endTime,
                         double lowestSafeValue, String unit, List<Reading> readings, List<Gap> gaps,
                         List<Obligation> obligations, Map<String, Double> violations,
-                        Map<String, List<Reading>> bounds) {
+                        Map<String, List<Reading>> bounds, Set<String> unobserved) {
+
+    /** As above, with evidence for every property. */
+    public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
+                     String unit, List<Reading> readings, List<Gap> gaps, List<Obligation> obligations,
+                     Map<String, Double> violations, Map<String, List<Reading>> bounds) {
+        this(times, values, violationTime, endTime, lowestSafeValue, unit, readings, gaps, obligations, violations,
+                bounds, Set.of());
+    }
 
     /** As above, without the other bound properties' readings. */
     public RunTiming(double[] times, double[] values, double violationTime, double endTime, double lowestSafeValue,
@@ -105,11 +116,17 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
         Map<String, List<Reading>> copy = new TreeMap<>();
         bounds.forEach((id, r) -> copy.put(id, List.copyOf(r)));
         bounds = Collections.unmodifiableMap(copy);
+        unobserved = Set.copyOf(unobserved);
     }
 
     /** Whether the run violated the property {@code id} (its outcome as the safety monitor saw it). */
     public boolean violated(String id) {
         return violations.containsKey(id);
+    }
+
+    /** Whether the run gave evidence for the property {@code id} (something it speaks of occurred). */
+    public boolean observed(String id) {
+        return !unobserved.contains(id);
     }
 
     /** No timing known for {@code pairs} pairs (every time and value NaN). */

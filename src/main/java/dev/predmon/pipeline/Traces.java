@@ -11,6 +11,7 @@ import dev.predmon.parse.RecordSource;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.Verdict;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -23,7 +24,9 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.TreeMap;
+import java.util.TreeSet;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -283,6 +286,12 @@ public final class Traces {
         private void finish() {
             Map<String, List<Double>> frozen = new TreeMap<>();
             readings.forEach((k, v) -> frozen.put(k, List.copyOf(v)));
+            Set<String> unobserved = new TreeSet<>();
+            for (int i = 0; i < abstraction.properties().size(); i++) {
+                if (checker.verdict(i) instanceof Verdict.NoEvidence) {
+                    unobserved.add(abstraction.properties().get(i).id());
+                }
+            }
             checker.finish();
             checker.reset();
             Map<String, List<RunTiming.Reading>> bounds = new TreeMap<>();
@@ -294,7 +303,8 @@ public final class Traces {
             }
             Arrays.fill(otherValues, Double.NaN);
             RunTiming timing = new RunTiming(Arrays.copyOf(times, pairs.size()), Arrays.copyOf(values, pairs.size()),
-                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations, violations, bounds);
+                    violationTime, endTime, lowestSafe, unit, changes, gaps, obligations, violations, bounds,
+                    unobserved);
             changes = new ArrayList<>();
             gaps = new ArrayList<>();
             obligations = new ArrayList<>();

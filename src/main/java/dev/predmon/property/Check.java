@@ -45,6 +45,16 @@ abstract class Check {
     }
 
     /**
+     * Whether {@code r}, just stepped, is evidence for the property: a record of what it speaks of (a bound's value, an
+     * absence's or a precedence's message, a response's trigger), whatever its argument or reply. Asked until the
+     * first such record of the run.
+     */
+    abstract boolean evidences(LogRecord r);
+
+    /** What no record of a run without evidence showed, in words: {@code no reading of BatteryReader/level}. */
+    abstract String unseen();
+
+    /**
      * The run ends and {@code r}, the first record after it, begins the next: the violation of an obligation whose
      * deadline passed before {@code r} came, or null.
      */
@@ -114,6 +124,16 @@ abstract class Check {
         }
 
         @Override
+        boolean evidences(LogRecord r) {
+            return !Double.isNaN(reading);
+        }
+
+        @Override
+        String unseen() {
+            return "no reading of " + p.value().describeWithPorts();
+        }
+
+        @Override
         void reset() {
             last = Double.NaN;
         }
@@ -121,9 +141,22 @@ abstract class Check {
 
     private static final class AbsenceCheck extends Check {
         private final Absence p;
+        /** That one came is evidence that the event could have ({@link Event#evidence}). */
+        private final Event messages;
 
         AbsenceCheck(Absence p) {
             this.p = p;
+            this.messages = p.event().evidence();
+        }
+
+        @Override
+        boolean evidences(LogRecord r) {
+            return messages.matches(r);
+        }
+
+        @Override
+        String unseen() {
+            return "no " + messages.describe();
         }
 
         @Override
@@ -140,10 +173,23 @@ abstract class Check {
 
     private static final class PrecedenceCheck extends Check {
         private final Precedence p;
+        /** What tells that {@code then} could have come ({@link Event#evidence}). */
+        private final Event messages;
         private boolean seen;
 
         PrecedenceCheck(Precedence p) {
             this.p = p;
+            this.messages = p.then().evidence();
+        }
+
+        @Override
+        boolean evidences(LogRecord r) {
+            return messages.matches(r);
+        }
+
+        @Override
+        String unseen() {
+            return "no " + messages.describe();
         }
 
         @Override

@@ -33,6 +33,22 @@ public record Event(List<RecordMatch> alternatives) {
         return false;
     }
 
+    /** The messages this event picks records of, whatever their argument and reply ({@link RecordMatch#message}). */
+    public Event messages() {
+        return new Event(alternatives.stream().map(RecordMatch::message).distinct().toList());
+    }
+
+    /**
+     * What tells that this event could have come, for a property that holds while it does not (an absence, a
+     * precedence's {@code then}): per alternative, its message with any argument and reply when it names a value
+     * ({@code GoTo/getStatus reply} for {@code GoTo/getStatus reply 3}), else any message of its component (its
+     * protocol and ports: {@code ArmService/any message} for an {@code ArmService/emergencyStop command}).
+     */
+    public Event evidence() {
+        return new Event(alternatives.stream().map(m -> m.arguments() != null || m.replies() != null ? m.message()
+                : new RecordMatch(null, m.protocol(), null, m.from(), m.to(), null, null)).distinct().toList());
+    }
+
     /** In an operator's words, alternatives joined by {@code or}: {@code getStatus 2 or halt}. */
     public String brief() {
         return alternatives.stream().map(RecordMatch::brief).collect(Collectors.joining(" or "));

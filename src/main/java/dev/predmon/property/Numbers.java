@@ -3,7 +3,10 @@ package dev.predmon.property;
 import java.math.BigDecimal;
 import java.math.MathContext;
 
-/** Numbers as users read them in verdicts: {@code 20}, {@code 19.5}, {@code 9.956} (six significant digits). */
+/**
+ * Numbers as users read them in verdicts: {@code 20}, {@code 19.5}, {@code 9.956} (six significant digits); from
+ * 10^15 on in scientific notation ({@code 1e308}), never a line of 309 digits.
+ */
 final class Numbers {
     private Numbers() {
     }
@@ -12,6 +15,7 @@ final class Numbers {
         if (x == Math.rint(x) && Math.abs(x) < 1e15) {
             return Long.toString((long) x);
         }
-        return new BigDecimal(x).round(new MathContext(6)).stripTrailingZeros().toPlainString();
+        BigDecimal six = new BigDecimal(x).round(new MathContext(6)).stripTrailingZeros();
+        return Math.abs(x) >= 1e15 ? six.toString().replace("E+", "e") : six.toPlainString();
     }
 }

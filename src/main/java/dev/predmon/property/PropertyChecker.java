@@ -14,6 +14,13 @@ import java.util.List;
  * <p>Scopes: a property with a scope is checked from an occurrence of its {@code from} event (that record
  * included) to the next occurrence of its {@code until} event (included, unless it is the opening record); each
  * segment starts the property's check afresh and a response owed when a segment closes is violated there.
+ *
+ * <p>Evidence: a property that is neither violated nor pending holds only when something it speaks of occurred in
+ * the run, within its scope: a bound's value was read; a record that tells an absence's (or a precedence's
+ * {@code then}) event could have come, its message with another value or, for an event that names no value, any
+ * message of its component ({@link Event#evidence}); a response's trigger, whatever its value (or a reading of its
+ * condition's value).
+ * Otherwise its verdict is {@link Verdict.NoEvidence}: a misspelt name is never "holds".
  */
 public final class PropertyChecker {
 
@@ -66,6 +73,12 @@ public final class PropertyChecker {
     private final int[] slots;
     private final boolean[] open;
     private final Verdict.Violated[] violated;
+    /** Per property, whether the run showed evidence for it ({@link Check#evidences}), and whether its scope opened. */
+    private final boolean[] evidenced;
+    private final boolean[] opened;
+    /** Per property, its verdict without evidence: nothing seen in its scope, and its scope never opened. */
+    private final Verdict.NoEvidence[] unseen;
+    private final Verdict.NoEvidence[] unopened;
     private final Listener listener;
     private long ticks;
 
@@ -84,6 +97,16 @@ public final class PropertyChecker {
         }
         this.open = new boolean[checks.length];
         this.violated = new Verdict.Violated[checks.length];
+        this.evidenced = new boolean[checks.length];
+        this.opened = new boolean[checks.length];
+        this.unseen = new Verdict.NoEvidence[checks.length];
+        this.unopened = new Verdict.NoEvidence[checks.length];
+        for (int i = 0; i < checks.length; i++) {
+            unseen[i] = new Verdict.NoEvidence(checks[i].unseen() + (scopes[i].global() ? " in the run"
+                    : " within its scope"));
+            unopened[i] = scopes[i].global() ? unseen[i] : new Verdict.NoEvidence("its scope never opened: no "
+                    + scopes[i].from().describe());
+        }
     }
 
     /** Takes the next record of the run. */
@@ -102,16 +125,23 @@ public final class PropertyChecker {
             Verdict.Violated v;
             if (s.global()) {
                 v = c.step(r, ticks);
+                if (!evidenced[i]) {
+                    evidenced[i] = c.evidences(r);
+                }
             } else {
                 boolean opening = !open[i] && s.from().matches(r);
                 if (opening) {
                     open[i] = true;
+                    opened[i] = true;
                     c.reset();
                 }
                 if (!open[i]) {
                     continue;
                 }
                 v = c.step(r, ticks);
+                if (!evidenced[i]) {
+                    evidenced[i] = c.evidences(r); // before the segment closes: its closing record is in it
+                }
                 if (!opening && s.until().matches(r)) {
                     open[i] = false;
                     Verdict.Violated owed = c.close(r);
@@ -164,12 +194,19 @@ public final class PropertyChecker {
         return scopes[index].global() || open[index];
     }
 
-    /** The verdict of property {@code index} on the run so far. */
+    /**
+     * The verdict of property {@code index} on the run so far: violated, pending, holds, or no evidence when nothing it
+     * speaks of occurred in its scope yet.
+     */
     public Verdict verdict(int index) {
         if (violated[index] != null) {
             return violated[index];
         }
-        return open[index] || scopes[index].global() ? checks[index].owed() : Verdict.HOLDS;
+        Verdict owed = open[index] || scopes[index].global() ? checks[index].owed() : Verdict.HOLDS;
+        if (evidenced[index] || owed instanceof Verdict.Pending) {
+            return owed;
+        }
+        return opened[index] ? unseen[index] : unopened[index];
     }
 
     /** Every property with its verdict on the run so far, in the checker's order. */
@@ -227,6 +264,8 @@ public final class PropertyChecker {
             checks[i].reset();
             open[i] = false;
             violated[i] = null;
+            evidenced[i] = false;
+            opened[i] = false;
         }
     }
 }

@@ -38,6 +38,15 @@ public record RecordMatch(RecordKind kind, String protocol, String command, Stri
                 && (replies == null || replies.contains(r.reply().trim()));
     }
 
+    /**
+     * The message this matcher picks records of, whatever their argument and reply: {@code GoTo/getStatus reply} of
+     * {@code GoTo/getStatus reply 3}. That the message occurs is what gives an absence of one of its values evidence.
+     */
+    public RecordMatch message() {
+        return arguments == null && replies == null ? this : new RecordMatch(kind, protocol, command, from, to, null,
+                null);
+    }
+
     /** In a user's words: {@code GoTo/getStatus reply 3}, {@code GoTo/goTo command charging_station}. */
     public String describe() {
         StringBuilder b = new StringBuilder();

@@ -38,11 +38,26 @@ final class ResponseCheck extends Check {
     /** The condition's value's slot in {@link #readings}, or -1 for a trigger that is an event. */
     private final int slot;
 
+    /** The trigger's messages, whatever their values, or null for a trigger that is a condition. */
+    private final Event triggers;
+
     ResponseCheck(Response p, Readings readings) {
         this.p = p;
         this.d = p.within();
         this.readings = readings;
         this.slot = p.condition() == null ? -1 : readings.slot(p.condition().value());
+        this.triggers = p.trigger() == null ? null : p.trigger().messages();
+    }
+
+    @Override
+    boolean evidences(LogRecord r) {
+        return triggers != null ? triggers.matches(r) : !Double.isNaN(readings.value(slot));
+    }
+
+    @Override
+    String unseen() {
+        return triggers != null ? "no " + triggers.describe() + " (its trigger)"
+                : "no reading of " + p.condition().value().describeWithPorts() + " (its trigger's value)";
     }
 
     @Override

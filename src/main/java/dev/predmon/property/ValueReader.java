@@ -27,6 +27,11 @@ public record ValueReader(String protocol, String command, String from, String t
         return Decimals.parse(r.reply().trim());
     }
 
+    /** {@code Protocol/command from /Server to /Client}, with the ports that are given. */
+    public String describeWithPorts() {
+        return describe() + (from.isEmpty() ? "" : " from " + from) + (to.isEmpty() ? "" : " to " + to);
+    }
+
     /** {@code Protocol/command}, as users name a message. */
     public String describe() {
         return protocol + "/" + command;

@@ -3,11 +3,15 @@ package dev.predmon.property;
 /**
  * A property's verdict on a run so far. Every kind is a safety property: {@link Violated} is final; {@link Holds}
  * and {@link Pending} are verdicts on a prefix, which is all a monitor of an unfinished run, or of a log that
- * stopped, has.
+ * stopped, has. {@link NoEvidence} is no verdict: nothing the property speaks of occurred in the run (yet), so that
+ * "holds" would be said of nothing.
  */
-public sealed interface Verdict permits Verdict.Holds, Verdict.Pending, Verdict.Violated {
+public sealed interface Verdict permits Verdict.Holds, Verdict.Pending, Verdict.Violated, Verdict.NoEvidence {
 
-    /** {@code holds}, {@code pending} or {@code violated}: the verdict's name in events and summaries. */
+    /**
+     * {@code holds}, {@code pending}, {@code violated} or {@code no-evidence}: the verdict's name in events and
+     * summaries.
+     */
     String id();
 
     /** The verdict in a user's words. */
@@ -74,6 +78,25 @@ public sealed interface Verdict permits Verdict.Holds, Verdict.Pending, Verdict.
         @Override
         public String describe() {
             return "violated at line " + line + ": " + what;
+        }
+    }
+
+    /**
+     * Nothing the property speaks of occurred in the run so far: a bound's value was never read, an absence's or a
+     * precedence's message never came, a response was never triggered, or its scope never opened. Neither held nor
+     * violated, and never green: a misspelt name gives this on every run.
+     *
+     * @param why what never occurred, in words ({@code no reading of BatteryReader/levle})
+     */
+    record NoEvidence(String why) implements Verdict {
+        @Override
+        public String id() {
+            return "no-evidence";
+        }
+
+        @Override
+        public String describe() {
+            return "no evidence (" + why + ")";
         }
     }
 }

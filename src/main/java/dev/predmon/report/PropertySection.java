@@ -23,20 +23,22 @@ final class PropertySection {
             return;
         }
         h.append("<h2 id=properties>The other properties</h2>\n");
-        h.append("<table><tr><th>property</th><th>runs</th><th>violated</th><th>warned ahead</th><th>false alarms</th>"
+        h.append("<table><tr><th>property</th><th>runs</th><th>no evidence</th><th>violated</th><th>warned ahead</th><th>false alarms</th>"
                 + "<th>lead: median</th><th>baseline: warned ahead</th><th>false alarms</th><th>lead: median</th>"
                 + "</tr>\n");
         for (PropertyScore p : others) {
-            h.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%s</td>"
-                            + "<td>%d</td><td>%d</td><td>%s</td></tr>\n", Svg.esc(p.property()), p.runs(),
-                    p.violating(), p.warned(), p.falseAlarms(), median(p.lead()), p.baselineWarned(),
+            h.append(String.format(Locale.ROOT, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td>"
+                            + "<td>%s</td><td>%d</td><td>%d</td><td>%s</td></tr>\n", Svg.esc(p.property()), p.runs(),
+                    p.noEvidence(), p.violating(), p.warned(), p.falseAlarms(), median(p.lead()), p.baselineWarned(),
                     p.baselineAlarms(), median(p.baselineLead())));
         }
         h.append("</table>\n<p>A bound's warnings come from its own value forecast, learned from the training runs "
                 + "labelled by its own violation. A deadline's come from its forecast: how long the obligation has been "
                 + "pending against how long the training runs' took. The matching warns of the property a faulty "
                 + "scenario's runs violate (its <code>violates</code>) when it is the only one left. A property without "
-                + "a forecast (an absence, a precedence) is listed so that its violations are seen. The baseline of a "
+                + "a forecast (an absence, a precedence) is listed so that its violations are seen. A run in which nothing "
+                + "the property speaks of occurred has no evidence for it: it is counted apart, neither safe nor "
+                + "violating, and a warning in it is no false alarm. The baseline of a "
                 + "deadline, chosen by the same cross-validation, warns "
                 + "as soon as an obligation is pending longer than every training obligation: what the learned "
                 + "durations add over \"later than ever seen\". Leads are in the runs' unit.</p>\n");

@@ -54,10 +54,10 @@ public final class TextReport {
             out.println();
             out.println("the other properties (warnings from their own forecasts: a bound's value forecast, a deadline's "
                     + "forecast; or the matching of a faulty scenario that violates them; lead in the runs' unit)");
-            Table t = new Table("property", ">runs", ">violated", ">warned ahead", ">false alarms", "lead: median",
+            Table t = new Table("property", ">runs", ">no evidence", ">violated", ">warned ahead", ">false alarms", "lead: median",
                     ">baseline: warned ahead", ">false alarms", "lead: median");
             for (PropertyScore p : others) {
-                t.row(p.property(), p.runs(), p.violating(), p.warned(), p.falseAlarms(), PropertySection.median(p.lead()),
+                t.row(p.property(), p.runs(), p.noEvidence(), p.violating(), p.warned(), p.falseAlarms(), PropertySection.median(p.lead()),
                         p.baselineWarned(), p.baselineAlarms(), PropertySection.median(p.baselineLead()));
             }
             t.print(out);

@@ -11,4 +11,13 @@ public interface BagSink {
      * expected. Every message before it has been delivered.
      */
     void problem(String line);
+
+    /**
+     * Whether the messages of {@code topic} (of {@code type}, {@code pkg/msg/Type}) are wanted; asked once per topic
+     * of each data file, before its first message. A topic not wanted is neither decoded nor delivered, and a topic
+     * that could not be decoded is reported only if it is wanted. All topics by default.
+     */
+    default boolean wants(String topic, String type) {
+        return true;
+    }
 }

@@ -153,7 +153,7 @@ final class Summary {
                 .sorted(Comparator.comparing(s -> s.property().id(), worstFirst)).toList())
                 : PropertyJson.lines(r.properties().stream()
                 .sorted(Comparator.comparing(pv -> pv.property().id(), worstFirst)).toList()))
-                .forEach(l -> out.println(stamp + l));
+                .forEach(l -> out.println(stamp + Terminal.line(l))); // a property's name is the abstraction's text
     }
 
     /**

@@ -112,7 +112,9 @@ function show() {
 
 function summary(all) {
   const count = (s) => all.filter(t => shownState(t) === s).length;
-  const parts = STATES.filter(s => count(s) > 0).map(s => count(s) + ' ' + STATE_WORDS[s].toLowerCase());
+  // "2 violations", "1 warning": the words that count take a plural; "ok", "unknown", "run ended" do not
+  const word = (s, n) => STATE_WORDS[s].toLowerCase() + (n > 1 && (s === 'violation' || s === 'warning') ? 's' : '');
+  const parts = STATES.filter(s => count(s) > 0).map(s => count(s) + ' ' + word(s, count(s)));
   const stale = all.filter(t => t.stale).length;
   const acked = all.filter(t => ui.acked(t)).length;
   document.getElementById('summary').textContent = all.length + (all.length === 1 ? ' robot' : ' robots')

@@ -256,7 +256,9 @@ export function renderTile(tile, t, ui) {
     parts.push(runs);
   }
   parts.push(el('footer', null, t.log + ' \u00b7 ' + (t.exists === false ? 'no such file yet'
-    : t.records + ' records, line ' + t.line + ' \u00b7 log grew ' + num(t.quietSeconds, 1) + ' s ago')));
+    : t.records + ' records, line ' + t.line + ' \u00b7 ' + (typeof t.deleted === 'number'
+      ? 'log deleted; leaves the page in ' + num(t.leavesIn / 60, 0) + ' min'
+      : 'log grew ' + num(t.quietSeconds, 1) + ' s ago'))));
   if (ui.single) {
     // One robot alone uses the screen: its words beside a large plot.
     const plotEl = parts.find(p => p.tagName === 'svg');

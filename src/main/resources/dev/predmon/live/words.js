@@ -10,10 +10,11 @@ export const GLYPHS = {violation: '\u2715', warning: '!', unknown: '?', 'no-verd
   waiting: '\u2026', ended: '\u25A0'};
 
 /** A property's light, worst first, with its glyph and its name on the page. */
-export const PROPERTY_STATES = ['violated', 'warning', 'unknown', 'pending', 'holds'];
-export const PROPERTY_GLYPHS = {violated: '\u2715', warning: '!', unknown: '?', pending: '\u2026', holds: '\u2713'};
-export const PROPERTY_WORDS = {violated: 'violated', warning: 'warning', unknown: 'unknown', pending: 'pending',
-  holds: 'holds'};
+export const PROPERTY_STATES = ['violated', 'warning', 'unknown', 'no-evidence', 'pending', 'holds'];
+export const PROPERTY_GLYPHS = {violated: '\u2715', warning: '!', unknown: '?', 'no-evidence': '\u2205',
+  pending: '\u2026', holds: '\u2713'};
+export const PROPERTY_WORDS = {violated: 'violated', warning: 'warning', unknown: 'unknown',
+  'no-evidence': 'no evidence', pending: 'pending', holds: 'holds'};
 
 const missing = (x) => x === null || x === undefined || Number.isNaN(x);
 

@@ -73,6 +73,44 @@ class ControlCharactersTest {
         assertTrue(r.out().contains("x.log\\nWARNING: the run can only be faulty scenario depleted\\n.log"), r.out());
     }
 
+    /**
+     * A hook's {@code PREDMON_LOG} is one line too: the documented recipe {@code echo "warning $PREDMON_LOG" | yarp
+     * write ...} would otherwise send the robot two lines, and an ESC to whatever shows them.
+     */
+    @Test
+    void aHooksLogNameHasItsNewlineAndEscEscaped() throws Exception {
+        Path log = Files.writeString(tmp.resolve("run\nWARNING\u001b[2K.log"), HandRuns.depleted().text());
+        Path got = tmp.resolve("got");
+        Cli r = Cli.run("watch", "--no-follow", "--log", log.toString(), "--models", models.toString(),
+                "--on-warning", "printf '%s' \"$PREDMON_LOG\" > '" + got + "'");
+        assertEquals(ExitCodes.WARNING, r.code(), r.err());
+        assertEquals(tmp.resolve("run\\nWARNING\\x1b[2K.log").toString(), Files.readString(got));
+    }
+
+    /**
+     * A property's name is the abstraction file's text: one with a right-to-left override is escaped in the end
+     * summary's verdict lines as in the violation line, so that it cannot reorder what the summary says.
+     */
+    @Test
+    void aPropertyNameWithARightToLeftOverrideIsEscapedInTheEndSummary() throws Exception {
+        Cli show = Cli.run("abstraction", "show", "thesis");
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        com.fasterxml.jackson.databind.node.ObjectNode a =
+                (com.fasterxml.jackson.databind.node.ObjectNode) json.readTree(show.out());
+        for (com.fasterxml.jackson.databind.JsonNode p : a.get("properties")) {
+            if (p.get("id").asText().equals("no-abort")) {
+                ((com.fasterxml.jackson.databind.node.ObjectNode) p).put("name", "navigation \u202eerongi never aborts");
+            }
+        }
+        Path abstraction = Files.writeString(tmp.resolve("rlo.json"), json.writeValueAsString(a));
+        Cli r = Cli.run("watch", "--no-follow", "--log", "src/test/resources/property/navigation-aborts.txt",
+                "--models", models.toString(), "--abstraction", abstraction.toString());
+        assertFalse(r.out().contains("\u202e"), "no raw override: " + r.out());
+        assertTrue(r.out().contains("VIOLATION of 'navigation \\u202eerongi never aborts'"), r.out());
+        assertTrue(r.out().contains("\n  no-abort (navigation \\u202eerongi never aborts): violated at line 157"),
+                r.out());
+    }
+
     @Test
     void escapesShowWhatWasThereAndLeaveOtherTextAlone() {
         assertEquals("a\\x1bb\\x07c\\x00d\\re\\nf\\tg\\x7fh\\x9bi", Terminal.line("a\u001bb\u0007c\u0000d\re\nf\tg\u007fh\u009bi"));

@@ -178,8 +178,8 @@ class PropertyScoresCliTest {
         String row = eval.out().lines().filter(l -> l.startsWith("no-abort ")).findFirst()
                 .orElseThrow(() -> new AssertionError(eval.out()));
         String[] cells = row.trim().split(" +");
-        assertEquals(List.of("no-abort", "2", "2", "2", "0"), List.of(cells).subList(0, 5),
-                "runs, violated, warned ahead, false alarms: " + row);
+        assertEquals(List.of("no-abort", "2", "0", "2", "2", "0"), List.of(cells).subList(0, 6),
+                "runs, no evidence, violated, warned ahead, false alarms: " + row);
         String scenario = eval.out().lines().filter(l -> l.startsWith("blocked ")).findFirst().orElseThrow();
         assertEquals(List.of("blocked", "faulty", "2", "0"), List.of(scenario.trim().split(" +")).subList(0, 4),
                 "runs, and no warning counted for the battery: " + scenario);

@@ -100,10 +100,11 @@ class TickSecondsTest {
 
     @Test
     void aTickLastsAPositiveTime() {
-        for (String bad : List.of("0", "-1", "Infinity")) {
+        // 1e308 s a tick would make every time Infinity, "time":"Infinity" in --json
+        for (String bad : List.of("0", "-1", "Infinity", "1e308", "3601")) {
             Cli r = Cli.run("watch", "--log", "x.log", "--no-follow", "--tick-seconds", bad);
             assertEquals(ExitCodes.USAGE, r.code(), bad + ": " + r.err());
-            assertTrue(r.err().contains("--tick-seconds must be a positive number of seconds"), r.err());
+            assertTrue(r.err().contains("--tick-seconds must be a number of seconds above 0 and at most 3600"), r.err());
         }
     }
 }

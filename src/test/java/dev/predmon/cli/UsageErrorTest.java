@@ -31,6 +31,17 @@ class UsageErrorTest {
         }
     }
 
+    /** A value that would make watch look for new lines without a pause, a core spent on nothing. */
+    @Test
+    void aPollIntervalOutsideOneMillisecondToAMinuteIsRefused() {
+        for (String bad : List.of("-1", "0", "60001")) {
+            Cli r = Cli.run("watch", "--log", "x.log", "--polling", "--poll-ms", bad);
+            assertEquals(ExitCodes.USAGE, r.code(), bad + ": " + r.err());
+            assertEquals("predmon: --poll-ms must be from 1 to 60000 milliseconds, got " + bad,
+                    r.err().lines().findFirst().orElse(""));
+        }
+    }
+
     @Test
     void aMissingOrImpossibleValueAndAnUnknownCommandToo() {
         Cli missing = Cli.run("watch");
@@ -46,6 +57,12 @@ class UsageErrorTest {
         assertEquals(ExitCodes.USAGE, oldName.code(), "the option's earlier name is still taken");
         assertTrue(oldName.err().contains("--threshold must be at least 0"), oldName.err());
         assertFalse(Cli.run("classify", "--help").out().contains("--threshold"), "and not shown in the help");
+
+        // learn's spelling, in watch: said, not hidden behind "Missing required option: '--log=FILE'"
+        Cli plural = Cli.run("watch", "--logs", "robots", "--models", "models");
+        assertEquals(ExitCodes.USAGE, plural.code());
+        assertEquals(List.of("predmon: unknown option '--logs': 'predmon watch' spells it '--log'",
+                "see 'predmon watch --help'"), plural.err().strip().lines().toList());
 
         Cli misspelt = Cli.run("clasify", "--log", "x.log");
         assertEquals(ExitCodes.USAGE, misspelt.code());

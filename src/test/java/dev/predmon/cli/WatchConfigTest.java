@@ -129,6 +129,30 @@ class WatchConfigTest {
         c = Cli.run("watch", "--config", binary.toString());
         assertEquals(ExitCodes.BAD_INPUT, c.code());
         assertEquals("predmon: " + binary + ": not UTF-8 text: not a settings file\n", c.err());
+        // a device without end: read up to the limit, not until the heap is gone
+        c = Cli.run("watch", "--config", "/dev/zero");
+        assertEquals(ExitCodes.BAD_INPUT, c.code());
+        assertEquals("predmon: /dev/zero: larger than 1 MiB: not a settings file\n", c.err());
+    }
+
+    /**
+     * A value all in quotes would reach the option with its quotes: a hook's shell would look for a command named
+     * {@code "echo ..."} and fail with exit 127 at the first warning. Refused when the file is read; quotes inside a
+     * value (a command's own arguments) are the value's.
+     */
+    @Test
+    void aQuotedValueIsRefusedWhenTheFileIsRead() throws Exception {
+        String at = dir.resolve("watch.conf") + ":";
+        assertEquals("predmon: " + at + "2: 'on-warning' is quoted: values are taken as they are, quotes included; "
+                + "write it without the quotes around it",
+                first(refused(ExitCodes.USAGE, "log = a.log", "on-warning = \"echo warning $PREDMON_LOG\"")));
+        assertEquals("predmon: " + at + "1: 'name' is quoted: values are taken as they are, quotes included; "
+                + "write it without the quotes around it", first(refused(ExitCodes.USAGE, "name = 'r1'")));
+        CommandLine watch = new CommandLine(WatchCommand.class);
+        ConfigFile inner = ConfigFile.read(config("log = a.log", "on-warning = \"/opt/my tools/alert\" \"$PREDMON_LOG\""),
+                watch.getCommandSpec());
+        assertEquals("\"/opt/my tools/alert\" \"$$PREDMON_LOG\"",
+                inner.defaultValue(watch.getCommandSpec().findOption("--on-warning")));
     }
 
     /** The example in docs/ names only settings watch has, with values it takes. */

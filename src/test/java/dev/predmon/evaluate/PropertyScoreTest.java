@@ -34,4 +34,16 @@ class PropertyScoreTest {
         assertEquals(100.0, p.lead().median());
         assertEquals(70.0, p.baselineLead().median());
     }
+
+    /** A run with no evidence for the property is neither a safe run nor a violating one, and its warning no alarm. */
+    @Test
+    void aRunWithNoEvidenceIsNotCountedAsSafe() {
+        RunResult none = new RunResult("s", false, RunId.of(Path.of("log"), 0, 1), 0, Verdict.QUIET, null, null,
+                List.of(), null, null, null, false, null, 10, 5, 0, List.of(), true, "ticks", false, 0, 0, null, null,
+                List.of(new RunResult.PropertyResult("navigation-in-time", 5.0, null, null, null, null, "no-evidence",
+                        "no evidence (no GoTo/goTo command (its trigger) in the run)")));
+        PropertyScore p = PropertyScore.of(List.of(run(null, null, null), run(null, 400.0, null), none)).get(0);
+        assertEquals(List.of(2, 1, 0, 0, 1), List.of(p.runs(), p.violating(), p.warned(), p.falseAlarms(),
+                p.noEvidence()));
+    }
 }

@@ -185,13 +185,13 @@ class CommandHooksTest {
     @Timeout(30)
     void aFullQueueDropsWithAReportAndNoEventRunsTwice() throws Exception {
         Path calls = dir.resolve("calls");
-        int events = CommandHooks.THREADS + CommandHooks.QUEUE + 2;
+        int events = CommandHooks.THREADS + CommandHooks.PER_LOG + 2;
         try (CommandHooks h = hooks("echo $PREDMON_LINE >> '" + calls + "'; sleep 5", null, Duration.ofSeconds(1))) {
             for (int i = 0; i < events; i++) {
                 h.event(LogEvent.of("a.log", new MonitorEvent.Warning(i, i, List.of("depleted"), null, i, Clock.SECONDS, 0)));
             }
         }
-        long rejected = reports.stream().filter(r -> r.endsWith("commands are already waiting")).count();
+        long rejected = reports.stream().filter(r -> r.endsWith("commands of a.log are already waiting")).count();
         assertTrue(rejected >= 2, reports.toString());
         List<String> ran = Files.readAllLines(calls);
         assertEquals(ran.size(), ran.stream().distinct().count(), "no event ran twice: " + ran);

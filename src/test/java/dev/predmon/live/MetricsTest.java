@@ -72,6 +72,101 @@ class MetricsTest {
         return new Forecast(p, ttv, ttv * 0.8, ttv * 1.5, Forecast.Basis.MATCHED, null, 20, 8, 40.0, -0.9, unit);
     }
 
+    private static final java.util.regex.Pattern LOG_LABEL = java.util.regex.Pattern.compile("log=\"([^\"]*)\"");
+    private static final java.util.regex.Pattern ROBOT_LABEL = java.util.regex.Pattern.compile("robot=\"([^\"]*)\"");
+
+    /** Each log's {@code robot} labels over every series of the scrape. */
+    private static Map<String, java.util.Set<String>> robotsByLog(Map<String, Double> samples) {
+        Map<String, java.util.Set<String>> robots = new java.util.TreeMap<>();
+        for (String series : samples.keySet()) {
+            java.util.regex.Matcher log = LOG_LABEL.matcher(series);
+            java.util.regex.Matcher robot = ROBOT_LABEL.matcher(series);
+            assertTrue(log.find() && robot.find(), series);
+            robots.computeIfAbsent(log.group(1), l -> new java.util.TreeSet<>()).add(robot.group(1));
+        }
+        return robots;
+    }
+
+    /** The {@code robot} labels of the series named {@code name} whose value passes {@code test}. */
+    private static java.util.Set<String> robots(Map<String, Double> samples, String name, String match,
+                                                java.util.function.DoublePredicate test) {
+        java.util.Set<String> robots = new java.util.TreeSet<>();
+        samples.forEach((series, value) -> {
+            java.util.regex.Matcher robot = ROBOT_LABEL.matcher(series);
+            if (series.startsWith(name + "{") && series.contains(match) && test.test(value) && robot.find()) {
+                robots.add(robot.group(1));
+            }
+        });
+        return robots;
+    }
+
+    /**
+     * Logs whose names share a beginning: the page shows them short ({@code grasp}, {@code nav}), but every series
+     * labels a log's robot with its whole name, from the first scrape on and after a third log appears (which changes
+     * the short names), so that {@code predmon_state{state="violation"} == 1 and on(robot)
+     * predmon_violations_total > 0} finds the violated robot.
+     */
+    @Test
+    void theRobotLabelIsTheWholeNameOnEverySeriesAndStaysWhenALogAppears() {
+        Board b = new Board(models.models(), A.safety(), A.properties(), Duration.ofSeconds(10), now::get,
+                RobotNames.byFile(), List.of());
+        b.tile("robots/r1-grasp.log");
+        b.tile("robots/r1-nav.log");
+        Map<String, java.util.Set<String>> first = robotsByLog(samples(b));
+        assertEquals(Map.of("robots/r1-grasp.log", java.util.Set.of("r1-grasp"), "robots/r1-nav.log",
+                java.util.Set.of("r1-nav")), first);
+        b.tile("robots/r1-success-earlier.log");
+        Tile grasp = b.tile("robots/r1-grasp.log");
+        b.event(grasp, LogEvent.of("robots/r1-grasp.log", new MonitorEvent.Violation(34.6, 8219, PROPERTY, 15.86,
+                20.85, Clock.SECONDS, 0)));
+        Map<String, Double> s = samples(b);
+        assertEquals(Map.of("robots/r1-grasp.log", java.util.Set.of("r1-grasp"), "robots/r1-nav.log",
+                java.util.Set.of("r1-nav"), "robots/r1-success-earlier.log", java.util.Set.of("r1-success-earlier")),
+                robotsByLog(s), "one label a log, the same as before the third log came");
+        java.util.Set<String> violatedNow = robots(s, "predmon_state", "state=\"violation\"", v -> v == 1);
+        java.util.Set<String> counted = robots(s, "predmon_violations_total", "", v -> v > 0);
+        assertEquals(java.util.Set.of("r1-grasp"), violatedNow);
+        assertEquals(violatedNow, counted, "the join on(robot) of the state and the counter");
+    }
+
+    /**
+     * A deleted log's tile says so, with when it leaves; {@link Board#DELETED_KEPT} later it has left the page and
+     * every one of its series has left {@code /metrics}. A log that comes back gets its tile back.
+     */
+    @Test
+    void aDeletedLogsTileSaysSoAndLeavesWithItsSeries(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Board b = board();
+        Path gone = java.nio.file.Files.writeString(dir.resolve("r1.log"), "x");
+        Path kept = java.nio.file.Files.writeString(dir.resolve("r2.log"), "x");
+        for (Path p : List.of(gone, kept)) {
+            Tile t = b.tile(p.toString());
+            t.record(new Records().at(1).level(80).list().get(1));
+            b.event(t, LogEvent.of(p.toString(), new MonitorEvent.Violation(34.6, 8219, PROPERTY, 15.86, 20.85,
+                    Clock.SECONDS, 0)));
+        }
+        java.nio.file.Files.delete(gone);
+        b.status(null);
+        now.addAndGet(60_000);
+        com.fasterxml.jackson.databind.JsonNode tile = b.status(gone.toString()).get("logs").get(0);
+        assertEquals(60.0, tile.get("deleted").asDouble(), "deleted a minute ago: " + tile);
+        assertEquals(Board.DELETED_KEPT.toSeconds() - 60.0, tile.get("leavesIn").asDouble());
+        assertFalse(b.status(kept.toString()).get("logs").get(0).has("deleted"));
+        assertTrue(samples(b).keySet().stream().anyMatch(k -> k.contains(gone.toString())), "still there");
+
+        now.addAndGet(Board.DELETED_KEPT.toMillis());
+        com.fasterxml.jackson.databind.JsonNode logs = b.status(null).get("logs");
+        assertEquals(1, logs.size(), "the deleted log's tile has left");
+        assertEquals(kept.toString(), logs.get(0).get("log").asText());
+        Map<String, Double> s = samples(b);
+        assertTrue(s.keySet().stream().noneMatch(k -> k.contains(gone.toString())), s.keySet().toString());
+        assertEquals(1.0, s.get(series("predmon_violations_total", kept.toString(), "r2")), s.toString().replaceAll("predmon_property[^,]*, ", ""));
+
+        java.nio.file.Files.writeString(gone, "x");
+        Tile back = b.tile(gone.toString());
+        b.grew(back);
+        assertEquals(2, b.status(null).get("logs").size(), "a log written again is shown again");
+    }
+
     @Test
     void aNewLogHasItsStateAndCountersAtZeroButNoMadeUpForecastOrValue() {
         Board b = board();

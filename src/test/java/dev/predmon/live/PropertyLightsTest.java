@@ -96,6 +96,37 @@ class PropertyLightsTest {
         assertEquals("no verdict: the models cannot judge this log", lights.get(1).get("words").asText());
     }
 
+    /**
+     * A property none of whose records occurred in the run (no grasp tried; the battery on a misspelt command) is a
+     * grey light that says so, never a green "holds", in /status and /metrics.
+     */
+    @Test
+    void aPropertyWithNoEvidenceIsGreyNotGreen() {
+        Board b = board();
+        Tile t = b.tile("a.log");
+        t.record(level(1, 80));
+        Verdict none = new Verdict.NoEvidence("no ArmService/closeHand command (its trigger) in the run");
+        Verdict unread = new Verdict.NoEvidence("no reading of BatteryReader/levle in the run");
+        t.properties(statuses(Map.of("grasp-in-time", new PropertyStatus(property("grasp-in-time"), none,
+                PropertyStatus.Model.NONE, false, null, null), "battery", new PropertyStatus(property("battery"),
+                unread, PropertyStatus.Model.FORECAST, false, null, null))));
+        JsonNode lights = lights(b);
+        assertEquals("battery no-evidence, grasp-in-time no-evidence, charger-in-time holds, no-abort holds, "
+                + "navigation-in-time holds", ids(lights), "grey before green");
+        JsonNode grasp = lights.get(1);
+        assertEquals("grey", grasp.get("light").asText());
+        assertEquals("no-evidence", grasp.get("verdict").asText());
+        assertEquals("no evidence (no ArmService/closeHand command (its trigger) in the run)",
+                grasp.get("words").asText());
+        assertEquals("grey", lights.get(0).get("light").asText(), "the forecast's property too");
+        assertEquals("no evidence (no reading of BatteryReader/levle in the run)", lights.get(0).get("words").asText());
+        String metrics = new String(b.metrics().scrape(), StandardCharsets.UTF_8);
+        assertTrue(metrics.contains("predmon_property_state{log=\"a.log\",property=\"grasp-in-time\",robot=\"a\","
+                + "state=\"no-evidence\"} 1.0"), metrics);
+        assertTrue(metrics.contains("predmon_property_state{log=\"a.log\",property=\"grasp-in-time\",robot=\"a\","
+                + "state=\"holds\"} 0.0"), metrics);
+    }
+
     @Test
     void anAbortIsARedLightOfNoAbortWithItsEventFirstWhileTheBatteryStaysGreen() {
         Board b = board();

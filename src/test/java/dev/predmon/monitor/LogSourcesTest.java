@@ -82,6 +82,29 @@ class LogSourcesTest {
         assertEquals(List.of(a), s.find());
     }
 
+    /**
+     * A {@code latest.log} link beside the log it points to, and a hard link: one file, one robot, followed by its
+     * own name (two names gave two tiles, two warnings and two hook runs).
+     */
+    @Test
+    void aFileWithSeveralNamesIsWatchedOnceByItsOwnName() throws Exception {
+        Path run = file("robots/run-0005.log");
+        Path other = file("robots/robot-2.log");
+        Files.createSymbolicLink(dir.resolve("robots/latest.log"), Path.of("run-0005.log"));
+        LogSources s = new LogSources(List.of(dir.resolve("robots")));
+        assertEquals(List.of(other, run), s.find());
+        assertEquals(List.of(other, run), new LogSources(List.of(dir.resolve("robots/*.log"))).find());
+        Files.createLink(dir.resolve("robots/copy.log"), other);
+        assertEquals(List.of(other, run), s.find(), "a hard link: the first name");
+        Path elsewhere = file("archive/run-0001.log");
+        Path outside = Files.createSymbolicLink(dir.resolve("robots/old.log"), elsewhere);
+        assertEquals(List.of(outside, other, run), s.find(), "a link to a file not otherwise watched is followed");
+        Files.delete(dir.resolve("robots/copy.log"));
+        Path named = dir.resolve("robots/latest.log");
+        assertEquals(List.of(named, outside, other), new LogSources(List.of(named, dir.resolve("robots"))).find(),
+                "a link named as the log is followed by that name, and its target not again");
+    }
+
     @Test
     void oneFileIsNotSeveralEvenIfAGlobCouldBe() throws Exception {
         Path a = file("a.log");

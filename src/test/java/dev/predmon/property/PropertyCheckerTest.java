@@ -232,8 +232,8 @@ class PropertyCheckerTest {
         assertInstanceOf(Verdict.Violated.class, c.verdict(0));
         assertInstanceOf(Verdict.Violated.class, c.verdict(1));
         c.reset();
-        assertEquals(List.of(Verdict.HOLDS, Verdict.HOLDS), c.verdicts().stream()
-                .map(PropertyChecker.PropertyVerdict::verdict).toList());
+        assertEquals(List.of("no-evidence", "no-evidence"), c.verdicts().stream()
+                .map(pv -> pv.verdict().id()).toList(), "a new run has shown nothing yet");
         // ticks count from the new run's start
         new Trace().tick().goTo("kitchen").records().forEach(c::accept);
         assertEquals(new Verdict.Pending(2, 1, 2, Deadline.Unit.TICKS), c.verdict(1));
@@ -259,7 +259,8 @@ class PropertyCheckerTest {
         assertEquals(15.0, c.value(0), "read outside the bound's scope");
         assertTrue(Double.isNaN(c.reading(0)), "the bound itself did not read it: its scope is closed");
         assertTrue(Double.isNaN(c.value(1)), "a response has no value of its own");
-        assertEquals(Verdict.HOLDS, c.verdict(0), "15 outside the scope violates nothing");
+        assertEquals(new Verdict.NoEvidence("its scope never opened: no GoTo/goTo command"), c.verdict(0),
+                "15 outside the scope violates nothing, and is no evidence either");
         assertEquals(new Verdict.Pending(3, 1, 3, Deadline.Unit.TICKS), c.verdict(1),
                 "the condition read the same 15");
         new Trace().goTo("kitchen").records().forEach(c::accept);

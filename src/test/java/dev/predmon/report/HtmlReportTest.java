@@ -102,7 +102,8 @@ class HtmlReportTest {
         assertFalse(scores.isEmpty(), "the built-in abstraction has other properties");
         assertTrue(html.contains("<h2 id=properties>The other properties</h2>"));
         for (dev.predmon.evaluate.PropertyScore p : scores) {
-            assertTrue(html.contains("<tr><td>" + p.property() + "</td><td>" + p.runs() + "</td><td>" + p.violating()
+            assertTrue(html.contains("<tr><td>" + p.property() + "</td><td>" + p.runs() + "</td><td>" + p.noEvidence()
+                    + "</td><td>" + p.violating()
                     + "</td><td>" + p.warned() + "</td><td>" + p.falseAlarms() + "</td>"), p.property());
         }
         assertTrue(html.contains("baseline: warned ahead"));
