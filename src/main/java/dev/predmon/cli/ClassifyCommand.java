@@ -44,7 +44,7 @@ final class ClassifyCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         // One replay through watch's monitor, with its default rule and confirmation: its verdict is watch's, and
         // Algorithm 7 scores the pairs it took. Its forecasts are not kept: a long log's replay stays small.
-        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), input.tuned().confirm(), (r, run) -> { },
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), input.tuned().confirm(), (r, run, judged) -> { },
                 LogReplay.Detail.VERDICTS);
         int code = ExitCodes.ofMonitor(replayed.monitor());
         // A log of several runs (the tick counter started again) is classified run by run.

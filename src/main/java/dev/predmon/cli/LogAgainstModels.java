@@ -10,6 +10,7 @@ import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.replay.LogReplay;
+import dev.predmon.replay.RecordTaken;
 import dev.predmon.replay.ReplayedLog;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -19,7 +20,6 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.function.ObjIntConsumer;
 
 /**
  * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
@@ -120,7 +120,7 @@ final class LogAgainstModels {
      * @param taken  gets every record with its run right after the monitor took it
      * @param detail what the replay keeps of each run
      */
-    ReplayedLog replay(PrintWriter err, int confirm, ObjIntConsumer<LogRecord> taken, LogReplay.Detail detail)
+    ReplayedLog replay(PrintWriter err, int confirm, RecordTaken taken, LogReplay.Detail detail)
             throws BadInputException, IOException {
         checkLog();
         ModelSet set = models();

@@ -12,6 +12,7 @@ import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.PropertyView;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
 import dev.predmon.replay.ReplayedRun;
@@ -159,11 +160,12 @@ public final class Replay {
      * Per run, the time of its first record and the readings near the bound on the way to its violation (since the
      * value was last above the band), seen after the
      * monitor took each record (so that {@link PredictiveMonitor#run()} already counts a record that starts a run).
-     * Read with the safety monitor's own {@link Bound#valueOf}, so the violation counted up to is the one it
-     * reported.
+     * The value and the violation are the monitor's checker's ({@link PropertyView}: the reading within the
+     * property's scope, and whether it is violated now), so the violation counted up to is the one it reported.
      */
     public static final class Approach {
         private final Bound rule;
+        private int index = -1;
         /** The lowest value a safe training run read: the raw-value baseline warns below it (NaN: never). */
         private final double floor;
         /** Per run, when the value first went below the floor, and when the current stretch below it began. */
@@ -180,17 +182,18 @@ public final class Replay {
             this.floor = floor;
         }
 
-        /** Takes record {@code r} of run {@code run}, after the monitor took it. */
-        public void record(LogRecord r, int run) {
+        /** Takes record {@code r} of run {@code run}, after the monitor took it and judged it as {@code judged}. */
+        public void record(LogRecord r, int run, PropertyView judged) {
             start.putIfAbsent(run, r.time());
             if (rule == null || violated.contains(run)) {
                 return;
             }
-            double v = rule.valueOf(r);
+            index = index < 0 ? judged.indexOf(rule.id()) : index;
+            double v = judged.reading(index);
             if (Double.isNaN(v)) {
                 return;
             }
-            if (rule.violatedBy(v)) {
+            if (judged.violatedNow(index)) {
                 violated.add(run);
                 Double stretch = below.get(run);
                 if (stretch != null) {

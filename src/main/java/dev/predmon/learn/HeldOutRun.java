@@ -65,7 +65,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
      */
     public static Judged replayAll(Path log, RunLabel label, ModelSet models, Abstraction abstraction, int confirm,
                                    WarningRule rule) throws IOException {
-        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { });
+        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run, judged) -> { });
         Map<String, List<HeldOutRun>> bounds = new TreeMap<>();
         for (String id : models.forecast().bounds().keySet()) {
             List<HeldOutRun> runs = new ArrayList<>();

@@ -12,6 +12,7 @@ import dev.predmon.parse.Clock;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
+import dev.predmon.property.PropertyView;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -45,6 +46,8 @@ public final class Tile {
     private final String name;
     private final List<LearnedModel> models;
     private final Optional<Bound> safety;
+    /** The headline property's position among the checked ones, once known. */
+    private int index = -1;
 
     private int run;
     private long runLine = 1;
@@ -175,15 +178,19 @@ public final class Tile {
         values.clear();
     }
 
-    /** A record of the log, after the monitor took it (so a new run has begun already if it begins one). */
-    public synchronized void record(LogRecord r) {
+    /**
+     * A record of the log, after the monitor took it (so a new run has begun already if it begins one) and judged it
+     * as {@code judged}: the headline property's value is the checker's reading of it, whatever its scope.
+     */
+    public synchronized void record(LogRecord r, PropertyView judged) {
         records++;
         runRecords++;
         line = r.line();
         clock = r.clock();
         rest.record(r);
         if (safety.isPresent()) {
-            double v = safety.get().valueOf(r);
+            index = index < 0 ? judged.indexOf(safety.get().id()) : index;
+            double v = index < 0 ? Double.NaN : judged.value(index);
             if (!Double.isNaN(v)) {
                 values.add(r.time(), v);
             }

@@ -39,7 +39,7 @@ final class ForecastTracker {
                 models.machines()));
     }
 
-    /** The tracker of the forecast {@code model} over {@code machines} (a bound property's own, {@link BoundWatch}). */
+    /** The tracker of the forecast {@code model} over {@code machines} (a bound property's, {@link BoundFollow}). */
     static ForecastTracker of(ForecastModel model, Map<String, CompactMealy<String, String>> machines) {
         return new ForecastTracker(new Forecaster(model, machines));
     }

@@ -26,7 +26,7 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
         NOVELTY,
         /**
          * A bounded response's deadline forecast: a miss at even odds, or an obligation pending past every training
-         * one ({@code DeadlineWatch}).
+         * one ({@code DeadlineFollow}).
          */
         DEADLINE;
 
@@ -145,7 +145,7 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
 
     /**
      * The forecast changed enough to be told (see {@code ForecastTracker}), or a bounded response's deadline forecast
-     * changed as the page shows it ({@code DeadlineWatch}: its probability of a miss in whole percent, or whether it is
+     * changed as the page shows it ({@code DeadlineFollow}: its probability of a miss in whole percent, or whether it is
      * past every training obligation).
      *
      * @param time     time of the record that completed the pair

@@ -15,6 +15,7 @@ import dev.predmon.pipeline.PipelineListener;
 import dev.predmon.pipeline.TracePipeline;
 import dev.predmon.property.Bound;
 import dev.predmon.property.PropertyChecker.PropertyVerdict;
+import dev.predmon.property.PropertyView;
 
 import java.util.List;
 import java.util.Map;
@@ -27,25 +28,20 @@ import java.util.function.ObjIntConsumer;
  * one at a time through the shared {@link TracePipeline}; each compacted pair advances every model still alive
  * by its two Mealy steps ({@code input/OK}, {@code Delta/output}) ({@link Matching}); a model is dropped at an input
  * it cannot take or when its discrepancies exceed the tolerance. A scenario matches while any of its machines
- * matches.
- *
- * <p>The forecast ({@link ForecastTracker}) follows the same pairs when the models carry one: a probability of
- * violation and a time to it after every pair, also through behaviour no model has seen. With the default
- * {@link WarningRule#FORECAST} rule the monitor warns when that probability reaches the threshold learned with the
- * models; the thesis's rule below stays available as {@link WarningRule#MATCH}. Whether to warn is decided in one
- * place, {@link WarningPolicy}: the monitor feeds it and tells its warnings.
- *
- * The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
+ * matches. The match rule ({@link MatchRule}): every nominal scenario eliminated while a faulty one still matches, for
  * {@code confirm} more pairs ({@link Abstraction#confirm()}). Per record the work and the state are constant.
  *
- * <p>Every property of the abstraction is checked on every run, the others forecast on their own ({@link
- * OtherForecasts}). The forecast's property (the built-ins' {@code battery}, {@code level >= 20}) is followed here:
- * its violation gives the lead of the warning, and the {@link Alarm} says when a warning or a violation is over.
+ * <p>Every property of the abstraction is followed the same way ({@link PropertyFollows}): the checker judges it, its
+ * follower forecasts it where the models learned a forecast of it (a probability of violation and a time to it, also
+ * through behaviour no model has seen), warns by the rule in force ({@link WarningRule#FORECAST} by default, the
+ * thesis's {@link WarningRule#MATCH}) and says when a warning or a violation is over. One property, the abstraction's
+ * first floor ({@link Abstraction#safety()}), is the run's headline: the outcome's older fields ({@link RunOutcome}'s
+ * warning and violation, the wire's {@code battery}) speak of it.
  */
 public final class PredictiveMonitor implements PipelineListener {
 
     private final Matching matching;
-    private final SafetyMonitor properties;
+    private final PropertyFollows properties;
     private final Consumer<MonitorEvent> events;
     private final TracePipeline pipeline;
     /** What the current run has shown so far; starts over with every run. */
@@ -56,12 +52,9 @@ public final class PredictiveMonitor implements PipelineListener {
     private int runsBefore;
     private final LogTotals before = new LogTotals();
     private final WarningRule rule;
-    private final ForecastTracker forecast;
-    private final Alarm alarm;
-    /** The other properties' checks and forecasts. */
-    private final OtherForecasts others;
-    /** The forecast property's value, violation, forecast and warnings. */
-    private final ForecastFollow follow;
+    private final FollowContext context;
+    private ObjIntConsumer<Forecast> everyForecast = (f, r) -> { };
+    private BoundSteps everyBound = (p, f, r) -> { };
     private TickSeconds ticks = TickSeconds.NONE;
     /** Sees what the pipeline gives the monitor, each just before the monitor takes it (the replay's stream). */
     private PipelineListener tee = (pair, trigger) -> { };
@@ -90,26 +83,24 @@ public final class PredictiveMonitor implements PipelineListener {
             throw new IllegalArgumentException("the forecast rule needs models learned with a forecast");
         }
         this.rule = rule;
-        this.forecast = ForecastTracker.of(models);
         this.matching = new Matching(models.models(), tolerance, confirm);
-        Bound safety = abstraction.safety().orElse(null);
-        this.events = e -> events.accept(ticks.event(now.told(e))); // in seconds once a tick's length is given
-        this.alarm = new Alarm(safety, forecast, this.events);
-        WarningPolicy policy = new WarningPolicy(rule, forecast, alarm);
-        this.others = new OtherForecasts(models, abstraction, rule, matching, now, this.events);
-        this.properties = others.properties();
-        this.follow = new ForecastFollow(safety, forecast, alarm, policy, matching, now, rule, properties.forecastId(),
-                others.violates(), this.events);
-        others.followedBy(follow);
+        String headline = abstraction.safety().map(Bound::id).orElse(null);
+        this.events = e -> events.accept(ticks.event(now.told(e, headline))); // in seconds once a tick is given
+        this.context = new FollowContext(now, rule, this.events, matching, headline);
+        context.bounds = (p, f, run) -> {
+            if (p.equals(context.headline)) {
+                everyForecast.accept(f, run);
+            } else {
+                everyBound.forecast(p, f, run);
+            }
+        };
+        this.properties = new PropertyFollows(models, abstraction.properties(), context);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 
     /** Reports every time in seconds, a tick lasting {@code t} (a log without time stamps counts ticks). */
     public void countTicksAs(TickSeconds t) {
         ticks = t;
-        if (forecast != null) {
-            forecast.countTicksAs(t);
-        }
         properties.countTicksAs(t);
     }
 
@@ -129,6 +120,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * every run watched since it started, whatever rotation came between them.
      */
     public void restart(String reason) {
+        properties.runEnded(now.last, "the log was restarted (" + reason + ")");
         if (pipeline.records() > 0) {
             finished.add(current());
         }
@@ -143,7 +135,8 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void runStarted(int number, LogRecord first) {
         tee.runStarted(number, first);
-        properties.ending(first, now.run); // a deadline the silence before it passed is violated, not dropped
+        properties.ending(first); // a deadline the silence before it passed is violated, not dropped
+        properties.runEnded(first, "the run ended; a new run began at line " + first.line());
         finished.add(current());
         startRun(runsBefore + number, first.line());
         events.accept(new MonitorEvent.RunStarted(now.run, first.time(), first.line(), first.clock()));
@@ -157,19 +150,15 @@ public final class PredictiveMonitor implements PipelineListener {
     private void startRun(int number, long line) {
         now.start(number, line);
         matching.reset();
-        alarm.reset();
         properties.reset();
-        if (forecast != null) {
-            forecast.reset();
-        }
     }
 
     private RunOutcome current() {
         return new RunOutcome(now.run, now.firstLine, (MonitorEvent.Warning) ticks.event(now.warning),
-                (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs, now.value != null,
-                forecast == null ? null : forecast.last(), properties.verdicts(),
-                (MonitorEvent.Warning) ticks.event(now.anyWarning), RunOutcome.inSeconds(now.warnings, ticks::event),
-                now.warningRead, now.violationRead);
+                (MonitorEvent.Violation) ticks.event(now.violation), now.noMatch, now.pairs,
+                properties.headline() != null && properties.headline().observed(), forecast().orElse(null),
+                properties.verdicts(), (MonitorEvent.Warning) ticks.event(now.anyWarning),
+                RunOutcome.inSeconds(now.warnings, ticks::event), now.warningRead, now.violationRead);
     }
 
     /** Every run's outcome, the current one last: the latest {@value RunHistory#KEPT} ({@link #summary}: all). */
@@ -187,7 +176,7 @@ public final class PredictiveMonitor implements PipelineListener {
      * what forecasts it and its latest forecast (the forecast's property's is {@link #forecast()}).
      */
     public List<PropertyStatus> properties() {
-        return properties.statuses(!alarm.quiet() && !alarm.violated(), forecast().orElse(null), now.othersWarned);
+        return properties.statuses();
     }
 
     /** What all runs since the start add up to. */
@@ -195,19 +184,14 @@ public final class PredictiveMonitor implements PipelineListener {
         return finished.summary(current());
     }
 
-    /** A record: the action under way; a reading's violation, recovery, forecast and warning ({@link Alarm}). */
+    /** A record: every property's violation, recovery, forecast and warning at it ({@link PropertyFollow}). */
     @Override
     public void record(LogRecord record) {
         tee.record(record);
         now.read++;
         clock = ticks.clock(record.clock());
-        int run = now.run;
-        properties.accept(record, run);
-        alarm.record(record, run);
-        double v = properties.forecastValue(); // safety's valueOf(record), as the checker read it
-        if (!Double.isNaN(v)) {
-            follow.reading(record, v);
-        }
+        now.last = record;
+        properties.record(record);
     }
 
     @Override
@@ -219,7 +203,7 @@ public final class PredictiveMonitor implements PipelineListener {
     @Override
     public void gap(LogRecord record) {
         tee.gap(record);
-        follow.unseen(record.line());
+        properties.gap(record.line());
     }
 
     @Override
@@ -235,7 +219,7 @@ public final class PredictiveMonitor implements PipelineListener {
             events.accept(new MonitorEvent.Eliminated(trigger.time(), trigger.line(), m.id(), m.scenario(),
                     m.faulty(), t.elimination().describe(), trigger.clock(), now.run));
         }
-        follow.pair(pair, step, trigger);
+        properties.pair(pair, step, trigger);
         if (!now.noMatch && step.noMatch()) {
             now.noMatch = true;
             events.accept(new MonitorEvent.NoMatch(trigger.time(), trigger.line(), trigger.clock(), now.run));
@@ -259,20 +243,20 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /** Also tells {@code each} every forecast with its run, one per pair, before that pair's events (for scoring). */
     public void onEveryForecast(ObjIntConsumer<Forecast> each) {
-        follow.onEveryForecast(each);
+        this.everyForecast = each;
     }
 
-    /** Also tells {@code each} every forecast of each other bound property ({@link BoundWatch.Every}). */
-    public void onEveryBoundForecast(BoundWatch.Every each) {
-        others.onEveryBoundForecast(each);
+    /** Also tells {@code each} every forecast of each bound property but the headline one. */
+    public void onEveryBoundForecast(BoundSteps each) {
+        this.everyBound = each;
     }
 
     /**
      * Also tells {@code each} every raw deadline forecast and how each obligation so forecast ended ({@link
-     * DeadlineSteps}); nothing without deadline forecasts (the match rule, models without obligations).
+     * DeadlineSteps}); nothing without deadline forecasts (models without obligations).
      */
     public void onEveryDeadlineForecast(DeadlineSteps each) {
-        others.onEveryDeadlineForecast(each);
+        context.deadlines = each;
     }
 
     /**
@@ -285,7 +269,7 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /** The id of the property the monitor's own forecast and the match rule's warnings are about, if any. */
     public Optional<String> forecastProperty() {
-        return Optional.ofNullable(properties.forecastId());
+        return Optional.ofNullable(context.headline);
     }
 
     /** The rule this monitor warns by. */
@@ -295,17 +279,17 @@ public final class PredictiveMonitor implements PipelineListener {
 
     /** The latest forecast of the current run, if the models carry one and a pair has come. */
     public Optional<Forecast> forecast() {
-        return forecast == null ? Optional.empty() : Optional.ofNullable(forecast.last());
+        return Optional.ofNullable(properties.headline() == null ? null : properties.headline().last());
     }
 
     /** The first warning of the log (of any run), once raised. */
     public Optional<MonitorEvent.Warning> warning() {
-        return Optional.ofNullable((MonitorEvent.Warning) ticks.event(follow.firstWarning()));
+        return Optional.ofNullable((MonitorEvent.Warning) ticks.event(now.firstWarning));
     }
 
     /** The forecast property's first violation in the log (of any run), once seen. */
     public Optional<MonitorEvent.Violation> violation() {
-        return Optional.ofNullable((MonitorEvent.Violation) ticks.event(follow.firstViolation()));
+        return Optional.ofNullable((MonitorEvent.Violation) ticks.event(now.firstViolation));
     }
 
     /** The run being matched: 0, then 1, 2, ... in a log that holds several. */
@@ -339,6 +323,14 @@ public final class PredictiveMonitor implements PipelineListener {
     /** Compacted pairs matched so far. */
     public long pairs() {
         return now.pairs;
+    }
+
+    /**
+     * Every property of the current run as the checker judged the last record (read-only): the one reader of a
+     * property's value, for whoever shows, labels or scores it.
+     */
+    public PropertyView judged() {
+        return properties.checker();
     }
 
     /** The pipeline's counters (records, interface records, unmapped messages). */

@@ -31,10 +31,10 @@ public record PropertyStatus(Property property, Verdict verdict, Model model, bo
     public enum Model {
         /**
          * A value forecast ({@code ForecastTracker}): the run's forecast of the forecast's property, or a bound
-         * property's own ({@code BoundWatch}); a probability of violation and a time to it.
+         * property's own ({@code BoundFollow}); a probability of violation and a time to it.
          */
         FORECAST,
-        /** A bounded response's deadline forecast from the training runs' obligations ({@code DeadlineWatch}). */
+        /** A bounded response's deadline forecast from the training runs' obligations ({@code DeadlineFollow}). */
         DEADLINE,
         /** Nothing: no model of the property (an absence, a precedence, a response the training runs never owed). */
         NONE;

@@ -1,14 +1,16 @@
 package dev.predmon.monitor;
 
-import java.util.HashSet;
+import dev.predmon.parse.LogRecord;
+
 import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.Set;
+import java.util.Objects;
 
 /**
  * What the current run has shown the {@link PredictiveMonitor} so far: its number and first line, its first warnings
- * and violation, the forecast property's last value, the pairs matched and where the thesis's rule first held. All of
- * it starts over with every run ({@link #start}); what outlives a run is the monitor's {@link RunHistory}.
+ * and violation, its last record, the pairs matched and where the thesis's rule first held. All of it but the log's
+ * first warning and violation starts over with every run ({@link #start}); what else outlives a run is the monitor's
+ * {@link RunHistory}.
  */
 final class RunState {
 
@@ -22,14 +24,12 @@ final class RunState {
     MonitorEvent.Warning anyWarning;
     /** Each property's first warning in the run, by id, in the order they came. */
     final Map<String, MonitorEvent.Warning> warnings = new LinkedHashMap<>();
-    /** The properties other than the forecast's that the matching warned of (a faulty scenario's {@code violates}). */
-    final Set<String> othersWarned = new HashSet<>();
     /** The forecast property's first violation, or null. */
     MonitorEvent.Violation violation;
     /** Whether a point came where no model, nominal or faulty, matched the run any more. */
     boolean noMatch;
-    /** The forecast property's last value, null before one. */
-    Double value;
+    /** The run's last record, null before one. */
+    LogRecord last;
     /** Compacted pairs matched. */
     long pairs;
     /** The pair at which the thesis's match rule first held (confirm included), or -1. */
@@ -50,20 +50,18 @@ final class RunState {
         warning = null;
         anyWarning = null;
         warnings.clear();
-        othersWarned.clear();
         violation = null;
         noMatch = false;
-        value = null;
+        last = null;
         pairs = 0;
         matchRuleAt = -1;
         warningRead = 0;
         violationRead = 0;
     }
 
-    /** The matching warned of property {@code id}, not the forecast's. */
-    void otherWarned(String id) {
-        othersWarned.add(id);
-    }
+    /** The log's first warning and violation of the headline property (of any run): they outlive the run. */
+    MonitorEvent.Warning firstWarning;
+    MonitorEvent.Violation firstViolation;
 
     /**
      * A warning of some property: kept when it is the run's first (with where it came in the order of reading), and
@@ -79,10 +77,24 @@ final class RunState {
         }
     }
 
-    /** {@code e}, an event the monitor tells: the run's first violation is noted where it came in reading order. */
-    MonitorEvent told(MonitorEvent e) {
+    /**
+     * {@code e}, an event the monitor tells, {@code headline} the id of the property the outcome headlines: keeps the
+     * run's first warning of any property and of each, the run's and the log's first warning and violation of the
+     * headline property, and where in reading order the run's first violation came.
+     */
+    MonitorEvent told(MonitorEvent e, String headline) {
         if (e instanceof MonitorEvent.Violation && violationRead == 0) {
             violationRead = read;
+        }
+        if (e instanceof MonitorEvent.Warning w) {
+            anyWarned(w);
+            if (Objects.equals(w.property(), headline)) {
+                warning = warning == null ? w : warning;
+                firstWarning = firstWarning == null ? w : firstWarning;
+            }
+        } else if (e instanceof MonitorEvent.Violation v && v.forecast()) {
+            violation = violation == null ? v : violation;
+            firstViolation = firstViolation == null ? v : firstViolation;
         }
         return e;
     }

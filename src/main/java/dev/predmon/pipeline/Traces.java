@@ -226,7 +226,8 @@ public final class Traces {
             if (safety.isEmpty()) {
                 return;
             }
-            double v = checker.value(safetyIndex); // safety's valueOf(record), as the checker read it
+            // The checker is the judge: the reading within the property's scope, and its verdict (its listener)
+            double v = checker.reading(safetyIndex);
             if (Double.isNaN(v)) {
                 return;
             }
@@ -234,12 +235,13 @@ public final class Traces {
                 changes.add(new RunTiming.Reading(record.time(), v, pairs.size()));
             }
             value = v;
-            if (safety.get().violatedBy(v)) {
+            Double at = violations.get(safety.get().id());
+            if (at != null) {
                 if (!violated) {
-                    violationTime = record.time();
+                    violationTime = at;
                 }
                 violated = true;
-            } else if (!violated && !(v >= lowestSafe)) {
+            } else if (!(v >= lowestSafe)) {
                 lowestSafe = v;
             }
         }

@@ -22,7 +22,7 @@ import java.util.List;
  * condition's value).
  * Otherwise its verdict is {@link Verdict.NoEvidence}: a misspelt name is never "holds".
  */
-public final class PropertyChecker {
+public final class PropertyChecker implements PropertyView {
 
     /** Told each property's first violation in a run. */
     @FunctionalInterface
@@ -79,6 +79,12 @@ public final class PropertyChecker {
     /** Per property, its verdict without evidence: nothing seen in its scope, and its scope never opened. */
     private final Verdict.NoEvidence[] unseen;
     private final Verdict.NoEvidence[] unopened;
+    /** Whether each property is violated now: since a violation, until it holds again or its segment closes. */
+    private final boolean[] now;
+    /** The violation the last record made of each property that was not violated just before it, or null. */
+    private final Verdict.Violated[] made;
+    /** Whether the last record's reading of each bound ended its violation. */
+    private final boolean[] again;
     private final Listener listener;
     private long ticks;
 
@@ -107,6 +113,9 @@ public final class PropertyChecker {
             unopened[i] = scopes[i].global() ? unseen[i] : new Verdict.NoEvidence("its scope never opened: no "
                     + scopes[i].from().describe());
         }
+        this.now = new boolean[checks.length];
+        this.made = new Verdict.Violated[checks.length];
+        this.again = new boolean[checks.length];
     }
 
     /** Takes the next record of the run. */
@@ -118,6 +127,8 @@ public final class PropertyChecker {
         for (int i = 0; i < checks.length; i++) {
             Check c = checks[i];
             c.reading = Double.NaN;
+            made[i] = null;
+            again[i] = false;
             if (violated[i] != null && !c.reads()) {
                 continue; // the verdict is final; only a bound still reads its value, for the forecast
             }
@@ -149,10 +160,28 @@ public final class PropertyChecker {
                     c.reset();
                 }
             }
+            judge(i, c, v);
+            if (!inScope(i) && c.reads()) {
+                now[i] = false; // out of its scope a bound cannot be violated: its violation ends with the scope
+            }
             if (v != null && violated[i] == null) {
                 violated[i] = v;
                 listener.violated(i, properties.get(i), v);
             }
+        }
+    }
+
+    /**
+     * What record's step {@code v} does to property {@code i}'s violation now: a violation starts one (told as made
+     * when none was up); a bound's reading that holds ends one.
+     */
+    private void judge(int i, Check c, Verdict.Violated v) {
+        if (v != null) {
+            made[i] = now[i] ? null : v;
+            now[i] = true;
+        } else if (now[i] && !Double.isNaN(c.reading)) {
+            now[i] = false; // a bound's reading within its bounds: it holds again
+            again[i] = true;
         }
     }
 
@@ -174,6 +203,7 @@ public final class PropertyChecker {
     }
 
     /** The value the last record gave property {@code index} (a {@link Bound}), or NaN when it gave none. */
+    @Override
     public double reading(int index) {
         return checks[index].reading;
     }
@@ -182,6 +212,7 @@ public final class PropertyChecker {
      * The value the last record carried for bound {@code index} ({@link Bound#valueOf}), whether or not its scope is
      * open; NaN when it carried none (or the property is no bound).
      */
+    @Override
     public double value(int index) {
         return slots[index] < 0 ? Double.NaN : readings.value(slots[index]);
     }
@@ -190,14 +221,39 @@ public final class PropertyChecker {
      * Whether property {@code index} is checked now, after the last record: its scope is the whole run, or a segment of
      * it opened and has not closed (a segment's closing record was checked, and the scope is closed after it).
      */
+    @Override
     public boolean inScope(int index) {
         return scopes[index].global() || open[index];
+    }
+
+    /**
+     * Whether property {@code index} is violated now, after the last record: a bound from a violating reading until
+     * it holds again (its next reading within its bounds) or its scope closes; any other kind from its violation to
+     * the end of the run (its verdict is final).
+     */
+    @Override
+    public boolean violatedNow(int index) {
+        return now[index];
+    }
+
+    /**
+     * The violation the last record made of property {@code index} when it was not violated just before (its first
+     * in the run, or a bound's next one after it held again), or null.
+     */
+    public Verdict.Violated violatedAt(int index) {
+        return made[index];
+    }
+
+    /** Whether the last record's reading of bound {@code index} (within its scope) ended its violation. */
+    public boolean holdsAgain(int index) {
+        return again[index];
     }
 
     /**
      * The verdict of property {@code index} on the run so far: violated, pending, holds, or no evidence when nothing it
      * speaks of occurred in its scope yet.
      */
+    @Override
     public Verdict verdict(int index) {
         if (violated[index] != null) {
             return violated[index];
@@ -219,6 +275,7 @@ public final class PropertyChecker {
     }
 
     /** The properties checked, in order. */
+    @Override
     public List<Property> properties() {
         return properties;
     }
@@ -230,10 +287,14 @@ public final class PropertyChecker {
      */
     public void overdue(LogRecord r) {
         for (int i = 0; i < checks.length; i++) {
+            made[i] = null; // a judgement of its own: what the last record made is told already
+            again[i] = false;
             if (violated[i] == null && (scopes[i].global() || open[i])) {
                 Verdict.Violated v = checks[i].overdue(r);
                 if (v != null) {
                     violated[i] = v;
+                    made[i] = now[i] ? null : v;
+                    now[i] = true;
                     listener.violated(i, properties.get(i), v);
                 }
             }
@@ -266,6 +327,9 @@ public final class PropertyChecker {
             violated[i] = null;
             evidenced[i] = false;
             opened[i] = false;
+            now[i] = false;
+            made[i] = null;
+            again[i] = false;
         }
     }
 }

@@ -56,13 +56,13 @@ public final class LogReplay {
      * @param taken     gets every record with its run right after the monitor took it
      */
     public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm,
-                                     WarningRule rule, ObjIntConsumer<LogRecord> taken) throws IOException {
+                                     WarningRule rule, RecordTaken taken) throws IOException {
         return replay(log, models, abstraction, tolerance, confirm, rule, taken, Detail.FORECASTS);
     }
 
     /** As above, keeping {@code detail} of each run. */
     public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm,
-                                     WarningRule rule, ObjIntConsumer<LogRecord> taken, Detail detail)
+                                     WarningRule rule, RecordTaken taken, Detail detail)
             throws IOException {
         List<Builder> runs = new ArrayList<>();
         PredictiveMonitor[] self = new PredictiveMonitor[1];
@@ -99,7 +99,7 @@ public final class LogReplay {
         List<ParseProblem> problems = new ArrayList<>();
         long lines;
         try (LogWatcher watcher = LogWatcher.withRecords(log, monitor, problems::add,
-                r -> taken.accept(r, monitor.run()))) {
+                r -> taken.taken(r, monitor.run(), monitor.judged()))) {
             watcher.drain();
             lines = watcher.lines();
         }
@@ -118,7 +118,7 @@ public final class LogReplay {
     public static ReplayedLog replay(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm)
             throws IOException {
         return replay(log, models, abstraction, tolerance, confirm, PredictiveMonitor.defaultRule(models),
-                (r, run) -> { });
+                (r, run, judged) -> { });
     }
 
     /** Keeps every forecast of {@code monitor}, of the forecast's property, every bound and every deadline. */
@@ -141,7 +141,7 @@ public final class LogReplay {
         });
         monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
                 current[0].time(), current[0].line(), monitor.pairs())));
-        monitor.onEveryBoundForecast((property, f, run) -> of(runs, run).bound(property, new ReplayedRun.Timed(f,
+        monitor.onEveryBoundForecast((String property, Forecast f, int run) -> of(runs, run).bound(property, new ReplayedRun.Timed(f,
                 current[0].time(), current[0].line(), monitor.pairs())));
     }
 

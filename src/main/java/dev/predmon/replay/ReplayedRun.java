@@ -93,7 +93,7 @@ public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Lo
     }
 
     /**
-     * One obligation of a bounded response as the monitor forecast it ({@code DeadlineWatch}) and as it ended.
+     * One obligation of a bounded response as the monitor forecast it ({@code DeadlineFollow}) and as it ended.
      *
      * @param property   the property
      * @param forecasts  every deadline forecast of it, raw (before the rule's calibration), in order: one at each

@@ -156,7 +156,7 @@ public final class WatchSession implements FleetListener, AutoCloseable {
     public void record(WatchedLog log, LogRecord r) {
         LogOutlet o = outlets.get(log);
         if (o.tile != null) {
-            o.tile.record(settings.ticks().record(r));
+            o.tile.record(settings.ticks().record(r), log.monitor().judged());
             o.tile.properties(log.monitor().properties());
         }
     }

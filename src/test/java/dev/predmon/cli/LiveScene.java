@@ -66,7 +66,7 @@ final class LiveScene implements AutoCloseable {
         if (w == null) {
             PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> event(tile, e));
             w = LogWatcher.withRecords(log, monitor, p -> { }, r -> {
-                tile.record(r);
+                tile.record(r, monitor.judged());
                 tile.properties(monitor.properties());
             });
             watchers.put(log, w);
@@ -85,7 +85,7 @@ final class LiveScene implements AutoCloseable {
         PredictiveMonitor m = monitors.computeIfAbsent(tile, t -> new PredictiveMonitor(models, abstraction, 0, e -> { }));
         for (LogRecord r : records) {
             m.accept(r);
-            tile.record(r);
+            tile.record(r, m.judged());
             tile.properties(m.properties());
         }
     }
@@ -96,7 +96,7 @@ final class LiveScene implements AutoCloseable {
                 e -> event(t, e)));
         for (LogRecord r : records) {
             m.accept(r);
-            tile.record(r);
+            tile.record(r, m.judged());
             tile.properties(m.properties());
         }
     }

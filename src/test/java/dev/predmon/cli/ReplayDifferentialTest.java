@@ -2,6 +2,8 @@ package dev.predmon.cli;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.evaluate.Replay;
@@ -140,6 +142,49 @@ class ReplayDifferentialTest {
         assertTrue(paths.warnings > 3, "warnings compared: " + paths.warnings);
     }
 
+    /**
+     * Kinds by scope: the first floor scoped (the battery, from a goTo to the charging station until a goTo to the
+     * kitchen), a reserve floor scoped the other way, the ceiling and the navigation deadline over the whole run. Every
+     * path gives each the same forecasts, warnings, violations and verdicts; the unscoped kinds are the case above.
+     */
+    @Test
+    void aScopedFirstFloorAScopedFloorACeilingAndADeadlineAlikeOnEveryPath() throws Exception {
+        ObjectNode a = (ObjectNode) JSON.readTree(Files.readString(BoundForecastCliTest.abstraction(tmp)));
+        a.put("name", "thesis-scoped-kinds");
+        ArrayNode properties = (ArrayNode) a.get("properties");
+        // the battery on the way to the charger (where the depleted runs violate it), the reserve to the kitchen
+        String[][] scopes = {{"charging_station", "kitchen"}, {"kitchen", "charging_station"}};
+        int[] scoped = {0, properties.size() - 2};
+        for (int i = 0; i < scoped.length; i++) {
+            ObjectNode scope = ((ObjectNode) properties.get(scoped[i])).putObject("scope");
+            scope.putObject("from").put("kind", "command").put("protocol", "GoTo").put("command", "goTo")
+                    .put("argument", scopes[i][0]);
+            scope.putObject("until").put("kind", "command").put("protocol", "GoTo").put("command", "goTo")
+                    .put("argument", scopes[i][1]);
+        }
+        List<String> kinds = new ArrayList<>();
+        properties.forEach(p -> kinds.add(p.get("id").asText() + (p.has("scope") ? " scoped" : "")));
+        assertTrue(kinds.containsAll(List.of("battery scoped", "reserve scoped", "full", "navigation-in-time")),
+                kinds.toString());
+        Path abstraction = tmp.resolve("scoped-kinds.json");
+        Files.writeString(abstraction, a.toPrettyString());
+        Path models = tmp.resolve("scoped-models");
+        Cli learned = Cli.run("learn", "--logs", BoundForecastCliTest.trainingLogs(tmp).toString(), "--models",
+                models.toString(), "--abstraction", abstraction.toString());
+        assertEquals(0, learned.code(), learned.err());
+        List<Path> logs = List.of(BoundForecastCliTest.simulate(tmp, "recharge", "600"),
+                BoundForecastCliTest.simulate(tmp, "depleted", "601"),
+                BoundForecastCliTest.simulate(tmp, "depleted", "602", "--runs", "2", "--noise", "0.3", "--out",
+                        tmp.resolve("depleted-602.log").toString()),
+                Path.of("sample-logs/depleted/depleted-1.log"));
+        Paths paths = new Paths(models);
+        assertEquals(WarningRule.FORECAST, paths.rule, "the scoped battery's forecast was validated");
+        assertEquals(List.of(), disagreements(logs, paths));
+        assertTrue(paths.forecasts > 100, "first-floor forecasts compared: " + paths.forecasts);
+        assertTrue(paths.boundForecasts > 100, "bound forecasts compared: " + paths.boundForecasts);
+        assertTrue(paths.deadlines > 0, "deadline forecasts compared: " + paths.deadlines);
+    }
+
     /** The comparison is not blind: one forecast nudged by the last bit of its double is a disagreement. */
     @Test
     void aForecastOffByOneUlpIsADisagreement() throws Exception {
@@ -219,7 +264,7 @@ class ReplayDifferentialTest {
         }
 
         ReplayedLog reference(Path log) throws IOException {
-            return LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run) -> { });
+            return LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run, judged) -> { });
         }
     }
 

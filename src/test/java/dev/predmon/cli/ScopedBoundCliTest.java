@@ -181,5 +181,18 @@ class ScopedBoundCliTest {
         assertEquals("violated", status.get("verdict").asText(), "the run's verdict stays: " + status);
         assertFalse(of(events, "battery").stream().anyMatch(e -> e.get("event").asText().equals("violation")),
                 "the battery's floor of 20 held");
+
+        // whatever the rule: under the thesis's match rule too, the violation ends where the scope closes
+        Cli match = Cli.run("watch", "--log", trace.toString(), "--models", models.toString(), "--no-follow",
+                "--json", "--rule", "match");
+        List<JsonNode> matched = new ArrayList<>();
+        for (String line : match.out().lines().toList()) {
+            matched.add(JSON.readTree(line));
+        }
+        List<JsonNode> ends = of(matched, ID).stream().filter(e -> e.get("event").asText().equals("recovered"))
+                .toList();
+        assertEquals(1, ends.size(), match.out());
+        assertEquals("scope", ends.get(0).get("cause").asText());
+        assertEquals(closes, ends.get(0).get("line").asLong());
     }
 }

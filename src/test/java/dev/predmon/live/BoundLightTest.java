@@ -73,7 +73,7 @@ class BoundLightTest {
         Board b = new Board(List.<LearnedModel>of(), A.safety(), properties(), Duration.ofSeconds(10), now::get,
                 RobotNames.byFile(), List.of());
         Tile t = b.tile("a.log");
-        t.record(new Records().at(1).level(55).list().get(1));
+        Judged.record(t, new Records().at(1).level(55).list().get(1));
         Forecast f = new Forecast(0.62, 8.5, 6.5, 12.3, Forecast.Basis.MATCHED, null, 17, 11, 55.0, -1.8, "s");
         t.properties(statuses(f, false));
         JsonNode reserve = light(b, "reserve");

@@ -140,7 +140,7 @@ class MetricsTest {
         Path kept = java.nio.file.Files.writeString(dir.resolve("r2.log"), "x");
         for (Path p : List.of(gone, kept)) {
             Tile t = b.tile(p.toString());
-            t.record(new Records().at(1).level(80).list().get(1));
+            Judged.record(t, new Records().at(1).level(80).list().get(1));
             b.event(t, LogEvent.of(p.toString(), new MonitorEvent.Violation(34.6, 8219, PROPERTY, 15.86, 20.85,
                     Clock.SECONDS, 0)));
         }
@@ -187,7 +187,7 @@ class MetricsTest {
         Board b = board();
         Tile t = b.tile("robots/r1.log");
         b.tile("robots/r2.log");
-        t.record(new Records().at(1).level(80).list().get(1));
+        Judged.record(t, new Records().at(1).level(80).list().get(1));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0)));
         Map<String, Double> s = samples(b);
         assertEquals(0.42, s.get(series("predmon_violation_probability", "robots/r1.log", "r1")));
@@ -197,7 +197,7 @@ class MetricsTest {
         assertFalse(s.containsKey(series("predmon_violation_probability", "robots/r2.log", "r2")), "no forecast yet");
 
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Warning(30, 70, List.of("depleted"), 27.8, 14, Clock.SECONDS, 0)));
-        t.record(new Records().at(35).level(18).list().get(1));
+        Judged.record(t, new Records().at(35).level(18).list().get(1));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(35, 90, PROPERTY, 18.0, 21.0, Clock.SECONDS, 0)));
         s = samples(b);
         assertEquals(1.0, s.get(series("predmon_state", "robots/r1.log", "r1", "state", "violation")));
@@ -256,7 +256,7 @@ class MetricsTest {
     void theServerAnswersMetricsInTheTextFormat() throws Exception {
         Board b = board();
         Tile t = b.tile("r.log");
-        t.record(new Records().at(1).level(80).list().get(1));
+        Judged.record(t, new Records().at(1).level(80).list().get(1));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(1, 10, forecast(0.42, 75.5, "s"), Clock.SECONDS, 0)));
         try (LiveServer server = LiveServer.start(HttpAddress.parse("0"), b)) {
             URI url = server.url().resolve("/metrics");

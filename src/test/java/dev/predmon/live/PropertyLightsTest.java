@@ -87,7 +87,7 @@ class PropertyLightsTest {
     void modelsThatDoNotFitTheLogGiveNoGreenLight() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         t.properties(statuses(Map.of()));
         assertEquals("green", lights(b).get(0).get("light").asText());
         t.noVerdict("the models' abstraction does not fit this log");
@@ -104,7 +104,7 @@ class PropertyLightsTest {
     void aPropertyWithNoEvidenceIsGreyNotGreen() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         Verdict none = new Verdict.NoEvidence("no ArmService/closeHand command (its trigger) in the run");
         Verdict unread = new Verdict.NoEvidence("no reading of BatteryReader/levle in the run");
         t.properties(statuses(Map.of("grasp-in-time", new PropertyStatus(property("grasp-in-time"), none,
@@ -132,8 +132,8 @@ class PropertyLightsTest {
         Board b = board();
         Tile t = b.tile("a.log");
         Tile calm = b.tile("b.log");
-        t.record(level(1, 80));
-        calm.record(level(1, 80));
+        Judged.record(t, level(1, 80));
+        Judged.record(calm, level(1, 80));
         calm.properties(statuses(Map.of()));
         Verdict.Violated abort = new Verdict.Violated(157, 5, null, null, "GoTo/getStatus reply 3");
         t.properties(statuses(Map.of("no-abort", new PropertyStatus(property("no-abort"), abort,
@@ -176,7 +176,7 @@ class PropertyLightsTest {
     void aPendingNavigationIsGreenWithItsChanceOfAMissAndTimeLeft() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         // pending since tick 1, due by tick 401; after 100 ticks 8 training navigations were still pending, 1 of them
         // past the deadline: P(miss) 0.12 with the prior, 300 ticks left
         Verdict.Pending pending = new Verdict.Pending(24, 1, 401, Deadline.Unit.TICKS);
@@ -217,7 +217,7 @@ class PropertyLightsTest {
         Board b = new Board(List.<LearnedModel>of(), A.safety(), A.properties(), Duration.ofSeconds(10), now::get,
                 RobotNames.byFile(), List.of(none));
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         t.properties(statuses(Map.of("navigation-in-time", new PropertyStatus(property("navigation-in-time"),
                 new Verdict.Pending(24, 1, 401, Deadline.Unit.TICKS), PropertyStatus.Model.DEADLINE, false,
                 new Survival.Estimate(0.12, 300, 8, 1, false), "ticks"))));
@@ -231,7 +231,7 @@ class PropertyLightsTest {
     void aDeadlineWarnedThenDischargedIsYellowThenGreenWithItsRecoveryAndTheBatteryAlarmIsUntouched() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         Property nav = property("navigation-in-time");
         Verdict.Pending pending = new Verdict.Pending(24, 1, 401, Deadline.Unit.TICKS);
         Survival.Estimate e = new Survival.Estimate(0.62, 20, 5, 2, false);

@@ -82,7 +82,7 @@ class TileStateTest {
     void noModelMatchingOrNovelBehaviourIsUnknownNeitherGreenNorRed() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         assertEquals("ok", state(b, "a.log"));
         assertEquals("green", snap(b, "a.log").get("light").asText());
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0)));
@@ -92,7 +92,7 @@ class TileStateTest {
         assertEquals(40, s.get("noMatchLine").asLong());
 
         Tile n = b.tile("b.log");
-        n.record(level(1, 80));
+        Judged.record(n, level(1, 80));
         Forecast novel = forecast(0.4, 60.0, Forecast.Basis.RESYNCHRONISED, 33L);
         b.event(n, LogEvent.of(n.log(), new MonitorEvent.ForecastChanged(2, 50, novel, Clock.SECONDS, 0)));
         assertEquals("unknown", state(b, "b.log"), "novel behaviour: matching resumed, but on less evidence");
@@ -123,7 +123,7 @@ class TileStateTest {
     void statusCarriesTheForecastAsWatchJsonPrintsIt() {
         Board b = board();
         Tile t = b.tile("r.log");
-        t.record(level(1, 35));
+        Judged.record(t, level(1, 35));
         Forecast f = forecast(0.71, 6.88, Forecast.Basis.MATCHED, null);
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.ForecastChanged(2, 90, f, Clock.SECONDS, 0)));
         JsonNode fj = snap(b, "r.log").get("forecast");
@@ -145,10 +145,10 @@ class TileStateTest {
         Tile done = b.tile("done.log");
         Tile dead = b.tile("dead.log");
         for (Tile t : List.of(done, dead)) {
-            skill("GoToDestination", "send_start").forEach(t::record);
-            t.record(level(1, 80));
+            skill("GoToDestination", "send_start").forEach(r -> Judged.record(t, r));
+            Judged.record(t, level(1, 80));
         }
-        skill("GoToDestination", "send_stop").forEach(done::record);
+        skill("GoToDestination", "send_stop").forEach(r -> Judged.record(done, r));
         now.addAndGet(9_000);
         assertEquals("ok", state(b, "done.log"), "quiet for less than the stale time");
         assertEquals("ok", state(b, "dead.log"));
@@ -165,7 +165,7 @@ class TileStateTest {
         b.grew(done);
         assertEquals("ok", state(b, "done.log"), "it grows again: a new run is under way");
         Tile capture = b.tile("capture.log"); // no tree-to-skill traffic: it cannot tell, and stays stale
-        capture.record(level(1, 80));
+        Judged.record(capture, level(1, 80));
         now.addAndGet(10_000);
         assertTrue(snap(b, "capture.log").get("stale").asBoolean());
         assertTrue(snap(b, "capture.log").get("treeAtRest").isNull());
@@ -175,11 +175,11 @@ class TileStateTest {
     void aViolationThatRecoversShowsWhatHoldsNowAndKeepsTheViolationInTheHistory() {
         Board b = board();
         Tile t = b.tile("r.log");
-        t.record(level(1, 25));
+        Judged.record(t, level(1, 25));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(2, 20, "battery", 19.95, 20.1, Clock.SECONDS, 0)));
-        t.record(level(2, 19.95));
+        Judged.record(t, level(2, 19.95));
         assertEquals("violation", state(b, "r.log"));
-        t.record(level(30, 96.7));
+        Judged.record(t, level(30, 96.7));
         assertEquals("violation", state(b, "r.log"), "the monitor decides when it holds again, not the tile");
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Recovered(30, 40, "property", 96.7, "the property holds again", Clock.SECONDS, 0)));
         JsonNode s = snap(b, "r.log");
@@ -191,7 +191,7 @@ class TileStateTest {
         assertEquals(96.7, s.get("history").get(1).get("value").asDouble());
         assertEquals(96.7, s.get("recovery").get("value").asDouble());
         assertEquals(96.7, s.get("recovery").get("battery").asDouble(), "the older name stays");
-        t.record(level(40, 12));
+        Judged.record(t, level(40, 12));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Violation(40, 50, "battery", 12, 96.7, Clock.SECONDS, 0)));
         s = snap(b, "r.log");
         assertEquals("violation", s.get("state").asText());
@@ -202,7 +202,7 @@ class TileStateTest {
     void aWarningWhoseCauseEndedIsGoneItsTimeStaysAndUnderWaySaysSince() {
         Board b = board();
         Tile t = b.tile("r.log");
-        t.record(level(1, 40));
+        Judged.record(t, level(1, 40));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.UnderWay(5, 30, "skill GoToChargingStation", true, Clock.SECONDS, 0)));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Warning(6, 35, List.of(), 29.6, 3, Clock.SECONDS, 0)));
         JsonNode s = snap(b, "r.log");
@@ -220,7 +220,7 @@ class TileStateTest {
     void modelsThatDoNotFitShowNoVerdictAndNoForecastAndAMissingLogSaysSo() {
         Board b = board();
         Tile t = b.tile("r.log");
-        t.record(level(1, 40));
+        Judged.record(t, level(1, 40));
         t.noVerdict("the abstraction does not fit this log; learn with --abstraction scope-fetch");
         JsonNode s = snap(b, "r.log");
         assertEquals("no-verdict", s.get("state").asText());
@@ -238,15 +238,15 @@ class TileStateTest {
         assertEquals("logs in /robots", b.status(null).get("watching").get(0).asText());
         assertEquals(0, b.status(null).get("logs").size(), "nothing yet: the page says what it waits for");
         Tile ok = b.tile("/robots/r1/monitor.log");
-        ok.record(level(1, 80));
+        Judged.record(ok, level(1, 80));
         Tile warned = b.tile("/robots/r2/monitor.log");
-        warned.record(level(1, 40));
+        Judged.record(warned, level(1, 40));
         b.event(warned, LogEvent.of(warned.log(), new MonitorEvent.Warning(3, 30, List.of("depleted"), 40.0, 4, Clock.SECONDS, 0)));
         b.tile("/robots/r3/monitor.log");
         Tile red = b.tile("/robots/r4/monitor.log");
         b.event(red, LogEvent.of(red.log(), new MonitorEvent.Violation(2, 20, "battery", 12, 20.1, Clock.SECONDS, 0)));
         Tile unknown = b.tile("/robots/r5/monitor.log");
-        unknown.record(level(1, 80));
+        Judged.record(unknown, level(1, 80));
         b.event(unknown, LogEvent.of(unknown.log(), new MonitorEvent.NoMatch(5, 40, Clock.SECONDS, 0)));
         List<String> names = new ArrayList<>();
         List<String> states = new ArrayList<>();

@@ -62,13 +62,13 @@ class TileTest {
         Board b = board();
         Tile t = b.tile("robot.log");
         assertEquals("grey", snap(b, "robot.log").get("light").asText(), "no data yet");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         assertEquals("green", snap(b, "robot.log").get("light").asText());
         b.event(t, LogEvent.of(t.log(), warning(30, 0)));
         JsonNode s = snap(b, "robot.log");
         assertEquals("yellow", s.get("light").asText());
         assertTrue(s.get("lead").isNull(), "no lead before the violation");
-        t.record(level(35, 18));
+        Judged.record(t, level(35, 18));
         b.event(t, LogEvent.of(t.log(), violation(35, 0)));
         s = snap(b, "robot.log");
         assertEquals("red", s.get("light").asText());
@@ -87,7 +87,7 @@ class TileTest {
         Board b = board();
         Tile t = b.tile("day.log");
         LearnedModel first = models.models().get(0);
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         b.event(t, LogEvent.of(t.log(), new MonitorEvent.Eliminated(2, 12, first.id(), first.scenario(), first.faulty(),
                 "cannot take input x at step 3", Clock.SECONDS, 0)));
         b.event(t, LogEvent.of(t.log(), warning(30, 0)));
@@ -119,7 +119,7 @@ class TileTest {
     void aLogThatStopsGrowingIsStale() {
         Board b = board();
         Tile t = b.tile("a.log");
-        t.record(level(1, 80));
+        Judged.record(t, level(1, 80));
         now.addAndGet(9_000);
         assertFalse(snap(b, "a.log").get("stale").asBoolean());
         now.addAndGet(1_000);
@@ -144,7 +144,7 @@ class TileTest {
             }
             for (int i = 0; i < 2_000; i++) {
                 latest = level(run * 1000.0 + i * 0.5, 100 - i * 0.04);
-                t.record(latest);
+                Judged.record(t, latest);
             }
         }
         JsonNode s = snap(b, "long.log");

@@ -66,4 +66,24 @@ class AlarmTest {
         assertEquals(1.0, under.get(0).time(), 0.01);
         assertEquals(false, under.get(1).underWay(), "sent elsewhere: " + under.get(1));
     }
+
+    @Test
+    void anAlarmStillUpWhenItsRunEndsEndsWithTheRun() throws Exception {
+        // violated at 15, then a silence of 90 s: a new run begins; the violation's alarm ends with its run
+        Records r = new Records().at(0).level(50).at(10).level(15).at(100).level(80);
+        List<MonitorEvent> events = watch(r);
+        // (the charger's deadline, owed since the low reading, passed in the silence: violated there, and ended too)
+        List<String> kinds = events.stream().filter(e -> !(e instanceof MonitorEvent.Violation v)
+                        || v.property().equals("battery")).filter(e -> !(e instanceof MonitorEvent.Recovered x)
+                        || x.property().equals("battery")).map(e -> e.getClass().getSimpleName())
+                .filter(List.of("Violation", "Recovered", "RunStarted", "Warning")::contains).toList();
+        assertEquals(List.of("Violation", "Recovered", "RunStarted"), kinds, events.toString());
+        MonitorEvent.Recovered rec = (MonitorEvent.Recovered) events.stream()
+                .filter(e -> e instanceof MonitorEvent.Recovered x && x.property().equals("battery")).findFirst()
+                .orElseThrow();
+        assertEquals("run-ended", rec.cause());
+        assertEquals(0, rec.run(), "the run that ended");
+        assertEquals(r.list().get(4).line(), rec.line(), "at the record that began the next run");
+        assertEquals("battery", rec.property());
+    }
 }

@@ -1,0 +1,150 @@
+package dev.predmon.monitor;
+
+import dev.predmon.forecast.DeadlineRule;
+import dev.predmon.forecast.ForecastWords;
+import dev.predmon.forecast.Survival;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Deadline;
+import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.Response;
+
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * A bounded response whose training obligations the models measured, followed through a run: while an obligation
+ * is pending, how likely it is to miss its deadline given how long it has been pending, against how long the training
+ * runs' obligations took ({@link Survival}, Kaplan-Meier with the runs that stopped early censored).
+ *
+ * <p>Under the forecast rule it warns once per obligation, by the property's {@link DeadlineRule}: when the calibrated
+ * P(miss) reaches the threshold learned by cross-validation (even odds when the training obligations could not choose
+ * one), or when the obligation has been pending longer than every training obligation (no evidence either way) and
+ * half of the time from the longest of them to the deadline has passed too. A warned obligation discharged in time
+ * ends its warning (cause {@code discharged}); one that misses its deadline is the property's violation, told by the
+ * checker. While an obligation is pending its calibrated forecast is told when it changes as the page shows it: the
+ * probability of a miss in whole percent, or that the obligation is past every training one. A property without a
+ * training obligation gets no such follower: no verdict on no evidence.
+ */
+final class DeadlineFollow extends FollowBase {
+
+    private final Response response;
+    private final Survival survival;
+    private final DeadlineRule rule;
+    /** The forecast of the obligation pending now, or null. */
+    private Survival.Estimate current;
+    /** The pending obligation's forecast as last told ({@link #shown}), or null. */
+    private String told;
+    /** Whether an obligation ended at the last record, whether discharged, and after how long. */
+    private boolean ended;
+    private boolean discharged;
+    private double duration;
+    /** The pending obligation's elapsed time when it was last judged, NaN before. */
+    private double judgedAt = Double.NaN;
+
+    DeadlineFollow(int index, Response response, Survival survival, DeadlineRule rule, FollowContext c) {
+        super(index, response, c);
+        this.response = response;
+        this.survival = survival;
+        this.rule = rule;
+    }
+
+    @Override
+    public void closed(double duration, boolean discharged) {
+        this.ended = true;
+        this.duration = duration;
+        this.discharged = discharged;
+    }
+
+    @Override
+    void follow(PropertyChecker checker, LogRecord r, boolean in) {
+        if (ended) {
+            ended = false;
+            c.deadlines.ended(c.now.run, response, r, duration, discharged);
+            if (discharged && active != null && active.clause() == MonitorEvent.Clause.DEADLINE) {
+                ended(r, "discharged", Double.NaN, label() + ": the response came in time; the deadline warning is"
+                        + " over");
+            } else if (active != null && active.clause() == MonitorEvent.Clause.DEADLINE && in) {
+                active = null; // let go at a missed deadline (the checker's violation): the next one is judged afresh
+            }
+            current = null;
+            told = null;
+        }
+        double elapsed = checker.elapsed(index);
+        if (Double.isNaN(elapsed)) {
+            judgedAt = Double.NaN;
+            return;
+        }
+        if (elapsed == judgedAt && current != null) {
+            return; // judged at this elapsed time already: a deadline in ticks changes at the next tick only
+        }
+        judgedAt = elapsed;
+        Deadline d = response.within();
+        Survival.Estimate raw = survival.estimate(elapsed, d.amount());
+        c.deadlines.forecast(c.now.run, response, r, elapsed, raw);
+        Survival.Estimate e = rule.calibrated(raw);
+        current = e;
+        String shown = shown(e);
+        if (!shown.equals(told)) {
+            told = shown;
+            c.events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), null, r.clock(), c.now.run,
+                    response.id(), e, d.unit().key));
+        }
+        if (active == null && c.forecastRule() && rule.warns(raw, elapsed, d.amount(), survival)) {
+            // A bounded response has no value: the warning carries none, as its violation and its recovery do not.
+            warn(new MonitorEvent.Warning(r.time(), r.line(), List.of(), null, c.now.pairs, r.clock(), c.now.run,
+                    c.rule, null, reason(response, e, elapsed, survival), MonitorEvent.Clause.DEADLINE, null,
+                    response.id(), e));
+        }
+    }
+
+    @Override
+    public void reset() {
+        super.reset();
+        current = null;
+        told = null;
+        ended = false;
+        discharged = false;
+        judgedAt = Double.NaN;
+    }
+
+    @Override
+    public PropertyStatus status(PropertyChecker checker) {
+        return new PropertyStatus(property, checker.verdict(index), PropertyStatus.Model.DEADLINE, warned(), current,
+                response.within().unit().key);
+    }
+
+    /**
+     * A deadline forecast as the page shows it: {@code novel} past every training obligation, else the probability
+     * of a miss in whole percent ({@code <1%} and {@code >99%} at the ends, never 0% or 100% for what is not certain).
+     */
+    static String shown(Survival.Estimate e) {
+        if (e.novel()) {
+            return "novel";
+        }
+        double p = e.probability();
+        long v = Math.round(p * 100);
+        return p > 0 && v == 0 ? "<1%" : p < 1 && v == 100 ? ">99%" : v + "%";
+    }
+
+    /**
+     * In words: "pending 334 ticks, longer than any of the 38 training obligations (the longest: 268 ticks); 66
+     * ticks left before the deadline of 400 ticks", or "pending 40 ticks; 2 of the 5 training obligations pending
+     * that long took longer than 400 ticks; P(miss) 0.62; 20 ticks left".
+     */
+    static String reason(Response p, Survival.Estimate e, double elapsed, Survival s) {
+        Deadline d = p.within();
+        String unit = d.unit().key;
+        String head = String.format(Locale.ROOT, "'%s' (%s) pending %s %s", p.name(), p.id(),
+                ForecastWords.fixed(elapsed, 0), unit);
+        String action = p.action() == null ? "" : "; do now: " + p.action();
+        if (e.novel()) {
+            return String.format(Locale.ROOT, "%s, longer than any of the %d training obligations (the longest: %s):"
+                            + " behaviour never seen; %s %s left before the deadline of %s%s", head, s.size(),
+                    ForecastWords.fixed(s.longest(), 0), ForecastWords.fixed(e.timeLeft(), 0), unit, d.describe(),
+                    action);
+        }
+        return String.format(Locale.ROOT, "%s; %d of the %d training obligations pending that long took longer than %s;"
+                        + " P(miss) %s; %s %s left%s", head, e.longer(), e.atRisk(), d.describe(),
+                ForecastWords.fixed(e.probability(), 2), ForecastWords.fixed(e.timeLeft(), 0), unit, action);
+    }
+}
