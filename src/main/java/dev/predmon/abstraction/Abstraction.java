@@ -2,9 +2,12 @@ package dev.predmon.abstraction;
 
 import dev.predmon.abstraction.Definition.Reply;
 import dev.predmon.abstraction.Definition.Rule;
+import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
+import dev.predmon.ros2.Recordings;
+import dev.predmon.ros2.TopicRule;
 
 import java.util.ArrayList;
 import java.util.Collections;
@@ -49,6 +52,7 @@ public final class Abstraction {
     private final Map<String, Double> hysteresisOf;
     /** Each input of a rule with {@code carry: true}, {@code {loc}} replaced, to the answers its rule gives. */
     private final Map<String, Set<String>> carriedAnswers;
+    private final LogFormat format;
 
     /**
      * The abstraction {@code definition} defines, which its caller has validated ({@code abstraction.file} does).
@@ -68,6 +72,7 @@ public final class Abstraction {
         this.learnedHysteresis = Map.copyOf(learned);
         this.locations = definition.locations();
         this.rules = new Rules(definition);
+        this.format = Recordings.format(definition.topics());
         this.safety = definition.properties().stream().filter(p -> p instanceof Bound b && b.hasFloor())
                 .map(p -> (Bound) p).findFirst();
         Set<String> inputs = new TreeSet<>();
@@ -267,12 +272,25 @@ public final class Abstraction {
         }
         Definition d = definition;
         return new Abstraction(new Definition(d.name(), d.locations(), d.drop(), tuned, d.properties(), d.confirm(),
-                d.runs()), canonicalJson, fingerprint, applied);
+                d.runs(), d.topics()), canonicalJson, fingerprint, applied);
     }
 
     /** The hysteresis learned from training runs that this abstraction applies, by rule input; empty if none. */
     public Map<String, Double> learnedHysteresis() {
         return learnedHysteresis;
+    }
+
+    /**
+     * How logs are read with this abstraction: a YARP monitor log as always, and a ROS 2 recording (recognised by its
+     * content) mapped to records by the file's {@code ros2} section ({@link #topicRules()}).
+     */
+    public LogFormat format() {
+        return format;
+    }
+
+    /** The rules of the file's {@code ros2} section, in file order; empty when it has none. */
+    public List<TopicRule> topicRules() {
+        return definition.topics();
     }
 
     /** Where runs begin in a log that holds several ({@link RunRule#DEFAULT} unless the file's {@code runs} says). */

@@ -1,6 +1,7 @@
 package dev.predmon.abstraction;
 
 import dev.predmon.property.Property;
+import dev.predmon.ros2.TopicRule;
 
 import java.util.List;
 import java.util.Map;
@@ -17,9 +18,11 @@ import java.util.Map;
  * @param confirm   pairs a faulty model must still match after the last nominal model is eliminated before the
  *                  warning
  * @param runs      where one run ends and the next begins in a log that holds several
+ * @param topics    how the messages of ROS 2 recordings become records (the file's {@code ros2} section), in file
+ *                  order; empty when the file has none
  */
 public record Definition(String name, Map<String, String> locations, List<Drop> drop, List<Rule> rules,
-                         List<Property> properties, int confirm, RunRule runs) {
+                         List<Property> properties, int confirm, RunRule runs, List<TopicRule> topics) {
 
     /** The placeholder for a location's abbreviation in input and reply symbols. */
     public static final String LOC = "{loc}";
@@ -29,6 +32,13 @@ public record Definition(String name, Map<String, String> locations, List<Drop> 
         drop = List.copyOf(drop);
         rules = List.copyOf(rules);
         properties = List.copyOf(properties);
+        topics = List.copyOf(topics);
+    }
+
+    /** A definition for YARP logs only: no {@code ros2} section. */
+    public Definition(String name, Map<String, String> locations, List<Drop> drop, List<Rule> rules,
+                      List<Property> properties, int confirm, RunRule runs) {
+        this(name, locations, drop, rules, properties, confirm, runs, List.of());
     }
 
     /** A record matching every non-null key is dropped; {@code *} in a value matches any characters. */

@@ -2,6 +2,7 @@ package dev.predmon.abstraction;
 
 import dev.predmon.abstraction.Definition.Drop;
 import dev.predmon.parse.Decimals;
+import dev.predmon.parse.Glob;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 
@@ -261,28 +262,7 @@ final class Rules {
      * older log format has no Protocol line to drop them by.
      */
     static boolean glob(String pattern, String text) {
-        int p = 0;
-        int t = 0;
-        int star = -1;
-        int mark = 0;
-        while (t < text.length()) {
-            if (p < pattern.length() && pattern.charAt(p) == '*') {
-                star = p++;
-                mark = t;
-            } else if (p < pattern.length() && pattern.charAt(p) == text.charAt(t)) {
-                p++;
-                t++;
-            } else if (star >= 0) {
-                p = star + 1;
-                t = ++mark;
-            } else {
-                return false;
-            }
-        }
-        while (p < pattern.length() && pattern.charAt(p) == '*') {
-            p++;
-        }
-        return p == pattern.length();
+        return Glob.matches(pattern, text);
     }
 
     /**

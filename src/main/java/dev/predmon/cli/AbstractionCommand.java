@@ -43,7 +43,9 @@ final class AbstractionCommand implements Runnable {
             for (String name : AbstractionFiles.BUILTIN_NAMES) {
                 Abstraction a = AbstractionFiles.builtin(name).orElseThrow();
                 out.println(name + "\t" + a.inputAlphabet().size() + " inputs, " + a.outputAlphabet().size()
-                        + " outputs, locations " + a.locations().keySet().stream().sorted().toList());
+                        + " outputs, locations " + a.locations().keySet().stream().sorted().toList()
+                        + (a.topicRules().isEmpty() ? "" : ", ROS 2 topics " + a.topicRules().stream()
+                                .map(dev.predmon.ros2.TopicRule::topic).distinct().toList()));
             }
             out.flush();
             return ExitCodes.OK;
@@ -57,7 +59,7 @@ final class AbstractionCommand implements Runnable {
         @Spec
         CommandSpec spec;
 
-        @Parameters(paramLabel = "NAME", description = "thesis or scope-fetch")
+        @Parameters(paramLabel = "NAME", description = "thesis, scope-fetch or nav2")
         String name;
 
         @Override

@@ -16,7 +16,8 @@ final class AbstractionOption {
 
     @Option(names = "--abstraction", paramLabel = "NAME|FILE",
             description = "A built-in abstraction by name (thesis: the thesis's Tables 4.1/4.2 with the Section 5.2 "
-                    + "bands, the default; scope-fetch: the R1 fetch-and-carry tree of the SCOPE recordings), or an "
+                    + "bands, the default; scope-fetch: the R1 fetch-and-carry tree of the SCOPE recordings; nav2: a "
+                    + "robot on ROS 2 navigation, for rosbag2 recordings), or an "
                     + "abstraction JSON file ('predmon abstraction show NAME' prints one to start from). Commands "
                     + "that read models default to the one the models were learned with.")
     String value;

@@ -38,7 +38,9 @@ final class EvaluateCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Option(names = "--logs", required = true, paramLabel = "DIR",
-            description = "Training logs, in the 'learn' layout (<scenario>/scenario.json and *.log).")
+            description = "Training logs, in either layout 'learn' takes: one folder per scenario "
+                    + "(<scenario>/scenario.json and *.log), or a folder of recordings not sorted into scenarios, "
+                    + "whose runs the safety monitor labels (docs/logs.md).")
     Path logs;
 
     @ArgGroup(exclusive = true)

@@ -60,12 +60,31 @@ final class LearnCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Abstraction abstraction = abstractionOption.load();
         Map<UnmappedMessage, Long> unmapped = new TreeMap<>();
-        Learning.Result result = Learning.learnAndWrite(logs, models, abstraction, l -> {
-            l.problems().forEach(err::println);
-            l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));
-            l.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
-            report(out, l);
-        });
+        Learning.Result result;
+        // Ctrl-C (or SIGTERM) ends the JVM with 130 (143): say so, and what the model directory holds, in one line.
+        String stoppedLine = String.format("predmon: learn stopped before it finished; %s holds whole models, the "
+                + "ones it held before (or the new ones, if they were already being put in place): run learn again",
+                Terminal.line(models.toString()));
+        Thread stopped = new Thread(() -> {
+            out.flush();
+            err.println(stoppedLine);
+            err.flush();
+        }, "learn-stopped");
+        Runtime.getRuntime().addShutdownHook(stopped);
+        try {
+            result = Learning.learnAndWrite(logs, models, abstraction, l -> {
+                l.problems().forEach(err::println);
+                l.skipped().forEach(msg -> err.println("predmon: skipped " + msg));
+                l.unmapped().forEach((k, n) -> unmapped.merge(k, n, Long::sum));
+                report(out, l);
+            });
+        } finally {
+            try {
+                Runtime.getRuntime().removeShutdownHook(stopped);
+            } catch (IllegalStateException shuttingDown) {
+                // the JVM is already ending: the hook says why
+            }
+        }
         List<LearnedScenario> learned = result.scenarios();
         result.notes().forEach(n -> err.println("predmon: note: " + n));
         if (!unmapped.isEmpty()) {

@@ -5,21 +5,27 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.monitor.PredictiveMonitor;
-import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.LogReader;
+import dev.predmon.parse.ParseProblem;
 import dev.predmon.pipeline.Evidence;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.RecordTaken;
 import dev.predmon.replay.ReplayedLog;
+import dev.predmon.ros2.Recordings;
+import picocli.CommandLine.MissingParameterException;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 /**
  * The options of a command that judges one log against the learned models ({@code watch}, {@code verify},
@@ -28,7 +34,10 @@ import java.util.List;
  */
 final class LogAgainstModels {
 
-    @Option(names = "--log", required = true, paramLabel = "FILE",
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec spec;
+
+    @Option(names = "--log", paramLabel = "FILE",
             description = "The log. watch takes several: repeat it, or name a directory (its *.log and *.txt files, "
                     + "also those that appear later) or a quoted glob ('logs/robot-*.log').")
     List<Path> logs;
@@ -144,8 +153,18 @@ final class LogAgainstModels {
         return tolerance.value;
     }
 
+    /** The logs named; {@code --log} is required wherever logs are read ({@code watch --rosbridge} reads none). */
+    List<Path> logs() {
+        if (logs == null) {
+            throw new MissingParameterException(spec.commandLine(), spec.findOption("--log"),
+                    "Missing required option: '--log=FILE'");
+        }
+        return logs;
+    }
+
     /** The one log of verify, classify and explain (watch takes several). */
     Path log() throws BadInputException {
+        List<Path> logs = logs();
         if (logs.size() != 1) {
             throw new BadInputException("--log is given " + logs.size() + " times; this command judges one log "
                     + "(watch follows several)");
@@ -162,13 +181,49 @@ final class LogAgainstModels {
         checkLogIfPresent();
     }
 
+    /**
+     * As {@link #checkLog()}, and refuses a whole file that holds no monitor record (a README, a config file): in one
+     * line, before anything else is printed. The file is read up to its first record only: a log costs nothing.
+     */
+    void checkLogHoldsRecords(Abstraction abstraction) throws BadInputException, IOException {
+        checkLog();
+        Path log = log();
+        if (Recordings.isRecording(log)) {
+            return; // a ROS 2 recording is read by its own format, which says what is wrong with it
+        }
+        ParseProblem[] first = {null};
+        long[] lines = {0};
+        try {
+            LogReader.read(log, r -> {
+                throw new FirstRecord();
+            }, p -> first[0] = first[0] == null ? p : first[0], n -> lines[0] = n);
+        } catch (FirstRecord found) {
+            return;
+        }
+        String missing = new Evidence(log, () -> lines[0], 0, 0, 0, Map.of(), abstraction, first[0], 0).missing()
+                .orElse(null);
+        if (missing != null) {
+            throw new BadInputException(missing);
+        }
+    }
+
+    /** Ends a read at its first record. */
+    private static final class FirstRecord extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        FirstRecord() {
+            super(null, null, false, false);
+        }
+    }
+
     /** As {@link #checkLog()}, but a file that does not exist yet is fine ({@code watch} waits for it). */
     void checkLogIfPresent() throws BadInputException {
         Path log = log();
-        if (Files.isDirectory(log)) {
-            throw new BadInputException(log + ": is a directory; expected a log file");
+        boolean recording = Recordings.isRecording(log);
+        if (Files.isDirectory(log) && !recording) {
+            throw new BadInputException(log + ": is a directory; expected a log file or a ROS 2 recording");
         }
-        if (Files.exists(log) && !Files.isRegularFile(log)) {
+        if (Files.exists(log) && !Files.isRegularFile(log) && !recording) {
             throw new BadInputException(log + ": not a regular file; expected a log file");
         }
         if (Files.exists(log) && !Files.isReadable(log)) {

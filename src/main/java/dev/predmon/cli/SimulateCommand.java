@@ -109,6 +109,12 @@ public final class SimulateCommand implements Callable<Integer> {
             + "seed, each with its FILE.truth.json. See --gap and --no-ticks.")
     Integer runsPerLog;
 
+    @Option(names = "--format", defaultValue = "yarp", paramLabel = "yarp|mcap|sqlite3",
+            description = "yarp: the YARP monitor's log. mcap, sqlite3: the runs as a robot on ROS 2 navigation (nav2)"
+                    + " records them, as an .mcap or a .db3 file (read them with --abstraction nav2); needs --out or"
+                    + " --out-dir. Default: ${DEFAULT-VALUE}.")
+    String format;
+
     @Mixin
     NoveltyOptions novelty = new NoveltyOptions();
 
@@ -144,6 +150,7 @@ public final class SimulateCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), e.getMessage(), e);
         }
         checkCombination();
+        SimulatedBags.Form form = form();
         boolean dayLog = out != null && (runs != null || runsPerLog != null);
         if (day.size() > 1 && !dayLog) {
             throw new ParameterException(spec.commandLine(),
@@ -154,7 +161,10 @@ public final class SimulateCommand implements Callable<Integer> {
                     "--gap needs several runs in a log: --runs-per-log K, or --runs N with --out");
         }
         try {
-            if (dayLog) {
+            if (form != SimulatedBags.Form.YARP) {
+                SimulatedBags.write(day, options, form, out, outDir, seed,
+                        runs != null ? runs : runsPerLog != null ? runsPerLog : 1, spec.commandLine().getErr());
+            } else if (dayLog) {
                 writeDay(day, options, runs != null ? runs : runsPerLog);
             } else if (outDir != null) {
                 writeBatch(s, options);
@@ -172,6 +182,20 @@ public final class SimulateCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), e.getMessage() + hint, e);
         }
         return ExitCodes.OK;
+    }
+
+    private SimulatedBags.Form form() {
+        SimulatedBags.Form form;
+        try {
+            form = SimulatedBags.Form.of(format);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage(), e);
+        }
+        if (form != SimulatedBags.Form.YARP && (realtime || (out == null && outDir == null))) {
+            throw new ParameterException(spec.commandLine(), "--format " + format + " needs --out FILE or --out-dir"
+                    + " DIR, and cannot be combined with --realtime");
+        }
+        return form;
     }
 
     private void checkCombination() {

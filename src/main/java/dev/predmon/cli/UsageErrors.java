@@ -27,7 +27,9 @@ final class UsageErrors implements IParameterExceptionHandler {
             err.flush();
             return ExitCodes.BAD_INPUT;
         }
-        UnmatchedArgumentException.printSuggestions(ex, err);
+        if (spelt == null) { // the other spelling is the suggestion
+            UnmatchedArgumentException.printSuggestions(ex, err);
+        }
         err.println("see '" + cl.getCommandSpec().qualifiedName() + " --help'");
         err.flush();
         return cl.getCommandSpec().exitCodeOnInvalidInput();

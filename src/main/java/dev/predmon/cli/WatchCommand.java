@@ -9,6 +9,7 @@ import dev.predmon.monitor.Fleet;
 import dev.predmon.monitor.LogSources;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.property.Bound;
+import dev.predmon.rosbridge.RosbridgeClient;
 import dev.predmon.watch.Stamp;
 import dev.predmon.watch.WatchSession;
 import dev.predmon.watch.WatchSettings;
@@ -92,6 +93,9 @@ final class WatchCommand implements Callable<Integer> {
     @Mixin
     ConfigOption config;
 
+    @Mixin
+    RosbridgeOptions rosbridge;
+
 
     @Override
     public Integer call() throws Exception {
@@ -105,23 +109,27 @@ final class WatchCommand implements Callable<Integer> {
         }
         ModelSet set = input.models();
         Abstraction abstraction = input.abstraction();
-        LogSources sources = new LogSources(input.logs);
-        boolean several = sources.several();
-        if (!several) {
-            if (noFollow) {
-                input.checkLog();
-            } else {
-                input.checkLogIfPresent();
-            }
-        } else if (noFollow) {
-            sources.requireFiles();
-        }
+        rosbridge.check(spec, input.logs != null, noFollow, abstraction);
+        // usage errors before anything is read
         if (noFollow && liveView.http != null) {
             throw new ParameterException(spec.commandLine(), "--http shows logs as they grow: not with --no-follow");
         }
         if (noFollow && follow.heartbeatNanos() > 0) {
             throw new ParameterException(spec.commandLine(), "--heartbeat says that logs are followed: not with "
                     + "--no-follow");
+        }
+        LogSources sources = rosbridge.given() ? LogSources.none() : new LogSources(input.logs());
+        boolean several = sources.several();
+        if (rosbridge.given()) {
+            polling = true; // the robot's messages come on a socket: no file change to be told of
+        } else if (!several) {
+            if (noFollow) {
+                input.checkLogHoldsRecords(abstraction);
+            } else {
+                input.checkLogIfPresent();
+            }
+        } else if (noFollow) {
+            sources.requireFiles();
         }
         if (!set.hasFaulty()) {
             err.println("predmon: note: " + Terminal.line(set.dir().toString()) + " has no faulty scenario, so no warning can ever be raised");
@@ -137,16 +145,20 @@ final class WatchCommand implements Callable<Integer> {
         }
         WatchSettings settings = new WatchSettings(input.json, eliminations || input.json, several, noFollow,
                 follow.timestamps ? Stamp.WALL_CLOCK : Stamp.NONE, follow.heartbeatNanos(), follow.ticks());
-        try (LiveServer server = liveView.start(err, board);
+        try (RosbridgeClient robot = rosbridge.given() ? rosbridge.start(spec, abstraction, err) : null;
+             LiveServer server = liveView.start(err, board);
              WatchSession session = new WatchSession(out, err, settings, hookOptions.open(err, bound(abstraction), abstraction.properties()),
                      board, abstraction, p -> !sources.named(p));
              Fleet fleet = new Fleet(set, abstraction, input.tolerance(), confirm.value(abstraction), warnBy,
-                     session)) {
+                     rosbridge.listener(session, robot))) {
             if (set.forecast() != null) {
                 // How far to trust the models, once, before anything they say (and after what can refuse to start).
                 set.forecast().allScorecards().forEach(c -> c.lines().forEach(l -> err.println("predmon: " + l)));
             }
             sources.find().forEach(fleet::add);
+            if (robot != null) {
+                rosbridge.add(fleet, abstraction, robot);
+            }
             String stop = "end-of-file";
             if (noFollow) {
                 fleet.drain();

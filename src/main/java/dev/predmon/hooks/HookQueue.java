@@ -15,8 +15,9 @@ import java.util.concurrent.TimeUnit;
  * in turn, one command of each. A log whose alarm flaps fills only its own queue, so another log's first warning
  * always finds room and waits behind at most one command of each other log.
  *
- * <p>Within a log, commands start in the order they were queued. At most {@code threads} commands run at once; a
- * runner thread lives while there is something to run.
+ * <p>Within a log, commands run one at a time, in the order they were queued: a robot's recovery never runs before
+ * (or beside) the warning it ends. At most {@code threads} commands run at once, each of another log; a runner
+ * thread lives while there is something it may run.
  */
 final class HookQueue {
 
@@ -31,6 +32,8 @@ final class HookQueue {
     /** The logs with something waiting, in turn order: the next command is the head of the first queue. */
     private final Map<String, ArrayDeque<Job>> waiting = new LinkedHashMap<>();
     private final Set<Thread> runners = new HashSet<>();
+    /** The logs one of whose commands runs now: their next command waits for it. */
+    private final Set<String> running = new HashSet<>();
     private boolean closed;
 
     HookQueue(int threads, int perLog) {
@@ -57,26 +60,40 @@ final class HookQueue {
         return true;
     }
 
-    /** The next job in turn, or null (the runner then ends). */
-    private synchronized Job next() {
+    /** A job with its log. */
+    private record Taken(String log, Job job) {
+    }
+
+    /**
+     * The next job in turn of a log none of whose commands runs now, or null (the runner then ends; the runner of
+     * the busy log takes its next command when its own ends). {@code done} is the log whose command just ended.
+     */
+    private synchronized Taken next(String done) {
+        if (done != null) {
+            running.remove(done);
+        }
         Iterator<Map.Entry<String, ArrayDeque<Job>>> it = waiting.entrySet().iterator();
-        if (!it.hasNext()) {
-            runners.remove(Thread.currentThread());
-            notifyAll();
-            return null;
+        while (it.hasNext()) {
+            Map.Entry<String, ArrayDeque<Job>> e = it.next();
+            if (running.contains(e.getKey())) {
+                continue;
+            }
+            Job job = e.getValue().poll();
+            it.remove();
+            if (!e.getValue().isEmpty()) {
+                waiting.put(e.getKey(), e.getValue()); // to the back of the turn
+            }
+            running.add(e.getKey());
+            return new Taken(e.getKey(), job);
         }
-        Map.Entry<String, ArrayDeque<Job>> first = it.next();
-        Job job = first.getValue().poll();
-        it.remove();
-        if (!first.getValue().isEmpty()) {
-            waiting.put(first.getKey(), first.getValue()); // to the back of the turn
-        }
-        return job;
+        runners.remove(Thread.currentThread());
+        notifyAll();
+        return null;
     }
 
     private void runJobs() {
-        for (Job job = next(); job != null; job = next()) {
-            job.run();
+        for (Taken t = next(null); t != null; t = next(t.log())) {
+            t.job().run();
         }
     }
 

@@ -6,6 +6,7 @@ import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.pipeline.Traces;
 import dev.predmon.property.Bound;
+import dev.predmon.ros2.Recordings;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -36,10 +37,14 @@ public final class RecordingFolder {
         return (name.endsWith(".log") || name.endsWith(".txt")) && Files.isRegularFile(file);
     }
 
-    /** The recordings under {@code dir}, sorted by path. */
+    /** The recordings under {@code dir}, sorted by path; a rosbag2 folder is one, the files in it none. */
     public static List<Path> logs(Path dir) throws BadInputException {
         try (Stream<Path> s = Files.walk(dir)) {
-            return s.filter(RecordingFolder::isLog).sorted().toList();
+            List<Path> found = s.filter(p -> !p.equals(dir) && (isLog(p) || Recordings.isRecording(p))).sorted()
+                    .toList();
+            List<Path> bagFolders = found.stream().filter(Files::isDirectory).toList();
+            return found.stream().filter(p -> bagFolders.stream().noneMatch(b -> !b.equals(p) && p.startsWith(b)))
+                    .toList();
         } catch (IOException e) {
             throw new BadInputException(dir + ": cannot list: " + e.getMessage());
         }

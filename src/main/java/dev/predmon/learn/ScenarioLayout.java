@@ -5,6 +5,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelIndex;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Property;
+import dev.predmon.ros2.Recordings;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -76,12 +77,13 @@ public final class ScenarioLayout {
         ScenarioFile file = ScenarioFile.read(dir.resolve(ScenarioFile.NAME), properties);
         List<Path> logs;
         try (Stream<Path> s = Files.list(dir)) {
-            logs = s.filter(p -> p.getFileName().toString().endsWith(".log") && Files.isRegularFile(p)).sorted().toList();
+            logs = s.filter(p -> (p.getFileName().toString().endsWith(".log") && Files.isRegularFile(p))
+                    || Recordings.isRecording(p)).sorted().toList();
         } catch (IOException e) {
             throw new BadInputException(dir + ": cannot list: " + BadInputException.reason(e), e);
         }
         if (logs.isEmpty()) {
-            throw new BadInputException(dir + ": no *.log files for scenario '" + name + "'");
+            throw new BadInputException(dir + ": no *.log files or ROS 2 recordings for scenario '" + name + "'");
         }
         return new ScenarioSpec(name, file.faulty(), file.description(), logs, RunLabel.ALL, file.violates());
     }

@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import java.util.TreeSet;
+import java.util.regex.Pattern;
 
 /**
  * The one line that says how the abstraction in use differs from the one a model directory was learned with:
@@ -21,6 +22,8 @@ final class AbstractionMismatch {
     /** At most this many differing places are named. */
     private static final int PLACES = 3;
     private static final ObjectMapper JSON = new ObjectMapper();
+    /** The places that hold a property's recommended action, in the older (safety) and newer (properties) form. */
+    private static final Pattern ADVICE = Pattern.compile("(safety|properties\\[\\d+])\\.action");
 
     private AbstractionMismatch() {
     }
@@ -68,8 +71,8 @@ final class AbstractionMismatch {
 
     /** Appends the paths ({@code locations.charging_station}, {@code rules[2].replies[0]}) where a and b differ. */
     static void diff(JsonNode a, JsonNode b, String path, List<String> out) {
-        // The recommended action is advice, outside the fingerprint: it is never why models do not fit.
-        if (out.size() >= PLACES || (a != null && a.equals(b)) || path.equals("safety.action")) {
+        // A property's recommended action is advice, outside the fingerprint: it is never why models do not fit.
+        if (out.size() >= PLACES || (a != null && a.equals(b)) || ADVICE.matcher(path).matches()) {
             return;
         }
         if (a != null && b != null && a.isObject() && b.isObject()) {

@@ -2,6 +2,7 @@ package dev.predmon.monitor;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.model.ModelSet;
+import dev.predmon.parse.LogFormat;
 
 import java.io.IOException;
 import java.nio.channels.ClosedByInterruptException;
@@ -83,12 +84,20 @@ public final class Fleet implements AutoCloseable {
 
     /** Watches {@code log} from now on, unless it is watched already (under any spelling of its path). */
     public WatchedLog add(Path log) {
+        return add(log, log.toString(), null);
+    }
+
+    /**
+     * Watches a log read in {@code format} (the abstraction's when null) under {@code name}, unless {@code log} is
+     * watched already: a source that is no file (a live robot) names itself, its path only tells it apart.
+     */
+    public WatchedLog add(Path log, String name, LogFormat format) {
         Path key = log.toAbsolutePath().normalize();
         WatchedLog known = logs.get(key);
         if (known != null) {
             return known;
         }
-        WatchedLog added = new WatchedLog(log, settings, listener);
+        WatchedLog added = new WatchedLog(log, name, format, settings, listener);
         logs.put(key, added);
         listener.added(added);
         if (wakeups != null) {

@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.BadInputException;
+import dev.predmon.ros2.Recordings;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -47,13 +48,23 @@ public final class LogSources {
     private final Map<Object, Path> chosen = new HashMap<>();
 
     /** @param names files, directories or globs; at least one */
+    /** No log at all: what a watch of a source that is no file ({@code --rosbridge}) follows beside it. */
+    public static LogSources none() {
+        return new LogSources(List.of(), true);
+    }
+
     public LogSources(List<Path> names) {
-        if (names.isEmpty()) {
+        this(names, false);
+    }
+
+    private LogSources(List<Path> names, boolean none) {
+        if (names.isEmpty() && !none) {
             throw new IllegalArgumentException("no log named");
         }
         for (Path n : names) {
             // A name that exists is that file or directory, even with glob characters in it (robot[1].log).
-            this.names.add(new Name(n, Files.isDirectory(n) ? Kind.DIRECTORY
+            // A rosbag2 folder is one log, not a directory of logs.
+            this.names.add(new Name(n, Files.isDirectory(n) && !Recordings.isRecording(n) ? Kind.DIRECTORY
                     : !Files.exists(n) && isGlob(n) ? Kind.GLOB : Kind.FILE));
         }
     }
@@ -175,7 +186,8 @@ public final class LogSources {
             case GLOB -> glob(name.path());
             case DIRECTORY -> {
                 try (Stream<Path> files = Files.list(name.path())) {
-                    yield files.filter(p -> Files.isRegularFile(p) && isLogName(p)).sorted().toList();
+                    yield files.filter(p -> (Files.isRegularFile(p) && isLogName(p)) || Recordings.isRecording(p))
+                            .sorted().toList();
                 } catch (NoSuchFileException | NotDirectoryException gone) {
                     yield List.of(); // moved away or replaced: its logs are looked for again at the next rescan
                 }
@@ -190,7 +202,10 @@ public final class LogSources {
         return s.chars().anyMatch(c -> GLOB_CHARS.indexOf(c) >= 0);
     }
 
-    /** The log files of a directory: the names the monitor's captures and yarplogger's files have. */
+    /**
+     * The log files of a directory: the names the monitor's captures and yarplogger's files have (a directory's ROS 2
+     * recordings are its logs too, see {@link Recordings#isRecording}).
+     */
     static boolean isLogName(Path p) {
         String n = p.getFileName().toString();
         return n.endsWith(".log") || n.endsWith(".txt");

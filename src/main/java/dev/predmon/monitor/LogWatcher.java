@@ -14,8 +14,8 @@ import java.util.Optional;
 import java.util.function.Consumer;
 
 /**
- * Wires a followed log to the predictive monitor: the log's {@link RecordSource} (for YARP logs, tail -F and a parser
- * per file, see {@link LogFormat#yarp()}) delivers records to the {@link PredictiveMonitor}, and a rotation restarts it
+ * Wires a followed log to the predictive monitor: the log's {@link RecordSource} (in the format of the monitor's
+ * abstraction: for YARP logs, tail -F and a parser per file, see {@link LogFormat#yarp()}) delivers records to the {@link PredictiveMonitor}, and a rotation restarts it
  * (a new run). The caller owns the loop and its pace ({@link #poll()} never sleeps), so the same wiring serves
  * {@code watch}, the demo and replayed evaluation.
  */
@@ -28,7 +28,7 @@ public final class LogWatcher implements AutoCloseable {
     private final RecordSource source;
 
     public LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems) {
-        this(LogFormat.yarp(), log, monitor, problems, record -> { }, record -> { }, DEFAULT_QUIET, DEFAULT_RELEASE);
+        this(formatOf(monitor), log, monitor, problems, record -> { }, record -> { }, DEFAULT_QUIET, DEFAULT_RELEASE);
     }
 
     /**
@@ -37,7 +37,7 @@ public final class LogWatcher implements AutoCloseable {
      */
     LogWatcher(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems, Consumer<LogRecord> seen,
                Duration quiet) {
-        this(LogFormat.yarp(), log, monitor, problems, seen, record -> { }, quiet, DEFAULT_RELEASE);
+        this(formatOf(monitor), log, monitor, problems, seen, record -> { }, quiet, DEFAULT_RELEASE);
     }
 
     /**
@@ -46,14 +46,23 @@ public final class LogWatcher implements AutoCloseable {
      */
     public static LogWatcher withRecords(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
                                          Consumer<LogRecord> taken) {
-        return new LogWatcher(LogFormat.yarp(), log, monitor, problems, record -> { }, taken, DEFAULT_QUIET,
+        return new LogWatcher(formatOf(monitor), log, monitor, problems, record -> { }, taken, DEFAULT_QUIET,
                 DEFAULT_RELEASE);
     }
 
-    /** As {@link #withRecords}; a file gone from the path is closed once it has not grown for {@code release}. */
+    /**
+     * As {@link #withRecords}; a file gone from the path is closed once it has not grown for {@code release}; read
+     * in {@code format}, or in the abstraction's when null.
+     */
     static LogWatcher withRelease(Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,
-                                  Consumer<LogRecord> taken, Duration release) {
-        return new LogWatcher(LogFormat.yarp(), log, monitor, problems, record -> { }, taken, DEFAULT_QUIET, release);
+                                  Consumer<LogRecord> taken, Duration release, LogFormat format) {
+        return new LogWatcher(format == null ? formatOf(monitor) : format, log, monitor, problems, record -> { },
+                taken, DEFAULT_QUIET, release);
+    }
+
+    /** How the monitor's abstraction reads logs: YARP logs, and ROS 2 recordings when it maps their topics. */
+    private static LogFormat formatOf(PredictiveMonitor monitor) {
+        return monitor.pipeline().abstraction().format();
     }
 
     private LogWatcher(LogFormat format, Path log, PredictiveMonitor monitor, Consumer<ParseProblem> problems,

@@ -1,5 +1,7 @@
 package dev.predmon.monitor;
 
+import dev.predmon.parse.LogFormat;
+
 import java.nio.file.Path;
 
 /**
@@ -17,13 +19,13 @@ public final class WatchedLog {
     /** What the user was last told about it (something not a file at its path, a read that failed), or null. */
     String told;
 
-    WatchedLog(Path path, Fleet.Settings settings, FleetListener listener) {
+    WatchedLog(Path path, String name, LogFormat format, Fleet.Settings settings, FleetListener listener) {
         this.path = path;
-        this.name = path.toString();
+        this.name = name;
         this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.tolerance(),
                 settings.confirm(), settings.rule(), e -> listener.event(this, e));
         this.watcher = LogWatcher.withRelease(path, monitor, p -> listener.problem(this, p),
-                r -> listener.record(this, r), settings.release());
+                r -> listener.record(this, r), settings.release(), format);
     }
 
     /** The log as named on the command line or found under a directory or glob; events are tagged with it. */

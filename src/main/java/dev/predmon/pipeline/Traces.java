@@ -3,7 +3,6 @@ package dev.predmon.pipeline;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.Classification;
 import dev.predmon.compact.IoPair;
-import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.ParseProblem;
 import dev.predmon.parse.RecordSink;
@@ -50,7 +49,7 @@ public final class Traces {
         RunCollector runs = new RunCollector(abstraction, pairs);
         TracePipeline pipeline = new TracePipeline(abstraction, runs);
         long lines;
-        try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(pipeline::accept, p -> {
+        try (RecordSource source = abstraction.format().read(log, RecordSink.of(pipeline::accept, p -> {
             if (problems.size() < MAX_PROBLEMS) {
                 problems.add(p);
             }

@@ -139,24 +139,32 @@ abstract class Check {
         }
     }
 
-    private static final class AbsenceCheck extends Check {
-        private final Absence p;
-        /** That one came is evidence that the event could have ({@link Event#evidence}). */
+    /** A check whose evidence is a message of its event's kind ({@link Event#evidence}): absence and precedence. */
+    private abstract static class EventCheck extends Check {
+        /** That one came is evidence that the event could have. */
         private final Event messages;
 
-        AbsenceCheck(Absence p) {
-            this.p = p;
-            this.messages = p.event().evidence();
+        EventCheck(Event event) {
+            this.messages = event.evidence();
         }
 
         @Override
-        boolean evidences(LogRecord r) {
+        final boolean evidences(LogRecord r) {
             return messages.matches(r);
         }
 
         @Override
-        String unseen() {
+        final String unseen() {
             return "no " + messages.describe();
+        }
+    }
+
+    private static final class AbsenceCheck extends EventCheck {
+        private final Absence p;
+
+        AbsenceCheck(Absence p) {
+            super(p.event());
+            this.p = p;
         }
 
         @Override
@@ -171,25 +179,13 @@ abstract class Check {
         }
     }
 
-    private static final class PrecedenceCheck extends Check {
+    private static final class PrecedenceCheck extends EventCheck {
         private final Precedence p;
-        /** What tells that {@code then} could have come ({@link Event#evidence}). */
-        private final Event messages;
         private boolean seen;
 
         PrecedenceCheck(Precedence p) {
+            super(p.then());
             this.p = p;
-            this.messages = p.then().evidence();
-        }
-
-        @Override
-        boolean evidences(LogRecord r) {
-            return messages.matches(r);
-        }
-
-        @Override
-        String unseen() {
-            return "no " + messages.describe();
         }
 
         @Override

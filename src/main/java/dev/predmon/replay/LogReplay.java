@@ -23,7 +23,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import java.util.function.ObjIntConsumer;
 
 /**
  * Replays one complete log exactly as {@code watch --no-follow} judges it: the {@link LogWatcher} reads the file

@@ -3,7 +3,6 @@ package dev.predmon.report;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.parse.Clock;
-import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordSink;
 import dev.predmon.parse.RecordSource;
@@ -68,7 +67,7 @@ public record Timeline(double start, double[] times, double[] values, Clock cloc
             public void pair(IoPair pair, LogRecord trigger) {
             }
         });
-        try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(pipeline[0]::accept, p -> { }))) {
+        try (RecordSource source = abstraction.format().read(log, RecordSink.of(pipeline[0]::accept, p -> { }))) {
             source.drain();
         }
         return thinned(points, first[0], maxPoints, clock[0]);

@@ -76,7 +76,7 @@ function worstChip(t) {
   const chip = el('span', 'worst');
   chip.dataset.state = w.state;
   chip.dataset.property = w.property;
-  const calm = w.state === 'holds' || w.state === 'pending';
+  const calm = w.state === 'holds' || w.state === 'pending' || w.state === 'no-evidence';
   // the others all well: their light alone, so that the robot's name keeps the room; the tooltip says which
   chip.append(propertyLight(w));
   if (!calm) chip.append(el('span', 'worst-text', w.property));

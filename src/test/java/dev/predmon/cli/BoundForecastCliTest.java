@@ -115,13 +115,13 @@ class BoundForecastCliTest {
         Cli r = Cli.run("evaluate", "--logs", trainingLogs().toString(), "--abstraction", abstraction().toString(),
                 "--folds", "3", "--quiet");
         assertEquals(0, r.code(), r.err());
-        Matcher reserve = Pattern.compile("\nreserve +24 +(\\d+) +(\\d+) +(\\d+) ").matcher(r.out());
+        Matcher reserve = Pattern.compile("\nreserve +24 +0 +(\\d+) +(\\d+) +(\\d+) ").matcher(r.out());
         assertTrue(reserve.find(), r.out());
         int violated = Integer.parseInt(reserve.group(1));
         int warned = Integer.parseInt(reserve.group(2));
         assertTrue(violated > 8, "the depleted runs and the recharge runs that crossed 40: " + r.out());
         assertTrue(warned > violated / 2, "most warned ahead by the reserve's own forecast: " + r.out());
-        Matcher full = Pattern.compile("\nfull +24 +8 +(\\d+) ").matcher(r.out());
+        Matcher full = Pattern.compile("\nfull +24 +0 +8 +(\\d+) ").matcher(r.out());
         assertTrue(full.find(), "every recharge run overcharges: " + r.out());
         assertTrue(Integer.parseInt(full.group(1)) > 0, r.out());
         // and each bound's value forecast is scored per run in the block of the other properties' forecasts

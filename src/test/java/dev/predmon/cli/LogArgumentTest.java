@@ -58,7 +58,7 @@ class LogArgumentTest {
     void aDirectory() {
         Path dir = tmp.resolve("logs");
         sameLine(commands(dir).stream().filter(a -> !a[0].equals("watch")).map(Cli::run).toList(),
-                dir + ": is a directory; expected a log file");
+                dir + ": is a directory; expected a log file or a ROS 2 recording");
     }
 
     @Test

@@ -67,6 +67,22 @@ class NoEvidenceCliTest {
         noVerdict(log, "no YARP monitor record in 40 lines; is this a monitor log?");
     }
 
+    /**
+     * The README given as the log to the shipped models, which have a scorecard: the one line comes alone, not
+     * after the scorecard, which would read as if the models had judged something.
+     */
+    @Test
+    void aReadmeWithModelsThatHaveAScorecard() {
+        Path readme = Path.of("README.md");
+        Cli r = Cli.run("watch", "--no-follow", "--log", readme.toString(), "--models", "models");
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.out() + r.err());
+        assertEquals("", r.out());
+        List<String> lines = r.err().strip().lines().toList();
+        assertEquals(1, lines.size(), r.err());
+        assertTrue(lines.get(0).startsWith("predmon: " + readme + ": no YARP monitor record in ")
+                && lines.get(0).contains("; is this a monitor log?"), r.err());
+    }
+
     @Test
     void anEmptyFile() throws Exception {
         noVerdict(Files.writeString(tmp.resolve("empty.log"), ""), "no YARP monitor record in 0 lines");

@@ -42,11 +42,11 @@ class RecordingsCliTest {
         assertEquals(AbstractionFiles.builtin("scope-fetch").orElseThrow().fingerprint(), AbstractionFiles.load(file).fingerprint());
         Cli bad = Cli.run("abstraction", "show", "nope");
         assertEquals(ExitCodes.BAD_INPUT, bad.code());
-        assertTrue(bad.err().contains("'nope': not a built-in abstraction (one of thesis, scope-fetch)"), bad.err());
+        assertTrue(bad.err().contains("'nope': not a built-in abstraction (one of thesis, scope-fetch, nav2)"), bad.err());
         Cli missing = Cli.run("learn", "--logs", dir.toString(), "--models", dir.resolve("m").toString(),
                 "--abstraction", "scope-fech");
         assertEquals(ExitCodes.BAD_INPUT, missing.code());
-        assertTrue(missing.err().contains("scope-fech: cannot read: no such file (nor a built-in abstraction: thesis, scope-fetch)"), missing.err());
+        assertTrue(missing.err().contains("scope-fech: cannot read: no such file (nor a built-in abstraction: thesis, scope-fetch, nav2)"), missing.err());
     }
 
     @Test

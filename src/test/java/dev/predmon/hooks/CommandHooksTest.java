@@ -60,7 +60,7 @@ class CommandHooksTest {
                 "PREDMON_TIME", "29.581942", "PREDMON_UNIT", "s", "PREDMON_LINE", "7127", "PREDMON_PROPERTY", "",
                 "PREDMON_VALUE", "27.83", "PREDMON_BATTERY", "27.83", "PREDMON_SCENARIO", "depleted"),
                 Map.copyOf(without(env("env"), "PREDMON_SCENARIOS", "PREDMON_PROBABILITY",
-                        "PREDMON_TIME_TO_VIOLATION", "PREDMON_PROPERTY_NAME", "PREDMON_WHAT", "PREDMON_ACTION")));
+                        "PREDMON_TIME_TO_VIOLATION", "PREDMON_PROPERTY_NAME", "PREDMON_WHAT", "PREDMON_ACTION", "PREDMON_VENV")));
         // the event in words; a property the hooks were not told of has no name and no action
         assertEquals("the run can only be faulty scenario depleted, late (every nominal model eliminated)",
                 env("env").get("PREDMON_WHAT"));

@@ -10,6 +10,7 @@ import dev.predmon.abstraction.AbstractionException;
 import dev.predmon.abstraction.file.AbstractionSpec.SafetySpec;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
+import dev.predmon.ros2.TopicRule;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -52,13 +53,14 @@ public final class AbstractionFiles {
 
     /**
      * The built-in abstractions by name: {@code thesis}, the default (Tables 4.1/4.2 with the battery bands of
-     * Section 5.2, for the thesis's tree), and {@code scope-fetch} (the R1 fetch-and-carry tree whose monitor the
-     * public SCOPE recordings show).
+     * Section 5.2, for the thesis's tree), {@code scope-fetch} (the R1 fetch-and-carry tree whose monitor the
+     * public SCOPE recordings show) and {@code nav2} (a robot on ROS 2 navigation, from its recorded topics).
      */
-    public static final List<String> BUILTIN_NAMES = List.of("thesis", "scope-fetch");
+    public static final List<String> BUILTIN_NAMES = List.of("thesis", "scope-fetch", "nav2");
 
     /** Each built-in's resource, beside {@link Abstraction}. */
-    private static final Map<String, String> BUILTIN = Map.of("thesis", "default-abstraction.json", "scope-fetch", "scope-fetch.json");
+    private static final Map<String, String> BUILTIN = Map.of("thesis", "default-abstraction.json",
+            "scope-fetch", "scope-fetch.json", "nav2", "nav2.json");
 
     private AbstractionFiles() {
     }
@@ -135,11 +137,16 @@ public final class AbstractionFiles {
         }
         // The properties list is read on its own (PropertySpecs); the rest binds as files always have.
         JsonNode properties = tree.root() instanceof ObjectNode o ? o.remove("properties") : null;
+        JsonNode ros2 = tree.root() instanceof ObjectNode o ? o.remove("ros2") : null;
         AbstractionSpec spec;
         List<Property> read = null;
+        List<TopicRule> topics = List.of();
         try {
             spec = SpecBinder.spec(tree.root());
             AbstractionValidator.validate(spec);
+            if (ros2 != null) {
+                topics = Ros2Specs.read(ros2);
+            }
             if (properties != null) {
                 if (spec.safety() != null) {
                     throw new AbstractionValidator.Invalid("/safety", "'safety' is the older form of one bound"
@@ -150,10 +157,11 @@ public final class AbstractionFiles {
         } catch (AbstractionValidator.Invalid e) {
             throw new AbstractionException(position(source, tree.locate(e.pointer)) + at(e.pointer) + e.getMessage());
         }
+        String ros2Text = ros2 == null ? null : SpecWriter.properties(ros2);
         if (read == null) {
-            return older(spec);
+            return older(spec, ros2Text, topics);
         }
-        String canonical = SpecWriter.canonical(spec, SpecWriter.properties(properties));
+        String canonical = SpecWriter.canonical(spec, SpecWriter.properties(properties), ros2Text);
         // What is learned depends on the forecast's property only: the fingerprint hashes the file with that property
         // in the older form, so that models learned before properties came, or with other properties, stay valid.
         Bound forecast = read.stream().filter(p -> p instanceof Bound b && b.hasFloor()).map(p -> (Bound) p)
@@ -164,7 +172,11 @@ public final class AbstractionFiles {
         if (forecast != null && forecast.ceiling() != Double.POSITIVE_INFINITY) {
             text += "\nceiling " + forecast.ceiling();
         }
-        return new Abstraction(spec.definition(read), canonical, sha256(text));
+        // A ros2 section decides which records a recording gives, so it is part of what models were learned with.
+        if (ros2Text != null) {
+            text += "\nros2 " + ros2Text;
+        }
+        return new Abstraction(spec.definition(read, topics), canonical, sha256(text));
     }
 
     /**
@@ -172,11 +184,12 @@ public final class AbstractionFiles {
      * action or its form (the {@code models/abstraction.json} of models learned before properties came) gets the
      * built-in's properties, its own action kept.
      */
-    private static Abstraction older(AbstractionSpec spec) {
-        String canonical = SpecWriter.canonical(spec);
+    private static Abstraction older(AbstractionSpec spec, String ros2Text, List<TopicRule> topics) {
+        String canonical = SpecWriter.canonical(spec, null, ros2Text);
         // The recommended action, and what says it is under way, are advice to operators: they change no trace, so
         // models stay valid when they do.
-        String fingerprint = sha256(spec.hasAdvice() ? SpecWriter.canonical(spec.withoutAdvice()) : canonical);
+        String fingerprint = sha256(spec.hasAdvice() ? SpecWriter.canonical(spec.withoutAdvice(), null, ros2Text)
+                : canonical);
         List<Property> builtin = builtinProperties(fingerprint);
         List<Property> properties;
         if (builtin != null) {
@@ -186,7 +199,7 @@ public final class AbstractionFiles {
         } else {
             properties = spec.safety() == null ? List.of() : List.of(spec.safetyProperty(null));
         }
-        return new Abstraction(spec.definition(properties), canonical, fingerprint);
+        return new Abstraction(spec.definition(properties, topics), canonical, fingerprint);
     }
 
     /** {@code advised} (an older file's property with its advice) under the id, name and bounds of {@code b}. */

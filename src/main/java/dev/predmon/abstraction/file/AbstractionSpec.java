@@ -11,6 +11,7 @@ import dev.predmon.property.Property;
 import dev.predmon.property.Scope;
 import dev.predmon.property.UnderWay;
 import dev.predmon.property.ValueReader;
+import dev.predmon.ros2.TopicRule;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -78,6 +79,16 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
      * @param properties the file's safety properties
      */
     Definition definition(List<Property> properties) {
+        return definition(properties, List.of());
+    }
+
+    /**
+     * What this validated spec defines, with the defaults of absent keys.
+     *
+     * @param properties the file's safety properties
+     * @param topics     the rules of its {@code ros2} section
+     */
+    Definition definition(List<Property> properties, List<TopicRule> topics) {
         List<Definition.Drop> drops = new ArrayList<>();
         for (DropSpec d : drop == null ? List.<DropSpec>of() : drop) {
             drops.add(new Definition.Drop(d.kind(), d.from(), d.to(), d.protocol(), d.command()));
@@ -96,7 +107,7 @@ record AbstractionSpec(String name, String description, List<DropSpec> drop, Map
                 runs.silence() == null ? RunRule.DEFAULT_SILENCE : runs.silence());
         int confirm = warning == null || warning.confirm() == null ? 0 : warning.confirm();
         return new Definition(name, locations == null ? Map.of() : locations, drops, compiled, properties, confirm,
-                runRule);
+                runRule, topics);
     }
 
     /**

@@ -44,9 +44,18 @@ final class SpecWriter {
      * @param properties the list's canonical JSON ({@link #properties}), or null for none
      */
     static String canonical(AbstractionSpec spec, String properties) {
+        return canonical(spec, properties, null);
+    }
+
+    /**
+     * The canonical JSON of {@code spec} with a {@code properties} list and a {@code ros2} section.
+     *
+     * @param ros2 the section's canonical JSON ({@link #properties}, which writes any tree so), or null for none
+     */
+    static String canonical(AbstractionSpec spec, String properties, String ros2) {
         StringWriter out = new StringWriter();
         try (JsonGenerator g = LocatedJson.FACTORY.createGenerator(out)) {
-            spec(g, spec, properties);
+            spec(g, spec, properties, ros2);
         } catch (IOException e) {
             throw new UncheckedIOException("writing to a string cannot fail", e);
         }
@@ -55,7 +64,7 @@ final class SpecWriter {
 
     // Each record's keys below are written in alphabetical order.
 
-    private static void spec(JsonGenerator g, AbstractionSpec s, String properties) throws IOException {
+    private static void spec(JsonGenerator g, AbstractionSpec s, String properties, String ros2) throws IOException {
         g.writeStartObject();
         string(g, "description", s.description());
         if (s.drop() != null) {
@@ -81,6 +90,10 @@ final class SpecWriter {
         if (properties != null) {
             g.writeFieldName("properties");
             g.writeRawValue(properties);
+        }
+        if (ros2 != null) {
+            g.writeFieldName("ros2");
+            g.writeRawValue(ros2);
         }
         if (s.rules() != null) {
             g.writeArrayFieldStart("rules");

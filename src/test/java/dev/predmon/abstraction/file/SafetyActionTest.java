@@ -7,6 +7,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -46,7 +47,7 @@ class SafetyActionTest {
 
     @Test
     void theBuiltInsRecommendChargingAndLendItToACopyWithoutAnAction() throws Exception {
-        for (String name : AbstractionFiles.BUILTIN_NAMES) {
+        for (String name : List.of("thesis", "scope-fetch")) { // the R1 system's built-ins
             assertEquals("send the robot to the charging station",
                     AbstractionFiles.builtin(name).orElseThrow().safety().orElseThrow().action(), name);
         }

@@ -60,12 +60,14 @@ class SpecBindingTest {
 
     /**
      * The built-ins as data binding read files, that is without their {@code properties} list (read on its own by
-     * {@link PropertySpecs}): the text the binding tests below edit.
+     * {@link PropertySpecs}) and their {@code ros2} section (read by {@link Ros2Specs}): the text the binding tests
+     * below edit.
      */
     static String bound(String name) {
         try {
             ObjectNode tree = (ObjectNode) DatabindOracle.MAPPER.readTree(AbstractionFiles.builtinJson(name).orElseThrow());
             tree.remove("properties");
+            tree.remove("ros2");
             return DatabindOracle.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(tree);
         } catch (JsonProcessingException e) {
             throw new IllegalStateException(e);
