@@ -24,7 +24,9 @@ import java.util.Map;
  * appended just after its log was polled waits at most one pause plus one pass.
  * Every {@link #SAFETY_NANOS} every log is polled anyway, as a backstop for what no notification covers: a file
  * written through a memory map, or through a hard link in another directory, a directory replaced under its
- * watch before {@link Wakeups#recheck} sees it. It costs a few microseconds per log (see {@code bench --only fleet}).
+ * watch before {@link Wakeups#recheck} sees it. It costs a few microseconds per log (see {@code bench --only fleet}),
+ * spread over the period a slice at a time, so that 10,000 logs do not hold up the reading of an append. Directories
+ * and globs are looked at again for new logs on a thread of their own ({@link Rescan}).
  */
 public final class Fleet implements AutoCloseable {
 
@@ -36,6 +38,10 @@ public final class Fleet implements AutoCloseable {
     static final long PULSE_NANOS = 500_000_000L;
     /** A file created in a watched directory asks for a rescan, which waits this long after the last one. */
     static final long RESCAN_SOON_NANOS = 50_000_000L;
+    /** The backstop polls a slice of the logs at a time, every {@link #SAFETY_NANOS} over this many. */
+    static final int SAFETY_SLICES = 20;
+    /** While a rescan runs on its own thread, how often the following thread looks whether it is done. */
+    static final long RESCAN_LOOK_NANOS = 10_000_000L;
 
     /**
      * How each log's monitor matches: the same for every log; {@code release}: how long a file gone from its log's
@@ -51,6 +57,8 @@ public final class Fleet implements AutoCloseable {
     private OpenFiles openFiles = new OpenFiles(OpenFiles.defaultBudget());
     /** While following: told of each log added. */
     private Wakeups wakeups;
+    /** Where the backstop's next slice begins. */
+    private final Slices<WatchedLog> backstop = new Slices<>(SAFETY_SLICES);
 
     /**
      * @param tolerance discrepancies a model may accumulate and still match (0: exact matching)
@@ -202,18 +210,19 @@ public final class Fleet implements AutoCloseable {
         boolean growing = sources.growing();
         DirectoryWatch watch = polling ? null
                 : DirectoryWatch.open(why -> listener.unnotified(null, why, pauseNanos));
-        try (Wakeups w = new Wakeups(watch, pauseNanos, (dir, why) -> listener.unnotified(dir, why, pauseNanos))) {
+        try (Wakeups w = new Wakeups(watch, pauseNanos, (dir, why) -> listener.unnotified(dir, why, pauseNanos));
+             Rescan rescan = new Rescan(sources)) {
             wakeups = w;
             logs.values().forEach(w::add);
             poll(); // the logs as they are as following begins: their history
             listener.caughtUp();
             if (growing) {
-                rescan(sources); // also watches the directories in which new logs may appear
+                found(rescan, true); // also watches the directories in which new logs may appear
             }
             long now = System.nanoTime();
             long lastScan = now;
             long nextCheck = now + RESCAN_NANOS;
-            long nextSafety = now + safetyNanos;
+            long nextSlice = now + safetyNanos / SAFETY_SLICES;
             long nextPulse = now + PULSE_NANOS;
             long pause = listener.beat();
             long nextBeat = now + pause;
@@ -227,29 +236,35 @@ public final class Fleet implements AutoCloseable {
                     pause = listener.beat();
                     nextBeat = now + pause;
                 }
+                found(rescan, false);
                 long scanPeriod = w.allWatched() ? safetyNanos : RESCAN_NANOS;
-                if (growing && (now - lastScan >= scanPeriod
+                if (growing && !rescan.running() && (now - lastScan >= scanPeriod
                         || (w.rescanWanted() && now - lastScan >= RESCAN_SOON_NANOS))) {
                     w.rescanning();
-                    rescan(sources);
+                    rescan.start();
                     lastScan = now;
                 }
                 if (now - nextCheck >= 0) {
                     w.recheck();
                     nextCheck = now + (w.allWatched() ? safetyNanos : RESCAN_NANOS);
                 }
-                if (now - nextSafety >= 0) {
+                if (now - nextSlice >= 0) {
                     if (w.notifying()) {
-                        poll();
+                        for (WatchedLog log : backstop.next(logs.values())) {
+                            poll(log, false);
+                        }
                     }
-                    nextSafety = now + safetyNanos;
+                    nextSlice = now + safetyNanos / SAFETY_SLICES;
                 }
-                long until = Math.min(Math.min(nextCheck, nextSafety), nextPulse);
+                long until = Math.min(Math.min(nextCheck, nextSlice), nextPulse);
                 if (pause != Long.MAX_VALUE && nextBeat - until < 0) {
                     until = nextBeat;
                 }
                 if (growing) {
                     until = Math.min(until, lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
+                }
+                if (rescan.running()) {
+                    until = Math.min(until, now + RESCAN_LOOK_NANOS);
                 }
                 for (WatchedLog log : w.due(until - System.nanoTime())) {
                     poll(log, w.onlyWritten(log));
@@ -265,10 +280,17 @@ public final class Fleet implements AutoCloseable {
         }
     }
 
-    private void rescan(LogSources sources) throws ClosedByInterruptException {
+    /**
+     * Adds the logs a look found and watches the directories new ones may appear in: the look made {@code now}, or
+     * the one made on the rescan's thread if it is done.
+     */
+    private void found(Rescan rescan, boolean now) throws ClosedByInterruptException, InterruptedException {
         try {
-            sources.find().forEach(this::add);
-            wakeups.watchSources(sources.directories());
+            Rescan.Found found = now ? rescan.now() : rescan.take();
+            if (found != null) {
+                found.files().forEach(this::add);
+                wakeups.watchSources(found.directories());
+            }
         } catch (ClosedByInterruptException stop) {
             throw stop;
         } catch (IOException e) {
