@@ -62,7 +62,7 @@ final class AbstractionCheckCommand implements Callable<Integer> {
             throw new BadInputException(String.join(", ", logs.stream().map(Path::toString).toList())
                     + ": no *.log or *.txt file to check the properties against");
         }
-        Vocabulary seen = TrainingEvidence.vocabulary(all);
+        Vocabulary seen = TrainingEvidence.vocabulary(all, abstraction.format());
         if (seen.records() == 0) {
             throw new BadInputException(new ArrayList<>(all).get(0) + (all.size() > 1 ? " and the other logs" : "")
                     + ": no YARP monitor record; are these monitor logs?");

@@ -33,15 +33,16 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.stream.Stream;
 
 /**
  * {@code predmon demo}: the main job on a fresh machine. A faulty ({@code depleted}) run is simulated live into a
@@ -53,18 +54,28 @@ import java.util.concurrent.atomic.AtomicReference;
         description = {"Watch a simulated 'depleted' run live (sped up) and see the warning arrive before the "
                 + "safety violation, then a 'recharge' run that ends without a warning. Uses the models in "
                 + "--models, learning them from --logs first if there are none.",
+                "With --format mcap the runs are recorded as a robot on ROS 2 navigation records them, an MCAP file "
+                        + "growing chunk by chunk, and watched with models of the built-in nav2 abstraction "
+                        + "(models-nav2, learned from simulated recordings first if there are none).",
                 "Exit 0 when both runs behave as expected, 1 otherwise."})
 final class DemoCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--models", paramLabel = "DIR", defaultValue = "models", description = "Models (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--models", paramLabel = "DIR", description = "Models (default: models; with --format mcap, "
+            + "models-nav2).")
     Path models;
 
-    @Option(names = "--logs", paramLabel = "DIR", defaultValue = "sample-logs",
-            description = "Logs to learn from when --models holds no models (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--logs", paramLabel = "DIR",
+            description = "Logs to learn from when --models holds no models (default: sample-logs; with --format "
+                    + "mcap, recordings of simulated runs).")
     Path logs;
+
+    @Option(names = "--format", paramLabel = "yarp|mcap", defaultValue = "yarp",
+            description = "What the runs are written as: a YARP monitor log, or an MCAP recording of nav2's topics "
+                    + "(default: ${DEFAULT-VALUE}).")
+    String format;
 
     @Option(names = "--seconds", paramLabel = "S", defaultValue = "15",
             description = "Wall-clock seconds each run takes; sets the speed-up (default: ${DEFAULT-VALUE}).")
@@ -96,19 +107,48 @@ final class DemoCommand implements Callable<Integer> {
         if (!(seconds > 0) || Double.isInfinite(seconds)) {
             throw new ParameterException(spec.commandLine(), "--seconds must be a positive number, got " + seconds);
         }
+        boolean bags = switch (format) {
+            case "yarp" -> false;
+            case "mcap" -> true;
+            default -> throw new ParameterException(spec.commandLine(), "--format must be yarp or mcap, got '" + format
+                    + "'");
+        };
         PrintWriter out = spec.commandLine().getOut();
+        if (models == null) {
+            models = bags ? DemoBag.MODELS : Path.of("models");
+        }
+        Path dir = work != null ? Files.createDirectories(work) : Files.createTempDirectory("predmon-demo-");
+        try {
+            return run(out, bags, dir);
+        } finally {
+            if (work == null) {
+                removeTree(dir); // a directory of its own: nothing of it is left behind
+            }
+        }
+    }
+
+    private int run(PrintWriter out, boolean bags, Path dir) throws Exception {
         if (!Files.isRegularFile(models.resolve(ModelStore.INDEX))) {
-            out.println("no models in " + models + ": learning them from " + logs);
-            out.flush();
-            Learning.learnAndWrite(logs, models, AbstractionFiles.defaults(), l -> { });
+            if (bags) {
+                DemoBag.learn(out, models, logs, dir);
+            } else {
+                Path from = logs != null ? logs : Path.of("sample-logs");
+                out.println("no models in " + models + ": learning them from " + from);
+                out.flush();
+                Learning.learnAndWrite(from, models, AbstractionFiles.defaults(), l -> { });
+            }
         }
         Optional<Path> stored = ModelStore.storedAbstraction(models);
         Abstraction abstraction = stored.isPresent() ? AbstractionFiles.load(stored.get()) : AbstractionFiles.defaults();
+        if (bags && abstraction.topicRules().isEmpty()) {
+            throw new ParameterException(spec.commandLine(), "--format mcap: the models in " + models + " were learned"
+                    + " with '" + abstraction.name() + "', which maps no ROS 2 topic; give --models a directory of "
+                    + "models learned with --abstraction nav2 (or one without models, to learn them)");
+        }
         ModelSet set = ModelStore.read(models, abstraction);
         out.println("predmon demo: " + set.models().size() + " learned machines in " + models + " ("
                 + String.join(", ", set.index().scenarios().stream()
                 .map(s -> s.name() + (s.faulty() ? " faulty" : " nominal")).toList()) + ")");
-        Path dir = work != null ? Files.createDirectories(work) : Files.createTempDirectory("predmon-demo-");
         Board board = liveView.board(set, abstraction, true, List.of("the demo's runs, written into " + dir));
         boolean depletedOk;
         boolean rechargeOk;
@@ -116,18 +156,14 @@ final class DemoCommand implements Callable<Integer> {
             if (server != null) {
                 LiveDemo.awaitViewer(out, board, server, waitViewer);
             }
-            depletedOk = live(out, set, abstraction, dir, Scenario.DEPLETED, depletedSeed, board);
-            rechargeOk = live(out, set, abstraction, dir, Scenario.RECHARGE, rechargeSeed, board);
+            depletedOk = live(out, set, abstraction, dir, Scenario.DEPLETED, depletedSeed, board, bags);
+            rechargeOk = live(out, set, abstraction, dir, Scenario.RECHARGE, rechargeSeed, board, bags);
             out.println(depletedOk && rechargeOk
                     ? "demo done: the faulty run was predicted before its violation; the nominal run raised no warning"
                     : "demo done, but not as expected: see above");
             out.flush();
             if (server != null) {
                 LiveDemo.linger(out, server, linger);
-            }
-        } finally {
-            if (work == null) {
-                removeLogs(dir); // a directory of its own: nothing of it is left behind
             }
         }
         return depletedOk && rechargeOk ? ExitCodes.OK : ExitCodes.WARNING;
@@ -138,20 +174,30 @@ final class DemoCommand implements Callable<Integer> {
      * expected. With a live view ({@code board} not null) the run's log gets a tile.
      */
     private boolean live(PrintWriter out, ModelSet set, Abstraction abstraction, Path dir, Scenario scenario, long seed,
-                         Board board) throws IOException, InterruptedException {
+                         Board board, boolean bags) throws IOException, InterruptedException {
         SimRun run = Simulator.run(scenario, seed, SimOptions.defaults());
         double duration = run.truth().endTime() - run.events().get(0).time();
         double speed = Math.max(1.0, duration / seconds);
-        Path log = dir.resolve(scenario.id() + "-" + seed + ".log");
+        Path log = dir.resolve(scenario.id() + "-" + seed + (bags ? ".mcap" : ".log"));
         Files.deleteIfExists(log);
         out.printf(Locale.ROOT, "%nrun: a '%s' run (%s, seed %d), %.0f s of robot time played at %.1fx into %s%n",
                 scenario.id(), scenario.faulty() ? "faulty" : "nominal", seed, duration, speed, log);
+        if (bags) {
+            out.println("  recorded as nav2 records it: /battery_state and the navigate_to_pose and dock_robot action "
+                    + "status, in MCAP chunks");
+        }
         out.flush();
         // Followed as watch follows a log, its events printed with the seconds since the run began.
         WatchSettings settings = new WatchSettings(false, true, false, false, Stamp.since(Instant.now()), 0,
                 TickSeconds.NONE);
         AtomicReference<Throwable> failed = new AtomicReference<>();
-        Thread writer = new Thread(() -> write(run, log, speed), "predmon-demo-writer");
+        Thread writer = new Thread(() -> {
+            if (bags) {
+                DemoBag.record(run, log, speed);
+            } else {
+                write(run, log, speed);
+            }
+        }, "predmon-demo-writer");
         writer.setDaemon(true);
         writer.setUncaughtExceptionHandler((t, e) -> failed.set(e)); // rethrown below, not printed by the thread
         try (WatchSession session = new WatchSession(out, spec.commandLine().getErr(), settings, null, board,
@@ -205,16 +251,13 @@ final class DemoCommand implements Callable<Integer> {
         throw new IllegalStateException("the demo's log writer failed", e);
     }
 
-    /** Deletes the demo's own temporary directory and the logs it wrote there. */
-    private static void removeLogs(Path dir) throws IOException {
-        for (Scenario s : Scenario.values()) {
-            try (DirectoryStream<Path> logs = Files.newDirectoryStream(dir, s.id() + "-*.log")) {
-                for (Path log : logs) {
-                    Files.deleteIfExists(log);
-                }
+    /** Deletes the demo's own temporary directory and what it wrote there. */
+    private static void removeTree(Path dir) throws IOException {
+        try (Stream<Path> files = Files.walk(dir)) {
+            for (Path f : files.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(f);
             }
         }
-        Files.deleteIfExists(dir);
     }
 
     private static boolean verdict(PrintWriter out, Scenario scenario, PredictiveMonitor m) {

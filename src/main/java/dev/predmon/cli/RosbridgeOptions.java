@@ -16,7 +16,10 @@ import java.net.URISyntaxException;
 import java.nio.file.Path;
 import java.util.List;
 
-/** {@code watch --rosbridge URL [--publish-diagnostics]}: a live robot instead of logs. */
+/**
+ * {@code watch --rosbridge URL [--rosbridge-compression none|cbor-raw] [--publish-diagnostics]}: a live robot instead
+ * of logs.
+ */
 final class RosbridgeOptions {
 
     @Option(names = "--rosbridge", paramLabel = "URL",
@@ -25,6 +28,12 @@ final class RosbridgeOptions {
                     + "recording's. Connects again with a growing pause when the connection drops; nothing is judged "
                     + "across the gap.")
     String url;
+
+    @Option(names = "--rosbridge-compression", paramLabel = "none|cbor-raw", defaultValue = "none",
+            description = "With --rosbridge: how the server sends each message: none (JSON text, the default), or "
+                    + "cbor-raw (the message's CDR bytes in a CBOR binary frame, decoded with predmon's bundled "
+                    + "definition of the topic's type; lighter for the robot).")
+    String compression;
 
     @Option(names = "--publish-diagnostics", description = "With --rosbridge: publish each property's verdict on "
             + "/diagnostics (diagnostic_msgs/DiagnosticArray, once a second: OK holds, WARN warned, ERROR violated, "
@@ -37,7 +46,15 @@ final class RosbridgeOptions {
 
     /** Checks the options against the rest of the command line, before anything starts. */
     void check(CommandSpec spec, boolean logs, boolean noFollow, Abstraction abstraction) {
+        if (!compression.equals("none") && !compression.equals("cbor-raw")) {
+            throw new ParameterException(spec.commandLine(), "--rosbridge-compression must be none or cbor-raw, got '"
+                    + compression + "'");
+        }
         if (url == null) {
+            if (!compression.equals("none")) {
+                throw new ParameterException(spec.commandLine(), "--rosbridge-compression is how a rosbridge server "
+                        + "sends: give --rosbridge ws://HOST:9090");
+            }
             if (diagnostics) {
                 throw new ParameterException(spec.commandLine(), "--publish-diagnostics publishes to the robot of "
                         + "--rosbridge: give --rosbridge ws://HOST:9090");
@@ -57,6 +74,17 @@ final class RosbridgeOptions {
                     + " names no ROS 2 topic to subscribe to: give --abstraction nav2, or an abstraction file "
                     + "with a ros2 section");
         }
+        if (cborRaw()) {
+            try {
+                RosbridgeClient.decoders(RosbridgeFormat.subscriptions(abstraction.topicRules()));
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), "--rosbridge-compression cbor-raw: " + e.getMessage());
+            }
+        }
+    }
+
+    private boolean cborRaw() {
+        return compression.equals("cbor-raw");
     }
 
     private URI uri(CommandSpec spec) {
@@ -79,7 +107,7 @@ final class RosbridgeOptions {
             err.println("predmon: note: rosbridge cannot subscribe to a pattern; not watched: "
                     + String.join(", ", patterns) + " (name the topics in the abstraction file)");
         }
-        return new RosbridgeClient(uri(spec), RosbridgeFormat.subscriptions(abstraction.topicRules()));
+        return new RosbridgeClient(uri(spec), RosbridgeFormat.subscriptions(abstraction.topicRules()), cborRaw());
     }
 
     /** The fleet's listener: {@code session}, with the diagnostics published in front of it when asked. */

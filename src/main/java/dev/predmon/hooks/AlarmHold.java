@@ -137,6 +137,17 @@ final class AlarmHold implements AutoCloseable {
         return timer;
     }
 
+    /** Forgets {@code log}'s alarms (its log was deleted long ago), running a recovery still held first. */
+    synchronized void forget(String log) {
+        for (var i = alarms.entrySet().iterator(); i.hasNext(); ) {
+            var e = i.next();
+            if (e.getKey().log().equals(log)) {
+                release(e.getValue());
+                i.remove();
+            }
+        }
+    }
+
     /** Runs every held recovery now (watch ends: the robot hears that its alarms are over). */
     @Override
     public synchronized void close() {

@@ -121,6 +121,11 @@ public final class CommandHooks implements AutoCloseable {
                 run == null ? "" : run.option + ": " + run.what);
     }
 
+    /** {@code log} is forgotten (deleted long ago): what the hold kept of its alarms goes. */
+    public void forget(String log) {
+        hold.forget(log);
+    }
+
     private void submit(String log, Run run) {
         if (!queue.offer(log, run)) {
             report.accept(run.option + ": " + run.what + ": not run, " + PER_LOG + " commands of " + log

@@ -69,7 +69,7 @@ public final class Learning {
                 LearnedModels.dots(learned.scenarios(), MealyAlphabet.inputs(abstraction)), abstraction.canonicalJson(),
                 learned.forecast(), step);
         return new Result(learned.scenarios(), notes, learned.forecast(),
-                TrainingEvidence.of(specs, traces, abstraction.properties()));
+                TrainingEvidence.of(specs, traces, abstraction.properties(), abstraction.format()));
     }
 
     /**

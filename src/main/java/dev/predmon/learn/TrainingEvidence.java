@@ -57,8 +57,8 @@ public record TrainingEvidence(List<UnseenNames.Problem> unseen, List<PropertyRu
     }
 
     /** The evidence of {@code specs}' training runs, their logs read into {@code traces}, for {@code properties}. */
-    static TrainingEvidence of(List<ScenarioSpec> specs, Map<Path, LogTrace> traces, List<Property> properties)
-            throws BadInputException {
+    static TrainingEvidence of(List<ScenarioSpec> specs, Map<Path, LogTrace> traces, List<Property> properties,
+                               LogFormat format) throws BadInputException {
         Set<Path> logs = new LinkedHashSet<>();
         specs.forEach(s -> logs.addAll(s.logs()));
         // a log of a labelled folder is in both scenarios, each taking its own runs: count each run once
@@ -84,14 +84,17 @@ public record TrainingEvidence(List<UnseenNames.Problem> unseen, List<PropertyRu
             int unobserved = (int) runs.stream().filter(r -> !r.timing().observed(p.id())).count();
             tally.add(new PropertyRuns(p.id(), runs.size(), violated, unobserved));
         }
-        return new TrainingEvidence(UnseenNames.check(properties, vocabulary(logs)), tally);
+        return new TrainingEvidence(UnseenNames.check(properties, vocabulary(logs, format)), tally);
     }
 
-    /** The names {@code logs} hold: every record of each, read once more, without the pipeline. */
-    public static Vocabulary vocabulary(Collection<Path> logs) throws BadInputException {
+    /**
+     * The names {@code logs} hold: every record of each, read once more in {@code format} (the abstraction's: a ROS 2
+     * recording's records are those its topic rules map), without the pipeline.
+     */
+    public static Vocabulary vocabulary(Collection<Path> logs, LogFormat format) throws BadInputException {
         Vocabulary seen = new Vocabulary();
         for (Path log : logs) {
-            try (RecordSource source = LogFormat.yarp().read(log, RecordSink.of(seen::accept, p -> { }))) {
+            try (RecordSource source = format.read(log, RecordSink.of(seen::accept, p -> { }))) {
                 source.drain();
             } catch (IOException e) {
                 throw BadInputException.cannotRead(log, e);

@@ -8,6 +8,7 @@ import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
+import dev.predmon.monitor.DeletedLogs;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.WarningRule;
 import dev.predmon.property.Bound;
@@ -38,7 +39,7 @@ public final class Board {
      * How long the tile of a deleted log stays, saying so: then it leaves the page and {@code /metrics}, so that a
      * fleet whose logs come and go does not keep every log it ever watched.
      */
-    public static final Duration DELETED_KEPT = Duration.ofMinutes(10);
+    public static final Duration DELETED_KEPT = DeletedLogs.KEPT;
 
     /** The order of {@code /status} and of the page: worst first (see {@link TileState}), then by robot. */
     private static final List<String> ORDER = List.of("violation", "warning", "unknown", "no-verdict", "ok", "waiting",
@@ -110,6 +111,14 @@ public final class Board {
             metrics.added(t);
             return t;
         });
+    }
+
+    /** {@code tile}'s log was deleted long ago and is forgotten: the tile and its series leave for good. */
+    public synchronized void forget(Tile tile) {
+        deletedSince.remove(tile);
+        if (tiles.remove(tile.log(), tile)) {
+            metrics.removed(tile);
+        }
     }
 
     /** A tile that left the board with its deleted log comes back when the log does. */

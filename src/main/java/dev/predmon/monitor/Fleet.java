@@ -21,12 +21,10 @@ import java.util.Map;
  * ({@link Wakeups}, {@link DirectoryWatch}), then polls just the logs concerned: a thousand idle logs cost almost
  * nothing, and an append is read within a millisecond or so. Logs whose changes cannot be notified (a network file
  * system, a directory that cannot be watched, or {@code --polling}) are polled after every pause instead: a record
- * appended just after its log was polled waits at most one pause plus one pass.
- * Every {@link #SAFETY_NANOS} every log is polled anyway, as a backstop for what no notification covers: a file
- * written through a memory map, or through a hard link in another directory, a directory replaced under its
- * watch before {@link Wakeups#recheck} sees it. It costs a few microseconds per log (see {@code bench --only fleet}),
- * spread over the period a slice at a time, so that 10,000 logs do not hold up the reading of an append. Directories
- * and globs are looked at again for new logs on a thread of their own ({@link Rescan}).
+ * appended just after its log was polled waits at most one pause plus one pass. Every {@link #SAFETY_NANOS} every
+ * log is polled anyway, a slice at a time, as a backstop for what no notification covers: a file written through a
+ * memory map or a hard link in another directory, a directory replaced under its watch before {@link Wakeups#recheck}
+ * sees it. Directories and globs are looked at again for new logs on a thread of their own ({@link Rescan}).
  */
 public final class Fleet implements AutoCloseable {
 
@@ -38,9 +36,9 @@ public final class Fleet implements AutoCloseable {
     static final long PULSE_NANOS = 500_000_000L;
     /** A file created in a watched directory asks for a rescan, which waits this long after the last one. */
     static final long RESCAN_SOON_NANOS = 50_000_000L;
-    /** The backstop polls a slice of the logs at a time, every {@link #SAFETY_NANOS} over this many. */
+    /** The backstop polls the logs in this many slices, one every {@link #SAFETY_NANOS} / this. */
     static final int SAFETY_SLICES = 20;
-    /** While a rescan runs on its own thread, how often the following thread looks whether it is done. */
+    /** How often the following thread looks whether a rescan on its own thread is done. */
     static final long RESCAN_LOOK_NANOS = 10_000_000L;
 
     /**
@@ -59,6 +57,7 @@ public final class Fleet implements AutoCloseable {
     private Wakeups wakeups;
     /** Where the backstop's next slice begins. */
     private final Slices<WatchedLog> backstop = new Slices<>(SAFETY_SLICES);
+    private DeletedLogs deleted = new DeletedLogs(DeletedLogs.KEPT, DeletedLogs.EVERY);
 
     /**
      * @param tolerance discrepancies a model may accumulate and still match (0: exact matching)
@@ -83,6 +82,11 @@ public final class Fleet implements AutoCloseable {
         settings = new Settings(settings.models(), settings.abstraction(), settings.tolerance(), settings.confirm(),
                 settings.rule(), release);
         openFiles = new OpenFiles(budget);
+    }
+
+    /** For tests: a deleted log is forgotten {@code kept} after it is found gone, looked for every {@code every}. */
+    void forgetDeleted(Duration kept, Duration every) {
+        deleted = new DeletedLogs(kept, every);
     }
 
     /** How many files the fleet's logs hold open now. */
@@ -224,6 +228,7 @@ public final class Fleet implements AutoCloseable {
             long nextCheck = now + RESCAN_NANOS;
             long nextSlice = now + safetyNanos / SAFETY_SLICES;
             long nextPulse = now + PULSE_NANOS;
+            long nextForget = now + deleted.everyNanos();
             long pause = listener.beat();
             long nextBeat = now + pause;
             while (!Thread.currentThread().isInterrupted()) {
@@ -244,6 +249,10 @@ public final class Fleet implements AutoCloseable {
                     rescan.start();
                     lastScan = now;
                 }
+                if (growing && now - nextForget >= 0) {
+                    forget(sources, w);
+                    nextForget = now + deleted.everyNanos();
+                }
                 if (now - nextCheck >= 0) {
                     w.recheck();
                     nextCheck = now + (w.allWatched() ? safetyNanos : RESCAN_NANOS);
@@ -251,7 +260,9 @@ public final class Fleet implements AutoCloseable {
                 if (now - nextSlice >= 0) {
                     if (w.notifying()) {
                         for (WatchedLog log : backstop.next(logs.values())) {
-                            poll(log, false);
+                            if (logs.get(log.path().toAbsolutePath().normalize()) == log) { // not forgotten since
+                                poll(log, false);
+                            }
                         }
                     }
                     nextSlice = now + safetyNanos / SAFETY_SLICES;
@@ -261,7 +272,8 @@ public final class Fleet implements AutoCloseable {
                     until = nextBeat;
                 }
                 if (growing) {
-                    until = Math.min(until, lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
+                    until = Math.min(Math.min(until, nextForget),
+                            lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
                 }
                 if (rescan.running()) {
                     until = Math.min(until, now + RESCAN_LOOK_NANOS);
@@ -280,10 +292,7 @@ public final class Fleet implements AutoCloseable {
         }
     }
 
-    /**
-     * Adds the logs a look found and watches the directories new ones may appear in: the look made {@code now}, or
-     * the one made on the rescan's thread if it is done.
-     */
+    /** Adds the logs a look found (made now, or on the rescan's thread if done) and watches their directories. */
     private void found(Rescan rescan, boolean now) throws ClosedByInterruptException, InterruptedException {
         try {
             Rescan.Found found = now ? rescan.now() : rescan.take();
@@ -296,6 +305,21 @@ public final class Fleet implements AutoCloseable {
         } catch (IOException e) {
             // A directory that went away or cannot be read while it was walked: the logs watched so far go on.
             listener.rescanFailed(e);
+        }
+    }
+
+    /** Forgets the logs found under a directory or glob that were deleted long enough ago ({@link DeletedLogs}). */
+    private void forget(LogSources sources, Wakeups w) {
+        for (WatchedLog log : deleted.due(logs.values(), l -> sources.named(l.path()), System.nanoTime())) {
+            logs.remove(log.path().toAbsolutePath().normalize());
+            w.remove(log);
+            openFiles.closed(log);
+            try {
+                log.watcher().close();
+            } catch (IOException e) {
+                listener.notice(log.name() + ": closing: " + DirectoryWatch.why(e));
+            }
+            listener.forgotten(log);
         }
     }
 

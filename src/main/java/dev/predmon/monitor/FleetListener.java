@@ -13,6 +13,13 @@ public interface FleetListener {
     default void added(WatchedLog log) {
     }
 
+    /**
+     * {@code log} was deleted long ago ({@link DeletedLogs}): the fleet no longer watches it, and forgets its monitor;
+     * its runs' verdicts are what they were. A file at its path later is a new log.
+     */
+    default void forgotten(WatchedLog log) {
+    }
+
     /** An event of {@code log}'s monitor, in its log order. */
     void event(WatchedLog log, MonitorEvent event);
 

@@ -19,7 +19,7 @@ abstract class FollowBase implements PropertyFollow {
     /** The cause of a recovery that the property's scope closed. */
     static final String SCOPE = "scope";
     /** The cause of a recovery that the run ended (a new run began, or the log was restarted) with an alarm up. */
-    static final String RUN_ENDED = "run-ended";
+    static final String RUN_ENDED = MonitorEvent.Recovered.RUN_ENDED;
 
     final int index;
     final Property property;

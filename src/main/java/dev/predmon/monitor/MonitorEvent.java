@@ -112,7 +112,8 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      * @param line   its line
      * @param cause    {@code property} (the property holds again after its violation), {@code forecast} or
      *                 {@code action}; for a bounded response's deadline warning, {@code discharged} (the response came
-     *                 in time); for a bound with a scope, {@code scope} (the scope closed)
+     *                 in time); for a bound with a scope, {@code scope} (the scope closed); {@value #RUN_ENDED} for
+     *                 an alarm still up when its run ended (nothing recovered: the run is over)
      * @param value    the property's value there (NaN for a property without one, a bounded response)
      * @param reason   why, in an operator's words
      * @param clock    what {@code time} counts
@@ -121,6 +122,9 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
      */
     record Recovered(double time, long line, String cause, double value, String reason, Clock clock, int run,
                      String property) implements MonitorEvent {
+
+        /** The cause of an alarm that ended with its run: a new run began, or the log was restarted. */
+        public static final String RUN_ENDED = "run-ended";
 
         /** A recovery of no named property. */
         public Recovered(double time, long line, String cause, double value, String reason, Clock clock, int run) {
@@ -244,7 +248,27 @@ public sealed interface MonitorEvent permits MonitorEvent.Warning, MonitorEvent.
     record Unmapped(double time, long line, UnmappedMessage message) implements MonitorEvent {
     }
 
-    /** The log was truncated or replaced; matching starts over. */
+    /**
+     * The log was truncated or replaced, or the connection to a live robot was lost and made again: the run ends, and
+     * matching starts over in a new one.
+     *
+     * @param reason {@value #TRUNCATED}, {@value #REPLACED} or {@value #RECONNECTED}
+     */
     record Restarted(String reason) implements MonitorEvent {
+
+        public static final String TRUNCATED = "truncated";
+        public static final String REPLACED = "replaced";
+        public static final String RECONNECTED = "reconnected";
+
+        /** What ended the run, in words: {@code the log was truncated}, {@code the connection ... was lost}. */
+        public String words() {
+            return words(reason);
+        }
+
+        /** As {@link #words()}, for {@code reason}. */
+        public static String words(String reason) {
+            return RECONNECTED.equals(reason) ? "the connection to the robot was lost and made again"
+                    : "the log was " + reason;
+        }
     }
 }

@@ -120,7 +120,8 @@ public final class PredictiveMonitor implements PipelineListener {
      * every run watched since it started, whatever rotation came between them.
      */
     public void restart(String reason) {
-        properties.runEnded(now.last, "the log was restarted (" + reason + ")");
+        properties.runEnded(now.last, "the run ended: " + MonitorEvent.Restarted.words(reason)
+                + "; what follows is a new run");
         if (pipeline.records() > 0) {
             finished.add(current());
         }

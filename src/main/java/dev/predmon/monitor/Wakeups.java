@@ -336,6 +336,18 @@ final class Wakeups implements AutoCloseable {
         }
     }
 
+    /** Follows {@code log} no more: it is forgotten. */
+    void remove(WatchedLog log) {
+        polled.remove(log);
+        pending.remove(log);
+        replacing.remove(log);
+        for (Watched w : byKey.values()) {
+            w.orphans.remove(log);
+            w.logs.values().forEach(l -> l.remove(log));
+            w.logs.values().removeIf(List::isEmpty);
+        }
+    }
+
     @Override
     public void close() throws IOException {
         if (watch != null) {

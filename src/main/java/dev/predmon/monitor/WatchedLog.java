@@ -14,6 +14,8 @@ public final class WatchedLog {
     private final Path path;
     private final PredictiveMonitor monitor;
     private final LogWatcher watcher;
+    /** Whether it is a file, read in the abstraction's format (not a live robot's connection, named by a path). */
+    private final boolean file;
     /** Files its watcher held open after its last poll, as {@link OpenFiles} counted them. */
     int openFiles;
     /** What the user was last told about it (something not a file at its path, a read that failed), or null. */
@@ -22,6 +24,7 @@ public final class WatchedLog {
     WatchedLog(Path path, String name, LogFormat format, Fleet.Settings settings, FleetListener listener) {
         this.path = path;
         this.name = name;
+        this.file = format == null;
         this.monitor = new PredictiveMonitor(settings.models(), settings.abstraction(), settings.tolerance(),
                 settings.confirm(), settings.rule(), e -> listener.event(this, e));
         this.watcher = LogWatcher.withRelease(path, monitor, p -> listener.problem(this, p),
@@ -43,6 +46,11 @@ public final class WatchedLog {
 
     public LogWatcher watcher() {
         return watcher;
+    }
+
+    /** Whether it is a file at its path (a live robot's connection is not), which may be deleted. */
+    boolean file() {
+        return file;
     }
 
     @Override

@@ -12,8 +12,9 @@ public interface RecordSink {
     void problem(ParseProblem problem);
 
     /**
-     * The log was truncated ({@code "truncated"}) or replaced by another file ({@code "replaced"}): the records that
-     * follow begin a new run. A source that reads a file once never says so.
+     * The log was truncated ({@code "truncated"}) or replaced by another file ({@code "replaced"}), or a live robot's
+     * connection was lost and made again ({@code "reconnected"}): the records that follow begin a new run. A source
+     * that reads a file once never says so.
      */
     default void restarted(String reason) {
     }

@@ -5,16 +5,22 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import com.fasterxml.jackson.dataformat.cbor.databind.CBORMapper;
 import dev.predmon.rosbag.BagMessage;
+import dev.predmon.rosbag.CdrMessages;
 import org.java_websocket.client.WebSocketClient;
 import org.java_websocket.handshake.ServerHandshake;
 
 import java.net.URI;
+import java.nio.ByteBuffer;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Queue;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
@@ -22,7 +28,8 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * A connection to a rosbridge server (the rosbridge v2 protocol, JSON): subscribes to the topics given as soon as it
- * is open, queues each message published on them as a {@link BagMessage} timed by when it was received, and, when the
+ * is open (with {@code cbor-raw}, asking for each message as its CDR bytes in a CBOR binary frame, decoded here by
+ * predmon's bundled definition of the subscription's type), queues each message published on them as a {@link BagMessage} timed by when it was received, and, when the
  * connection cannot be made or drops, connects again after a pause that doubles from {@link #FIRST_PAUSE_MILLIS} to
  * {@link #LAST_PAUSE_MILLIS}. Each drop is said once ({@link #takeNotices()}), and so is the connection made again;
  * what happened on the robot meanwhile is unknown, which {@link #takeReconnected()} tells the reader of the queue.
@@ -36,6 +43,7 @@ public final class RosbridgeClient implements AutoCloseable {
 
     private static final ObjectMapper JSON = JsonMapper.builder()
             .enable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS).build();
+    private static final ObjectMapper CBOR = new CBORMapper();
 
     /** A topic to subscribe to, and its type ({@code pkg/msg/Type}, or null to let the server find it). */
     public record Subscription(String topic, String type) {
@@ -43,6 +51,10 @@ public final class RosbridgeClient implements AutoCloseable {
 
     private final URI uri;
     private final List<Subscription> subscriptions;
+    /** With cbor-raw: each topic's decoder; null for JSON. */
+    private final Map<String, CdrMessages> raw;
+    /** Topics whose message could not be decoded, said once each. */
+    private final Set<String> undecodable = ConcurrentHashMap.newKeySet();
     private final List<String> onOpen = new ArrayList<>();
     private final Queue<BagMessage> messages = new ConcurrentLinkedQueue<>();
     private final Queue<String> notices = new ConcurrentLinkedQueue<>();
@@ -64,8 +76,41 @@ public final class RosbridgeClient implements AutoCloseable {
     static volatile java.util.function.LongSupplier clock = RosbridgeClient::now;
 
     public RosbridgeClient(URI uri, List<Subscription> subscriptions) {
+        this(uri, subscriptions, false);
+    }
+
+    /**
+     * With {@code cborRaw}, subscribes with rosbridge's {@code cbor-raw} compression.
+     *
+     * @throws IllegalArgumentException with {@code cborRaw}, for a subscription without a type or of a type predmon
+     *                                  bundles no definition of
+     */
+    public RosbridgeClient(URI uri, List<Subscription> subscriptions, boolean cborRaw) {
         this.uri = uri;
         this.subscriptions = List.copyOf(subscriptions);
+        this.raw = cborRaw ? decoders(this.subscriptions) : null;
+    }
+
+    /**
+     * Each subscription's decoder for {@code cbor-raw}.
+     *
+     * @throws IllegalArgumentException naming the topic that has no type, or whose type has no bundled definition
+     */
+    public static Map<String, CdrMessages> decoders(List<Subscription> subscriptions) {
+        Map<String, CdrMessages> out = new HashMap<>();
+        for (Subscription s : subscriptions) {
+            if (s.type() == null) {
+                throw new IllegalArgumentException(s.topic() + ": cbor-raw sends CDR bytes, which need the topic's "
+                        + "type: give it a type in the abstraction file");
+            }
+            try {
+                out.put(s.topic(), CdrMessages.of(s.type()));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException(s.topic() + " (" + s.type() + "): cbor-raw sends CDR bytes, and "
+                        + e.getMessage(), e);
+            }
+        }
+        return out;
     }
 
     /** Also sends {@code op} (a JSON text) each time the connection opens, after the subscriptions. */
@@ -140,6 +185,9 @@ public final class RosbridgeClient implements AutoCloseable {
             if (s.type() != null) {
                 op.put("type", s.type());
             }
+            if (raw != null) {
+                op.put("compression", "cbor-raw");
+            }
             c.send(op.toString());
         }
         onOpen.forEach(c::send);
@@ -190,7 +238,39 @@ public final class RosbridgeClient implements AutoCloseable {
         }
         String topic = op.path("topic").asText();
         String type = typeOf(topic);
-        Map<String, Object> fields = JsonMessages.fields(op.get("msg"), type);
+        queue(topic, type, JsonMessages.fields(op.get("msg"), type));
+    }
+
+    /**
+     * A binary frame: with cbor-raw, a CBOR {@code {"op":"publish","topic":...,"msg":{"secs","nsecs","bytes"}}},
+     * {@code bytes} the message serialised as CDR.
+     */
+    private void received(ByteBuffer frame) {
+        JsonNode op;
+        try {
+            byte[] b = new byte[frame.remaining()];
+            frame.get(b);
+            op = CBOR.readTree(b);
+        } catch (java.io.IOException e) {
+            return; // not CBOR: not an operation of the protocol
+        }
+        String topic = op.path("topic").asText();
+        CdrMessages decoder = raw == null ? null : raw.get(topic);
+        JsonNode bytes = op.path("msg").path("bytes");
+        if (!op.path("op").asText().equals("publish") || decoder == null || !bytes.isBinary()) {
+            return;
+        }
+        try {
+            queue(topic, decoder.type(), decoder.decode(bytes.binaryValue()));
+        } catch (IllegalArgumentException | java.io.IOException e) {
+            if (undecodable.add(topic)) {
+                notices.add("a message of " + topic + " is not a " + decoder.type() + " in CDR (" + e.getMessage()
+                        + "); such messages are left out");
+            }
+        }
+    }
+
+    private void queue(String topic, String type, Map<String, Object> fields) {
         long nanos = clock.getAsLong();
         synchronized (this) {
             messages.add(new BagMessage(null, ++index, topic, type, nanos, fields));
@@ -237,6 +317,11 @@ public final class RosbridgeClient implements AutoCloseable {
         @Override
         public void onMessage(String message) {
             received(message);
+        }
+
+        @Override
+        public void onMessage(ByteBuffer bytes) {
+            received(bytes);
         }
 
         @Override

@@ -1,5 +1,6 @@
 package dev.predmon.rosbridge;
 
+import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.parse.LogFormat;
 import dev.predmon.parse.RecordSink;
 import dev.predmon.parse.RecordSource;
@@ -78,7 +79,7 @@ public final class RosbridgeFormat implements LogFormat {
             boolean any = false;
             if (client.takeReconnected()) {
                 mapping.reset();
-                sink.restarted("reconnected");
+                sink.restarted(MonitorEvent.Restarted.RECONNECTED);
                 any = true;
             }
             for (BagMessage m = client.next(); m != null; m = client.next()) {

@@ -147,8 +147,9 @@ final class EventPrinter {
                     at(n.time(), n.clock()), n.line());
         }
         if (e instanceof MonitorEvent.Recovered r) {
-            return String.format(Locale.ROOT, "%s line %d: RECOVERED: %s", at(r.time(), r.clock()), r.line(),
-                    r.reason());
+            // an alarm its run took with it: nothing recovered, the run is over
+            return String.format(Locale.ROOT, "%s line %d: %s: %s", at(r.time(), r.clock()), r.line(),
+                    r.cause().equals(MonitorEvent.Recovered.RUN_ENDED) ? "ALARM ENDS WITH ITS RUN" : "RECOVERED", r.reason());
         }
         if (e instanceof MonitorEvent.UnderWay u) {
             return verbose ? String.format(Locale.ROOT, "%s line %d: the recommended action is %s (%s)",
@@ -162,7 +163,7 @@ final class EventPrinter {
         }
         if (e instanceof MonitorEvent.Restarted r) {
             warning = null;
-            return "log " + r.reason() + ": monitoring starts over";
+            return r.words() + ": monitoring starts over";
         }
         return null;
     }

@@ -7,6 +7,7 @@ import dev.predmon.event.ForecastJson;
 import dev.predmon.event.OutcomeJson;
 import dev.predmon.event.PropertyJson;
 import dev.predmon.forecast.ForecastWords;
+import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.PropertyOutcome;
 import dev.predmon.monitor.RunOutcome;
@@ -108,7 +109,7 @@ final class Summary {
             for (int i = 0; i < runs.size(); i++) {
                 RunOutcome r = runs.get(i);
                 out.println("run " + r.run() + " (from line " + r.firstLine()
-                        + restartBefore.apply(r.run()).map(how -> ", after the log was " + how).orElse("")
+                        + restartBefore.apply(r.run()).map(how -> ", after " + MonitorEvent.Restarted.words(how)).orElse("")
                         + "): " + r.pairs() + " compacted pairs; "
                         + PropertyOutcome.sentence(outcomes.get(i), r.warned(), span)
                         + (r.noMatch() ? "; no model matches the run" : "")

@@ -67,6 +67,17 @@ final class Verdicts {
         return codes.size() == 1 ? codes.get(0) : ExitRule.ofLogs(codes);
     }
 
+    /**
+     * A log forgotten once deleted: its summary ({@code stop} {@code deleted}) and its code, or nothing for a file that
+     * gave nothing to judge (notes beside the logs).
+     */
+    Optional<Integer> forgotten(WatchedLog l) {
+        if (whyNoVerdict(session.evidence(l)).isPresent()) {
+            return Optional.empty();
+        }
+        return Optional.of(summary.print(l, "deleted", true, run -> session.restartBefore(l, run)));
+    }
+
     /** A log without a verdict: the error of a single log, or a line among several and 3. */
     private int noVerdict(String why) throws BadInputException {
         if (!several) {

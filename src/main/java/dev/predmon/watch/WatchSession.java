@@ -19,7 +19,9 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Predicate;
@@ -46,6 +48,8 @@ public final class WatchSession implements FleetListener, AutoCloseable {
     private final Board board;
     private final Notices notices;
     private String notALog;
+    /** The exit codes of the logs forgotten once deleted, each judged when it was forgotten. */
+    private final List<Integer> forgottenCodes = new ArrayList<>();
     /**
      * Whether events are news, to be sent to the hooks: with {@code --no-follow} always (the file is judged as a
      * whole), while following only once the logs' history has been read ({@link #caughtUp}).
@@ -99,6 +103,30 @@ public final class WatchSession implements FleetListener, AutoCloseable {
         // only the ones that appear while watching, once they hold a record (not every file of the directory at the
         // start, not notes beside the logs).
         o.announced = settings.noFollow() || (found.test(log.path()) && !live);
+    }
+
+    /**
+     * A log deleted long ago leaves: its summary is printed now ({@code stop} {@code deleted}) and its exit code kept
+     * for the end; its tile leaves the page and {@code /metrics}. A deleted file that gave nothing to judge leaves
+     * without a word.
+     */
+    @Override
+    public void forgotten(WatchedLog log) {
+        LogOutlet o = outlets.get(log);
+        if (o == null) {
+            return;
+        }
+        try {
+            new Verdicts(this, new Summary(out, err, settings), settings).forgotten(log).ifPresent(forgottenCodes::add);
+        } finally {
+            outlets.remove(log);
+            if (board != null && o.tile != null) {
+                board.forget(o.tile);
+            }
+            if (hooks != null) {
+                hooks.forget(log.name());
+            }
+        }
     }
 
     private void announce(LogOutlet o, String what) {
@@ -262,7 +290,14 @@ public final class WatchSession implements FleetListener, AutoCloseable {
         if (!settings.noFollow() && notALog != null) {
             return ExitRule.BAD_INPUT; // said on stderr when it was found
         }
-        return new Verdicts(this, new Summary(out, err, settings), settings).of(fleet.logs(), stop);
+        if (forgottenCodes.isEmpty()) {
+            return new Verdicts(this, new Summary(out, err, settings), settings).of(fleet.logs(), stop);
+        }
+        List<Integer> codes = new ArrayList<>(forgottenCodes);
+        if (!fleet.logs().isEmpty()) {
+            codes.add(new Verdicts(this, new Summary(out, err, settings), settings).of(fleet.logs(), stop));
+        }
+        return ExitRule.ofLogs(codes);
     }
 
     /** With {@code --no-follow}: prints the problems held for {@code log}. */

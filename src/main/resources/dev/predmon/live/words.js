@@ -222,10 +222,12 @@ export function eventText(e, t) {
     case 'run':
       return where + 'run ' + e.run + ' begins: every model starts over';
     case 'restarted':
-      return 'log ' + e.reason + ': monitoring starts over';
+      return (e.reason === 'reconnected' ? 'the connection to the robot was lost and made again'
+        : 'the log was ' + e.reason) + ': monitoring starts over';
     case 'recovered':
-      return where + 'RECOVERED' + (e.property && e.cause === 'discharged' ? ' (' + e.property + ')' : '') + ': '
-        + e.reason;
+      // an alarm its run took with it: nothing recovered, the run is over
+      return where + (e.cause === 'run-ended' ? 'ALARM ENDS WITH ITS RUN'
+        : 'RECOVERED' + (e.property && e.cause === 'discharged' ? ' (' + e.property + ')' : '')) + ': ' + e.reason;
     case 'under-way':
       return where + (e.underWay ? 'the action is under way (' : 'the action is no longer under way (') + e.by + ')';
     default:

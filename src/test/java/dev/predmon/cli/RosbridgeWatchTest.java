@@ -122,15 +122,63 @@ class RosbridgeWatchTest {
             await(() -> live.err().toString().contains("connected again"), "the reconnection said");
             String err = live.err().toString();
             assertEquals(1, err.lines().filter(l -> l.contains("connection lost")).count(), err);
-            // nothing judged across the gap: the run ends there, and an alarm still up ends with it, said as such
+            // nothing judged across the gap: the run ends there, and the alarms still up (the battery's violation)
+            // end with it, as at the end of any run: never told as a recovery of the property
+            await(() -> live.out().toString().contains("the connection to the robot was lost and made again: "
+                    + "monitoring starts over"), "the new run said");
             List<String> got = events(live.out().toString());
             assertEquals(expected, got.subList(0, Math.min(expected.size(), got.size())), "no verdict while disconnected");
-            assertTrue(got.subList(expected.size(), got.size()).stream()
-                    .allMatch(l -> l.contains("RECOVERED") && l.contains("(reconnected)")), got.toString());
+            List<String> after = got.subList(expected.size(), got.size());
+            assertFalse(after.isEmpty(), "the violated battery's alarm ends with the run: " + got);
+            assertTrue(after.stream().allMatch(l -> l.contains(": ALARM ENDS WITH ITS RUN: ") && l.endsWith(
+                    ": the run ended: the connection to the robot was lost and made again; what follows is a new run")),
+                    after.toString());
+            assertTrue(after.stream().anyMatch(l -> l.contains("(battery)")), after.toString());
         } finally {
             live.stop();
         }
         assertFalse(live.out().toString().isEmpty());
+    }
+
+    /**
+     * With {@code --rosbridge-compression cbor-raw} every subscription asks for cbor-raw, every message comes as a
+     * binary CBOR frame around its CDR bytes, and the events are the recording's, line for line.
+     */
+    @Test
+    void cborRawFramesGiveTheRecordingsEvents() throws Exception {
+        Path models = Nav2Runs.models();
+        List<BagMessage> run = Nav2Runs.messages(Scenario.DEPLETED, 12);
+        Path bag = dir.resolve("depleted-12.mcap");
+        Nav2Runs.write(bag, run);
+        List<String> expected = events(Cli.run("watch", "--no-follow", "--models", models.toString(), "--log",
+                bag.toString()).out());
+        assertTrue(expected.stream().anyMatch(l -> l.contains("WARNING")), expected.toString());
+
+        server = new FakeRosbridge();
+        String url = server.begin();
+        FakeRosbridge.replayClock(FakeRosbridge.times(run));
+        Cli.Running live = watch("watch", "--models", models.toString(), "--rosbridge", url,
+                "--rosbridge-compression", "cbor-raw");
+        try {
+            await(() -> server.subscribed(NAV2_TOPICS), "the subscriptions");
+            assertTrue(!server.compressions.isEmpty() && server.compressions.stream().allMatch("cbor-raw"::equals),
+                    server.compressions.toString());
+            for (BagMessage m : run) {
+                assertEquals(1, server.publish(m));
+            }
+            assertEquals(run.size(), server.binaryFrames.get(), "every message a binary frame");
+            String last = expected.get(expected.size() - 1);
+            await(() -> live.out().toString().contains(last.substring(0, last.indexOf(':'))), "the last event");
+            Thread.sleep(200);
+            assertEquals(expected, events(live.out().toString()), live.err().toString());
+        } finally {
+            live.stop();
+        }
+
+        Cli noServer = Cli.run("watch", "--models", models.toString(), "--log", bag.toString(),
+                "--rosbridge-compression", "cbor-raw");
+        assertEquals(ExitCodes.USAGE, noServer.code(), noServer.err());
+        assertTrue(noServer.err().contains("give --rosbridge"), noServer.err());
     }
 
     /** The levels published for the property named {@code name}, in order. */

@@ -86,7 +86,7 @@ class RotationTest {
         // The logger reopens its log at last: a nominal run in the new file.
         Files.writeString(log, HandRuns.recharge().text() + probe("second", 70.01), StandardOpenOption.APPEND);
         read(w, "second");
-        assertTrue(w.out().toString().contains("log replaced: monitoring starts over"), w.out().toString());
+        assertTrue(w.out().toString().contains("the log was replaced: monitoring starts over"), w.out().toString());
         w.stop();
         String out = w.out().toString();
         assertEquals(ExitCodes.WARNING, w.code().get(), "the warning before the rotation counts: " + out + w.err());

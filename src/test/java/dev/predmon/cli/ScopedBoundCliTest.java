@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.learn.ScenarioLayout;
+import dev.predmon.monitor.WarningRule;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.Traces;
 import org.junit.jupiter.api.Test;
@@ -182,17 +183,21 @@ class ScopedBoundCliTest {
         assertFalse(of(events, "battery").stream().anyMatch(e -> e.get("event").asText().equals("violation")),
                 "the battery's floor of 20 held");
 
-        // whatever the rule: under the thesis's match rule too, the violation ends where the scope closes
-        Cli match = Cli.run("watch", "--log", trace.toString(), "--models", models.toString(), "--no-follow",
-                "--json", "--rule", "match");
-        List<JsonNode> matched = new ArrayList<>();
-        for (String line : match.out().lines().toList()) {
-            matched.add(JSON.readTree(line));
+        // whatever the rule (the thesis's match rule too), the violation ends where the scope closes
+        for (WarningRule rule : WarningRule.values()) {
+            Cli ruled = Cli.run("watch", "--log", trace.toString(), "--models", models.toString(), "--no-follow",
+                    "--json", "--rule", rule.name().toLowerCase(java.util.Locale.ROOT));
+            List<JsonNode> seen = new ArrayList<>();
+            for (String line : ruled.out().lines().toList()) {
+                seen.add(JSON.readTree(line));
+            }
+            List<JsonNode> ends = of(seen, ID).stream().filter(e -> e.get("event").asText().equals("recovered"))
+                    .toList();
+            assertEquals(1, ends.size(), rule + ": " + ruled.out() + ruled.err());
+            assertEquals("scope", ends.get(0).get("cause").asText(), rule.toString());
+            assertEquals(closes, ends.get(0).get("line").asLong(), rule.toString());
+            assertEquals(violatedAt, of(seen, ID).stream().filter(e -> e.get("event").asText().equals("violation"))
+                    .findFirst().orElseThrow().get("line").asLong(), rule + ": the violation it ends");
         }
-        List<JsonNode> ends = of(matched, ID).stream().filter(e -> e.get("event").asText().equals("recovered"))
-                .toList();
-        assertEquals(1, ends.size(), match.out());
-        assertEquals("scope", ends.get(0).get("cause").asText());
-        assertEquals(closes, ends.get(0).get("line").asLong());
     }
 }

@@ -69,6 +69,10 @@ class WordsAndHelpTest {
         assertTrue(forecast >= 0 && match > forecast, "the default rule first: " + watch);
         assertTrue(watch.replaceAll("\\s+", " ").contains("(see docs/watch.md)"), watch);
         assertTrue(watch.contains("Exit 6"), watch);
+        // evaluate takes --logs in both layouts learn takes, and its help says so
+        String evaluate = Cli.run("evaluate", "--help").out().replaceAll("\\s+", " ");
+        assertTrue(evaluate.contains("one folder per scenario") && evaluate.contains("a folder of recordings not "
+                + "sorted into scenarios"), evaluate);
     }
 
     /** Two logs per scenario, 100 folds asked: each log is a fold, and the note says so. */

@@ -1,28 +1,18 @@
 package dev.predmon.monitor;
 
-import dev.predmon.abstraction.Abstraction;
-import dev.predmon.abstraction.file.AbstractionFiles;
-import dev.predmon.model.ModelSet;
-import dev.predmon.model.ModelStore;
-import dev.predmon.parse.LogFollower;
-import dev.predmon.simulate.LogWriter;
-import dev.predmon.simulate.Scenario;
-import dev.predmon.simulate.SimOptions;
-import dev.predmon.simulate.Simulator;
+import dev.predmon.event.LogEvent;
+import dev.predmon.hooks.CommandHooks;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
-import java.io.OutputStream;
-import java.nio.channels.FileChannel;
-import java.nio.charset.StandardCharsets;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -33,6 +23,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
 import java.util.stream.Stream;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -41,53 +32,65 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * Chaos soak: {@value #LOGS} robots' logs in one watched directory, each appended at {@value #SPEED}x robot pace with
- * simulated runs from a pool whose verdicts are known (each run watched alone), and between runs renamed (also twice
+ * runs whose verdicts are known (each run watched alone, {@link ChaosRuns}), and between runs renamed (also twice
  * before the logger reopens, the middle file left empty), renamed while the logger goes on writing the renamed file
- * (also after a pause past the turn to the new file, which another program wrote a line to),
- * copytruncated, truncated, deleted, replaced by a FIFO or by a directory. Every warning and violation that watching
- * each run alone gives must arrive, and once the logs are gone the process holds the descriptors it held before.
+ * (also after a pause past the turn to the new file, which another program wrote a line to), copytruncated,
+ * truncated, deleted, replaced by a FIFO or by a directory ({@link ChaosWriter}). Two robots' battery sensors flap at
+ * the floor (19.9, 20.1, ...: a warning, a violation and a recovery at every crossing), and robots freeze for 40 s in
+ * the middle of a navigation due within 45 s. Every event runs a hook command that takes a second, as
+ * {@code --on-warning} does. Every warning and violation that watching each run alone gives must arrive, every
+ * robot's first warning must reach its hook, and once the logs are gone the process holds the descriptors it held
+ * before.
  */
 class ChaosSoakTest {
 
     private static final int LOGS = 12;
     private static final int SPEED = 8;
+    /** The robots whose battery sensor flaps; the robot whose first run freezes. */
+    private static final int FLAPPING = 2;
+    private static final int FREEZING = FLAPPING;
     private static final long CHAOS_NANOS = TimeUnit.SECONDS.toNanos(40);
-    private static final Abstraction ABSTRACTION = AbstractionFiles.defaults();
     private static final Path FDS = Path.of("/proc/self/fd");
-
-    /** What is done to a log before its next run is written. */
-    private enum Chaos {
-        RENAME, RENAME_TWICE_EMPTY, RENAME_WHILE_WRITTEN, RENAME_PAUSED_WRITTEN, COPYTRUNCATE, TRUNCATE, DELETE, FIFO,
-        DIRECTORY
-    }
-
-    /** A run of the pool: its text, its records, and how many warnings and violations it gives watched alone. */
-    private record PoolRun(String text, long records, int warnings, int violations) {
-    }
 
     @TempDir
     Path dir;
 
     private final Map<String, AtomicLong> warnings = new ConcurrentHashMap<>();
     private final Map<String, AtomicLong> violations = new ConcurrentHashMap<>();
+    private final Map<String, AtomicLong> alarms = new ConcurrentHashMap<>();
     private final Map<String, AtomicLong> records = new ConcurrentHashMap<>();
+    /** Per log, the line of its first warning, as its hook prints it. */
+    private final Map<String, String> firstWarnings = new ConcurrentHashMap<>();
+    private final List<String> hookReports = Collections.synchronizedList(new ArrayList<>());
 
     @Test
-    @Timeout(150)
-    void everyWarningAndViolationArrivesThroughRotationsAndTheDescriptorsComeBack() throws Exception {
+    @Timeout(240)
+    void everyWarningAndViolationArrivesAndEveryRobotsFirstWarningReachesItsHook() throws Exception {
         assumeTrue(Files.isDirectory(FDS), "no /proc/self/fd here");
-        ModelSet models = ModelStore.read(Path.of("models"), ABSTRACTION);
-        List<PoolRun> pool = pool(models);
+        assumeTrue(Files.isExecutable(Path.of("/bin/sh")), "hook commands run with /bin/sh, which this system lacks");
+        ChaosRuns runs = new ChaosRuns(dir);
+        List<ChaosRuns.Run> pool = runs.pool;
         assertTrue(pool.stream().anyMatch(r -> r.warnings() > 0) && pool.stream().anyMatch(r -> r.warnings() == 0),
                 "the pool holds runs that warn and runs that do not");
         Path robots = Files.createDirectories(dir.resolve("robots"));
-        Fleet fleet = new Fleet(models, ABSTRACTION, 0, ABSTRACTION.confirm(), new FleetListener() {
+        Path calls = dir.resolve("calls");
+        String hook = "echo \"$PREDMON_EVENT $PREDMON_LOG $PREDMON_LINE\" >> '" + calls + "'; sleep 1";
+        CommandHooks hooks = new CommandHooks(hook, hook, hook, Duration.ofSeconds(5), CommandHooks.HOLD, 20.0,
+                hookReports::add);
+        Fleet fleet = new Fleet(runs.models, runs.abstraction, 0, runs.abstraction.confirm(), new FleetListener() {
             @Override
             public void event(WatchedLog log, MonitorEvent e) {
-                if (e instanceof MonitorEvent.Warning) {
+                String name = log.path().getFileName().toString();
+                if (e instanceof MonitorEvent.Warning w) {
                     count(warnings, log);
+                    firstWarnings.putIfAbsent(name, "warning " + name + " " + w.line());
                 } else if (e instanceof MonitorEvent.Violation) {
                     count(violations, log);
+                }
+                if (e instanceof MonitorEvent.Warning || e instanceof MonitorEvent.Violation
+                        || e instanceof MonitorEvent.Recovered) {
+                    count(alarms, log);
+                    hooks.event(LogEvent.of(name, e));
                 }
             }
 
@@ -108,9 +111,9 @@ class ChaosSoakTest {
         }, "chaos-fleet");
         long start;
         Map<String, int[]> expected = new TreeMap<>(); // per log: warnings, violations
-        Map<Chaos, AtomicLong> done = new ConcurrentHashMap<>();
+        Map<String, AtomicLong> done = new ConcurrentHashMap<>();
         long began = System.nanoTime();
-        try (fleet) {
+        try (fleet; hooks) {
             following.start();
             Thread.sleep(500);
             start = descriptors();
@@ -123,7 +126,7 @@ class ChaosSoakTest {
                 int index = i;
                 Thread w = new Thread(() -> {
                     try {
-                        robot(robots.resolve(name), index, pool, sum, done);
+                        robot(robots.resolve(name), index, runs, sum, done);
                     } catch (Throwable t) {
                         synchronized (writerFailures) {
                             writerFailures.add(t);
@@ -139,6 +142,12 @@ class ChaosSoakTest {
             assertEquals(List.of(), writerFailures);
             await(() -> expected.entrySet().stream().allMatch(e -> got(warnings, e.getKey()) >= e.getValue()[0]
                     && got(violations, e.getKey()) >= e.getValue()[1]), "every warning and violation", 30);
+            // the hooks take their turns, a second each, while the flapping robots' alarms come and go
+            await(() -> hookCalls(calls).containsAll(firstWarnings.values()), () -> "every robot's first warning "
+                    + "runs its hook: " + firstWarnings.values().stream().filter(w -> !hookCalls(calls).contains(w))
+                    .toList() + " not yet; " + hookReports.stream().filter(r -> r.contains("not run")).limit(3)
+                    .toList(), 90);
+            hooks.close(); // its commands hold descriptors of pipes until they end
             try (Stream<Path> left = Files.list(robots)) {
                 for (Path p : left.toList()) {
                     Files.delete(p);
@@ -151,45 +160,60 @@ class ChaosSoakTest {
             following.interrupt();
             following.join(10_000);
         }
-        long runs = expected.size();
+        long logs = expected.size();
         int wantWarnings = expected.values().stream().mapToInt(s -> s[0]).sum();
         int wantViolations = expected.values().stream().mapToInt(s -> s[1]).sum();
         long gotWarnings = expected.keySet().stream().mapToLong(n -> got(warnings, n)).sum();
         long gotViolations = expected.keySet().stream().mapToLong(n -> got(violations, n)).sum();
-        System.out.printf(Locale.ROOT, "chaos soak: %d logs, %s, warnings %d of %d, violations %d of %d, %.1f s%n",
-                runs, done, gotWarnings, wantWarnings, gotViolations, wantViolations,
+        long flapCalls = hookCalls(calls).stream().filter(c -> c.contains(" robot-0.log ")).count();
+        System.out.printf(Locale.ROOT, "chaos soak: %d logs, %s, warnings %d of %d, violations %d of %d, first "
+                        + "warnings at their hook %d of %d, the flapping robot-0's %d alarm events ran %d hook "
+                        + "commands, %.1f s%n", logs, done, gotWarnings, wantWarnings, gotViolations, wantViolations,
+                firstWarnings.size(), firstWarnings.size(), got(alarms, "robot-0.log"), flapCalls,
                 (System.nanoTime() - began) / 1e9);
         for (Map.Entry<String, int[]> e : expected.entrySet()) {
             assertEquals(e.getValue()[0], got(warnings, e.getKey()), e.getKey() + ": warnings");
             assertEquals(e.getValue()[1], got(violations, e.getKey()), e.getKey() + ": violations");
+            assertTrue(e.getValue()[0] == 0 || firstWarnings.containsKey(e.getKey()), e.getKey());
         }
-        assertTrue(done.keySet().containsAll(List.of(Chaos.values())), "every kind of chaos happened: " + done);
+        assertTrue(firstWarnings.size() > FLAPPING, "the flapping robots and others warned: " + firstWarnings.keySet());
+        assertTrue(flapCalls * 5 < got(alarms, "robot-0.log"), "the hold time keeps a flapping reading from running "
+                + "a command at every crossing: " + flapCalls + " commands for " + got(alarms, "robot-0.log"));
+        for (ChaosWriter.Chaos c : ChaosWriter.Chaos.values()) {
+            assertTrue(done.containsKey(c.name()), "every kind of chaos happened: " + done);
+        }
+        assertTrue(done.containsKey("flapping") && done.containsKey("freeze"), done.toString());
     }
 
-    /** One robot: runs from the pool, one after another, with chaos before each but the first. */
-    private void robot(Path log, int index, List<PoolRun> pool, int[] sum, Map<Chaos, AtomicLong> done)
-            throws Exception {
+    /**
+     * One robot: runs one after another, with chaos before each but the first. The flapping robots write the flapping
+     * run every time; robot {@value #FREEZING} freezes in its first run; the others take runs from the pool, which
+     * holds the freeze too.
+     */
+    private void robot(Path log, int index, ChaosRuns runs, int[] sum, Map<String, AtomicLong> done) throws Exception {
         Random random = new Random(index);
-        Chaos[] kinds = Chaos.values();
+        ChaosWriter.Chaos[] kinds = ChaosWriter.Chaos.values();
         long end = System.nanoTime() + CHAOS_NANOS;
         String name = log.getFileName().toString();
         for (int n = 0; System.nanoTime() < end || n < 2; n++) {
-            PoolRun run = pool.get(random.nextInt(pool.size()));
-            Chaos chaos = n == 0 ? null : kinds[(index + n) % kinds.length];
+            ChaosRuns.Run run = index < FLAPPING ? runs.flapping : index == FREEZING && n == 0 ? runs.freeze
+                    : runs.pool.get(random.nextInt(runs.pool.size()));
+            ChaosWriter.Chaos chaos = n == 0 ? null : kinds[(index + n) % kinds.length];
             if (chaos != null) {
-                apply(chaos, log, name, n);
+                ChaosWriter.apply(chaos, log, name, n);
                 // (the paused writer is a way of writing, counted below; applied before a run it is a rename)
-                done.computeIfAbsent(chaos == Chaos.RENAME_PAUSED_WRITTEN ? Chaos.RENAME : chaos,
-                        k -> new AtomicLong()).incrementAndGet();
+                add(done, chaos == ChaosWriter.Chaos.RENAME_PAUSED_WRITTEN ? ChaosWriter.Chaos.RENAME.name()
+                        : chaos.name());
             }
+            add(done, run.kind());
             long before = got(records, name);
             if (chaos == null || n % 3 != 0 || !Files.exists(log)) {
-                write(log, run.text(), null, false);
+                ChaosWriter.write(log, run.text(), SPEED, null, false);
             } else { // logrotate's create while the logger writes: it goes on in the renamed file
                 boolean paused = (index + n) % 2 == 0; // and pauses first, past the turn to the new file
-                write(log, run.text(), log.resolveSibling(name + ".w" + n), paused);
-                done.computeIfAbsent(paused ? Chaos.RENAME_PAUSED_WRITTEN : Chaos.RENAME_WHILE_WRITTEN,
-                        k -> new AtomicLong()).incrementAndGet();
+                ChaosWriter.write(log, run.text(), SPEED, log.resolveSibling(name + ".w" + n), paused);
+                add(done, paused ? ChaosWriter.Chaos.RENAME_PAUSED_WRITTEN.name()
+                        : ChaosWriter.Chaos.RENAME_WHILE_WRITTEN.name());
             }
             sum[0] += run.warnings();
             sum[1] += run.violations();
@@ -198,121 +222,17 @@ class ChaosSoakTest {
         }
     }
 
-    private static void apply(Chaos chaos, Path log, String name, int n) throws Exception {
-        Path rotated = log.resolveSibling(name + "." + n);
-        switch (chaos) {
-            case RENAME, RENAME_PAUSED_WRITTEN -> {
-                Files.move(log, rotated);
-                Files.writeString(log, "");
-            }
-            case RENAME_TWICE_EMPTY -> {
-                Files.move(log, rotated);
-                Files.writeString(log, "");
-                Thread.sleep(100);
-                Files.move(log, log.resolveSibling(name + "." + n + "b"));
-                Files.writeString(log, "");
-            }
-            case RENAME_WHILE_WRITTEN -> {
-                Files.move(log, rotated);
-            }
-            case COPYTRUNCATE -> {
-                Files.copy(log, rotated, StandardCopyOption.REPLACE_EXISTING);
-                truncate(log);
-            }
-            case TRUNCATE -> truncate(log);
-            case DELETE -> Files.delete(log);
-            case FIFO -> {
-                Files.delete(log);
-                if (new ProcessBuilder("mkfifo", log.toString()).inheritIO().start().waitFor() == 0) {
-                    Thread.sleep(200);
-                    Files.delete(log);
-                }
-            }
-            case DIRECTORY -> {
-                Files.delete(log);
-                Files.createDirectory(log);
-                Thread.sleep(200);
-                Files.delete(log);
-            }
-        }
+    private static void add(Map<String, AtomicLong> done, String what) {
+        done.computeIfAbsent(what, k -> new AtomicLong()).incrementAndGet();
     }
 
-    private static void truncate(Path log) throws IOException {
-        try (FileChannel c = FileChannel.open(log, StandardOpenOption.WRITE)) {
-            c.truncate(0);
-        }
-    }
-
-    /**
-     * Appends {@code text} at {@value #SPEED}x the pace of its time stamps, in slices of 0.1 s of robot time. With
-     * {@code renameTo}, halfway the log is renamed there and an empty one created, and the rest still goes to the
-     * renamed file (the logger's handle); with {@code pause}, another program writes a line to the new file first and
-     * the logger pauses past the quiet time, so that watch has turned to the new file when the rest comes.
-     */
-    private static void write(Path log, String text, Path renameTo, boolean pause) throws Exception {
-        String[] lines = text.split("(?<=\n)", -1);
-        try (OutputStream out = Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
-            StringBuilder slice = new StringBuilder();
-            double sliceStart = 0;
-            for (int i = 0; i < lines.length; i++) {
-                String line = lines[i];
-                double t = time(line);
-                if (!Double.isNaN(t) && t - sliceStart >= 0.1) {
-                    out.write(slice.toString().getBytes(StandardCharsets.UTF_8));
-                    out.flush();
-                    slice.setLength(0);
-                    Thread.sleep(Math.round((t - sliceStart) * 1000 / SPEED));
-                    sliceStart = t;
-                }
-                if (renameTo != null && i == lines.length / 2 && !Double.isNaN(t)) {
-                    Files.move(log, renameTo);
-                    Files.writeString(log, pause ? "yarprun: starting\n" : "");
-                    renameTo = null;
-                    if (pause) {
-                        Thread.sleep(LogFollower.QUIET_MILLIS * 3 / 2);
-                    }
-                }
-                slice.append(line);
-            }
-            out.write(slice.toString().getBytes(StandardCharsets.UTF_8));
-        }
-    }
-
-    /** The time stamp of a record's first line, or NaN for another line. */
-    private static double time(String line) {
-        int tab = line.indexOf('\t');
-        if (tab <= 0 || !Character.isDigit(line.charAt(0))) {
-            return Double.NaN;
-        }
+    /** The lines the hook commands wrote: event, log, line. */
+    private static List<String> hookCalls(Path calls) {
         try {
-            return Double.parseDouble(line.substring(0, tab));
-        } catch (NumberFormatException e) {
-            return Double.NaN;
+            return Files.exists(calls) ? Files.readAllLines(calls) : List.of();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
-    }
-
-    /** Simulated runs, each watched alone from a file of its own to know what it gives. */
-    private List<PoolRun> pool(ModelSet models) throws IOException {
-        List<PoolRun> pool = new ArrayList<>();
-        long seed = 7001;
-        for (Scenario s : List.of(Scenario.DEPLETED, Scenario.RECHARGE, Scenario.DEPLETED, Scenario.DIRECT,
-                Scenario.DEPLETED, Scenario.RECHARGE)) {
-            String text = LogWriter.toText(Simulator.run(s, seed++, SimOptions.defaults()), SimOptions.defaults());
-            Path alone = Files.writeString(dir.resolve("alone-" + seed + ".log"), text);
-            int[] events = new int[2];
-            PredictiveMonitor m = new PredictiveMonitor(models, ABSTRACTION, 0, ABSTRACTION.confirm(), e -> {
-                if (e instanceof MonitorEvent.Warning) {
-                    events[0]++;
-                } else if (e instanceof MonitorEvent.Violation) {
-                    events[1]++;
-                }
-            });
-            try (LogWatcher w = new LogWatcher(alone, m, p -> { })) {
-                w.drain();
-            }
-            pool.add(new PoolRun(text, m.records(), events[0], events[1]));
-        }
-        return pool;
     }
 
     private static void count(Map<String, AtomicLong> counts, WatchedLog log) {
@@ -329,10 +249,15 @@ class ChaosSoakTest {
     }
 
     private static void await(BooleanSupplier condition, String what, int seconds) throws InterruptedException {
+        await(condition, () -> what, seconds);
+    }
+
+    private static void await(BooleanSupplier condition, Supplier<String> what, int seconds)
+            throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
         while (!condition.getAsBoolean()) {
             if (System.nanoTime() > deadline) {
-                throw new AssertionError("not within " + seconds + " s: " + what);
+                throw new AssertionError("not within " + seconds + " s: " + what.get());
             }
             Thread.sleep(20);
         }

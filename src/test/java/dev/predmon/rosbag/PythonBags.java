@@ -15,13 +15,13 @@ import java.util.concurrent.TimeUnit;
  * virtual environment {@code .ci/run} creates: {@code $PREDMON_VENV}, {@code target/venv}, or
  * {@code ~/.cache/predmon-venv}. A test that needs them is skipped, with a message, where there is none.
  */
-final class PythonBags {
+public final class PythonBags {
 
     private PythonBags() {
     }
 
     /** The venv's python, or a skipped test. */
-    static Path python() {
+    public static Path python() {
         List<Path> candidates = new ArrayList<>();
         String env = System.getenv("PREDMON_VENV");
         if (env != null && !env.isBlank()) {
@@ -54,7 +54,7 @@ final class PythonBags {
     }
 
     /** Runs {@code src/test/python/<script>} with {@code args} and returns its standard output. */
-    static String run(String script, String... args) throws IOException, InterruptedException {
+    public static String run(String script, String... args) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(python().toString(),
                 Path.of("src", "test", "python", script).toAbsolutePath().toString()));
         command.addAll(List.of(args));

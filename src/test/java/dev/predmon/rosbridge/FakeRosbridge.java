@@ -5,8 +5,10 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import com.fasterxml.jackson.dataformat.cbor.databind.CBORMapper;
 import dev.predmon.rosbag.BagMessage;
 import dev.predmon.rosbag.ByteArrays;
+import dev.predmon.rosbag.CdrMessages;
 import org.java_websocket.WebSocket;
 import org.java_websocket.handshake.ClientHandshake;
 import org.java_websocket.server.WebSocketServer;
@@ -22,6 +24,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 
 /**
@@ -29,7 +32,9 @@ import java.util.concurrent.TimeUnit;
  * takes {@code subscribe}, {@code unsubscribe}, {@code advertise} and {@code publish} ops, and sends each message
  * {@link #publish replayed} to it as {@code {"op":"publish","topic":...,"msg":{...}}} to the connections subscribed
  * to its topic, the fields as rosbridge's JSON writes them: byte arrays ({@code uint8[]}, {@code uint8[16]}) as
- * base64 text, NaN and infinities as the bare words Python's JSON writes.
+ * base64 text, NaN and infinities as the bare words Python's JSON writes. A subscription with {@code "compression":
+ * "cbor-raw"} gets each message as the protocol says: a binary frame holding the CBOR of
+ * {@code {"op":"publish","topic":...,"msg":{"secs":...,"nsecs":...,"bytes":<the message's CDR>}}}.
  */
 public final class FakeRosbridge extends WebSocketServer {
 
@@ -42,7 +47,14 @@ public final class FakeRosbridge extends WebSocketServer {
     public final List<String> advertised = new CopyOnWriteArrayList<>();
     /** The messages clients published, by topic. */
     public final Map<String, List<JsonNode>> published = new ConcurrentHashMap<>();
+    /** Each subscription's compression, in order ("none" when it asked for none). */
+    public final List<String> compressions = new CopyOnWriteArrayList<>();
+    /** The binary (cbor-raw) frames sent. */
+    public final AtomicInteger binaryFrames = new AtomicInteger();
+    private static final ObjectMapper CBOR = new CBORMapper();
     private final Map<WebSocket, List<String>> topics = new ConcurrentHashMap<>();
+    /** The topics each connection asked for as cbor-raw. */
+    private final Map<WebSocket, List<String>> raw = new ConcurrentHashMap<>();
     private final CountDownLatch started = new CountDownLatch(1);
 
     public FakeRosbridge() {
@@ -90,11 +102,33 @@ public final class FakeRosbridge extends WebSocketServer {
         int sent = 0;
         for (Map.Entry<WebSocket, List<String>> e : topics.entrySet()) {
             if (e.getValue().contains(m.topic()) && e.getKey().isOpen()) {
-                e.getKey().send(text);
+                if (raw.getOrDefault(e.getKey(), List.of()).contains(m.topic())) {
+                    e.getKey().send(cborRaw(m));
+                    binaryFrames.incrementAndGet();
+                } else {
+                    e.getKey().send(text);
+                }
                 sent++;
             }
         }
         return sent;
+    }
+
+    /** The cbor-raw frame of {@code m}: its CDR bytes (by predmon's bundled definition) in a CBOR publish op. */
+    private static byte[] cborRaw(BagMessage m) {
+        Map<String, Object> msg = new java.util.LinkedHashMap<>();
+        msg.put("secs", m.logTimeNanos() / 1_000_000_000L);
+        msg.put("nsecs", m.logTimeNanos() % 1_000_000_000L);
+        msg.put("bytes", CdrMessages.encode(m.type(), m.fields()));
+        Map<String, Object> op = new java.util.LinkedHashMap<>();
+        op.put("op", "publish");
+        op.put("topic", m.topic());
+        op.put("msg", msg);
+        try {
+            return CBOR.writeValueAsBytes(op);
+        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+            throw new IllegalStateException(e);
+        }
     }
 
     private static Object asRosbridge(Object v, String path, List<String> bytes) {
@@ -137,6 +171,7 @@ public final class FakeRosbridge extends WebSocketServer {
     @Override
     public void onClose(WebSocket conn, int code, String reason, boolean remote) {
         topics.remove(conn);
+        raw.remove(conn);
     }
 
     @Override
@@ -153,6 +188,11 @@ public final class FakeRosbridge extends WebSocketServer {
             case "subscribe" -> {
                 topics.computeIfAbsent(conn, k -> new CopyOnWriteArrayList<>()).add(topic);
                 subscribes.add(topic + " " + op.path("type").asText());
+                String compression = op.path("compression").asText("none");
+                compressions.add(compression);
+                if (compression.equals("cbor-raw")) {
+                    raw.computeIfAbsent(conn, k -> new CopyOnWriteArrayList<>()).add(topic);
+                }
             }
             case "unsubscribe" -> topics.getOrDefault(conn, new ArrayList<>()).remove(topic);
             case "advertise" -> advertised.add(topic + " " + op.path("type").asText());
