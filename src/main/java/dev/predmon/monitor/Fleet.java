@@ -260,9 +260,7 @@ public final class Fleet implements AutoCloseable {
                 if (now - nextSlice >= 0) {
                     if (w.notifying()) {
                         for (WatchedLog log : backstop.next(logs.values())) {
-                            if (logs.get(log.path().toAbsolutePath().normalize()) == log) { // not forgotten since
-                                poll(log, false);
-                            }
+                            poll(log, false);
                         }
                     }
                     nextSlice = now + safetyNanos / SAFETY_SLICES;
@@ -313,6 +311,7 @@ public final class Fleet implements AutoCloseable {
         for (WatchedLog log : deleted.due(logs.values(), l -> sources.named(l.path()), System.nanoTime())) {
             logs.remove(log.path().toAbsolutePath().normalize());
             w.remove(log);
+            backstop.forget(log);
             openFiles.closed(log);
             try {
                 log.watcher().close();

@@ -49,4 +49,15 @@ class SlicesTest {
         assertEquals(List.of("a"), slices.next(List.of("a", "b", "c")));
         assertEquals(List.of("b", "c"), slices.next(List.of("a", "b", "c")));
     }
+
+    @Test
+    void aLogForgottenDuringARoundIsNeitherGivenNorHeldAndTheOthersKeepTheirSlices() {
+        Slices<String> slices = new Slices<>(2);
+        List<String> logs = List.of("a", "b", "c", "d");
+        assertEquals(List.of("a", "b"), slices.next(logs));
+        slices.forget("c");
+        slices.forget("x"); // never there
+        assertEquals(List.of("d"), slices.next(List.of("a", "b", "d")));
+        assertEquals(List.of("a"), slices.next(List.of("a", "b", "d"))); // a new round: 3 logs in slices of 1 and 2
+    }
 }
