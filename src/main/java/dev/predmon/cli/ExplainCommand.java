@@ -115,6 +115,7 @@ final class ExplainCommand implements Callable<Integer> {
         if (!hold.isEmpty()) {
             out.println(String.join(", ", hold) + (hold.size() == 1 ? " holds" : " hold") + " throughout the log");
         }
+        otherForecasts(out, r);
         String about = forecastId == null ? "the forecast" : forecastId + "'s forecast";
         if (x.warning() != null) {
             out.printf(Locale.ROOT, "watch WARNS%s at t=%.3f (line %d), rule %s: %s%n",
@@ -134,6 +135,26 @@ final class ExplainCommand implements Callable<Integer> {
             out.println("no model matches the whole run: it is unlike every learned scenario"
                     + (last != null && last.novelSince() != null ? "; the forecast went on, novel since line "
                     + last.novelSince() : " (no prediction)"));
+        }
+    }
+
+    /**
+     * Each other property's own forecast on the run, as the monitor told it: its peak before the property's violation
+     * (or the run's end), or why the models gave it none ({@code no-abort: no forecast: never violated in 43 training
+     * runs}).
+     */
+    private static void otherForecasts(PrintWriter out, RunResult r) {
+        for (RunResult.PropertyResult p : r.properties()) {
+            if (p.noForecast() != null) {
+                out.println(p.property() + ": no forecast: " + p.noForecast());
+            } else if (p.forecasts() != null && !p.forecasts().probabilities().isEmpty()) {
+                boolean obligation = RunResult.PropertyResult.OBLIGATION.equals(p.scope());
+                out.printf(Locale.ROOT, "%s's forecast: %s peaked at %.2f over %d forecast(s) before %s%n",
+                        p.property(), obligation ? "P(miss)" : "P(violation)", p.forecasts().probabilities().stream()
+                                .mapToDouble(x -> x).max().orElse(0), p.forecasts().probabilities().size(),
+                        p.violation() == null ? "the run's end" : "its violation at t=" + String.format(Locale.ROOT,
+                                "%.3f", p.violation()));
+            }
         }
     }
 

@@ -108,6 +108,11 @@ final class LearnCommand implements Callable<Integer> {
                 + "abstraction '" + abstraction.name() + "'");
         result.evidence().runs().forEach(r -> out.println(r.line()));
         result.forecast().allScorecards().forEach(c -> c.lines().forEach(out::println));
+        new java.util.TreeMap<>(result.forecast().events()).forEach((id, e) -> {
+            if (!e.forecasts()) {
+                out.println(id + ": no forecast: " + e.why());
+            }
+        });
         out.flush();
         return ExitCodes.OK;
     }

@@ -2,8 +2,10 @@ package dev.predmon.evaluate;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * How each of the abstraction's other properties (every one but the forecast's) fared on the judged runs: its
@@ -14,9 +16,10 @@ import java.util.Map;
  * the matching; a property without either (an absence, a precedence) is counted so its violations are seen. How good
  * each property's forecast was is {@link Reliability}'s score of its forecasts ({@link PropertyForecasts}).
  *
- * <p>Beside them, the elapsed-time baseline, chosen by the same cross-validation: warn as soon as an obligation has
- * been pending longer than every training obligation of the fold's models. It is to a deadline what the raw-value
- * baseline is to a bound: what the learned durations add over "later than ever seen".
+ * <p>Beside them, the property's baseline on the same runs, chosen by the same cross-validation: a deadline's
+ * elapsed-time rule (warn as soon as an obligation has been pending longer than every training obligation of the
+ * fold's models: what the learned durations add over "later than ever seen"), a bound's raw-value rule (warn below
+ * the lowest value a safe training run of the fold read, above the highest for a ceiling).
  *
  * @param property        its id
  * @param runs            runs judged: those with evidence for it (a run in which nothing it speaks of occurred is
@@ -25,18 +28,28 @@ import java.util.Map;
  * @param warned          of those, runs warned about it before the violation
  * @param falseAlarms     runs that kept it but were warned about it
  * @param lead            lead of the warned violations, in the runs' unit
- * @param baselineWarned  violating runs the elapsed-time baseline warned before the violation
- * @param baselineAlarms  runs that kept it but the elapsed-time baseline warned
- * @param baselineLead    the elapsed-time baseline's lead
+ * @param baselineWarned  violating runs the baseline warned before the violation
+ * @param baselineAlarms  runs that kept it but the baseline warned
+ * @param baselineLead    the baseline's lead
  * @param forecast        how good its forecast was ({@link Reliability}: Brier score against the base rate,
  *                        calibration error, reliability table), or null when it has no forecast with a probability
  *                        on these runs
  * @param scope           what its forecasts are about ({@link RunResult.PropertyResult#scope}), null without one
  * @param noEvidence      runs with no evidence for it ({@link RunResult.PropertyResult#noEvidence}), not judged
+ * @param noForecast      why the models gave it no forecast ({@link RunResult.PropertyResult#noForecast}), each
+ *                        reason once, or null
  */
 public record PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
                             int baselineWarned, int baselineAlarms, Stats baselineLead, Reliability forecast,
-                            String scope, int noEvidence) {
+                            String scope, int noEvidence, String noForecast) {
+
+    /** A score not told why a property has no forecast. */
+    public PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
+                         int baselineWarned, int baselineAlarms, Stats baselineLead, Reliability forecast,
+                         String scope, int noEvidence) {
+        this(property, runs, violating, warned, falseAlarms, lead, baselineWarned, baselineAlarms, baselineLead,
+                forecast, scope, noEvidence, null);
+    }
 
     /** A score on runs that all had evidence for the property. */
     public PropertyScore(String property, int runs, int violating, int warned, int falseAlarms, Stats lead,
@@ -60,8 +73,12 @@ public record PropertyScore(String property, int runs, int violating, int warned
         Map<String, List<Double>> baselineLeads = new LinkedHashMap<>();
         Map<String, List<Reliability.Run>> forecasts = new LinkedHashMap<>();
         Map<String, String> scopes = new LinkedHashMap<>();
+        Map<String, Set<String>> why = new LinkedHashMap<>();
         for (RunResult r : runs) {
             for (RunResult.PropertyResult p : r.properties()) {
+                if (p.noForecast() != null) {
+                    why.computeIfAbsent(p.property(), k -> new LinkedHashSet<>()).add(p.noForecast());
+                }
                 if (p.forecasts() != null) {
                     forecasts.computeIfAbsent(p.property(), k -> new ArrayList<>()).add(p.forecasts());
                     scopes.putIfAbsent(p.property(), p.scope());
@@ -94,7 +111,8 @@ public record PropertyScore(String property, int runs, int violating, int warned
         counts.forEach((id, c) -> {
             Reliability f = Reliability.of(forecasts.getOrDefault(id, List.of()));
             out.add(new PropertyScore(id, c[0], c[1], c[2], c[3], Stats.of(leads.get(id)), c[4], c[5],
-                    Stats.of(baselineLeads.get(id)), f, f == null ? null : scopes.get(id), c[6]));
+                    Stats.of(baselineLeads.get(id)), f, f == null ? null : scopes.get(id), c[6],
+                    why.containsKey(id) ? String.join("; ", why.get(id)) : null));
         });
         return out;
     }

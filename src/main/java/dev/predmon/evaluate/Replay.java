@@ -1,6 +1,10 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.forecast.BoundModel;
+import dev.predmon.forecast.EventModel;
+import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
@@ -9,7 +13,9 @@ import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.RunId;
 import dev.predmon.pipeline.RunLabel;
+import dev.predmon.property.Absence;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Precedence;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
 import dev.predmon.property.PropertyView;
@@ -22,6 +28,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -65,8 +72,12 @@ public final class Replay {
                                       WarningRule rule, Map<String, Double> baseRates) throws IOException {
         Approach approach = new Approach(abstraction.safety().orElse(null),
                 models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
-        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, tolerance, confirm, rule, approach::record);
-        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, baseRates);
+        Map<String, Approach> bounds = Approach.others(abstraction, models.forecast());
+        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, tolerance, confirm, rule, (r, run, j) -> {
+            approach.record(r, run, j);
+            bounds.values().forEach(a -> a.record(r, run, j));
+        });
+        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, baseRates, bounds);
     }
 
     /**
@@ -82,6 +93,16 @@ public final class Replay {
     public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
                                      ModelSet models, Abstraction abstraction, Approach approach,
                                      Map<String, Double> baseRates) {
+        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, baseRates, Map.of());
+    }
+
+    /**
+     * As above, with the raw-value baseline of each other bound property by id ({@link Approach#others}): when it
+     * warned a run is the run's {@code beyond} for that property, as the elapsed-time baseline's is for a deadline.
+     */
+    public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
+                                     ModelSet models, Abstraction abstraction, Approach approach,
+                                     Map<String, Double> baseRates, Map<String, Approach> bounds) {
         List<ReplayedRun> runs = replayed.runs();
         List<RunResult> results = new ArrayList<>();
         for (ReplayedRun r : runs) {
@@ -108,6 +129,12 @@ public final class Replay {
                     beyond.putIfAbsent(c.property(), c.time());
                 }
             }
+            bounds.forEach((id, a) -> {
+                Double at = a.belowFloor(o.run());
+                if (at != null) {
+                    beyond.put(id, at);
+                }
+            });
             MonitorEvent.Warning warning = o.warning();
             MonitorEvent.Violation violation = o.violation();
             Double warningTime = warning == null ? null : warning.time();
@@ -128,18 +155,34 @@ public final class Replay {
                             warning == null ? null : warning.forecast(), models.forecast().baseRate(),
                             models.forecast().threshold(), approach.belowFloor(o.run()),
                             scored.stream().map(ReplayedRun.Timed::time).toList()),
-                    others(abstraction, o.properties(), warnings, violations, beyond,
-                            PropertyForecasts.of(r.events(), abstraction, models.forecast(), baseRates))));
+                    others(abstraction, o.properties(), warnings, baseRateWarnings(abstraction, beyond, baseRates,
+                            approach.start(o.run())), violations, PropertyForecasts.of(r.events(), abstraction,
+                            models.forecast(), baseRates), models)));
         }
         return results;
+    }
+
+    /**
+     * {@code beyond} with the base rate's warning of every absence and precedence: at the run's {@code start} where its
+     * training runs violated it at even odds or more ({@link ThresholdChoice#DEFAULT}), never where they did not.
+     */
+    private static Map<String, Double> baseRateWarnings(Abstraction abstraction, Map<String, Double> beyond,
+                                                        Map<String, Double> baseRates, double start) {
+        for (Property p : abstraction.properties()) {
+            Double rate = baseRates.get(p.id());
+            if ((p instanceof Absence || p instanceof Precedence) && rate != null && rate >= ThresholdChoice.DEFAULT) {
+                beyond.putIfAbsent(p.id(), start);
+            }
+        }
+        return beyond;
     }
 
     /** Every property but the forecast's, with its first warning and violation in the run and its forecasts. */
     private static List<RunResult.PropertyResult> others(Abstraction abstraction,
                                                          List<PropertyChecker.PropertyVerdict> verdicts,
-                                                         Map<String, Double> warnings,
-                                                         Map<String, Double> violations, Map<String, Double> beyond,
-                                                         Map<String, PropertyForecasts> forecasts) {
+                                                         Map<String, Double> warnings, Map<String, Double> beyond,
+                                                         Map<String, Double> violations,
+                                                         Map<String, PropertyForecasts> forecasts, ModelSet models) {
         String forecast = abstraction.safety().map(Property::id).orElse(null);
         List<RunResult.PropertyResult> out = new ArrayList<>();
         Map<String, dev.predmon.property.Verdict> verdict = new HashMap<>(); // not evaluate's Verdict
@@ -148,9 +191,10 @@ public final class Replay {
             if (!p.id().equals(forecast)) {
                 PropertyForecasts f = forecasts.get(p.id());
                 dev.predmon.property.Verdict v = verdict.get(p.id());
+                EventModel e = models.forecast() == null ? null : models.forecast().events().get(p.id());
                 out.add(new RunResult.PropertyResult(p.id(), warnings.get(p.id()), violations.get(p.id()),
                         beyond.get(p.id()), f == null ? null : f.run(), f == null ? null : f.scope(),
-                        v == null ? null : v.id(), v == null ? null : v.describe()));
+                        v == null ? null : v.id(), v == null ? null : v.describe(), e == null ? null : e.why()));
             }
         }
         return out;
@@ -176,10 +220,38 @@ public final class Replay {
         private final Map<Integer, Integer> near = new HashMap<>();
         private final Set<Integer> violated = new HashSet<>();
 
+        /** Whether the value is read mirrored (a ceiling's, whose floor is on the mirrored scale). */
+        private final boolean mirrored;
+
         /** @param floor the raw-value baseline's: the lowest value a safe training run read (NaN: never) */
         public Approach(Bound rule, double floor) {
+            this(rule, floor, false);
+        }
+
+        /** As above, of a value read {@code mirrored} ({@code -v}: a ceiling forecast as a floor) against {@code floor}. */
+        Approach(Bound rule, double floor, boolean mirrored) {
             this.rule = rule;
             this.floor = floor;
+            this.mirrored = mirrored;
+        }
+
+        /**
+         * The raw-value baseline of every bound property but the safety property that {@code forecast} has a value
+         * forecast of, by id: below the lowest value (above the highest, for a ceiling) a safe training run of it read.
+         */
+        static Map<String, Approach> others(Abstraction abstraction, ForecastModel forecast) {
+            Map<String, Approach> out = new LinkedHashMap<>();
+            if (forecast == null) {
+                return out;
+            }
+            for (Property p : abstraction.properties()) {
+                BoundModel b = forecast.bounds().get(p.id());
+                if (p instanceof Bound bound && b != null) {
+                    out.put(p.id(), new Approach(bound, b.model().lows().safeFloor(),
+                            BoundModel.CEILING.equals(b.side())));
+                }
+            }
+            return out;
         }
 
         /** Takes record {@code r} of run {@code run}, after the monitor took it and judged it as {@code judged}. */
@@ -189,7 +261,7 @@ public final class Replay {
                 return;
             }
             index = index < 0 ? judged.indexOf(rule.id()) : index;
-            double v = judged.reading(index);
+            double v = mirrored ? -judged.reading(index) : judged.reading(index);
             if (Double.isNaN(v)) {
                 return;
             }

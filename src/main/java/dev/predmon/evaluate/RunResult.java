@@ -69,8 +69,10 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * @param warning   the time of its first warning (a deadline forecast, or the match rule's for a faulty scenario
      *                  that violates it), or null
      * @param violation the time of its violation, or null
-     * @param beyond    when an obligation of it was first pending longer than every training obligation (the
-     *                  elapsed-time baseline's warning), or null
+     * @param beyond    when its baseline warned, or null: a deadline's elapsed-time rule (an obligation first pending
+     *                  longer than every training obligation), a bound's raw-value rule (as the safety property's,
+     *                  {@link Replay.Approach#belowFloor}), an absence's or a precedence's base rate (the run's start
+     *                  where the training runs violated it at even odds or more)
      * @param forecasts what its forecast said before its violation (or the run's end), each forecast with its
      *                  outcome, and the base rate of the models that judged the run; null when it has no forecast
      * @param scope     what each forecast and its outcome are about: {@link #OBLIGATION} (a deadline forecast:
@@ -79,9 +81,18 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * @param verdict   its verdict at the run's end ({@code holds}, {@code pending}, {@code violated} or
      *                  {@code no-evidence}), or null where not known
      * @param words     that verdict in words ({@code no evidence (no GoTo/getStatus reply in the run)}), or null
+     * @param noForecast why the models that judged the run gave it no forecast, in words ({@code never violated in
+     *                   43 training runs}), or null
      */
     public record PropertyResult(String property, Double warning, Double violation, Double beyond,
-                                 Reliability.Run forecasts, String scope, String verdict, String words) {
+                                 Reliability.Run forecasts, String scope, String verdict, String words,
+                                 String noForecast) {
+
+        /** A property not told why it has no forecast. */
+        public PropertyResult(String property, Double warning, Double violation, Double beyond,
+                              Reliability.Run forecasts, String scope, String verdict, String words) {
+            this(property, warning, violation, beyond, forecasts, scope, verdict, words, null);
+        }
 
         /** A property whose verdict at the run's end is not known. */
         public PropertyResult(String property, Double warning, Double violation, Double beyond,

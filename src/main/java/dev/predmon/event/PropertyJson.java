@@ -86,7 +86,7 @@ public record PropertyJson(String property, String name, String kind, String ver
         }
         Survival.Estimate e = s.deadline();
         if (s.model() == PropertyStatus.Model.NONE) {
-            return new LatestJson(model, null, null, null, false, "no forecast: no model of this property");
+            return new LatestJson(model, null, null, null, false, s.noForecastWords());
         }
         if (e == null) {
             return new LatestJson(model, null, null, s.unit(), false, "no forecast: no obligation pending");

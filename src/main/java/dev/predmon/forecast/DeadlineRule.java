@@ -1,5 +1,6 @@
 package dev.predmon.forecast;
 
+import java.util.List;
 import java.util.Locale;
 
 /**
@@ -19,8 +20,24 @@ import java.util.Locale;
  * @param validated   whether held-out obligations that missed and that did not chose it
  * @param calibration the map from the estimate to the probability reported ({@link Calibration#IDENTITY} when none
  *                    was fitted); the threshold is on the calibrated scale
+ * @param margin      the novelty clause's share of the time from the longest training obligation to the deadline that
+ *                    must pass too ({@link #HALF} in rules learned before the cross-validation chose it, 0 to warn as
+ *                    soon as the obligation is past every training one from the same input)
+ * @param baseline    whether the elapsed-time baseline warns in place of this rule (pending longer than every training
+ *                    obligation of the property), because this rule did worse on the same held-out folds
  */
-public record DeadlineRule(double threshold, String note, boolean validated, Calibration calibration) {
+public record DeadlineRule(double threshold, String note, boolean validated, Calibration calibration, double margin,
+                           boolean baseline) {
+
+    /** The novelty clause's margin before the cross-validation chose one: half of it. */
+    public static final double HALF = 0.5;
+    /** The margins the cross-validation chooses from, earliest first. */
+    public static final List<Double> MARGINS = List.of(0.0, HALF);
+
+    /** A rule whose novelty clause waits for half of the margin, as rules learned before the choice do. */
+    public DeadlineRule(double threshold, String note, boolean validated, Calibration calibration) {
+        this(threshold, note, validated, calibration, HALF, false);
+    }
 
     /** The rule of a property whose training obligations chose nothing: even odds and the novelty clause. */
     public static final DeadlineRule DEFAULT = new DeadlineRule(ThresholdChoice.DEFAULT,
@@ -35,11 +52,14 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
      * obligations it catches are known whatever threshold is chosen after.
      */
     public static final DeadlineRule NOVELTY_ONLY = new DeadlineRule(NEVER, "held out: the novelty clause alone",
-            false, Calibration.IDENTITY);
+            false, Calibration.IDENTITY, 0, false);
 
     public DeadlineRule {
         if (!((threshold >= 0 && threshold <= 1) || threshold == NEVER)) {
             throw new IllegalArgumentException("a threshold is a probability, from 0 to 1: " + threshold);
+        }
+        if (!(margin >= 0 && margin <= 1)) {
+            throw new IllegalArgumentException("a margin is a share, from 0 to 1: " + margin);
         }
     }
 
@@ -53,21 +73,42 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
 
     /**
      * Whether the forecast of an obligation pending for {@code elapsed} warns: its calibrated P(miss) reaches the
-     * threshold, or it is novel ({@link #pastEveryObligation}).
+     * threshold, or it is novel ({@link #pastEveryObligation}); for the baseline, whether it is pending longer than
+     * every training obligation of the property ({@link #pastEvery}).
      *
      * @param e        {@code survival}'s raw estimate at {@code elapsed} against {@code deadline}
-     * @param survival what the training obligations did
+     * @param survival what the training obligations from the same input did ({@link Survival#at})
+     * @param pooled   what every training obligation of the property did
      */
-    public boolean warns(Survival.Estimate e, double elapsed, double deadline, Survival survival) {
-        return e.novel() ? pastEveryObligation(elapsed, deadline, survival)
+    public boolean warns(Survival.Estimate e, double elapsed, double deadline, Survival survival, Survival pooled) {
+        if (baseline) {
+            return pastEvery(elapsed, pooled);
+        }
+        return e.novel() ? pastEveryObligation(elapsed, deadline, survival, margin)
                 : calibration.apply(e.probability()) >= threshold;
     }
 
+    /** As above, with one curve for both (no input of its own). */
+    public boolean warns(Survival.Estimate e, double elapsed, double deadline, Survival survival) {
+        return warns(e, elapsed, deadline, survival, survival);
+    }
+
+    /** The elapsed-time baseline: pending longer than every obligation of {@code survival}. */
+    public static boolean pastEvery(double elapsed, Survival survival) {
+        return survival.size() > 0 && survival.pendingAfter(elapsed) == 0 && elapsed > survival.longest();
+    }
+
     /**
-     * The novelty clause: pending longer than every training obligation, and half of the time from the longest of
-     * them to the deadline has passed too.
+     * The novelty clause: pending longer than every training obligation, and {@code margin} of the time from the
+     * longest of them to the deadline has passed too.
      */
+    public static boolean pastEveryObligation(double elapsed, double deadline, Survival survival, double margin) {
+        double longest = survival.longest();
+        return pastEvery(elapsed, survival) && elapsed >= longest + margin * (deadline - longest);
+    }
+
+    /** The novelty clause with half of the margin, as rules learned before the choice warn. */
     public static boolean pastEveryObligation(double elapsed, double deadline, Survival survival) {
-        return survival.pendingAfter(elapsed) == 0 && elapsed >= (survival.longest() + deadline) / 2;
+        return pastEveryObligation(elapsed, deadline, survival, HALF);
     }
 }

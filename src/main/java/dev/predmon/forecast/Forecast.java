@@ -27,6 +27,11 @@ public record Forecast(double probability, Double timeToViolation, Double low, D
         RESYNCHRONISED("resynchronised"),
         /** Nothing learned matches the latest pairs: the property's value and drift alone. */
         VALUE_ONLY("value only"),
+        /**
+         * Nothing learned matches the latest pairs, and the property has no value (an absence, a precedence): how
+         * often the training runs violated it.
+         */
+        BASE_RATE("base rate"),
         /** The property has already been violated in this run. */
         VIOLATED("violated");
 

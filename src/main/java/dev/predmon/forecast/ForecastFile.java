@@ -24,11 +24,11 @@ import static dev.predmon.forecast.ForecastFileSections.number;
 import static dev.predmon.forecast.ForecastFileSections.numbers;
 import static dev.predmon.forecast.ForecastFileSections.readDeadlines;
 import static dev.predmon.forecast.ForecastFileSections.readObligations;
-import static dev.predmon.forecast.ForecastFileSections.readScorecards;
 import static dev.predmon.forecast.ForecastFileSections.required;
 import static dev.predmon.forecast.ForecastFileSections.writeCalibration;
 import static dev.predmon.forecast.ForecastFileSections.writeObligations;
-import static dev.predmon.forecast.ForecastFileSections.writeScorecards;
+import static dev.predmon.forecast.ScorecardJson.readScorecards;
+import static dev.predmon.forecast.ScorecardJson.writeScorecards;
 
 /**
  * The text of {@code forecast.json}: a {@link ForecastModel} as JSON, numbers that are not known written as
@@ -69,6 +69,7 @@ public final class ForecastFile {
                 body(n, b.model());
             });
         }
+        writeEvents(root, m.events());
         try {
             return JSON.writeValueAsString(root) + "\n";
         } catch (JsonProcessingException e) {
@@ -84,6 +85,7 @@ public final class ForecastFile {
         root.put("threshold", m.threshold());
         root.put("thresholdNote", m.thresholdNote());
         root.put("thresholdValidated", m.validated());
+        ForecastFileSections.writeClauses(root, m.clauses());
         writeCalibration(root, m.calibration());
         writeScorecards(root, m.scorecards());
         writeObligations(root, m.obligations(), m.deadlines());
@@ -169,6 +171,7 @@ public final class ForecastFile {
         }
         String unit = required(root, "unit").asText();
         ForecastModel m = body(root, format, unit);
+        m = m.withEvents(readEvents(root, format, unit));
         JsonNode bounds = root.get("bounds");
         if (bounds == null) {
             return m;
@@ -190,6 +193,57 @@ public final class ForecastFile {
             }
         }
         return m.withBounds(read);
+    }
+
+    /**
+     * The optional {@code events}: by absence or precedence id, its forecast as a bound's is written, or without one
+     * the counts that say why ({@link EventModel#why}).
+     */
+    private static void writeEvents(ObjectNode root, Map<String, EventModel> events) {
+        if (events.isEmpty()) {
+            return;
+        }
+        ObjectNode all = root.putObject("events");
+        new TreeMap<>(events).forEach((id, e) -> {
+            ObjectNode n = all.putObject(id);
+            if (e.forecasts()) {
+                body(n, e.model());
+            } else {
+                n.put("runs", e.runs());
+                n.put("violating", e.violating());
+                n.put("noForecast", e.why());
+            }
+        });
+    }
+
+    private static Map<String, EventModel> readEvents(JsonNode root, int format, String unit) {
+        JsonNode events = root.get("events");
+        Map<String, EventModel> read = new TreeMap<>();
+        if (events == null) {
+            return read;
+        }
+        if (!events.isObject()) {
+            throw new IllegalArgumentException("'events': expected an object");
+        }
+        for (Iterator<Map.Entry<String, JsonNode>> it = events.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> e = it.next();
+            String at = "events/" + e.getKey();
+            try {
+                JsonNode n = e.getValue();
+                if (!n.isObject()) {
+                    throw new IllegalArgumentException("expected an object");
+                }
+                if (n.has("states")) {
+                    ForecastModel m = body(n, format, unit);
+                    read.put(e.getKey(), new EventModel(m.runs(), m.violating(), m));
+                } else {
+                    read.put(e.getKey(), new EventModel(count(n, "runs", null), count(n, "violating", null), null));
+                }
+            } catch (IllegalArgumentException x) {
+                throw new IllegalArgumentException("'" + at + "': " + x.getMessage(), x);
+            }
+        }
+        return read;
     }
 
     /** The model {@link #body(ObjectNode, ForecastModel)} wrote into {@code root}. */
@@ -246,12 +300,13 @@ public final class ForecastFile {
         return new ForecastModel(format, unit, number(root, "limit"),
                 runs, violating, lows(root), threshold,
                 required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
-                starts, calibration, readScorecards(root), readObligations(root), readDeadlines(root));
+                starts, calibration, readScorecards(root), readObligations(root), readDeadlines(root))
+                .withClauses(ForecastFileSections.readClauses(root));
     }
 
     /** One scorecard as {@code forecast.json} holds it (and {@code /status} shows it). */
     public static ObjectNode scorecard(Scorecard c) {
-        return ForecastFileSections.scorecard(c);
+        return ScorecardJson.scorecard(c);
     }
 
     private static void lows(ObjectNode n, Lows lows) {

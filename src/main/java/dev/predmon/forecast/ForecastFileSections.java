@@ -2,12 +2,9 @@ package dev.predmon.forecast;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import java.util.ArrayList;
 import java.util.Iterator;
-import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -61,12 +58,26 @@ final class ForecastFileSections {
             ObjectNode n = o.putObject(id);
             numbers(n.putArray("discharged"), survival.discharged());
             numbers(n.putArray("censored"), survival.censored());
+            if (!survival.contexts().isEmpty()) {
+                ObjectNode by = n.putObject("byInput");
+                survival.contexts().forEach((input, s) -> {
+                    ObjectNode c = by.putObject(input);
+                    numbers(c.putArray("discharged"), s.discharged());
+                    numbers(c.putArray("censored"), s.censored());
+                });
+            }
             DeadlineRule rule = rules.get(id);
             if (rule != null) {
                 n.put("threshold", rule.threshold());
                 n.put("note", rule.note());
                 n.put("validated", rule.validated());
                 writeCalibration(n, rule.calibration());
+                if (rule.margin() != DeadlineRule.HALF) {
+                    n.put("margin", rule.margin());
+                }
+                if (rule.baseline()) {
+                    n.put("rule", "baseline");
+                }
             }
         });
     }
@@ -76,8 +87,22 @@ final class ForecastFileSections {
         Map<String, Survival> obligations = new TreeMap<>();
         for (Map.Entry<String, JsonNode> e : obligationNodes(root).entrySet()) {
             try {
-                obligations.put(e.getKey(), new Survival(doubles(required(e.getValue(), "discharged")),
-                        doubles(required(e.getValue(), "censored"))));
+                Survival pooled = new Survival(doubles(required(e.getValue(), "discharged")),
+                        doubles(required(e.getValue(), "censored")));
+                JsonNode by = e.getValue().get("byInput");
+                if (by != null) {
+                    if (!by.isObject()) {
+                        throw new IllegalArgumentException("'byInput': expected an object");
+                    }
+                    Map<String, Survival> contexts = new TreeMap<>();
+                    for (Iterator<Map.Entry<String, JsonNode>> it = by.fields(); it.hasNext(); ) {
+                        Map.Entry<String, JsonNode> c = it.next();
+                        contexts.put(c.getKey(), new Survival(doubles(required(c.getValue(), "discharged")),
+                                doubles(required(c.getValue(), "censored"))));
+                    }
+                    pooled = pooled.withContexts(contexts);
+                }
+                obligations.put(e.getKey(), pooled);
             } catch (IllegalArgumentException x) {
                 throw new IllegalArgumentException("'obligations/" + e.getKey() + "': " + x.getMessage(), x);
             }
@@ -104,8 +129,17 @@ final class ForecastFileSections {
                 throw new IllegalArgumentException("'" + at + "/validated': expected true or false");
             }
             JsonNode c = n.get("calibration");
+            double margin = n.has("margin") ? number(n, "margin") : DeadlineRule.HALF;
+            if (!(margin >= 0 && margin <= 1)) {
+                throw new IllegalArgumentException("'" + at + "/margin': " + n.get("margin")
+                        + " is not a share (from 0 to 1)");
+            }
+            JsonNode rule = n.get("rule");
+            if (rule != null && !(rule.isTextual() && rule.asText().equals("baseline"))) {
+                throw new IllegalArgumentException("'" + at + "/rule': expected \"baseline\"");
+            }
             rules.put(e.getKey(), new DeadlineRule(threshold, required(n, "note").asText(), validated.booleanValue(),
-                    c == null ? Calibration.IDENTITY : calibration(c, at + "/calibration")));
+                    c == null ? Calibration.IDENTITY : calibration(c, at + "/calibration"), margin, rule != null));
         }
         return rules;
     }
@@ -129,64 +163,34 @@ final class ForecastFileSections {
         return nodes;
     }
 
-    /** The optional {@code scorecards} list: one object per property, written only when there is one. */
-    static void writeScorecards(ObjectNode root, List<Scorecard> cards) {
-        if (cards.isEmpty()) {
-            return;
+    /**
+     * Which clauses warn ({@link Clauses}), written only when not every clause of the forecast's rule does, so that a
+     * file learned before the choice reads as it did: {@code "rule": "baseline"} for the raw-value baseline,
+     * {@code "matching": false} for the forecast's rule without the thesis's matching.
+     */
+    static void writeClauses(ObjectNode root, Clauses c) {
+        if (c.baseline()) {
+            root.put("rule", "baseline");
+        } else if (!c.matching()) {
+            root.put("matching", false);
         }
-        ArrayNode a = root.putArray("scorecards");
-        cards.forEach(c -> a.add(scorecard(c)));
     }
 
-    /** One scorecard as {@code forecast.json} holds it (and {@code /status} shows it). */
-    static ObjectNode scorecard(Scorecard c) {
-        ObjectNode n = JsonNodeFactory.instance.objectNode();
-        n.put("property", c.property());
-        n.put("folds", c.folds());
-        n.put("runs", c.runs());
-        n.put("violating", c.violating());
-        n.put("warned", c.warned());
-        n.put("falseAlarms", c.falseAlarms());
-        number(n, "medianLead", c.medianLead());
-        n.put("unit", c.unit());
-        number(n, "brier", c.brier());
-        number(n, "baseBrier", c.baseBrier());
-        if (!Scorecard.RUNS.equals(c.counted())) {
-            n.put("counted", c.counted());
+    /** The clauses of {@link #writeClauses}: every clause when neither key is there. */
+    static Clauses readClauses(JsonNode root) {
+        JsonNode rule = root.get("rule");
+        if (rule != null && !(rule.isTextual() && (rule.asText().equals("baseline")
+                || rule.asText().equals("forecast")))) {
+            throw new IllegalArgumentException("'rule': expected \"baseline\" or \"forecast\"");
         }
-        return n;
-    }
-
-    static List<Scorecard> readScorecards(JsonNode root) {
-        JsonNode a = root.get("scorecards");
-        if (a == null) {
-            return List.of();
+        JsonNode matching = root.get("matching");
+        if (matching != null && !matching.isBoolean()) {
+            throw new IllegalArgumentException("'matching': expected true or false");
         }
-        if (!a.isArray()) {
-            throw new IllegalArgumentException("'scorecards': expected an array");
+        if (rule != null && rule.asText().equals("baseline")) {
+            return Clauses.BASELINE;
         }
-        List<Scorecard> cards = new ArrayList<>();
-        for (JsonNode n : a) {
-            if (!n.isObject()) {
-                throw new IllegalArgumentException("'scorecards': expected an array of objects");
-            }
-            Scorecard c = new Scorecard(required(n, "property").asText(), integer(n, "folds"), integer(n, "runs"),
-                    integer(n, "violating"), integer(n, "warned"), integer(n, "falseAlarms"), number(n, "medianLead"),
-                    required(n, "unit").asText(), number(n, "brier"), number(n, "baseBrier"),
-                    n.has("counted") ? n.get("counted").asText() : Scorecard.RUNS);
-            if (c.runs() < 0 || c.violating() < 0 || c.violating() > c.runs() || c.warned() < 0
-                    || c.warned() > c.violating() || c.falseAlarms() < 0 || c.falseAlarms() > c.held()) {
-                throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected 0 <= warned <= "
-                        + "violating <= runs and 0 <= falseAlarms <= runs - violating");
-            }
-            if (!(Double.isNaN(c.brier()) || (c.brier() >= 0 && c.brier() <= 1))
-                    || !(Double.isNaN(c.baseBrier()) || (c.baseBrier() >= 0 && c.baseBrier() <= 1))) {
-                throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected Brier scores "
-                        + "between 0 and 1");
-            }
-            cards.add(c);
-        }
-        return cards;
+        return matching == null || matching.booleanValue() ? Clauses.ALL : Clauses.NO_MATCHING;
     }
 
     static void number(ObjectNode n, String key, double v) {

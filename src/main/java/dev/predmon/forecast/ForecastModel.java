@@ -33,13 +33,18 @@ import java.util.TreeMap;
  * @param bounds      by id, every bound property but the one of {@code limit} (the abstraction's safety property): its
  *                    own value forecast, learned as this one is from the runs labelled by its own violation
  *                    ({@link BoundModel})
+ * @param clauses     which parts of the rule warn, as the cross-validation chose them ({@link Clauses#ALL} in models
+ *                    learned before the choice)
+ * @param events      by id, every absence and precedence of the abstraction: the forecast of its event coming in
+ *                    the rest of the run, or why the training runs cannot give one ({@link EventModel}); empty in
+ *                    models learned before it
  */
 public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
                             double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
                             Calibration calibration, List<Scorecard> scorecards,
                             Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines,
-                            Map<String, BoundModel> bounds) {
+                            Map<String, BoundModel> bounds, Clauses clauses, Map<String, EventModel> events) {
 
     /** Current format. */
     public static final int FORMAT = 1;
@@ -55,6 +60,44 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         obligations = Map.copyOf(obligations);
         deadlines = Map.copyOf(deadlines);
         bounds = Map.copyOf(bounds);
+        events = Map.copyOf(events);
+        if (clauses == null) {
+            throw new IllegalArgumentException("a forecast model needs its clauses");
+        }
+    }
+
+    /** A model without forecasts of absences and precedences. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
+                         double threshold, String thresholdNote, boolean validated,
+                         Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
+                         Calibration calibration, List<Scorecard> scorecards,
+                         Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines,
+                         Map<String, BoundModel> bounds, Clauses clauses) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, scorecards, obligations, deadlines, bounds, clauses, Map.of());
+    }
+
+    /** This model with {@code forecasts} as the absences' and precedences' forecasts, by property id. */
+    public ForecastModel withEvents(Map<String, EventModel> forecasts) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, forecasts);
+    }
+
+    /** A model that warns by every clause of the forecast's rule. */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
+                         double threshold, String thresholdNote, boolean validated,
+                         Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
+                         Calibration calibration, List<Scorecard> scorecards,
+                         Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines,
+                         Map<String, BoundModel> bounds) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, scorecards, obligations, deadlines, bounds, Clauses.ALL);
+    }
+
+    /** This model warning by {@code c}. */
+    public ForecastModel withClauses(Clauses c) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, c, events);
     }
 
     /** A model without other bound properties' forecasts. */
@@ -71,13 +114,14 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     public List<Scorecard> allScorecards() {
         List<Scorecard> all = new ArrayList<>(scorecards);
         new TreeMap<>(bounds).values().forEach(b -> all.addAll(b.model().scorecards()));
+        new TreeMap<>(events).values().forEach(e -> all.addAll(e.scorecards()));
         return List.copyOf(all);
     }
 
     /** This model with {@code forecasts} as the other bound properties' forecasts, by property id. */
     public ForecastModel withBounds(Map<String, BoundModel> forecasts) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, deadlines, forecasts);
+                states, startInputs, calibration, scorecards, obligations, deadlines, forecasts, clauses, events);
     }
 
     /** A model whose deadline forecasts warn by the default rule. */
@@ -97,13 +141,13 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with {@code rules} as its deadline rules, by property id. */
     public ForecastModel withDeadlines(Map<String, DeadlineRule> rules) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, rules, bounds);
+                states, startInputs, calibration, scorecards, obligations, rules, bounds, clauses, events);
     }
 
     /** This model with {@code training} as its obligations, by property id. */
     public ForecastModel withObligations(Map<String, Survival> training) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, training, deadlines, bounds);
+                states, startInputs, calibration, scorecards, training, deadlines, bounds, Clauses.ALL, events);
     }
 
     /** A model without deadline forecasts. */
@@ -163,15 +207,23 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     }
 
     /**
-     * Whether the forecast rule warns on {@code f}: its probability reaches the threshold, or the run is beyond what
-     * the training runs that held did (it is novel, or {@code beyondNominal}: no nominal machine matches it) and its
-     * property is below the lowest value those runs went to ({@link Lows#safeFloor}). The threshold was chosen on
-     * runs that matched; a novel run's forecast rests on weaker evidence and may never reach it, so without the
-     * second clause the rule would be blind exactly where the matching is.
+     * Whether the forecast rule warns on {@code f}: its property is below the lowest value the training runs that held
+     * went to ({@link Lows#safeFloor}), or the run does what the models know and its probability reaches the
+     * threshold. The first is the raw-value baseline, which every rule keeps: a run is warned at least where and when
+     * the one-line rule warns it. Once the run did something no learned machine does ({@link Forecast#novel}), no
+     * model fits it and the rule falls back to that baseline alone: the threshold was chosen on forecasts of runs the
+     * models knew, and a forecast resting on a re-synchronised suffix or on the value alone is no such forecast. Under
+     * {@link Clauses#baseline} the baseline alone throughout. {@code beyondNominal} (no nominal machine matches the
+     * run any more) adds nothing to the floor: such a run is warned by the same floor.
      */
     public boolean warns(Forecast f, boolean beyondNominal) {
-        return f.probability() >= threshold
-                || ((f.novel() || beyondNominal) && f.value() != null && belowSafeFloor(f.value()));
+        boolean below = f.value() != null && belowSafeFloor(f.value());
+        return below || (!clauses.baseline() && !f.novel() && f.probability() >= threshold);
+    }
+
+    /** Whether the thesis's matching warns too, under the forecast rule ({@link Clauses#matching}). */
+    public boolean matchingWarns() {
+        return clauses.matching() && !clauses.baseline();
     }
 
     /** Whether {@code value} is below the lowest value of the training runs that held (false without such a run). */
@@ -182,19 +234,19 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs, calibration, scorecards, obligations, deadlines, bounds);
+                startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, events);
     }
 
     /** This model with another calibration (the threshold is left as it is). */
     public ForecastModel withCalibration(Calibration c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, c, scorecards, obligations, deadlines, bounds);
+                states, startInputs, c, scorecards, obligations, deadlines, bounds, clauses, events);
     }
 
     /** This model with {@code cards} as its scorecards. */
     public ForecastModel withScorecards(List<Scorecard> cards) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, cards, obligations, deadlines, bounds);
+                states, startInputs, calibration, cards, obligations, deadlines, bounds, clauses, events);
     }
 
     @Override
@@ -205,7 +257,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
                 && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration)
                 && scorecards.equals(m.scorecards) && obligations.equals(m.obligations) && deadlines.equals(m.deadlines)
-                && bounds.equals(m.bounds);
+                && bounds.equals(m.bounds) && clauses.equals(m.clauses) && events.equals(m.events);
     }
 
     @Override

@@ -56,7 +56,8 @@ public final class ForecastWords {
                     .append(" training runs that were in this state");
             case RESYNCHRONISED -> b.append(f.violated()).append(" of ").append(f.runs())
                     .append(" training runs in the states the latest steps lead to");
-            case VALUE_ONLY -> b.append(f.violated()).append(" of ").append(f.runs()).append(" training runs");
+            case VALUE_ONLY, BASE_RATE -> b.append(f.violated()).append(" of ").append(f.runs())
+                    .append(" training runs");
             case VIOLATED -> {
                 return "the property is violated";
             }
@@ -72,7 +73,8 @@ public final class ForecastWords {
         }
         if (f.novel()) {
             b.append("; novel behaviour since line ").append(f.novelSince()).append(" (")
-                    .append(f.basis() == Forecast.Basis.VALUE_ONLY ? "no learned state fits: the value alone speaks"
+                    .append(f.basis() == Forecast.Basis.BASE_RATE ? "no learned state fits: the base rate speaks"
+                            : f.basis() == Forecast.Basis.VALUE_ONLY ? "no learned state fits: the value alone speaks"
                             : "matching resumed on the latest steps").append(')');
         }
         return b.toString();

@@ -1,8 +1,10 @@
 package dev.predmon.forecast;
 
 import dev.predmon.abstraction.Abstraction;
+import dev.predmon.property.Absence;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Deadline;
+import dev.predmon.property.Precedence;
 import dev.predmon.property.Property;
 import dev.predmon.property.Response;
 
@@ -16,7 +18,8 @@ import java.util.function.BiPredicate;
 import java.util.function.Function;
 
 /**
- * The per-property parts of a forecast ({@code forecast.json}'s {@code obligations} and {@code bounds}), which
+ * The per-property parts of a forecast ({@code forecast.json}'s {@code obligations}, {@code bounds} and
+ * {@code events}), which
  * properties of the abstraction each covers, and the check of a forecast read from a file against the abstraction
  * its models were learned with. {@code learn} writes an entry for every property a part covers, an empty one when no
  * training run gave it anything (a bounded response no run triggered), so that a part or an entry deleted from the
@@ -77,7 +80,11 @@ public final class PropertyParts {
                     ForecastModel::obligations, (p, s) -> obligationProblem((Response) p, s)),
             new Part<>("bounds", "a bound with a floor or a ceiling other than the safety property",
                     (p, a) -> p instanceof Bound b && others(a).contains(b), true, ForecastModel::bounds,
-                    (p, b) -> boundProblem((Bound) p, b)));
+                    (p, b) -> boundProblem((Bound) p, b)),
+            new Part<>("events", "an absence or a precedence", (p, a) -> p instanceof Absence || p instanceof Precedence,
+                    false, ForecastModel::events, (p, e) -> e.forecasts() && Double.compare(e.model().limit(),
+                    EventModel.HOLDS) != 0 ? "limit " + shown(e.model().limit()) + " is not the indicator's floor ("
+                    + EventModel.HOLDS + ")" : null));
 
     private PropertyParts() {
     }

@@ -1,5 +1,6 @@
 package dev.predmon.forecast;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
@@ -23,9 +24,45 @@ import java.util.Locale;
  * @param baseBrier   the same for always saying the training runs' share of violations
  * @param counted     what {@code runs} counts: {@value #RUNS}, or {@value #OBLIGATIONS} for a deadline forecast,
  *                    where each obligation is judged (it missed its deadline or it was met)
+ * @param rule        the rule scored, in words ({@value #FORECAST} for the learned rule)
+ * @param baseline    the property's baseline scored on the same cases, or null (scorecards written before it)
+ * @param baselineChosen whether the baseline warns in place of the learned rule, which did worse on the same folds
  */
 public record Scorecard(String property, int folds, int runs, int violating, int warned, int falseAlarms,
-                        double medianLead, String unit, double brier, double baseBrier, String counted) {
+                        double medianLead, String unit, double brier, double baseBrier, String counted, String rule,
+                        Scorecard baseline, boolean baselineChosen) {
+
+    /** The learned rule's words. */
+    public static final String FORECAST = "the forecast's warning rule";
+    /** A bound's baseline. */
+    public static final String RAW_VALUE = "raw value: warn below the lowest reading of any safe training run";
+    /** A deadline's baseline. */
+    public static final String ELAPSED = "elapsed time: warn once pending longer than every training obligation";
+
+    /**
+     * What a scorecard names besides its figures.
+     *
+     * @param baseline the baseline's words
+     */
+    public record Names(String property, String unit, String counted, String rule, String baseline) {
+
+        /** The same names for the rule {@code r}. */
+        public Names withRule(String r) {
+            return new Names(property, unit, counted, r, baseline);
+        }
+    }
+
+    /** A scorecard of the learned rule without a baseline beside it. */
+    public Scorecard(String property, int folds, int runs, int violating, int warned, int falseAlarms,
+                     double medianLead, String unit, double brier, double baseBrier, String counted) {
+        this(property, folds, runs, violating, warned, falseAlarms, medianLead, unit, brier, baseBrier, counted,
+                FORECAST, null, false);
+    }
+
+    /** The rule in force: the baseline's scorecard when it was chosen, else this one. */
+    public Scorecard inForce() {
+        return baselineChosen && baseline != null ? baseline : this;
+    }
 
     /** A scorecard over runs. */
     public static final String RUNS = "runs";
@@ -35,6 +72,9 @@ public record Scorecard(String property, int folds, int runs, int violating, int
     public Scorecard {
         if (!RUNS.equals(counted) && !OBLIGATIONS.equals(counted)) {
             throw new IllegalArgumentException("a scorecard counts runs or obligations, not " + counted);
+        }
+        if (baselineChosen && baseline == null) {
+            throw new IllegalArgumentException("a baseline chosen needs its scorecard");
         }
     }
 
@@ -64,8 +104,23 @@ public record Scorecard(String property, int folds, int runs, int violating, int
         return sorted.length % 2 == 1 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
     }
 
-    /** The scorecard in two lines, as {@code learn} and {@code watch} print it. */
+    /**
+     * The scorecard in two lines, as {@code learn} and {@code watch} print it, and with a baseline a third: the
+     * baseline on the same folds, and which of the two warns.
+     */
     public List<String> lines() {
+        if (baseline == null) {
+            return ownLines();
+        }
+        List<String> all = new ArrayList<>(ownLines());
+        all.add(String.format(Locale.ROOT, "  baseline on the same folds, %s: warned %d of %d, %d false alarm(s), %s;"
+                        + " %s", baseline.rule, baseline.warned, baseline.violating, baseline.falseAlarms,
+                baseline.leadWords(), baselineChosen ? "the baseline warns (the forecast's rule did worse on the folds)"
+                        : "the forecast's rule warns (at least as good as the baseline on the folds)"));
+        return List.copyOf(all);
+    }
+
+    private List<String> ownLines() {
         boolean runsCounted = RUNS.equals(counted);
         String first = String.format(Locale.ROOT, "scorecard of '%s' (%d-fold cross-validation on %d %s): warned "
                 + "%d of %d %s, %d false alarm(s) in %d %s, %s", property, folds, runs, counted, warned,

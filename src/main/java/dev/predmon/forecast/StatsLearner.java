@@ -4,6 +4,7 @@ import dev.predmon.compact.IoPair;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.pipeline.LogTrace;
 import dev.predmon.pipeline.RunTiming;
+import dev.predmon.pipeline.TriggerInputs;
 import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.util.ArrayList;
@@ -65,18 +66,36 @@ public final class StatsLearner {
 
     /** Per bounded-response property, how long the runs' obligations stayed pending, discharged or censored. */
     public static Map<String, Survival> obligations(List<LogTrace.Run> runs) {
-        Map<String, List<Double>> discharged = new TreeMap<>();
-        Map<String, List<Double>> censored = new TreeMap<>();
+        Map<String, List<RunTiming.Obligation>> byProperty = new TreeMap<>();
         for (LogTrace.Run r : runs) {
             for (RunTiming.Obligation o : r.timing().obligations()) {
-                discharged.computeIfAbsent(o.property(), k -> new ArrayList<>());
-                censored.computeIfAbsent(o.property(), k -> new ArrayList<>());
-                (o.discharged() ? discharged : censored).get(o.property()).add(o.duration());
+                byProperty.computeIfAbsent(o.property(), k -> new ArrayList<>()).add(o);
             }
         }
         Map<String, Survival> out = new TreeMap<>();
-        discharged.forEach((id, d) -> out.put(id, new Survival(toArray(d), toArray(censored.get(id)))));
+        byProperty.forEach((id, all) -> {
+            Map<String, List<RunTiming.Obligation>> byInput = new TreeMap<>();
+            for (RunTiming.Obligation o : all) {
+                if (o.input() != null) { // under its full condition, and under its trigger's input alone
+                    byInput.computeIfAbsent(o.input(), k -> new ArrayList<>()).add(o);
+                    String input = TriggerInputs.input(o.input());
+                    if (!input.equals(o.input())) {
+                        byInput.computeIfAbsent(input, k -> new ArrayList<>()).add(o);
+                    }
+                }
+            }
+            Map<String, Survival> contexts = new TreeMap<>();
+            byInput.forEach((input, os) -> contexts.put(input, survival(os)));
+            out.put(id, survival(all).withContexts(contexts));
+        });
         return out;
+    }
+
+    /** The curve of {@code obligations}, discharged or censored. */
+    private static Survival survival(List<RunTiming.Obligation> obligations) {
+        return new Survival(toArray(obligations.stream().filter(RunTiming.Obligation::discharged)
+                .map(RunTiming.Obligation::duration).toList()), toArray(obligations.stream()
+                .filter(o -> !o.discharged()).map(RunTiming.Obligation::duration).toList()));
     }
 
     /** Per state of {@code machine}: counts, times and drift over the runs it takes. */

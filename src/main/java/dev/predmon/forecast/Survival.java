@@ -1,6 +1,9 @@
 package dev.predmon.forecast;
 
 import java.util.Arrays;
+import java.util.Collections;
+import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * How long the training runs' obligations stayed pending (a {@code goTo} until its destination, a low battery until
@@ -19,6 +22,14 @@ import java.util.Arrays;
  * of which missed, the next one misses about once in 80, not never. Past every training obligation there is no evidence: the estimate
  * says so ({@link Estimate#novel}) and gives only the time left.
  *
+ * <p>The curve may be conditioned on where the run was when the obligation began: the Mealy input of its trigger
+ * record (which skill was asked for, where the robot was sent: {@code goTo_ch} is another leg than {@code goTo_ki}),
+ * after the input of the property's previous trigger ({@code goTo_ch_i>goTo_ki_i}, the way on after a recharge).
+ * Each condition with at least {@value #MIN_CONTEXT} training obligations has a curve of its own ({@link #at}); one
+ * with fewer falls back to its trigger's input alone, then to the pooled curve. The input, not a machine's state number, is the condition: the
+ * input means the same in every model learned from the same abstraction (each fold's, and the final one's), where a
+ * state number is only a name inside one machine.
+ *
  * <p>Immutable; the durations are kept sorted, and one estimate is two binary searches and a product over the
  * distinct discharge times (a few hundred at most).
  */
@@ -29,12 +40,28 @@ public final class Survival {
     /** Distinct discharge times, ascending, and the survival just after each. */
     private final double[] times;
     private final double[] after;
+    /** By the trigger's input, the curve of the obligations that began there (only inputs with enough of them). */
+    private final Map<String, Survival> contexts;
+
+    /**
+     * A condition needs this many training obligations that were discharged (their response came) for a curve of its
+     * own: with ten, a new obligation from the same place outlasts all of them about once in eleven; with fewer, the
+     * pooled curve is the better evidence. Censored obligations do not count towards it: they tell only that the
+     * response took longer than they were watched, and a condition whose obligations were all let go early would
+     * call every later one novel.
+     */
+    public static final int MIN_CONTEXT = 10;
 
     /**
      * @param discharged how long each obligation that was discharged took
      * @param censored   how long each obligation that was never discharged had been pending when it was let go
      */
     public Survival(double[] discharged, double[] censored) {
+        this(discharged, censored, Map.of());
+    }
+
+    private Survival(double[] discharged, double[] censored, Map<String, Survival> contexts) {
+        this.contexts = Collections.unmodifiableMap(new TreeMap<>(contexts));
         this.discharged = finiteSorted(discharged, "discharged");
         this.censored = finiteSorted(censored, "censored");
         double[] t = new double[this.discharged.length];
@@ -57,6 +84,42 @@ public final class Survival {
         }
         this.times = Arrays.copyOf(t, distinct);
         this.after = Arrays.copyOf(s, distinct);
+    }
+
+    /**
+     * This curve with {@code byInput} as the curves of the obligations by where they began; conditions with fewer than
+     * {@link #MIN_CONTEXT} discharged obligations are left out (they are judged by this pooled curve).
+     */
+    public Survival withContexts(Map<String, Survival> byInput) {
+        Map<String, Survival> kept = new TreeMap<>();
+        byInput.forEach((input, s) -> {
+            if (s.discharged.length >= MIN_CONTEXT) {
+                kept.put(input, new Survival(s.discharged, s.censored));
+            }
+        });
+        return new Survival(discharged, censored, kept);
+    }
+
+    /** The curves by trigger input ({@link #withContexts}), each with enough obligations. */
+    public Map<String, Survival> contexts() {
+        return contexts;
+    }
+
+    /**
+     * The curve of obligations that began under {@code condition} ({@code goTo_ch_i>goTo_ki_i}: a trigger's input
+     * after the previous trigger's): its own when it has one, else that of the trigger's input alone (the part after
+     * the last {@code >}), else this pooled one.
+     */
+    public Survival at(String condition) {
+        if (condition == null) {
+            return this;
+        }
+        Survival s = contexts.get(condition);
+        if (s == null) {
+            int at = condition.lastIndexOf('>');
+            s = at < 0 ? null : contexts.get(condition.substring(at + 1));
+        }
+        return s == null ? this : s;
     }
 
     /** How long each discharged obligation took, sorted. */
@@ -138,7 +201,8 @@ public final class Survival {
 
     @Override
     public boolean equals(Object o) {
-        return o instanceof Survival s && Arrays.equals(discharged, s.discharged) && Arrays.equals(censored, s.censored);
+        return o instanceof Survival s && Arrays.equals(discharged, s.discharged) && Arrays.equals(censored, s.censored)
+                && contexts.equals(s.contexts);
     }
 
     @Override

@@ -9,8 +9,10 @@ import java.util.TreeSet;
  * Chooses the probability at which the forecast rule warns, from held-out runs: each run's highest calibrated forecast
  * before its violation (or before its end, when it held). A threshold warns on every run whose peak reaches it; it is
  * chosen to make the fewest wrong calls (a false alarm and a missed violation cost the same), never below
- * {@link #FLOOR}, and among the equally good ones, the middle of the widest gap between peaks, so that a run not seen
- * in training is least likely to fall on the wrong side.
+ * {@link #FLOOR}; among the equally good ones, the one that warns the most violations (at the same cost, a missed
+ * violation is the call that cannot be taken back: on a handful of runs, a tie between warning nothing and warning
+ * every violation at the price of as many false alarms is common, and goes to the warning); and among those, the
+ * middle of the widest gap between peaks, so that a run not seen in training is least likely to fall on the wrong side.
  */
 public final class ThresholdChoice {
 
@@ -67,6 +69,7 @@ public final class ThresholdChoice {
         distinct.add(1.0);
         List<Double> cuts = new ArrayList<>(distinct.tailSet(FLOOR, true));
         int bestErrors = Integer.MAX_VALUE;
+        int bestHits = -1;
         double bestGap = -1;
         double best = DEFAULT;
         // A threshold between two neighbouring peaks: the calls are the same anywhere in the gap.
@@ -75,8 +78,11 @@ public final class ThresholdChoice {
             double t = i == 0 ? FLOOR : (lowSide + cuts.get(i)) / 2;
             double gap = i == 0 ? 0 : cuts.get(i) - lowSide;
             int errors = errors(peaks, t);
-            if (errors < bestErrors || (errors == bestErrors && gap > bestGap)) {
+            int hits = (int) peaks.stream().filter(p -> p.violated() && p.warnedAt(t)).count();
+            if (errors < bestErrors || (errors == bestErrors && (hits > bestHits
+                    || (hits == bestHits && gap > bestGap)))) {
                 bestErrors = errors;
+                bestHits = hits;
                 bestGap = gap;
                 best = t;
             }

@@ -2,13 +2,12 @@ package dev.predmon.learn;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.Calibration;
+import dev.predmon.forecast.CrossValidation;
 import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
-import dev.predmon.forecast.ScorecardTally;
 import dev.predmon.forecast.Survival;
 import dev.predmon.forecast.ThresholdChoice;
-import dev.predmon.property.Deadline;
 import dev.predmon.property.Property;
 import dev.predmon.property.Response;
 import dev.predmon.replay.ReplayedRun;
@@ -20,22 +19,20 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * Learns when the deadline forecast of each bounded-response property warns, by the cross-validation that chooses the
- * battery's threshold ({@link ForecastTraining}), on the same replays ({@link HeldOutFolds}): for each fold, the
- * durations of the other folds' obligations make the {@link Survival} estimate of the fold's models, and each held-out
- * obligation is forecast as {@code watch}'s own monitor forecast it in the replay of its log with them, one replay of
- * each held-out log for every property ({@link ReplayedRun#obligations}). Each obligation's
- * highest forecast before its deadline, and whether it missed, choose the threshold ({@link ThresholdChoice}); its
- * forecasts fit the {@link Calibration}; the novelty clause of {@link DeadlineRule} warns it whatever the threshold.
+ * Learns when the deadline forecast of each bounded-response property warns, by the one cross-validation that chooses
+ * every property's rule ({@link CrossValidation}), on the replays the bounds are chosen on ({@link HeldOutFolds}): for
+ * each fold, the durations of the other folds' obligations make the {@link Survival} curves of the fold's models (by
+ * the trigger's input where an input has enough of them), and each held-out obligation is forecast as {@code watch}'s
+ * own monitor forecast it in the replay of its log with them ({@link ReplayedRun#obligations}). The cross-validation
+ * chooses the threshold, the calibration and the novelty clause's margin, and scores the rule beside the elapsed-time
+ * baseline (pending longer than every training obligation of the property) on the same obligations; where the rule
+ * did worse, the baseline warns.
  *
  * <p>An obligation let go before its deadline (its run ended, or its scope closed) has no known outcome and is left
- * out. Where the held-out obligations cannot choose (too few logs, or none missed its deadline), the property keeps
- * {@link DeadlineRule#DEFAULT}, not validated, and the note says why.
- *
- * <p>The scorecard of each property comes from the same held-out forecasts, each fold judged with a threshold and a
- * calibration chosen from the other folds only. A property none of whose held-out obligations missed its deadline
- * gets none, as the forecast's property gets none without runs of both outcomes: there is no warning to score, and
- * its rule's note says it is not validated.
+ * out. Where the held-out obligations cannot choose a threshold (too few logs, or none missed its deadline), the
+ * threshold stays the default, not validated, and the note says why; the clauses and the baseline are still chosen
+ * on the obligations met in time (their false alarms), and the property gets no scorecard: there is no warning of a
+ * miss to score.
  */
 public final class DeadlineTraining {
 
@@ -68,13 +65,60 @@ public final class DeadlineTraining {
                         Calibration.IDENTITY));
                 continue;
             }
-            List<HeldOut> judged = heldOut(r.id(), heldOut);
-            rules.put(r.id(), rule(judged));
-            if (judged.stream().anyMatch(HeldOut::missed)) {
-                cards.add(scorecard(r, k, judged)); // without a missed deadline, nothing to score (the rule says so)
+            List<CrossValidation.Case> cases = cases(r.id(), heldOut);
+            if (cases.isEmpty()) {
+                rules.put(r.id(), new DeadlineRule(ThresholdChoice.DEFAULT, String.format(Locale.ROOT, "default %.2f:"
+                        + " no held-out obligation was met or missed", ThresholdChoice.DEFAULT), false,
+                        Calibration.IDENTITY));
+                continue;
+            }
+            CrossValidation.Choice c = CrossValidation.choose(cases, k, new CrossValidation.Space(
+                    DeadlineRule.MARGINS.size(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(r.name(),
+                    r.within().unit().key, Scorecard.OBLIGATIONS, Scorecard.FORECAST, Scorecard.ELAPSED));
+            rules.put(r.id(), rule(c));
+            if (cases.stream().anyMatch(CrossValidation.Case::violated)) {
+                cards.add(c.scorecard()); // without a missed deadline there is no warning to score (the note says so)
             }
         }
         return model.withDeadlines(rules).withScorecards(cards);
+    }
+
+    /**
+     * Every held-out obligation of property {@code id} with a known outcome, as the one cross-validation judges it
+     * ({@link HeldOutCases#deadline}).
+     */
+    static List<CrossValidation.Case> cases(String id, HeldOutFolds heldOut) {
+        List<CrossValidation.Case> cases = new ArrayList<>();
+        for (HeldOutFolds.Fold fold : heldOut.judged()) {
+            Survival pooled = fold.obligations().get(id);
+            if (pooled == null || pooled.size() == 0) {
+                continue; // watch gives no forecast without a training obligation: nothing to judge
+            }
+            for (HeldOutRun run : fold.runs()) {
+                for (ReplayedRun.Obligation o : run.obligations()) {
+                    if (o.property().id().equals(id) && (o.discharged() || o.missed())) {
+                        cases.add(HeldOutCases.deadline(fold.index(), o, pooled));
+                    }
+                }
+            }
+        }
+        return cases;
+    }
+
+    /**
+     * The rule {@code c} chose: the threshold, calibration and novelty margin learned on every held-out obligation, and
+     * whether the elapsed-time baseline warns in its place.
+     */
+    static DeadlineRule rule(CrossValidation.Choice c) {
+        CrossValidation.Rule x = c.rule();
+        String note = x.validated() ? x.note() : x.note() + "; not validated: even odds, and the warning past every"
+                + " training obligation";
+        if (c.baseline()) {
+            note += "; the elapsed-time baseline warns: the forecast's rule did worse on the same folds";
+        }
+        return new DeadlineRule(x.threshold(), note, x.validated(),
+                x.validated() ? x.calibration() : Calibration.IDENTITY, DeadlineRule.MARGINS.get(x.variant()),
+                c.baseline());
     }
 
     /**
@@ -127,50 +171,5 @@ public final class DeadlineTraining {
         }
         return new HeldOut(fold, o.missed(), o.duration(), ps, elapsed, o.warnedAt(),
                 survival.missRate(o.property().within().amount()));
-    }
-
-    /** The rule {@code judged} choose: a threshold and a calibration when they validate one, else the default. */
-    static DeadlineRule rule(List<HeldOut> judged) {
-        if (judged.isEmpty()) {
-            return new DeadlineRule(ThresholdChoice.DEFAULT, String.format(Locale.ROOT, "default %.2f: no held-out "
-                    + "obligation was met or missed", ThresholdChoice.DEFAULT), false, Calibration.IDENTITY);
-        }
-        Calibration calibration = fit(judged);
-        ThresholdChoice.Choice c = choose(judged, calibration);
-        if (!c.validated()) {
-            return new DeadlineRule(c.threshold(), c.note() + "; not validated: even odds, and the warning past "
-                    + "every training obligation", false, Calibration.IDENTITY);
-        }
-        return new DeadlineRule(c.threshold(), String.format(Locale.ROOT, "%.2f %s", c.threshold(), c.note()), true,
-                calibration);
-    }
-
-    private static Calibration fit(List<HeldOut> judged) {
-        return Calibration.fit(judged.stream().map(h -> new Calibration.Sample(h.probabilities(), h.missed()))
-                .toList());
-    }
-
-    /** The threshold on the calibrated scale, where even odds mean what they say. */
-    private static ThresholdChoice.Choice choose(List<HeldOut> judged, Calibration calibration) {
-        return ThresholdChoice.choose(judged.stream().map(h -> new ThresholdChoice.Peak(
-                calibration.apply(h.peak()), h.missed(), !Double.isNaN(h.caughtAt()))).toList(), "obligations");
-    }
-
-    /**
-     * The scorecard of {@code property} over the held-out obligations, each fold judged as {@code watch} would with
-     * the rule {@link #rule} makes from the other folds' obligations only. The lead runs from the warning to the
-     * deadline's passing, in the deadline's unit.
-     */
-    static Scorecard scorecard(Response property, int folds, List<HeldOut> judged) {
-        ScorecardTally tally = new ScorecardTally();
-        for (int f = 0; f < folds; f++) {
-            int fold = f;
-            DeadlineRule rule = rule(judged.stream().filter(h -> h.fold() != fold).toList());
-            judged.stream().filter(h -> h.fold() == fold).forEach(h -> tally.add(h.probabilities(), h.elapsed(),
-                    h.caughtAt(), h.missed(), h.duration(), h.baseRate(), rule.calibration(), rule.threshold()));
-        }
-        Deadline d = property.within();
-        return tally.scorecard(property.name(), folds, judged.size(),
-                d.unit().key, Scorecard.OBLIGATIONS);
     }
 }

@@ -4,11 +4,12 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.BoundRuns;
-import dev.predmon.forecast.Calibration;
+import dev.predmon.forecast.Clauses;
+import dev.predmon.forecast.CrossValidation;
+import dev.predmon.forecast.EventModel;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.PropertyParts;
 import dev.predmon.forecast.Scorecard;
-import dev.predmon.forecast.ScorecardTally;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.pipeline.LogTrace;
@@ -19,7 +20,6 @@ import net.automatalib.automaton.transducer.CompactMealy;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.function.Predicate;
@@ -92,53 +92,60 @@ public final class ForecastTraining {
             boundStats.put(b.id(), new BoundModel(side, StatsLearner.learn(machines, BoundRuns.view(b, side, runs),
                     unit, BoundModel.limit(b, side))));
         }
+        Map<String, EventModel> events = EventTraining.train(machines, abstraction, runs, unit, heldOut);
         if (heldOut.folds() == 0) {
             String note = "default " + ThresholdChoice.DEFAULT + ": too few logs to cross-validate";
             Map<String, BoundModel> bounds = new TreeMap<>();
             boundStats.forEach((id, b) -> bounds.put(id, new BoundModel(b.side(),
                     b.model().withThreshold(ThresholdChoice.DEFAULT, note, false))));
             return PropertyParts.covering(stats.withThreshold(ThresholdChoice.DEFAULT, note, false)
-                    .withBounds(bounds), abstraction);
+                    .withBounds(bounds).withEvents(events), abstraction);
         }
-        List<HeldOut> judged = new ArrayList<>();
-        Map<String, List<HeldOut>> boundJudged = new TreeMap<>();
+        List<CrossValidation.Case> judged = new ArrayList<>();
+        Map<String, List<CrossValidation.Case>> boundJudged = new TreeMap<>();
         others.forEach(b -> boundJudged.put(b.id(), new ArrayList<>()));
         for (HeldOutFolds.Fold fold : heldOut.judged()) {
             if (fold.bothOutcomes()) { // a fold that trains on one outcome only says nothing about where to draw the line
-                fold.runs().forEach(r -> judged.add(new HeldOut(fold.index(), r, fold.baseRate())));
+                fold.runs().forEach(r -> judged.add(HeldOutCases.bound(fold.index(), r, fold.baseRate(),
+                        fold.safeFloor(), v -> v)));
             }
-            fold.bounds().forEach((id, b) -> b.runs().forEach(r -> boundJudged.get(id)
-                    .add(new HeldOut(fold.index(), r, b.baseRate()))));
+            fold.bounds().forEach((id, b) -> {
+                boolean ceiling = BoundModel.CEILING.equals(sides.get(id));
+                b.runs().forEach(r -> boundJudged.get(id).add(HeldOutCases.bound(fold.index(), r, b.baseRate(),
+                        b.safeFloor(), v -> ceiling ? -v : v)));
+            });
         }
         Map<String, BoundModel> bounds = new TreeMap<>();
         for (Bound b : others) {
             BoundModel m = boundStats.get(b.id());
             bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), heldOut.folds(), unit,
-                    boundJudged.get(b.id()))));
+                    boundJudged.get(b.id()), new CrossValidation.Space(1, 0, Scorecard.RUNS))));
         }
-        return PropertyParts.covering(chosen(stats, property, heldOut.folds(), unit, judged).withBounds(bounds),
-                abstraction);
+        return PropertyParts.covering(chosen(stats, property, heldOut.folds(), unit, judged,
+                new CrossValidation.Space(1, 1, Scorecard.RUNS)).withBounds(bounds).withEvents(events), abstraction);
     }
 
     /**
-     * {@code stats} with the calibration, the threshold and the scorecard of {@code property} chosen on the held-out
-     * runs {@code judged}.
+     * {@code stats} with the rule of {@code property} chosen on the held-out runs {@code judged} by the one
+     * cross-validation ({@link CrossValidation}): its calibration, threshold and clauses (the novelty clause, and the
+     * thesis's matching where {@code space} offers it and it earns its place), or the raw-value baseline where the
+     * learned rule did worse on the same folds; and its scorecard beside the baseline's.
      */
     private static ForecastModel chosen(ForecastModel stats, String property, int used, String unit,
-                                        List<HeldOut> judged) {
-        // The threshold is chosen on the calibrated scale, where even odds mean what they say.
-        Calibration calibration = Calibration.fit(judged.stream().map(h -> new Calibration.Sample(
-                h.run().probabilities(), h.run().violated())).toList());
-        ThresholdChoice.Choice c = ThresholdChoice.choose(judged.stream().map(h -> new ThresholdChoice.Peak(
-                calibration.apply(h.run().peak()), h.run().violated(), !Double.isNaN(h.run().warnedAt()))).toList());
-        List<Scorecard> cards = scorecards(property, used, unit, judged);
-        if (!c.validated()) {
-            return stats.withThreshold(c.threshold(), c.note(), false).withScorecards(cards);
-        }
-        double threshold = c.threshold();
-        String note = String.format(Locale.ROOT, "%.2f %s", threshold, c.note());
-        return stats.withCalibration(calibration).withThreshold(threshold, note, true).withScorecards(cards);
+                                        List<CrossValidation.Case> judged, CrossValidation.Space space) {
+        CrossValidation.Choice c = CrossValidation.choose(judged, used, space, new Scorecard.Names(property, unit,
+                Scorecard.RUNS, Scorecard.FORECAST, Scorecard.RAW_VALUE));
+        CrossValidation.Rule r = c.rule();
+        List<Scorecard> cards = property == null || c.scorecard() == null ? List.of() : List.of(c.scorecard());
+        Clauses clauses = c.baseline() ? Clauses.BASELINE : new Clauses(false, r.keeps(0));
+        String note = c.baseline() ? r.note() + "; " + BASELINE_NOTE : r.note();
+        ForecastModel m = stats.withThreshold(r.threshold(), note, r.validated()).withScorecards(cards)
+                .withClauses(clauses);
+        return r.validated() ? m.withCalibration(r.calibration()) : m;
     }
+
+    /** Why a model warns by the raw-value baseline, after its threshold's note. */
+    static final String BASELINE_NOTE = "the raw-value baseline warns: the forecast's rule did worse on the same folds";
 
     /**
      * Every bound property of {@code abstraction} but its safety property, with a floor or a ceiling: each gets a value
@@ -158,39 +165,6 @@ public final class ForecastTraining {
     /** What the runs' times count: the first run's unit, seconds without a run. */
     private static String unit(List<LogTrace.Run> runs) {
         return runs.isEmpty() ? "s" : runs.get(0).timing().unit();
-    }
-
-    /** One held-out run ({@link HeldOutRun}) with its fold and that fold's base rate. */
-    private record HeldOut(int fold, HeldOutRun run, double baseRate) {
-    }
-
-    /**
-     * The scorecard of {@code property} over the held-out runs, each judged as {@code watch} would, with a calibration
-     * and a threshold chosen as above from the other folds' runs only: no figure rests on a choice that saw the run it
-     * judges. None without a property or a judged run.
-     */
-    private static List<Scorecard> scorecards(String property, int folds, String unit, List<HeldOut> judged) {
-        if (property == null || judged.isEmpty()) {
-            return List.of();
-        }
-        ScorecardTally tally = new ScorecardTally();
-        for (int f = 0; f < folds; f++) {
-            int fold = f;
-            List<HeldOut> others = judged.stream().filter(h -> h.fold() != fold).toList();
-            Calibration calibration = Calibration.fit(others.stream()
-                    .map(h -> new Calibration.Sample(h.run().probabilities(), h.run().violated())).toList());
-            double threshold = ThresholdChoice.choose(others.stream().map(h -> new ThresholdChoice.Peak(
-                    calibration.apply(h.run().peak()), h.run().violated(), !Double.isNaN(h.run().warnedAt())))
-                    .toList()).threshold();
-            for (HeldOut judgedRun : judged) {
-                if (judgedRun.fold() == fold) {
-                    HeldOutRun h = judgedRun.run();
-                    tally.add(h.probabilities(), h.times(), h.warnedAt(), h.violated(), h.violationTime(),
-                            judgedRun.baseRate(), calibration, threshold);
-                }
-            }
-        }
-        return List.of(tally.scorecard(property, folds, judged.size(), unit, Scorecard.RUNS));
     }
 
     /** The safety property's threshold, NaN when the abstraction has no property. */

@@ -5,6 +5,7 @@ import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.BoundRuns;
 import dev.predmon.forecast.DeadlineRule;
+import dev.predmon.forecast.EventModel;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.StatsLearner;
 import dev.predmon.forecast.Survival;
@@ -59,20 +60,32 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
      * @param runs          its held-out runs, each of the runs its scenario learns from, in log order
      * @param bounds        by id, every other bound property whose training runs (as it sees them, {@link BoundRuns})
      *                      both violated and held it: the same held-out runs as it saw them in the same replays
+     * @param safeFloor     the lowest value a training run that held the forecast's property read (NaN without one):
+     *                      the raw-value baseline's line
+     * @param events        by id, every absence and precedence whose training runs could teach a forecast
+     *                      ({@link EventTraining}): the same held-out runs as it saw them ({@code safeFloor} NaN)
      */
     public record Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
-                       List<HeldOutRun> runs, Map<String, BoundFold> bounds) {
+                       List<HeldOutRun> runs, Map<String, BoundFold> bounds, double safeFloor,
+                       Map<String, BoundFold> events) {
 
         public Fold {
             obligations = Map.copyOf(obligations);
             runs = List.copyOf(runs);
             bounds = Map.copyOf(bounds);
+            events = Map.copyOf(events);
+        }
+
+        /** A fold without absences' and precedences' forecasts. */
+        public Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
+                    List<HeldOutRun> runs, Map<String, BoundFold> bounds, double safeFloor) {
+            this(index, baseRate, obligations, bothOutcomes, runs, bounds, safeFloor, Map.of());
         }
 
         /** A fold with no bound property of its own forecast. */
         public Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
                     List<HeldOutRun> runs) {
-            this(index, baseRate, obligations, bothOutcomes, runs, Map.of());
+            this(index, baseRate, obligations, bothOutcomes, runs, Map.of(), Double.NaN);
         }
     }
 
@@ -81,8 +94,10 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
      *
      * @param baseRate the base rate of the fold's training runs as the property sees them
      * @param runs     the fold's held-out runs as the property saw them: its own violation, forecasts and warning
+     * @param safeFloor the lowest value, on the forecast's scale, a training run that held the property read (NaN
+     *                  without one): the raw-value baseline's line
      */
-    public record BoundFold(double baseRate, List<HeldOutRun> runs) {
+    public record BoundFold(double baseRate, List<HeldOutRun> runs, double safeFloor) {
 
         public BoundFold {
             runs = List.copyOf(runs);
@@ -123,7 +138,8 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
                     views.put(b.id(), view);
                 }
             }
-            if (!both && views.isEmpty() && StatsLearner.obligations(training).isEmpty()) {
+            if (!both && views.isEmpty() && StatsLearner.obligations(training).isEmpty()
+                    && !EventTraining.teaches(abstraction, training)) {
                 continue; // nothing to draw a line with, for the forecast, a bound property or a deadline
             }
             List<LearnedScenario> foldLearned = new ArrayList<>();
@@ -147,11 +163,14 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
                             BoundModel.limit(b, side)).withThreshold(HeldOutRun.NEVER, "held out", true)));
                 }
             }
+            Map<String, EventModel> eventModels = EventTraining.heldOut(machines, abstraction, training, unit);
             ModelSet models = LearnedModels.modelSet(foldLearned, abstraction, stats.withThreshold(HeldOutRun.NEVER,
-                    "held out", true).withDeadlines(noveltyOnly).withBounds(boundModels));
+                    "held out", true).withDeadlines(noveltyOnly).withBounds(boundModels).withEvents(eventModels));
             List<HeldOutRun> runs = new ArrayList<>();
             Map<String, List<HeldOutRun>> boundRuns = new TreeMap<>();
             boundModels.keySet().forEach(id -> boundRuns.put(id, new ArrayList<>()));
+            Map<String, List<HeldOutRun>> eventRuns = new TreeMap<>();
+            eventModels.keySet().forEach(id -> eventRuns.put(id, new ArrayList<>()));
             for (ScenarioSpec s : read) {
                 for (Path log : s.logs()) {
                     if (!held.test(log)) {
@@ -161,15 +180,21 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
                         HeldOutRun.Judged replayed = HeldOutRun.replayAll(log, s.runs(), models, abstraction,
                                 confirm, WarningRule.FORECAST);
                         runs.addAll(replayed.safety());
-                        replayed.bounds().forEach((id, rs) -> boundRuns.get(id).addAll(rs));
+                        replayed.bounds().forEach((id, rs) -> (boundRuns.containsKey(id) ? boundRuns : eventRuns)
+                                .get(id).addAll(rs));
                     } catch (IOException e) {
                         throw BadInputException.cannotRead(log, e);
                     }
                 }
             }
             Map<String, BoundFold> bounds = new TreeMap<>();
-            boundRuns.forEach((id, rs) -> bounds.put(id, new BoundFold(boundModels.get(id).model().baseRate(), rs)));
-            judged.add(new Fold(fold, stats.baseRate(), stats.obligations(), both, runs, bounds));
+            boundRuns.forEach((id, rs) -> bounds.put(id, new BoundFold(boundModels.get(id).model().baseRate(), rs,
+                    boundModels.get(id).model().lows().safeFloor())));
+            Map<String, BoundFold> events = new TreeMap<>();
+            eventRuns.forEach((id, rs) -> events.put(id, new BoundFold(eventModels.get(id).model().baseRate(), rs,
+                    Double.NaN)));
+            judged.add(new Fold(fold, stats.baseRate(), stats.obligations(), both, runs, bounds,
+                    stats.lows().safeFloor(), events));
         }
         return new HeldOutFolds(used, judged);
     }

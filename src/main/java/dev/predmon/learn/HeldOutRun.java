@@ -30,14 +30,28 @@ import java.util.TreeMap;
  * @param violationTime the time of the violation, NaN for a run that held
  * @param obligations   every obligation of a bounded response that the monitor forecast and that ended in the run,
  *                      with its deadline forecasts ({@link ReplayedRun#obligations})
+ * @param values        the property's value at each forecast as the property reads it (NaN before a reading)
+ * @param novel         whether the run was novel at each forecast
+ * @param matchingAt    when the thesis's matching first warned of the property before its violation, NaN if not
+ * @param noveltyAt     when the clause beyond the safe training runs first warned before the violation, NaN if not
  */
 public record HeldOutRun(boolean violated, List<Double> probabilities, List<Double> times, double warnedAt,
-                         double violationTime, List<ReplayedRun.Obligation> obligations) {
+                         double violationTime, List<ReplayedRun.Obligation> obligations, List<Double> values,
+                         List<Boolean> novel, double matchingAt, double noveltyAt) {
 
     public HeldOutRun {
         probabilities = List.copyOf(probabilities);
         times = List.copyOf(times);
         obligations = List.copyOf(obligations);
+        values = List.copyOf(values);
+        novel = List.copyOf(novel);
+    }
+
+    /** A run whose forecasts' values are not kept, every clause's warning counted as the novelty clause's. */
+    public HeldOutRun(boolean violated, List<Double> probabilities, List<Double> times, double warnedAt,
+                      double violationTime, List<ReplayedRun.Obligation> obligations) {
+        this(violated, probabilities, times, warnedAt, violationTime, obligations, List.of(), List.of(), Double.NaN,
+                warnedAt);
     }
 
     /** A threshold no probability reaches: a replay with it warns only by the rule's other clauses. */
@@ -53,7 +67,8 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
      * {@code models} saw them.
      *
      * @param safety the runs as the forecast's property saw them
-     * @param bounds by bound property id, the runs as it saw them: its own violation, forecasts and warning
+     * @param bounds by id, every bound property's, absence's and precedence's with a forecast of its own, the runs
+     *               as it saw them: its own violation, forecasts and warning
      */
     public record Judged(List<HeldOutRun> safety, Map<String, List<HeldOutRun>> bounds) {
     }
@@ -66,8 +81,15 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
     public static Judged replayAll(Path log, RunLabel label, ModelSet models, Abstraction abstraction, int confirm,
                                    WarningRule rule) throws IOException {
         ReplayedLog replayed = LogReplay.replay(log, models, abstraction, 0, confirm, rule, (r, run, judged) -> { });
+        String safety = abstraction.safety().map(b -> b.id()).orElse(null);
         Map<String, List<HeldOutRun>> bounds = new TreeMap<>();
-        for (String id : models.forecast().bounds().keySet()) {
+        List<String> own = new ArrayList<>(models.forecast().bounds().keySet());
+        models.forecast().events().forEach((id, e) -> {
+            if (e.forecasts()) {
+                own.add(id);
+            }
+        });
+        for (String id : own) {
             List<HeldOutRun> runs = new ArrayList<>();
             for (ReplayedRun r : replayed.runs()) {
                 if (!r.pairs().isEmpty() && label.selects(r.violated())) {
@@ -76,7 +98,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
             }
             bounds.put(id, runs);
         }
-        return new Judged(of(replayed, label), bounds);
+        return new Judged(of(replayed, label, safety), bounds);
     }
 
     /** Run {@code r} as bound property {@code id} saw it; the obligations go with the forecast property's run. */
@@ -90,13 +112,34 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
                 w = x;
             }
         }
-        List<ReplayedRun.Timed> f = r.boundBeforeViolation(id);
-        return new HeldOutRun(v != null, f.stream().map(t -> t.forecast().probability()).toList(),
-                f.stream().map(ReplayedRun.Timed::time).toList(), w == null ? Double.NaN : w.time(),
-                v == null ? Double.NaN : v.time(), List.of());
+        return of(r, r.boundBeforeViolation(id), w == null ? Double.NaN : w.time(), v, id, List.of());
     }
 
-    private static List<HeldOutRun> of(ReplayedLog replayed, RunLabel label) {
+    /**
+     * Run {@code r} as the property {@code id} saw it: its forecasts {@code f} before its violation {@code v}, its
+     * first warning before it at {@code warnedAt}, and when each of the rule's clauses first warned of it.
+     */
+    private static HeldOutRun of(ReplayedRun r, List<ReplayedRun.Timed> f, double warnedAt, MonitorEvent.Violation v,
+                                 String id, List<ReplayedRun.Obligation> obligations) {
+        double matching = Double.NaN;
+        double novelty = Double.NaN;
+        for (MonitorEvent e : r.events()) {
+            if (e instanceof MonitorEvent.Warning x && (x.property() == null || x.property().equals(id))
+                    && (v == null || x.line() < v.line())) {
+                if (x.clause() == MonitorEvent.Clause.MATCHING && Double.isNaN(matching)) {
+                    matching = x.time();
+                } else if (x.clause() == MonitorEvent.Clause.NOVELTY && Double.isNaN(novelty)) {
+                    novelty = x.time();
+                }
+            }
+        }
+        return new HeldOutRun(v != null, f.stream().map(t -> t.forecast().probability()).toList(),
+                f.stream().map(ReplayedRun.Timed::time).toList(), warnedAt, v == null ? Double.NaN : v.time(),
+                obligations, f.stream().map(t -> t.forecast().value() == null ? Double.NaN : t.forecast().value())
+                .toList(), f.stream().map(t -> t.forecast().novel()).toList(), matching, novelty);
+    }
+
+    private static List<HeldOutRun> of(ReplayedLog replayed, RunLabel label, String safety) {
         List<HeldOutRun> out = new ArrayList<>();
         for (ReplayedRun r : replayed.runs()) {
             if (r.pairs().isEmpty() || !label.selects(r.violated())) {
@@ -106,10 +149,7 @@ public record HeldOutRun(boolean violated, List<Double> probabilities, List<Doub
             MonitorEvent.Warning w = o.warning();
             MonitorEvent.Violation v = o.violation();
             boolean before = w != null && (v == null || w.line() < v.line());
-            out.add(new HeldOutRun(r.violated(),
-                    r.beforeViolation().stream().map(t -> t.forecast().probability()).toList(),
-                    r.beforeViolation().stream().map(ReplayedRun.Timed::time).toList(),
-                    before ? w.time() : Double.NaN, v == null ? Double.NaN : v.time(), r.obligations()));
+            out.add(of(r, r.beforeViolation(), before ? w.time() : Double.NaN, v, safety, r.obligations()));
         }
         return out;
     }

@@ -238,7 +238,7 @@ final class PropertyLights {
 
     private static String forecastWords(PropertyStatus s, Survival.Estimate e, Boolean skill) {
         if (s == null || s.model() == PropertyStatus.Model.NONE) {
-            return "no forecast: no model of this property";
+            return s == null ? "no forecast: no model of this property" : s.noForecastWords();
         }
         if (e == null) {
             return "no forecast: no obligation pending";

@@ -4,6 +4,7 @@ import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Survival;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.TriggerInputs;
 import dev.predmon.property.Deadline;
 import dev.predmon.property.PropertyChecker;
 import dev.predmon.property.Response;
@@ -30,6 +31,10 @@ final class DeadlineFollow extends FollowBase {
     private final Response response;
     private final Survival survival;
     private final DeadlineRule rule;
+    /** Where each obligation began, for the curve it is judged by ({@link Survival#at}). */
+    private final TriggerInputs triggers;
+    /** The curve the pending obligation is judged by: its trigger input's own, else the pooled one; null when none is. */
+    private Survival pending;
     /** The forecast of the obligation pending now, or null. */
     private Survival.Estimate current;
     /** The pending obligation's forecast as last told ({@link #shown}), or null. */
@@ -41,8 +46,10 @@ final class DeadlineFollow extends FollowBase {
     /** The pending obligation's elapsed time when it was last judged, NaN before. */
     private double judgedAt = Double.NaN;
 
-    DeadlineFollow(int index, Response response, Survival survival, DeadlineRule rule, FollowContext c) {
+    DeadlineFollow(int index, Response response, Survival survival, DeadlineRule rule, TriggerInputs triggers,
+                   FollowContext c) {
         super(index, response, c);
+        this.triggers = triggers;
         this.response = response;
         this.survival = survival;
         this.rule = rule;
@@ -68,18 +75,24 @@ final class DeadlineFollow extends FollowBase {
             }
             current = null;
             told = null;
+            pending = null;
         }
         double elapsed = checker.elapsed(index);
         if (Double.isNaN(elapsed)) {
             judgedAt = Double.NaN;
+            pending = null;
             return;
+        }
+        if (pending == null) {
+            pending = triggers == null ? survival : survival.at(triggers.began(index));
         }
         if (elapsed == judgedAt && current != null) {
             return; // judged at this elapsed time already: a deadline in ticks changes at the next tick only
         }
         judgedAt = elapsed;
         Deadline d = response.within();
-        Survival.Estimate raw = survival.estimate(elapsed, d.amount());
+        Survival s = pending;
+        Survival.Estimate raw = s.estimate(elapsed, d.amount());
         c.deadlines.forecast(c.now.run, response, r, elapsed, raw);
         Survival.Estimate e = rule.calibrated(raw);
         current = e;
@@ -89,10 +102,10 @@ final class DeadlineFollow extends FollowBase {
             c.events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), null, r.clock(), c.now.run,
                     response.id(), e, d.unit().key));
         }
-        if (active == null && c.forecastRule() && rule.warns(raw, elapsed, d.amount(), survival)) {
+        if (active == null && c.forecastRule() && rule.warns(raw, elapsed, d.amount(), s, survival)) {
             // A bounded response has no value: the warning carries none, as its violation and its recovery do not.
             warn(new MonitorEvent.Warning(r.time(), r.line(), List.of(), null, c.now.pairs, r.clock(), c.now.run,
-                    c.rule, null, reason(response, e, elapsed, survival), MonitorEvent.Clause.DEADLINE, null,
+                    c.rule, null, reason(response, e, elapsed, s), MonitorEvent.Clause.DEADLINE, null,
                     response.id(), e));
         }
     }
@@ -105,6 +118,7 @@ final class DeadlineFollow extends FollowBase {
         ended = false;
         discharged = false;
         judgedAt = Double.NaN;
+        pending = null;
     }
 
     @Override

@@ -67,12 +67,23 @@ final class ForecastTracker {
 
     /** As above, of a ceiling when {@code ceiling} ({@link ForecastWords#evidence(Forecast, boolean)}). */
     String reason(Forecast f, String where, boolean ceiling) {
-        String why = f.probability() >= threshold()
+        String why = forecaster.stats().clauses().baseline()
+                ? "with the value " + (ceiling ? "above the highest" : "below the lowest") + " any training run that"
+                + " held went to (the raw-value rule, which did better than the forecast on the held-out folds)"
+                : f.probability() >= threshold() && !f.novel()
                 ? REACHES + ForecastWords.fixed(threshold(), 2)
                 : "beyond what the training runs that held did, with the value " + (ceiling ? "above the highest"
                 : "below the lowest") + " they went to";
         return ForecastWords.probability(f) + " " + why + "; " + ForecastWords.time(f) + "; "
                 + ForecastWords.evidence(f, ceiling) + "; " + where;
+    }
+
+    /**
+     * Whether the thesis's matching warns under the forecast rule: the cross-validation kept it only where it did
+     * better on the held-out folds than the rule without it ({@link ForecastModel#matchingWarns}).
+     */
+    boolean matchingWarns() {
+        return forecaster.stats().matchingWarns();
     }
 
     /** A gap in the trace at {@code line}: the run is novel from there ({@link Forecaster#unseen}). */
@@ -110,7 +121,8 @@ final class ForecastTracker {
 
     /** The clause of the forecast rule that warns on {@code f} (only asked when {@link #warns} does). */
     MonitorEvent.Clause clause(Forecast f) {
-        return f.probability() >= threshold() ? MonitorEvent.Clause.FORECAST : MonitorEvent.Clause.NOVELTY;
+        return f.probability() >= threshold() && !f.novel() && !forecaster.stats().clauses().baseline()
+                ? MonitorEvent.Clause.FORECAST : MonitorEvent.Clause.NOVELTY;
     }
 
     /** Forecasts after one pair; returns the forecast when it is news, else null. */

@@ -94,7 +94,7 @@ public final class PredictiveMonitor implements PipelineListener {
                 everyBound.forecast(p, f, run);
             }
         };
-        this.properties = new PropertyFollows(models, abstraction.properties(), context);
+        this.properties = new PropertyFollows(models, abstraction, context);
         this.pipeline = new TracePipeline(models.tune(abstraction), this);
     }
 

@@ -1,5 +1,6 @@
 package dev.predmon.monitor;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
 import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.Forecast;
@@ -10,6 +11,7 @@ import dev.predmon.matching.Matching;
 import dev.predmon.model.ModelIndex;
 import dev.predmon.model.ModelSet;
 import dev.predmon.parse.LogRecord;
+import dev.predmon.pipeline.TriggerInputs;
 import dev.predmon.property.Bound;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
@@ -25,7 +27,8 @@ import java.util.Map;
  * all on every record, and one {@link PropertyFollow} per property, in the abstraction's order, turns its judgement
  * into the property's events. Which follower a property gets depends only on its kind and on what the models learned
  * of it: a bound its value forecast ({@link BoundFollow}), a bounded response its deadline forecast
- * ({@link DeadlineFollow}), any other a check ({@link CheckedFollow}).
+ * ({@link DeadlineFollow}), an absence or a precedence its event forecast ({@link EventFollow}), any other a check
+ * ({@link CheckedFollow}).
  *
  * <p>Beside the properties' own forecasts, the thesis's matching warns once a run when every nominal model is
  * eliminated while a faulty one still matches: of the property the likeliest faulty scenario's {@code scenario.json}
@@ -41,14 +44,28 @@ final class PropertyFollows {
     /** By faulty scenario, the position of the property its runs violate, when its {@code scenario.json} names one. */
     private final Map<String, Integer> violates;
     private boolean matchingSpent;
+    /** Where each bounded response's obligation began, for its deadline forecast; null without one. */
+    private final TriggerInputs triggers;
+    /** Whether the cross-validation kept the matching clause (it warns on its own only where it earned its place). */
+    private final boolean matchingWarns;
 
-    /** Every one of {@code properties}, forecast as {@code models} learned them. */
+    /** Every property of {@code abstraction}, forecast as {@code models} learned them. */
+    PropertyFollows(ModelSet models, Abstraction abstraction, FollowContext c) {
+        this(models, abstraction, abstraction.properties(), c);
+    }
+
+    /** Every one of {@code properties}, forecast as {@code models} learned them, each deadline by its pooled curve. */
     PropertyFollows(ModelSet models, List<Property> properties, FollowContext c) {
+        this(models, null, properties, c);
+    }
+
+    private PropertyFollows(ModelSet models, Abstraction abstraction, List<Property> properties, FollowContext c) {
         this.c = c;
         this.checker = new PropertyChecker(properties, (i, p, v) -> { });
         this.follows = new PropertyFollow[properties.size()];
         ForecastModel forecast = models.forecast();
         BoundFollow head = null;
+        TriggerInputs began = null;
         for (int i = 0; i < follows.length; i++) {
             Property p = properties.get(i);
             if (p instanceof Bound b) {
@@ -59,13 +76,23 @@ final class PropertyFollows {
             } else if (p instanceof Response r && forecast != null && forecast.obligations().get(r.id()) != null
                     && forecast.obligations().get(r.id()).size() > 0) {
                 Survival s = forecast.obligations().get(r.id());
-                follows[i] = new DeadlineFollow(i, r, s, forecast.deadlineRule(r.id()), c);
+                began = began != null || abstraction == null ? began : new TriggerInputs(abstraction, properties);
+                follows[i] = new DeadlineFollow(i, r, s, forecast.deadlineRule(r.id()), began, c);
+            } else if (forecast != null && forecast.events().get(p.id()) != null) {
+                follows[i] = new EventFollow(i, p, forecast.events().get(p.id()), models.machines(), c);
             } else {
                 follows[i] = new CheckedFollow(i, p, c);
             }
         }
         this.headline = head;
-        checker.onObligations((index, p, duration, discharged) -> follows[index].closed(duration, discharged));
+        this.triggers = began;
+        this.matchingWarns = forecast == null || forecast.matchingWarns();
+        checker.onObligations((index, p, duration, discharged) -> {
+            if (triggers != null) {
+                triggers.closed(index);
+            }
+            follows[index].closed(duration, discharged);
+        });
         this.violates = violates(models, properties);
     }
 
@@ -83,6 +110,9 @@ final class PropertyFollows {
     /** Takes {@code r}, the next record of the run: every property's events at it. */
     void record(LogRecord r) {
         checker.accept(r);
+        if (triggers != null) {
+            triggers.record(checker, r);
+        }
         for (PropertyFollow f : follows) {
             f.record(checker, r);
         }
@@ -130,6 +160,9 @@ final class PropertyFollows {
     /** A new run: every property starts over. */
     void reset() {
         checker.reset();
+        if (triggers != null) {
+            triggers.reset();
+        }
         matchingSpent = false;
         for (PropertyFollow f : follows) {
             f.reset();
@@ -187,7 +220,7 @@ final class PropertyFollows {
             return;
         }
         Forecast f = headline == null ? null : headline.last();
-        if (c.forecastRule() && !ForecastTracker.takesMatching(f, step)) {
+        if (c.forecastRule() && (!matchingWarns || !ForecastTracker.takesMatching(f, step))) {
             return;
         }
         String scenario = c.likeliestFaulty(step.faultyAlive());

@@ -17,9 +17,22 @@ import dev.predmon.property.Verdict;
  *                 ({@code ticks}, {@code seconds}, {@code occurrences}); else null
  * @param forecast for {@link Model#FORECAST}, its latest value forecast (the monitor's own for the forecast's
  *                 property, a bound property's own for any other), null before one and for the other models
+ * @param noForecast for {@link Model#NONE}, why the training runs gave the property no forecast, in words
+ *                   ({@code never violated in 43 training runs}); null when no model of it was learned at all
  */
 public record PropertyStatus(Property property, Verdict verdict, Model model, boolean warned,
-                             Survival.Estimate deadline, String unit, Forecast forecast) {
+                             Survival.Estimate deadline, String unit, Forecast forecast, String noForecast) {
+
+    /** A status that is not told why it has no forecast. */
+    public PropertyStatus(Property property, Verdict verdict, Model model, boolean warned, Survival.Estimate deadline,
+                          String unit, Forecast forecast) {
+        this(property, verdict, model, warned, deadline, unit, forecast, null);
+    }
+
+    /** Why there is no forecast, in words: {@code no forecast: never violated in 43 training runs}. */
+    public String noForecastWords() {
+        return "no forecast: " + (noForecast == null ? "no model of this property" : noForecast);
+    }
 
     /** A status without a value forecast of its own. */
     public PropertyStatus(Property property, Verdict verdict, Model model, boolean warned, Survival.Estimate deadline,
@@ -30,8 +43,9 @@ public record PropertyStatus(Property property, Verdict verdict, Model model, bo
     /** What forecasts a property. */
     public enum Model {
         /**
-         * A value forecast ({@code ForecastTracker}): the run's forecast of the forecast's property, or a bound
-         * property's own ({@code BoundFollow}); a probability of violation and a time to it.
+         * A value forecast ({@code ForecastTracker}): the run's forecast of the forecast's property, a bound
+         * property's own ({@code BoundFollow}), or an absence's or a precedence's ({@code EventFollow}); a
+         * probability of violation and a time to it.
          */
         FORECAST,
         /** A bounded response's deadline forecast from the training runs' obligations ({@code DeadlineFollow}). */

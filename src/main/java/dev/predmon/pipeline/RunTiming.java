@@ -1,5 +1,9 @@
 package dev.predmon.pipeline;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.Classification;
+import dev.predmon.parse.LogRecord;
+
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
@@ -79,8 +83,22 @@ public record RunTiming(double[] times, double[] values, double violationTime, d
      * @param property   the property's id
      * @param duration   how long it was pending, in the deadline's unit
      * @param discharged whether its response came (else it was let go still pending: a censored duration)
+     * @param input      the Mealy input its trigger record maps to ({@link #inputOf}), or null when it maps to none
      */
-    public record Obligation(String property, double duration, boolean discharged) {
+    public record Obligation(String property, double duration, boolean discharged, String input) {
+
+        /** An obligation whose trigger's input is not known. */
+        public Obligation(String property, double duration, boolean discharged) {
+            this(property, duration, discharged, null);
+        }
+    }
+
+    /**
+     * The Mealy input {@code abstraction} maps {@code trigger} to (the skill asked for, with where to), null when it is
+     * no mapped message: the condition of a deadline forecast ({@code forecast.Survival#at}).
+     */
+    public static String inputOf(Abstraction abstraction, LogRecord trigger) {
+        return abstraction.classify(trigger) instanceof Classification.Mapped m ? m.event().symbol() : null;
     }
 
     /**

@@ -178,6 +178,8 @@ public final class Traces {
         /** The safety property's position among the checked ones, or -1. */
         private final int safetyIndex;
         private List<RunTiming.Obligation> obligations = new ArrayList<>();
+        /** Where each pending obligation began: its deadline forecast's condition. */
+        private final TriggerInputs triggers;
         /** The run's outcome: when each property was first violated. */
         private Map<String, Double> violations = new TreeMap<>();
         /** By property index, the bound properties but the safety one: each change of their value in the run. */
@@ -202,13 +204,17 @@ public final class Traces {
                 }
             }
             Arrays.fill(otherValues, Double.NaN);
-            checker.onObligations((i, p, duration, discharged) -> obligations.add(new RunTiming.Obligation(p.id(),
-                    duration, discharged)));
+            this.triggers = new TriggerInputs(abstraction, properties);
+            checker.onObligations((i, p, duration, discharged) -> {
+                obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, triggers.began(i)));
+                triggers.closed(i);
+            });
         }
 
         @Override
         public void record(LogRecord record) {
             checker.accept(record);
+            triggers.record(checker, record);
             if (!Double.isNaN(record.time())) {
                 endTime = record.time();
             }
@@ -295,6 +301,7 @@ public final class Traces {
             }
             checker.finish();
             checker.reset();
+            triggers.reset();
             Map<String, List<RunTiming.Reading>> bounds = new TreeMap<>();
             for (int i = 0; i < others.length; i++) {
                 if (others[i] != null) {

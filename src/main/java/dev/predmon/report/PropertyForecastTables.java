@@ -21,8 +21,8 @@ final class PropertyForecastTables {
             + "pending obligation misses its deadline): its outcome is whether that obligation missed it (one "
             + "discharged in time, or pending at the run's end, did not), its base rate the share of the fold's "
             + "training obligations that missed; forecasts past every training obligation have no probability and are "
-            + "not scored. A value forecast is P(the run violates the property), its base rate the share of the "
-            + "fold's training runs that violated it. Lower Brier is better; " + ReliabilityRows.CHANCE + ".";
+            + "not scored. A value forecast (a bound's) and an event forecast (an absence's, a precedence's) are P(the run "
+            + "violates the property), their base rate the share of the fold's training runs that violated it. Lower Brier is better; " + ReliabilityRows.CHANCE + ".";
 
     private PropertyForecastTables() {
     }
@@ -32,7 +32,7 @@ final class PropertyForecastTables {
         out.println(HEADER);
         for (PropertyScore p : scores) {
             Reliability r = p.forecast();
-            out.println("  " + p.property() + ": " + summary(r, p.scope()));
+            out.println("  " + p.property() + ": " + summary(p));
             if (r == null) {
                 continue;
             }
@@ -48,13 +48,19 @@ final class PropertyForecastTables {
         h.append("<h3 id=property-forecasts>Their forecasts</h3>\n<p>").append(Svg.esc(Character.toUpperCase(HEADER.charAt(0)) + HEADER.substring(1))).append("</p>\n");
         for (PropertyScore p : scores) {
             Reliability r = p.forecast();
-            h.append("<p><b>").append(Svg.esc(p.property())).append("</b>: ").append(Svg.esc(summary(r, p.scope())))
+            h.append("<p><b>").append(Svg.esc(p.property())).append("</b>: ").append(Svg.esc(summary(p)))
                     .append("</p>\n");
             if (r == null) {
                 continue;
             }
             ReliabilityRows.html(h, r.bins());
         }
+    }
+
+    /** As {@link #summary(Reliability, String)}, saying why a property without a forecast has none where known. */
+    static String summary(PropertyScore p) {
+        return p.forecast() == null && p.noForecast() != null ? "no forecast: " + p.noForecast()
+                : summary(p.forecast(), p.scope());
     }
 
     /**

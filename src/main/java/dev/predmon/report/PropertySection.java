@@ -10,7 +10,8 @@ import java.util.Locale;
 /**
  * The report's section on the abstraction's other properties, as the text report prints it: per property, its
  * violations, the warnings ahead of them from its own forecast (a bound's value forecast, a deadline's forecast), its
- * false alarms and lead, and beside them the elapsed-time baseline's ({@link PropertyScore}).
+ * false alarms and lead, and beside them its baseline's: a bound's raw-value rule, a deadline's elapsed-time rule
+ * ({@link PropertyScore}).
  */
 final class PropertySection {
 

@@ -53,7 +53,7 @@ public final class TextReport {
         if (!others.isEmpty()) {
             out.println();
             out.println("the other properties (warnings from their own forecasts: a bound's value forecast, a deadline's "
-                    + "forecast; or the matching of a faulty scenario that violates them; lead in the runs' unit)");
+                    + "forecast, an absence's or a precedence's event forecast; or the matching of a faulty scenario that violates them; lead in the runs' unit)");
             Table t = new Table("property", ">runs", ">no evidence", ">violated", ">warned ahead", ">false alarms", "lead: median",
                     ">baseline: warned ahead", ">false alarms", "lead: median");
             for (PropertyScore p : others) {
@@ -61,8 +61,11 @@ public final class TextReport {
                         p.baselineWarned(), p.baselineAlarms(), PropertySection.median(p.baselineLead()));
             }
             t.print(out);
-            out.println("baseline (deadlines): warn once an obligation is pending longer than every training "
-                    + "obligation of the fold (the elapsed-time rule, chosen by the same cross-validation)");
+            out.println("baseline, on the same runs: a bound's raw-value rule (warn below the lowest value a safe "
+                    + "training run of the fold read, above the highest for a ceiling); a deadline's elapsed-time rule "
+                    + "(warn once an obligation is pending longer than every training obligation of the fold); an absence's or a precedence's "
+                    + "base rate (warn every run where the fold's training runs violated it at even odds or more, "
+                    + "else none)");
             PropertyForecastTables.print(out, others);
         }
         out.println();

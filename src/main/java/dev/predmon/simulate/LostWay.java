@@ -3,7 +3,8 @@ package dev.predmon.simulate;
 import java.util.SplittableRandom;
 
 /**
- * A navigation that never arrives ({@link Novelties#neverArrives()}): the way to the tour location is blocked at a
+ * A navigation that never arrives ({@link Novelties#neverArrives()}): the way to the tour location (or to the charging
+ * station, {@link Novelties#lostWay()}) is blocked at a
  * random point between 10% and 90% of its length, and the robot waits there for good. The navigation component goes
  * on answering RUNNING, the robot stands (its battery drains at the idle rate), and the capture stops a number of
  * ticks later. A navigation that is halted is not blocked any more: the next one to the tour location is.
@@ -36,6 +37,11 @@ final class LostWay {
             stuckFrom = time;
         }
         return block.take(step);
+    }
+
+    /** Whether the way lost is the one to the charging station. */
+    boolean toStation() {
+        return destination.equals(Components.CHARGING_STATION);
     }
 
     /** Whether the robot waits at the blocked point. */

@@ -16,7 +16,7 @@ record Mishaps(BlockedPaths blocked, LostWay lost, LateTurn lateTurn, Arm arm) {
 
     /** Draws the novelties that {@code novelties} ask for from {@code novel} (null when no novelty changes runs). */
     static Mishaps draw(Novelties novelties, PropertyLimits limits, SplittableRandom novel, BlockedPaths blocked) {
-        LostWay lost = novelties.neverArrives() == null ? null : new LostWay(novelties.destination(),
+        LostWay lost = novelties.neverArrives() == null ? null : new LostWay(novelties.lostWay(),
                 ticks(novelties.neverArrives().draw(novel)), novel.split());
         Arm arm = !novelties.grasp() ? null : new Arm(novelties.graspFailures() == null ? novel.nextInt(0, 4)
                 : ticks(novelties.graspFailures().draw(novel)));
@@ -29,9 +29,18 @@ record Mishaps(BlockedPaths blocked, LostWay lost, LateTurn lateTurn, Arm arm) {
         return (int) Math.round(drawn);
     }
 
-    /** Whether a run of {@code scenario} must end stuck for good: a depleted run never reaches the tour location. */
+    /**
+     * Whether a run of {@code scenario} must end stuck for good: a depleted run never reaches the tour location (nor
+     * the station), and only a recharge run goes to the charging station.
+     */
     boolean stuckForGood(Scenario scenario) {
-        return lost != null && scenario != Scenario.DEPLETED;
+        return lost != null && scenario != Scenario.DEPLETED
+                && (!lost.toStation() || scenario == Scenario.RECHARGE);
+    }
+
+    /** Whether a run that heads for the charging station gets there (its way there is not lost for good). */
+    boolean reachesStation() {
+        return lost == null || !lost.toStation();
     }
 
     /** Whether a run's story ends at the tour location. */

@@ -132,6 +132,15 @@ public record Novelties(int aborts, AbortOn abortOn, Span stuck, Span slowdown, 
         return newLocation == null ? Components.KITCHEN : newLocation;
     }
 
+    /**
+     * The place whose way is lost for good with {@link #neverArrives}: the charging station with
+     * {@code --abort-on station} (the short leg a {@code recharge} run takes at the Early Warning), else the tour
+     * location (the long leg).
+     */
+    public String lostWay() {
+        return abortOn == AbortOn.STATION ? Components.CHARGING_STATION : destination();
+    }
+
     /** How many blocked-path aborts a run of {@code scenario} must show: none where no navigation may be blocked. */
     int abortsIn(Scenario scenario) {
         return scenario == Scenario.DIRECT && abortOn == AbortOn.STATION ? 0 : aborts;

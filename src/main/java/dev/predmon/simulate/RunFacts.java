@@ -103,6 +103,19 @@ record RunFacts(List<double[]> timeline, double minLevel, Double turnTime, Doubl
      * @param rechargeFloor the lowest level a {@code recharge} run may read
      */
     boolean tell(Scenario scenario, double earlyWarning, boolean arrives, double rechargeFloor) {
+        return tell(scenario, earlyWarning, arrives, rechargeFloor, true);
+    }
+
+    /**
+     * As above; {@code reachesStation} false when the way to the charging station is lost for good: a recharge run
+     * then turns, never gets there and never gets to the tour location.
+     */
+    boolean tell(Scenario scenario, double earlyWarning, boolean arrives, double rechargeFloor,
+                 boolean reachesStation) {
+        if (scenario == Scenario.RECHARGE && !reachesStation) {
+            return turnTime != null && goToStationCount == 1 && stationTime == null && kitchenTime == null
+                    && minLevel >= rechargeFloor;
+        }
         return switch (scenario) {
             case DIRECT -> (kitchenTime != null) == arrives && goToStationCount == 0 && minLevel > earlyWarning;
             case RECHARGE -> turnTime != null && goToStationCount == 1 && stationTime != null && chargedFull

@@ -93,7 +93,8 @@ public final class Simulator {
             }
             List<SimEvent> events = recorded.events();
             RunFacts f = RunFacts.of(events, options.earlyWarning(), novelties.destination());
-            if (!f.tell(scenario, options.earlyWarning(), m.arrives(scenario), m.rechargeFloor(options.earlyWarning()))
+            if (!f.tell(scenario, options.earlyWarning(), m.arrives(scenario), m.rechargeFloor(options.earlyWarning()),
+                    m.reachesStation())
                     || !m.kept(scenario)) {
                 continue;
             }

@@ -72,7 +72,7 @@ class PropertyWatchCliTest {
                 + " reply 3\n"), text.out());
         // each property's verdict with its latest forecast, or that it has none
         assertTrue(text.out().contains("\n  no-abort (navigation never aborts): violated at line 157: GoTo/getStatus"
-                + " reply 3; no forecast: no model of this property\n"), text.out());
+                + " reply 3; no forecast: never violated in 2 training runs\n"), text.out());
         assertTrue(text.out().contains("\n  navigation-in-time (a navigation ends within 400 ticks): pending since line"
                 + " 24 (tick 1 of the run, due by tick 401); no forecast: pending longer than any training obligation (no"
                 + " evidence); 395 ticks left\n"), text.out());

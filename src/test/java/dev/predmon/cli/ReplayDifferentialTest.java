@@ -144,6 +144,58 @@ class ReplayDifferentialTest {
     }
 
     /**
+     * An absence with a forecast, the same absence scoped (from a goTo to the charging station until a goTo to the
+     * kitchen), and a precedence with a forecast ("no abort before the first arrival"), learned from runs whose way to
+     * the charger is blocked but in two: every path gives each the same forecasts, warnings, violations and verdicts.
+     */
+    @Test
+    void anAbsenceAScopedAbsenceAndAPrecedenceForecastAlikeOnEveryPath() throws Exception {
+        ObjectNode a = (ObjectNode) JSON.readTree(Cli.run("abstraction", "show", "thesis").out());
+        a.put("name", "thesis-events");
+        ArrayNode properties = (ArrayNode) a.get("properties");
+        ObjectNode abort = JSON.createObjectNode().put("kind", "reply").put("protocol", "GoTo")
+                .put("command", "getStatus").put("reply", "3");
+        ObjectNode scoped = properties.addObject().put("id", "no-abort-to-charger")
+                .put("name", "no abort on the way to the charger").put("kind", "absence");
+        scoped.set("event", abort.deepCopy());
+        ObjectNode scope = scoped.putObject("scope");
+        scope.putObject("from").put("kind", "command").put("protocol", "GoTo").put("command", "goTo")
+                .put("argument", "charging_station");
+        scope.putObject("until").put("kind", "command").put("protocol", "GoTo").put("command", "goTo")
+                .put("argument", "kitchen");
+        ObjectNode first = properties.addObject().put("id", "arrive-first").put("name", "no abort before an arrival")
+                .put("kind", "precedence");
+        first.putObject("first").put("kind", "reply").put("protocol", "GoTo").put("command", "getStatus")
+                .put("reply", "2");
+        first.set("then", abort.deepCopy());
+        Path abstraction = tmp.resolve("events.json");
+        Files.writeString(abstraction, a.toPrettyString());
+        Path logs = tmp.resolve("event-logs");
+        BoundForecastCliTest.simulate(tmp, "direct", "100", "--runs", "6", "--out-dir", logs.resolve("direct").toString());
+        BoundForecastCliTest.simulate(tmp, "recharge", "1100", "--runs", "5", "--aborts", "1", "--abort-on",
+                "station", "--out-dir", logs.resolve("recharge").toString());
+        BoundForecastCliTest.simulate(tmp, "recharge", "1200", "--runs", "2", "--out-dir",
+                logs.resolve("recharge").toString());
+        BoundForecastCliTest.simulate(tmp, "depleted", "2100", "--runs", "3", "--out-dir",
+                logs.resolve("depleted").toString());
+        Path models = tmp.resolve("event-models");
+        Cli learned = Cli.run("learn", "--logs", logs.toString(), "--models", models.toString(), "--abstraction",
+                abstraction.toString());
+        assertEquals(0, learned.code(), learned.err());
+        List<Path> logsJudged = List.of(BoundForecastCliTest.simulate(tmp, "recharge", "6000", "--aborts", "1",
+                        "--abort-on", "station", "--out", tmp.resolve("recharge-6000.log").toString()),
+                BoundForecastCliTest.simulate(tmp, "direct", "5000"),
+                BoundForecastCliTest.simulate(tmp, "recharge", "6100", "--runs", "2", "--aborts", "1", "--out",
+                        tmp.resolve("recharge-6100.log").toString()));
+        Paths paths = new Paths(models);
+        assertEquals(List.of("arrive-first", "no-abort", "no-abort-to-charger"), own(paths).stream().sorted().toList(),
+                learned.out());
+        assertEquals(List.of(), disagreements(logsJudged, paths));
+        assertTrue(paths.boundForecasts > 30, "event forecasts compared: " + paths.boundForecasts);
+        assertTrue(paths.warnings > 2, "warnings compared: " + paths.warnings);
+    }
+
+    /**
      * Kinds by scope: the first floor scoped (the battery, from a goTo to the charging station until a goTo to the
      * kitchen), a reserve floor scoped the other way, the ceiling and the navigation deadline over the whole run. Every
      * path gives each the same forecasts, warnings, violations and verdicts; the unscoped kinds are the case above.
@@ -298,8 +350,7 @@ class ReplayDifferentialTest {
             String where = log + " run " + run.run();
             // the forecast property's, then each other bound's own (a deadline's are compared as warnings)
             told(differ, where, forecastId, run.forecasts(), run, events);
-            for (String id : paths.models.forecast() == null ? List.<String>of()
-                    : paths.models.forecast().bounds().keySet()) {
+            for (String id : own(paths)) {
                 paths.boundForecasts += run.boundForecasts().getOrDefault(id, List.of()).size();
                 told(differ, where + " " + id, id, run.boundForecasts().getOrDefault(id, List.of()), run, events);
             }
@@ -379,7 +430,45 @@ class ReplayDifferentialTest {
             same(differ, "evaluate", where + " other properties (property, first warning, first violation)",
                     others(run, paths.abstraction), r.properties().stream().map(p -> p.property() + " " + p.warning()
                             + " " + p.violation()).toList());
+            for (RunResult.PropertyResult p : r.properties()) {
+                if (own(paths).contains(p.property())) {
+                    same(differ, "evaluate", where + " " + p.property() + " scored forecasts", toldBefore(run,
+                            p.property()), p.forecasts() == null ? List.of() : p.forecasts().probabilities());
+                }
+            }
         }
+    }
+
+    /**
+     * The properties with a value or event forecast of their own (not the forecast's property, not a deadline): every
+     * bound's and every absence's and precedence's whose training runs taught one.
+     */
+    private static List<String> own(Paths paths) {
+        List<String> ids = new ArrayList<>();
+        if (paths.models.forecast() != null) {
+            ids.addAll(paths.models.forecast().bounds().keySet());
+            paths.models.forecast().events().forEach((id, e) -> {
+                if (e.forecasts()) {
+                    ids.add(id);
+                }
+            });
+        }
+        return ids;
+    }
+
+    /** The probabilities of the forecasts of {@code id} the monitor told in {@code run} before its violation. */
+    private static List<Double> toldBefore(ReplayedRun run, String id) {
+        List<Double> out = new ArrayList<>();
+        for (MonitorEvent e : run.events()) {
+            if (e instanceof MonitorEvent.Violation v && id.equals(v.property())) {
+                break;
+            }
+            if (e instanceof MonitorEvent.ForecastChanged c && id.equals(c.property()) && c.deadline() == null
+                    && c.forecast() != null) {
+                out.add(c.forecast().probability());
+            }
+        }
+        return out;
     }
 
     /** {@code learn}'s held-out replay, given the same models: the forecasts it scores and when the rule warned. */
@@ -406,7 +495,7 @@ class ReplayDifferentialTest {
             double warned = w != null && (v == null || w.line() < v.line()) ? w.time() : Double.NaN;
             same(differ, "learn", where + " warned at", warned, h.warnedAt());
             same(differ, "learn", where + " violated", run.violated(), h.violated());
-            for (String id : paths.models.forecast().bounds().keySet()) {
+            for (String id : own(paths)) {
                 HeldOutRun b = judged.bounds().get(id).get(i);
                 same(differ, "learn", where + " " + id + " probabilities", run.boundBeforeViolation(id).stream()
                         .map(t -> t.forecast().probability()).toList(), b.probabilities());
@@ -580,6 +669,14 @@ class ReplayDifferentialTest {
                 List<Double> ps = new ArrayList<>();
                 forecast.get("probabilities").forEach(p -> ps.add(p.asDouble()));
                 same(differ, "explain", where + " probabilities", probabilities(run), ps);
+            }
+            for (JsonNode p : e.get("run").get("properties")) {
+                String id = p.get("property").asText();
+                if (own(paths).contains(id)) {
+                    List<Double> ps = new ArrayList<>();
+                    p.path("forecasts").path("probabilities").forEach(q -> ps.add(q.asDouble()));
+                    same(differ, "explain", where + " " + id + " scored forecasts", toldBefore(run, id), ps);
+                }
             }
             // explain tells the run's first warning of any property, as the monitor raised it
             MonitorEvent.Warning w = run.outcome().firstWarning();

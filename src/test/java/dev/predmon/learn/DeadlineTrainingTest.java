@@ -1,5 +1,6 @@
 package dev.predmon.learn;
 
+import dev.predmon.forecast.CrossValidation;
 import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.Survival;
@@ -51,7 +52,8 @@ class DeadlineTrainingTest {
             assertEquals(0.5, h.baseRate(), 1e-12);
             assertTrue(Double.isNaN(h.caughtAt()), "never past every training obligation: censored at 11");
         }
-        DeadlineRule rule = DeadlineTraining.rule(judged);
+        CrossValidation.Choice choice = choose(folds);
+        DeadlineRule rule = DeadlineTraining.rule(choice);
         assertTrue(rule.validated(), rule.note());
         assertTrue(rule.note().contains("on 4 held-out obligations: warned 2 of 2 violations, 0 false alarm(s) in 2"),
                 rule.note());
@@ -60,26 +62,52 @@ class DeadlineTrainingTest {
         assertTrue(met < rule.threshold() && rule.threshold() <= miss, met + " < " + rule.threshold() + " <= " + miss);
         assertTrue(rule.threshold() >= 0.5, "never below even odds");
 
-        Scorecard card = DeadlineTraining.scorecard(NAVIGATION, 2, judged);
+        Scorecard card = choice.scorecard();
         assertEquals(Scorecard.OBLIGATIONS, card.counted());
-        assertEquals(List.of(4, 2, 0), List.of(card.runs(), card.violating(), card.falseAlarms()));
+        assertEquals(List.of(4, 2, 2, 0), List.of(card.runs(), card.violating(), card.warned(), card.falseAlarms()));
         assertEquals("ticks", card.unit());
+        // the elapsed-time baseline never warns: no navigation is pending past the one censored at 11
+        assertEquals(List.of(4, 2, 0, 0), List.of(card.baseline().runs(), card.baseline().violating(),
+                card.baseline().warned(), card.baseline().falseAlarms()));
+        assertFalse(card.baselineChosen());
+        assertFalse(rule.baseline());
     }
 
     /** Without a missed deadline among the held-out navigations there is nothing to choose: the default, unvalidated. */
     @Test
     void noMissMeansTheDefaultRuleAndSaysSo() {
-        DeadlineRule rule = DeadlineTraining.rule(DeadlineTraining.heldOut(ID,
+        DeadlineRule rule = DeadlineTraining.rule(choose(
                 twoFolds(List.of(arrived(2), arrived(3)), List.of(arrived(4), arrived(2)))));
         assertFalse(rule.validated());
         assertEquals(0.5, rule.threshold());
         assertEquals(DeadlineRule.DEFAULT.calibration(), rule.calibration());
         assertTrue(rule.note().startsWith("default 0.50: the 4 held-out obligations all held; not validated"),
                 rule.note());
-        // and the default rule still warns a navigation pending past every training one, half way to its deadline
+        // with no false alarm at either margin, the earlier one: a navigation past every training one is warned
+        assertEquals(0.0, rule.margin());
         Survival s = new Survival(new double[] {2, 3, 4}, new double[0]);
-        assertFalse(rule.warns(s.estimate(6.9, 10), 6.9, 10, s));
-        assertTrue(rule.warns(s.estimate(7, 10), 7, 10, s));
+        assertFalse(rule.warns(s.estimate(4, 10), 4, 10, s));
+        assertTrue(rule.warns(s.estimate(5, 10), 5, 10, s));
+    }
+
+    /**
+     * A fold trained on navigations that arrived after 2 and 3 ticks: one stuck for good is past every one of them
+     * from tick 4, so the novelty clause warns it there at no margin, and at 4 + (10 - 4) / 2 = 7 with half of it; the
+     * elapsed-time baseline warns it at 4 too. One arriving after 5 ticks is warned at 4 by both: a false alarm.
+     */
+    @Test
+    void theNoveltyClauseAtEachMarginAndTheBaselineAsHandWorked() {
+        Survival shortLegs = new Survival(new double[] {2, 3}, new double[0]);
+        Obligation stuck = new Obligation(NAVIGATION, steps(11, shortLegs), 11, false, 11, 11, Double.NaN);
+        Obligation slow = new Obligation(NAVIGATION, steps(5, shortLegs), 5, true, 5, 5, Double.NaN);
+        HeldOutFolds folds = new HeldOutFolds(2, List.of(
+                new HeldOutFolds.Fold(0, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(stuck)))),
+                new HeldOutFolds.Fold(1, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(slow))))));
+        List<CrossValidation.Case> cases = DeadlineTraining.cases(ID, folds);
+        assertEquals(List.of(4.0, 7.0), cases.get(0).variants());
+        assertEquals(4.0, cases.get(0).baselineAt());
+        assertEquals(List.of(4.0, Double.NaN), cases.get(1).variants());
+        assertEquals(4.0, cases.get(1).baselineAt());
     }
 
     /**
@@ -89,11 +117,11 @@ class DeadlineTrainingTest {
     @Test
     void aNavigationLetGoBeforeItsDeadlineIsNotJudged() {
         Obligation ended = new Obligation(NAVIGATION, steps(5, TRAINING), 5, false, 5, 5, Double.NaN);
-        assertEquals(3, DeadlineTraining.heldOut(ID, twoFolds(List.of(arrived(2), ended),
+        assertEquals(3, DeadlineTraining.cases(ID, twoFolds(List.of(arrived(2), ended),
                 List.of(arrived(2), missed()))).size());
         HeldOutFolds untrained = new HeldOutFolds(2, List.of(fold(0, List.of(arrived(2))),
                 new HeldOutFolds.Fold(1, 0.5, Map.of(), true, List.of(run(List.of(missed()))))));
-        assertEquals(1, DeadlineTraining.heldOut(ID, untrained).size());
+        assertEquals(1, DeadlineTraining.cases(ID, untrained).size());
     }
 
     /** The novelty clause's warning, as the replay tells it, is the obligation's catch whatever the threshold. */
@@ -104,6 +132,12 @@ class DeadlineTrainingTest {
                 twoFolds(List.of(arrived(2), stuck), List.of(arrived(2), missed())));
         assertEquals(List.of(Double.NaN, 7.0, Double.NaN, Double.NaN),
                 judged.stream().map(DeadlineTraining.HeldOut::caughtAt).toList());
+    }
+
+    private static CrossValidation.Choice choose(HeldOutFolds folds) {
+        return CrossValidation.choose(DeadlineTraining.cases(ID, folds), 2, new CrossValidation.Space(
+                DeadlineRule.MARGINS.size(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(NAVIGATION.name(),
+                "ticks", Scorecard.OBLIGATIONS, Scorecard.FORECAST, Scorecard.ELAPSED));
     }
 
     /** Each fold's training obligations: one discharged at 2 ticks, one censored at 11. */

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
 import dev.predmon.event.LogEvent;
+import dev.predmon.forecast.Forecast;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.Survival;
 import dev.predmon.model.LearnedModel;
@@ -125,6 +126,40 @@ class PropertyLightsTest {
                 + "state=\"no-evidence\"} 1.0"), metrics);
         assertTrue(metrics.contains("predmon_property_state{log=\"a.log\",property=\"grasp-in-time\",robot=\"a\","
                 + "state=\"holds\"} 0.0"), metrics);
+    }
+
+    /**
+     * An absence's event forecast is on its light as a bound's value forecast is (a probability and a time, no value);
+     * one the training runs could not teach says why.
+     */
+    @Test
+    void anAbsencesForecastIsOnItsLightAndOneWithoutSaysWhy() {
+        Board b = board();
+        Tile t = b.tile("a.log");
+        Judged.record(t, level(1, 80));
+        Forecast f = new Forecast(0.62, 40.0, 20.0, 90.0, Forecast.Basis.MATCHED, null, 8, 5, null, null, "s");
+        t.properties(statuses(Map.of("no-abort", new PropertyStatus(property("no-abort"), Verdict.HOLDS,
+                PropertyStatus.Model.FORECAST, false, null, null, f))));
+        JsonNode light = light(lights(b), "no-abort");
+        assertEquals("forecast", light.get("model").asText());
+        assertEquals(0.62, light.get("forecast").get("probability").asDouble(), 1e-9);
+        assertTrue(light.get("forecast").get("value").isNull(), light.toString());
+        assertEquals("P(violation) 62%, about 40.0 s to the violation (20.0-90.0 s) (skill not measured)",
+                light.get("forecastWords").asText());
+
+        t.properties(statuses(Map.of("no-abort", new PropertyStatus(property("no-abort"), Verdict.HOLDS,
+                PropertyStatus.Model.NONE, false, null, null, null, "never violated in 43 training runs"))));
+        assertEquals("no forecast: never violated in 43 training runs",
+                light(lights(b), "no-abort").get("forecastWords").asText());
+    }
+
+    private static JsonNode light(JsonNode lights, String id) {
+        for (JsonNode l : lights) {
+            if (l.get("property").asText().equals(id)) {
+                return l;
+            }
+        }
+        throw new AssertionError("no light of " + id + " in " + lights);
     }
 
     @Test

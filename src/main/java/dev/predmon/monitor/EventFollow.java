@@ -1,0 +1,169 @@
+package dev.predmon.monitor;
+
+import dev.predmon.compact.IoPair;
+import dev.predmon.forecast.EventModel;
+import dev.predmon.forecast.Forecast;
+import dev.predmon.forecast.ForecastWords;
+import dev.predmon.matching.Matching;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Property;
+import dev.predmon.property.PropertyChecker;
+import net.automatalib.automaton.transducer.CompactMealy;
+
+import java.util.Map;
+
+/**
+ * An absence or a precedence followed through a run with its event forecast ({@link EventModel}): after each pair,
+ * the probability that the forbidden event (or the out-of-order one) comes in the rest of the run, from the states of
+ * the learned machines the run is in, told when it changes ({@link MonitorEvent.ForecastChanged}) while its scope is
+ * open, and its warning when that probability reaches the threshold the cross-validation chose. The warning ends
+ * ({@link MonitorEvent.Recovered}, cause {@code forecast}) when the run moved on to states where the probability fell
+ * {@value ForecastTracker#STEP} below the threshold, so that a forecast hovering at it does not flap. Its violation,
+ * "holds again" and the end of its alarms are the checker's ({@link FollowBase}). A property whose training runs could
+ * not teach a forecast says why in its status ({@link EventModel#why}), and is only checked.
+ */
+final class EventFollow extends FollowBase {
+
+    private final EventModel model;
+    /** Its forecast over the machines, or null without one. */
+    private final ForecastTracker tracker;
+    /** Whether the scope opened since the last forecast: the forecast in the states the run is in is told then. */
+    private boolean opened;
+    /** Whether the forecast knows of the violation (its indicator fell to {@link EventModel#BROKEN}). */
+    private boolean broken;
+
+    EventFollow(int index, Property property, EventModel model, Map<String, CompactMealy<String, String>> machines,
+                FollowContext c) {
+        super(index, property, c);
+        this.model = model;
+        this.tracker = model.forecasts() ? ForecastTracker.of(model.model(), machines) : null;
+    }
+
+    @Override
+    void follow(PropertyChecker checker, LogRecord r, boolean in) {
+        if (tracker == null) {
+            return;
+        }
+        if (violated && !broken) {
+            broken = true;
+            Forecast f = tracker.reading(r.time(), EventModel.BROKEN); // the forecast learns of the violation
+            if (in) {
+                told(f, r);
+            }
+        } else if (opened && in) {
+            opened = false;
+            told(tracker.reading(r.time(), indicator()), r);
+        }
+    }
+
+    @Override
+    public void pair(IoPair pair, Matching.Step step, LogRecord trigger) {
+        if (tracker == null) {
+            return;
+        }
+        Forecast news = tracker.pair(pair.input(), pair.output(), trigger.time(), indicator(), trigger.line());
+        if (open) {
+            opened = false;
+            told(news, trigger);
+        }
+    }
+
+    @Override
+    public void decide(IoPair pair, Matching.Step step, LogRecord trigger) {
+        if (tracker == null || !open || tracker.last() == null) {
+            return;
+        }
+        Forecast f = EventModel.shown(tracker.last());
+        String where = "after " + pair.input() + " -> " + pair.output();
+        if (active != null && !violated && active.clause() == MonitorEvent.Clause.FORECAST
+                && !model.model().clauses().baseline() && f.probability() < tracker.threshold() - ForecastTracker.STEP) {
+            ended(trigger, "forecast", Double.NaN, label() + ": the forecast no longer warns (" + ForecastWords
+                    .probability(f) + ", warning at " + ForecastWords.fixed(tracker.threshold(), 2) + ") " + where);
+            return;
+        }
+        if (!c.forecastRule() || active != null || violated || !model.warns(f)) {
+            return;
+        }
+        var faulty = c.faultyAlive();
+        warn(new MonitorEvent.Warning(trigger.time(), trigger.line(), faulty, null, c.now.pairs, trigger.clock(),
+                c.now.run, c.rule, f, reason(f, where), MonitorEvent.Clause.FORECAST, c.likeliestFaulty(faulty),
+                property.id()));
+    }
+
+    @Override
+    public void gap(long line) {
+        if (tracker != null) {
+            tracker.unseen(line);
+        }
+    }
+
+    @Override
+    void opened(LogRecord r) {
+        startOver();
+        opened = true;
+    }
+
+    @Override
+    void startOver() {
+        if (tracker != null) {
+            tracker.startOver();
+        }
+        broken = false;
+    }
+
+    @Override
+    public void reset() {
+        super.reset();
+        opened = false;
+        broken = false;
+        if (tracker != null) {
+            tracker.reset();
+        }
+    }
+
+    @Override
+    public void countTicksAs(TickSeconds t) {
+        if (tracker != null) {
+            tracker.countTicksAs(t);
+        }
+    }
+
+    @Override
+    public PropertyStatus status(PropertyChecker checker) {
+        if (tracker == null) {
+            return new PropertyStatus(property, checker.verdict(index), PropertyStatus.Model.NONE, warned(), null,
+                    null, null, model.why());
+        }
+        return new PropertyStatus(property, checker.verdict(index), PropertyStatus.Model.FORECAST, warned(), null,
+                null, open ? EventModel.shown(tracker.last()) : null);
+    }
+
+    /** The property's indicator now: {@link EventModel#BROKEN} once violated, else {@link EventModel#HOLDS}. */
+    private double indicator() {
+        return violated ? EventModel.BROKEN : EventModel.HOLDS;
+    }
+
+    /** Tells the replay's stream the latest forecast, and everyone {@code news} if it is news. */
+    private void told(Forecast news, LogRecord r) {
+        c.bounds.forecast(property.id(), EventModel.shown(tracker.last()), c.now.run);
+        if (news != null) {
+            c.events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), EventModel.shown(news), r.clock(),
+                    c.now.run, property.id()));
+        }
+    }
+
+    /**
+     * In an operator's words: "'no navigation aborts' (no-abort): P(violation) 0.62 that a GoTo/getStatus reply 3
+     * comes in the rest of the run, reaching the warning threshold 0.55; about 40 s to the violation; 5 of 8
+     * training runs that were in this state violated; after goTo_ki_i -> goTo_ki_o".
+     */
+    private String reason(Forecast f, String where) {
+        String why = model.model().clauses().baseline()
+                ? "the training runs violated it at even odds or more (the base rate, which did better than the "
+                + "forecast on the held-out folds)"
+                : "reaching the warning threshold " + ForecastWords.fixed(tracker.threshold(), 2);
+        return label() + ": " + ForecastWords.probability(f) + " that " + EventModel.event(property)
+                + " in the rest of the run, " + why + "; " + ForecastWords.time(f) + "; " + ForecastWords.evidence(f)
+                + "; " + where + (property.action() == null ? "" : "; do now: " + property.action());
+    }
+}

@@ -1,0 +1,102 @@
+package dev.predmon.pipeline;
+
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.parse.LogRecord;
+import dev.predmon.property.Property;
+import dev.predmon.property.PropertyChecker;
+import dev.predmon.property.Response;
+
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Where a run was when each obligation of a bounded response began: the condition its deadline forecast is judged
+ * under ({@code forecast.Survival#at}). The condition is the Mealy input the trigger record maps to (the skill asked
+ * for, and where to: {@code goTo_ki_i}), after the input of the property's previous trigger record in the run
+ * ({@code goTo_ch_i>goTo_ki_i}: the way to the tour location after a turn to the charger, not the first one;
+ * {@code start>goTo_ki_i} for the first). Inputs mean the same in every model learned with the abstraction, so the
+ * condition is the same in each fold of the cross-validation and in {@code watch}; a machine's state number is not.
+ *
+ * <p>Learning ({@link Traces}) and the monitor keep one each and call {@link #record} after their checker took each
+ * record. The abstraction classifies only trigger records (a few per run). Constant state per property.
+ */
+public final class TriggerInputs {
+
+    /** What a run's first trigger comes after. */
+    public static final String START = "start";
+    /** Between the previous trigger's input and this one's. */
+    public static final String AFTER = ">";
+
+    private final Abstraction abstraction;
+    private final Response[] responses;
+    /** Per property, whether an obligation is pending, and the condition it began under. */
+    private final boolean[] pending;
+    private final String[] began;
+    /** Per property, the input of its last trigger record in the run, or null before one. */
+    private final String[] last;
+
+    public TriggerInputs(Abstraction abstraction, List<Property> properties) {
+        this.abstraction = abstraction;
+        int n = properties.size();
+        this.responses = new Response[n];
+        for (int i = 0; i < n; i++) {
+            if (properties.get(i) instanceof Response r) {
+                responses[i] = r;
+            }
+        }
+        this.pending = new boolean[n];
+        this.began = new String[n];
+        this.last = new String[n];
+    }
+
+    /** After {@code checker} took {@code r}: notes the obligations that began at it, and its trigger input. */
+    public void record(PropertyChecker checker, LogRecord r) {
+        String input = null;
+        boolean classified = false;
+        for (int i = 0; i < responses.length; i++) {
+            Response p = responses[i];
+            if (p == null) {
+                continue;
+            }
+            boolean open = !Double.isNaN(checker.elapsed(i));
+            boolean trigger = p.trigger() != null && p.trigger().matches(r);
+            if ((trigger || (open && !pending[i])) && !classified) {
+                input = RunTiming.inputOf(abstraction, r);
+                classified = true;
+            }
+            if (open && !pending[i]) {
+                began[i] = input == null ? null : (last[i] == null ? START : last[i]) + AFTER + input;
+            }
+            pending[i] = open;
+            if (trigger && input != null) {
+                last[i] = input;
+            }
+        }
+    }
+
+    /**
+     * The condition property {@code index}'s pending obligation began under (or the last one, once it ended), null
+     * when its trigger maps to no input.
+     */
+    public String began(int index) {
+        return began[index];
+    }
+
+    /** An obligation of property {@code index} ended (as the checker tells it, during its record). */
+    public void closed(int index) {
+        pending[index] = false;
+    }
+
+    /** A new run. */
+    public void reset() {
+        Arrays.fill(pending, false);
+        Arrays.fill(began, null);
+        Arrays.fill(last, null);
+    }
+
+    /** The part of {@code condition} after the previous trigger's input: the trigger's input alone. */
+    public static String input(String condition) {
+        int at = condition == null ? -1 : condition.lastIndexOf(AFTER);
+        return at < 0 ? condition : condition.substring(at + AFTER.length());
+    }
+}

@@ -1,0 +1,69 @@
+package dev.predmon.forecast;
+
+import org.junit.jupiter.api.Test;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * What the cross-validation chose goes into {@code forecast.json} and back (the curves by where an obligation began,
+ * the novelty margin, the baseline in force, the scorecard beside its baseline's), and a file written before any of it
+ * reads as every clause of the forecast's rule with the half margin and the pooled curve.
+ */
+class ForecastChoiceFileTest {
+
+    private static double[] durations(int n, double from) {
+        double[] d = new double[n];
+        for (int i = 0; i < n; i++) {
+            d[i] = from + i;
+        }
+        return d;
+    }
+
+    @Test
+    void everyChoiceReadsBackAsWritten() {
+        Survival legs = new Survival(durations(10, 5), durations(0, 0));
+        Survival pooled = new Survival(durations(30, 5), new double[] {3}).withContexts(Map.of(
+                "goTo_ch_i>goTo_ki_i", legs, "goTo_ki_i", new Survival(durations(20, 5), new double[0]),
+                "goTo_ch_i", new Survival(new double[] {1, 2}, new double[] {2, 2, 2, 2, 2, 2, 2, 2, 2, 2})));
+        // a condition needs ten discharged obligations: goTo_ch_i's ten censored ones do not make a curve
+        assertEquals(List.of("goTo_ch_i>goTo_ki_i", "goTo_ki_i"), List.copyOf(pooled.contexts().keySet()));
+        assertEquals(legs, pooled.at("goTo_ch_i>goTo_ki_i"));
+        assertEquals(20, pooled.at("start>goTo_ki_i").size(), "unknown condition: its trigger's input");
+        assertSame(pooled, pooled.at("goTo_ch_i"));
+        assertSame(pooled, pooled.at(null));
+
+        Scorecard base = new Scorecard("nav", 5, 40, 2, 2, 0, 100, "ticks", 0.1, 0.1, Scorecard.OBLIGATIONS,
+                Scorecard.ELAPSED, null, false);
+        Scorecard card = new Scorecard("nav", 5, 40, 2, 1, 1, 50, "ticks", 0.05, 0.1, Scorecard.OBLIGATIONS,
+                Scorecard.FORECAST, base, true);
+        ForecastModel m = new ForecastModel(ForecastModel.FORMAT, "s", 20, 10, 2, new Lows(new double[] {30},
+                new double[] {25}), 0.6, "chosen", true, Map.of(), List.of("a"), Calibration.IDENTITY, List.of(card),
+                Map.of("nav", pooled), Map.of("nav", new DeadlineRule(0.7, "n", true, Calibration.IDENTITY, 0, true)))
+                .withClauses(Clauses.NO_MATCHING);
+        ForecastModel back = ForecastFile.read(ForecastFile.write(m));
+        assertEquals(m, back);
+        assertEquals(0.0, back.deadlineRule("nav").margin());
+        assertTrue(back.deadlineRule("nav").baseline());
+        assertEquals(base, back.scorecards().get(0).inForce());
+        assertEquals(Clauses.NO_MATCHING, back.clauses());
+        assertEquals(Clauses.BASELINE, ForecastFile.read(ForecastFile.write(m.withClauses(Clauses.BASELINE)))
+                .clauses());
+    }
+
+    /** The shipped models were learned before the choice: every clause, the half margin, no curve by condition. */
+    @Test
+    void theShippedForecastStillReadsAsBefore() throws Exception {
+        ForecastModel shipped = ForecastFile.read(Files.readString(Path.of("models", ForecastFile.NAME)));
+        assertEquals(Clauses.ALL, shipped.clauses());
+        shipped.deadlines().values().forEach(r -> assertEquals(DeadlineRule.HALF, r.margin()));
+        shipped.obligations().values().forEach(s -> assertTrue(s.contexts().isEmpty()));
+        shipped.scorecards().forEach(c -> assertEquals(null, c.baseline()));
+    }
+}
