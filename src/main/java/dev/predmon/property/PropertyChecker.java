@@ -205,10 +205,7 @@ public final class PropertyChecker implements PropertyView {
         return checks[index].elapsed();
     }
 
-    /**
-     * The line of the trigger of property {@code index}'s open obligation nearest its deadline (the one
-     * {@link #elapsed} tells), -1 when none is open.
-     */
+    /** The trigger line of property {@code index}'s obligation that {@link #elapsed} tells, -1 when none is open. */
     public long pendingLine(int index) {
         return checks[index].pendingLine();
     }
