@@ -30,15 +30,16 @@ import java.util.stream.IntStream;
  * {@code watch} with many logs in one process, against one log: {@link Fleet#follow} on a thread of its own, as
  * {@code watch} runs it (woken by the operating system's file-change notification, or polling every log with
  * {@code --polling}). CPU is the whole process's CPU time (the following thread, the JDK's notification thread, the
- * garbage collector and the compiler), less that of the bench's writer threads; it is CPU time, not a share of a
+ * garbage collector and the compiler), less that of the bench's own appending thread; it is CPU time, not a share of a
  * busy machine's wall clock. Per fleet size:
  * <ul>
  *   <li><b>catch-up</b>: CPU per record while {@link Fleet#poll()} reads logs written before (parse, abstract,
  *       compact, match, and the polling);</li>
  *   <li><b>idle</b>: the share of a core spent following logs nothing is appended to (and, apart, the following
  *       thread's own share);</li>
- *   <li><b>robot pace</b>: a writer thread appends to every log at the simulated robot's own pace (records per second
- *       of its log's clock); the share of a core and the CPU per record ({@link RobotPace});</li>
+ *   <li><b>robot pace</b>: another process appends to every log at the simulated robot's own pace (records per
+ *       second of its log's clock); the share of a core, the CPU per record, and append-to-warning latencies of a
+ *       tenth as many logs more meanwhile ({@link RobotPace});</li>
  *   <li><b>append to warning</b>: every log holds a depleted run up to the record that triggers the warning; the
  *       bench appends that record to the logs one by one, in random order, 1 to 3 ms apart, and each log's time
  *       from the end of the write to its warning event is one sample (as {@link LatencyBench} measures one log).</li>
@@ -51,17 +52,20 @@ final class FleetBench {
      * @param catchUpNanos  CPU ns per record reading logs written before
      * @param idleCore      share of one core (0..1) the process spends following logs that do not grow
      * @param idleLoopCore  the same, of the following thread alone
-     * @param paceRate      records per second appended to each log at robot pace
-     * @param paceCore      share of one core at robot pace
-     * @param paceNanos     CPU ns per record at robot pace
-     * @param millis        append-to-warning latencies, sorted
+     * @param paceRate      records per second each log should grow by at robot pace
+     * @param pace          the robot-pace phase: CPU, the rates written and read, latencies meanwhile
+     * @param millis        append-to-warning latencies of a quiet fleet, sorted
      */
     // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
     @SuppressWarnings("ArrayRecordComponent")
     record Result(int logs, double catchUpNanos, double idleCore, double idleLoopCore, double paceRate,
-                  double paceCore, double paceNanos, double[] millis) {
+                  RobotPace.Load pace, double[] millis) {
         double percentile(double q) {
-            return millis[Math.min(millis.length - 1, (int) Math.ceil(q * millis.length) - 1)];
+            return percentile(millis, q);
+        }
+
+        static double percentile(double[] sorted, double q) {
+            return sorted[Math.min(sorted.length - 1, (int) Math.ceil(q * sorted.length) - 1)];
         }
     }
 
@@ -152,15 +156,20 @@ final class FleetBench {
                         } else {
                             Thread.sleep(SETTLE_MILLIS);
                         }
-                        latencies(files, warnedAt, new Random(r), millis, r * logs);
+                        latencies(files, trigger, warnedAt, new Random(r), millis, r * logs);
                     }
                 }
             }
         }
         Arrays.sort(millis);
-        RobotPace.Load load = pace.measure(logs, full ? phaseNanos : phaseNanos / 5);
-        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load.core(),
-                load.nanosPerRecord(), millis);
+        RobotPace.Load load = pace.measure(logs, full ? phaseNanos : phaseNanos / 5, pacedSamples(logs, samples),
+                before, trigger, beforeRecords);
+        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load, millis);
+    }
+
+    /** Warnings measured at robot pace: one per log of a tenth of the fleet more, at most {@code samples}. */
+    static int pacedSamples(int logs, int samples) {
+        return Math.max(1, Math.min(samples, logs / 10));
     }
 
     /** {share of a core of the process, of the following thread} while following logs that do not grow. */
@@ -181,7 +190,11 @@ final class FleetBench {
                 (threads.getThreadCpuTime(following.thread().getId()) - loop) / wall};
     }
 
-    private void latencies(List<Path> files, AtomicLongArray warnedAt, Random random, double[] into, int at)
+    /**
+     * Appends {@code trigger}, the warning's record, to each of {@code files} once, in random order, 1 to 3 ms apart, and waits for
+     * their warnings: each log's time from the end of its write to its warning goes to {@code into} from {@code at}.
+     */
+    static void latencies(List<Path> files, byte[] trigger, AtomicLongArray warnedAt, Random random, double[] into, int at)
             throws Exception {
         List<Integer> order = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {

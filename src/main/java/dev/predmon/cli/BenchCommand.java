@@ -62,7 +62,7 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--tmp", paramLabel = "DIR", description = "Directory for generated logs (default: the system's).")
     Path tmp;
 
-    @Option(names = "--fleet-logs", split = ",", defaultValue = "1,100,1000",
+    @Option(names = "--fleet-logs", split = ",", defaultValue = "1,1000,10000",
             description = "Fleet sizes: logs watched at once by the fleet benchmark, one measurement each (default: "
                     + "${DEFAULT-VALUE}).")
     List<Integer> fleetLogs;

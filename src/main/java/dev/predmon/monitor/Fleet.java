@@ -21,10 +21,10 @@ import java.util.Map;
  * ({@link Wakeups}, {@link DirectoryWatch}), then polls just the logs concerned: a thousand idle logs cost almost
  * nothing, and an append is read within a millisecond or so. Logs whose changes cannot be notified (a network file
  * system, a directory that cannot be watched, or {@code --polling}) are polled after every pause instead: a record
- * appended just after its log was polled waits at most one pause plus one pass.
- * Every {@link #SAFETY_NANOS} every log is polled anyway, as a backstop for what no notification covers: a file
- * written through a memory map, or through a hard link in another directory, a directory replaced under its
- * watch before {@link Wakeups#recheck} sees it. It costs a few microseconds per log (see {@code bench --only fleet}).
+ * appended just after its log was polled waits at most one pause plus one pass. Every {@link #SAFETY_NANOS} every
+ * log is polled anyway, a slice at a time, as a backstop for what no notification covers: a file written through a
+ * memory map or a hard link in another directory, a directory replaced under its watch before {@link Wakeups#recheck}
+ * sees it. Directories and globs are looked at again for new logs on a thread of their own ({@link Rescan}).
  */
 public final class Fleet implements AutoCloseable {
 
@@ -36,6 +36,10 @@ public final class Fleet implements AutoCloseable {
     static final long PULSE_NANOS = 500_000_000L;
     /** A file created in a watched directory asks for a rescan, which waits this long after the last one. */
     static final long RESCAN_SOON_NANOS = 50_000_000L;
+    /** The backstop polls the logs in this many slices, one every {@link #SAFETY_NANOS} / this. */
+    static final int SAFETY_SLICES = 20;
+    /** How often the following thread looks whether a rescan on its own thread is done. */
+    static final long RESCAN_LOOK_NANOS = 10_000_000L;
 
     /**
      * How each log's monitor matches: the same for every log; {@code release}: how long a file gone from its log's
@@ -51,6 +55,8 @@ public final class Fleet implements AutoCloseable {
     private OpenFiles openFiles = new OpenFiles(OpenFiles.defaultBudget());
     /** While following: told of each log added. */
     private Wakeups wakeups;
+    /** Where the backstop's next slice begins. */
+    private final Slices<WatchedLog> backstop = new Slices<>(SAFETY_SLICES);
     private DeletedLogs deleted = new DeletedLogs(DeletedLogs.KEPT, DeletedLogs.EVERY);
 
     /**
@@ -121,7 +127,7 @@ public final class Fleet implements AutoCloseable {
     public boolean poll() throws IOException {
         boolean any = false;
         for (WatchedLog log : logs.values()) {
-            any |= poll(log);
+            any |= poll(log, false);
         }
         return any;
     }
@@ -131,11 +137,11 @@ public final class Fleet implements AutoCloseable {
      * watched on; it never stops the others. When the fleet holds more files than it may, the logs idle longest
      * are closed, to be reopened when they change.
      */
-    private boolean poll(WatchedLog log) throws ClosedByInterruptException {
+    private boolean poll(WatchedLog log, boolean onlyWritten) throws ClosedByInterruptException {
         boolean grew = false;
         String trouble = null;
         try {
-            grew = log.watcher().poll();
+            grew = onlyWritten ? log.watcher().pollWritten() : log.watcher().poll();
         } catch (ClosedByInterruptException stop) {
             throw stop;
         } catch (IOException e) {
@@ -208,18 +214,19 @@ public final class Fleet implements AutoCloseable {
         boolean growing = sources.growing();
         DirectoryWatch watch = polling ? null
                 : DirectoryWatch.open(why -> listener.unnotified(null, why, pauseNanos));
-        try (Wakeups w = new Wakeups(watch, pauseNanos, (dir, why) -> listener.unnotified(dir, why, pauseNanos))) {
+        try (Wakeups w = new Wakeups(watch, pauseNanos, (dir, why) -> listener.unnotified(dir, why, pauseNanos));
+             Rescan rescan = new Rescan(sources)) {
             wakeups = w;
             logs.values().forEach(w::add);
             poll(); // the logs as they are as following begins: their history
             listener.caughtUp();
             if (growing) {
-                rescan(sources); // also watches the directories in which new logs may appear
+                found(rescan, true); // also watches the directories in which new logs may appear
             }
             long now = System.nanoTime();
             long lastScan = now;
             long nextCheck = now + RESCAN_NANOS;
-            long nextSafety = now + safetyNanos;
+            long nextSlice = now + safetyNanos / SAFETY_SLICES;
             long nextPulse = now + PULSE_NANOS;
             long nextForget = now + deleted.everyNanos();
             long pause = listener.beat();
@@ -234,11 +241,12 @@ public final class Fleet implements AutoCloseable {
                     pause = listener.beat();
                     nextBeat = now + pause;
                 }
+                found(rescan, false);
                 long scanPeriod = w.allWatched() ? safetyNanos : RESCAN_NANOS;
-                if (growing && (now - lastScan >= scanPeriod
+                if (growing && !rescan.running() && (now - lastScan >= scanPeriod
                         || (w.rescanWanted() && now - lastScan >= RESCAN_SOON_NANOS))) {
                     w.rescanning();
-                    rescan(sources);
+                    rescan.start();
                     lastScan = now;
                 }
                 if (growing && now - nextForget >= 0) {
@@ -249,13 +257,15 @@ public final class Fleet implements AutoCloseable {
                     w.recheck();
                     nextCheck = now + (w.allWatched() ? safetyNanos : RESCAN_NANOS);
                 }
-                if (now - nextSafety >= 0) {
+                if (now - nextSlice >= 0) {
                     if (w.notifying()) {
-                        poll();
+                        for (WatchedLog log : backstop.next(logs.values())) {
+                            poll(log, false);
+                        }
                     }
-                    nextSafety = now + safetyNanos;
+                    nextSlice = now + safetyNanos / SAFETY_SLICES;
                 }
-                long until = Math.min(Math.min(nextCheck, nextSafety), nextPulse);
+                long until = Math.min(Math.min(nextCheck, nextSlice), nextPulse);
                 if (pause != Long.MAX_VALUE && nextBeat - until < 0) {
                     until = nextBeat;
                 }
@@ -263,8 +273,11 @@ public final class Fleet implements AutoCloseable {
                     until = Math.min(Math.min(until, nextForget),
                             lastScan + (w.rescanWanted() ? RESCAN_SOON_NANOS : scanPeriod));
                 }
+                if (rescan.running()) {
+                    until = Math.min(until, now + RESCAN_LOOK_NANOS);
+                }
                 for (WatchedLog log : w.due(until - System.nanoTime())) {
-                    poll(log);
+                    poll(log, w.onlyWritten(log));
                     w.polled(log);
                 }
             }
@@ -277,10 +290,14 @@ public final class Fleet implements AutoCloseable {
         }
     }
 
-    private void rescan(LogSources sources) throws ClosedByInterruptException {
+    /** Adds the logs a look found (made now, or on the rescan's thread if done) and watches their directories. */
+    private void found(Rescan rescan, boolean now) throws ClosedByInterruptException, InterruptedException {
         try {
-            sources.find().forEach(this::add);
-            wakeups.watchSources(sources.directories());
+            Rescan.Found found = now ? rescan.now() : rescan.take();
+            if (found != null) {
+                found.files().forEach(this::add);
+                wakeups.watchSources(found.directories());
+            }
         } catch (ClosedByInterruptException stop) {
             throw stop;
         } catch (IOException e) {
@@ -294,6 +311,7 @@ public final class Fleet implements AutoCloseable {
         for (WatchedLog log : deleted.due(logs.values(), l -> sources.named(l.path()), System.nanoTime())) {
             logs.remove(log.path().toAbsolutePath().normalize());
             w.remove(log);
+            backstop.forget(log);
             openFiles.closed(log);
             try {
                 log.watcher().close();

@@ -93,6 +93,11 @@ public final class LogWatcher implements AutoCloseable {
         return source.poll();
     }
 
+    /** As {@link #poll()}, when the only news is a write to the log's file ({@link RecordSource#pollWritten()}). */
+    public boolean pollWritten() throws IOException {
+        return source.pollWritten();
+    }
+
     /** Reads to the end of the log, completes the trace and stops (for {@code --no-follow} and replay). */
     public void drain() throws IOException {
         source.drain();

@@ -11,14 +11,18 @@ import java.util.Set;
 /**
  * The files a {@link Fleet}'s logs hold open, kept within what the process may open ({@code ulimit -n}): a fleet
  * larger than that keeps following every log by closing the files of the logs that were idle longest, which their
- * next change reopens ({@link LogWatcher#release()}). The budget is half of the descriptors still free when the
- * fleet starts, so that the live page's connections, hooks and the notification keep theirs; when an open fails
- * for want of descriptors anyway, the budget shrinks to what is open.
+ * next change reopens ({@link LogWatcher#release()}). The budget is the descriptors still free when the fleet
+ * starts less {@link #RESERVE} (less half of them when fewer than twice that are free), so that the live page's
+ * connections (at most 256), hooks and the notification keep theirs; when an open fails for want of descriptors
+ * anyway, the budget shrinks to what is open. A reserve rather than a share: with a limit of 20,000, half would
+ * close and reopen files of 10,000 busy logs all the time.
  */
 final class OpenFiles {
 
     /** Descriptors every fleet may hold, whatever the limit says. */
     private static final int FLOOR = 8;
+    /** Descriptors left to the rest of the process when many are free. */
+    static final int RESERVE = 1024;
 
     private int budget;
     private int open;
@@ -30,14 +34,22 @@ final class OpenFiles {
         this.budget = Math.max(FLOOR, budget);
     }
 
-    /** Half of the descriptors this process may still open, or effectively no bound where that cannot be told. */
+    /**
+     * The descriptors this process may still open less {@link #RESERVE} (half of them when fewer than twice the
+     * reserve are free), or effectively no bound where that cannot be told.
+     */
     static int defaultBudget() {
         OperatingSystemMXBean os = ManagementFactory.getOperatingSystemMXBean();
         if (os instanceof com.sun.management.UnixOperatingSystemMXBean unix) {
             long free = unix.getMaxFileDescriptorCount() - unix.getOpenFileDescriptorCount();
-            return (int) Math.min(Integer.MAX_VALUE, Math.max(FLOOR, free / 2));
+            return budget(free);
         }
         return Integer.MAX_VALUE;
+    }
+
+    /** The budget when {@code free} descriptors are free. */
+    static int budget(long free) {
+        return (int) Math.min(Integer.MAX_VALUE, Math.max(FLOOR, free - Math.min(free / 2, RESERVE)));
     }
 
     /** Whether {@code e} is an open that failed for want of descriptors (EMFILE, ENFILE). */

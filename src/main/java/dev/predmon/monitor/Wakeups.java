@@ -57,6 +57,13 @@ final class Wakeups implements AutoCloseable {
      * follower finishes the renamed file, so the new file is taken at most that much later.
      */
     static final long REPLACING_NANOS = TimeUnit.MILLISECONDS.toNanos(LogFollower.QUIET_MILLIS) / 4;
+    /**
+     * The least time between two wakeups by notification: writes announced meanwhile are read together at the next
+     * one. A write after a quiet spell is read at once; while logs are written faster than this, each wakeup reads
+     * many, which is what keeps thousands of logs written at a robot's pace cheap. It adds at most this much to the
+     * time from an append to its reading.
+     */
+    static final long GATHER_NANOS = TimeUnit.MILLISECONDS.toNanos(4);
 
     private final DirectoryWatch watch;
     private final long pauseNanos;
@@ -75,6 +82,9 @@ final class Wakeups implements AutoCloseable {
     private final BiConsumer<Path, String> unwatched;
     private final Set<Path> toldUnwatched = new HashSet<>();
     private long nextPass = System.nanoTime();
+    /** When changes were last taken, and the logs of the last {@link #due} that were only announced as written. */
+    private long lastTaken = System.nanoTime() - GATHER_NANOS;
+    private final Set<WatchedLog> written = new HashSet<>();
     private boolean rescan;
     private boolean sourcesWatched = true;
 
@@ -188,10 +198,20 @@ final class Wakeups implements AutoCloseable {
             wait = Math.min(wait, at - now);
         }
         Set<WatchedLog> out = new LinkedHashSet<>();
+        written.clear();
         if (watch == null) {
             TimeUnit.NANOSECONDS.sleep(Math.max(0, wait));
         } else {
-            for (DirectoryWatch.Change c : watch.take(Math.max(0, wait), invalid)) {
+            long gather = Math.min(wait, lastTaken + GATHER_NANOS - now);
+            if (gather > 0) {
+                TimeUnit.NANOSECONDS.sleep(gather); // what is written meanwhile is taken with what came already
+                wait -= gather;
+            }
+            List<DirectoryWatch.Change> changes = watch.take(Math.max(0, wait), invalid);
+            if (!changes.isEmpty()) {
+                lastTaken = System.nanoTime();
+            }
+            for (DirectoryWatch.Change c : changes) {
                 Watched w = byKey.get(c.key());
                 if (w != null) {
                     changed(w, c, out);
@@ -200,23 +220,23 @@ final class Wakeups implements AutoCloseable {
             for (WatchKey k : invalid) {
                 Watched w = byKey.get(k);
                 if (w != null) {
-                    out.addAll(drop(w)); // a last look at each, now polled
+                    full(drop(w), out); // a last look at each, now polled
                 }
             }
             invalid.clear();
         }
-        out.addAll(pending);
+        full(pending, out);
         pending.clear();
         long later = System.nanoTime();
         for (Iterator<Map.Entry<WatchedLog, Long>> i = replacing.entrySet().iterator(); i.hasNext(); ) {
             Map.Entry<WatchedLog, Long> next = i.next();
             if (later - next.getValue() >= 0) {
-                out.add(next.getKey()); // polled() schedules it again if it still waits
+                full(List.of(next.getKey()), out); // polled() schedules it again if it still waits
                 i.remove();
             }
         }
         if (!polled.isEmpty() && System.nanoTime() - nextPass >= 0) {
-            out.addAll(polled);
+            full(polled, out);
             nextPass = System.nanoTime() + pauseNanos;
         }
         return out;
@@ -224,15 +244,21 @@ final class Wakeups implements AutoCloseable {
 
     private void changed(Watched w, DirectoryWatch.Change c, Set<WatchedLog> out) {
         if (c.kind() == DirectoryWatch.Kind.OVERFLOW) {
-            w.logs.values().forEach(out::addAll); // events were lost: anything may have changed
+            w.logs.values().forEach(l -> full(l, out)); // events were lost: anything may have changed
             rescan |= w.source;
             return;
         }
         List<WatchedLog> named = w.logs.get(c.name());
         if (named == null) {
             rescan |= w.source && c.kind() == DirectoryWatch.Kind.CREATED;
+        } else if (c.kind() == DirectoryWatch.Kind.MODIFIED) {
+            for (WatchedLog log : named) {
+                if (out.add(log)) {
+                    written.add(log);
+                }
+            }
         } else {
-            out.addAll(named);
+            full(named, out);
             if (c.kind() == DirectoryWatch.Kind.DELETED) {
                 w.orphans.addAll(named);
             } else if (c.kind() == DirectoryWatch.Kind.CREATED) {
@@ -243,7 +269,23 @@ final class Wakeups implements AutoCloseable {
                 }
             }
         }
-        out.addAll(w.orphans);
+        full(w.orphans, out);
+    }
+
+    /** {@code logs} are to be polled, each with a look at its path. */
+    private void full(Collection<WatchedLog> logs, Set<WatchedLog> out) {
+        for (WatchedLog log : logs) {
+            out.add(log);
+            written.remove(log);
+        }
+    }
+
+    /**
+     * Whether {@code log}, given by the last {@link #due}, was only announced as written: nothing was created, renamed
+     * or deleted at its path, so its poll need not look at the path ({@link LogWatcher#pollWritten()}).
+     */
+    boolean onlyWritten(WatchedLog log) {
+        return written.contains(log);
     }
 
     /** Stops watching {@code w}; its logs go back to {@link #add}, where they are watched again or polled. */

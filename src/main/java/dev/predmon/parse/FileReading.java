@@ -36,11 +36,6 @@ final class FileReading {
         this.lastGrowth = now;
     }
 
-    /** Whether the file holds less than was read, or other bytes before the read position (truncated, rewritten). */
-    boolean truncated() throws IOException {
-        return channel.size() < position || tail.rewritten(channel, position);
-    }
-
     /** Reading starts over from the file's beginning. */
     void rewind() {
         position = 0;
@@ -66,6 +61,60 @@ final class FileReading {
             tail.remember(bytes, n);
             splitter.feed(bytes, 0, n);
         }
+    }
+
+    /**
+     * Checks that the file was neither truncated nor rewritten, and reads what was appended, in one read of the file
+     * in most polls: the kept bytes before the read position are read again with what follows them. A read shorter
+     * than the buffer is taken as the end of the file as it is now (a later write is announced, or polled for, anew).
+     *
+     * @return {@code -1} when the file was truncated or rewritten (nothing consumed), {@code 1} when something was
+     *         read, {@code 0} when nothing was appended
+     */
+    int readChecked(long now) throws IOException {
+        byte[] bytes = BUFFER.get();
+        ByteBuffer buffer = ByteBuffer.wrap(bytes);
+        int kept = tail.length();
+        int n = channel.read(buffer, position - kept);
+        if (kept > 0 && (n < kept || !tail.matches(bytes))) {
+            return -1; // shorter than it was, or other bytes before the read position
+        }
+        boolean progress = false;
+        while (true) {
+            int fresh = Math.max(0, n) - kept;
+            if (fresh > 0) {
+                position += fresh;
+                progress = true;
+                tail.remember(bytes, kept, fresh);
+                splitter.feed(bytes, kept, fresh);
+            }
+            if (n < bytes.length) {
+                break; // a regular file's read is short only at its end
+            }
+            buffer.clear();
+            n = channel.read(buffer, position);
+            kept = 0;
+        }
+        if (progress) {
+            lastGrowth = now;
+        }
+        return progress ? 1 : 0;
+    }
+
+    /**
+     * {@link #readChecked}, and when the file was truncated or rewritten: its partial line out,
+     * {@code restarted("truncated")}, and the file read from 0. Whether anything was consumed.
+     */
+    boolean readOn(long now) throws IOException {
+        int read = readChecked(now);
+        if (read >= 0) {
+            return read > 0;
+        }
+        splitter.finish();
+        sink.restarted("truncated");
+        rewind();
+        read(now);
+        return true;
     }
 
     /** The file is done with: its unterminated last line goes out, then {@link LineSink#ended()}. */

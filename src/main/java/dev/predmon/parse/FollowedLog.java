@@ -111,6 +111,11 @@ final class FollowedLog implements RecordSource {
     }
 
     @Override
+    public boolean pollWritten() throws IOException {
+        return follower.pollWritten();
+    }
+
+    @Override
     public void drain() throws IOException {
         follower.drainToEnd(); // ends every file's parser
     }

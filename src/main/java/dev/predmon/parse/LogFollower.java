@@ -151,18 +151,24 @@ public final class LogFollower implements AutoCloseable {
      * @throws IOException when the file exists but cannot be read
      */
     public boolean poll() throws IOException {
-        boolean progress = renamed.poll(clock.getAsLong(), releaseNanos);
+        return poll(true);
+    }
+
+    /** As {@link #poll()} without looking at the path (unless a replacement waits): a write was all that changed. */
+    public boolean pollWritten() throws IOException {
+        return poll(false);
+    }
+
+    private boolean poll(boolean look) throws IOException {
+        boolean progress = !renamed.isEmpty() && renamed.poll(clock.getAsLong(), releaseNanos);
         if (reading == null || reading.channel == null) {
             return pollClosed() || progress;
         }
         // The open file may have been truncated (and written again) even if it is no longer at the path.
-        if (reading.truncated()) {
-            reading.splitter.finish();
-            reading.sink.restarted("truncated");
-            reading.rewind();
-            progress = true;
+        progress |= reading.readOn(clock.getAsLong());
+        if (!look && waiting.isEmpty()) {
+            return progress;
         }
-        progress |= reading.read(clock.getAsLong());
         FileAt at = lookForReplacement();
         while (!waiting.isEmpty() && (waiting.full() || (quiet(quietNanos) && waiting.anyHolds()))) {
             finishAndTakeNext(false);

@@ -21,6 +21,14 @@ public interface RecordSource extends AutoCloseable {
     boolean poll() throws IOException;
 
     /**
+     * As {@link #poll()}, when the only news is that the log's file was written (no file created, renamed or deleted
+     * at its path): the path need not be looked at again, so a source may skip that look. A truncation is still seen.
+     */
+    default boolean pollWritten() throws IOException {
+        return poll();
+    }
+
+    /**
      * Reads to the end of the log and completes it: a record left in progress is reported as cut. For a single pass
      * over a log no longer written ({@code --no-follow}, learning, reports).
      *

@@ -138,4 +138,15 @@ class FleetDescriptorsTest {
             Thread.sleep(10);
         }
     }
+
+    @Test
+    void theBudgetLeavesAThousandAndTwentyFourDescriptorsOrHalfOfFewFree() {
+        // a limit of 20,000 with 50 in use: 10,000 busy logs are all held open (half would be 9,975, and a log
+        // closed as idle would be reopened at its next write, again and again)
+        assertEquals(18_926, OpenFiles.budget(19_950));
+        assertEquals(1_976, OpenFiles.budget(3_000));
+        assertEquals(1_024, OpenFiles.budget(2_048));
+        assertEquals(500, OpenFiles.budget(1_000)); // ulimit -n 1024: half, as before
+        assertEquals(8, OpenFiles.budget(10)); // the floor
+    }
 }
