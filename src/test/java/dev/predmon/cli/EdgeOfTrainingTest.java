@@ -36,7 +36,7 @@ class EdgeOfTrainingTest {
                 models.toString());
         assertTrue(watched.code() == 0 || watched.code() == 1,
                 "a safe run is warned or quiet, never violated: " + watched.code() + " " + watched.err());
-        for (String line : watched.out().split("\n")) {
+        for (String line : watched.out().lines().toList()) {
             if (line.startsWith("{\"event\":\"forecast\"") && line.contains("\"property\":\"battery\"")) {
                 double p = Double.parseDouble(line.replaceAll(".*\"probability\":([0-9.Ee-]+).*", "$1"));
                 assertTrue(p < 0.99, "a battery forecast claims certainty on a run below every safe one: " + line);
