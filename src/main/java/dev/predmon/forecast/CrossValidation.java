@@ -26,6 +26,12 @@ import java.util.Locale;
  * false alarms). Else the baseline alone warns. Where the learned rule warns more violations, the false alarms that
  * come with them are those its threshold was chosen to trade for them (never below even odds), and both scorecards
  * are printed side by side.
+ *
+ * <p>A baseline that says the same of every case of a fold (the base rate of an absence or a precedence, which warns
+ * every run where the fold's training runs violated at even odds or more, else none) is compared by {@link #compare}
+ * instead: fewer wrong calls, then more violations warned, then the longer lead. Recall first would hand it every tie
+ * it cannot lose: warning every run, it warns every violation, and a learned rule that missed one would lose to it
+ * however many false alarms it saved.
  */
 public final class CrossValidation {
 
@@ -113,11 +119,18 @@ public final class CrossValidation {
     }
 
     /**
-     * Every variant and optional clause the cross-validation may choose from.
+     * Every variant and optional clause the cross-validation may choose from, and what the baseline is.
      *
-     * @param what what a case is, for the notes: {@code runs} or {@code obligations}
+     * @param what             what a case is, for the notes: {@code runs} or {@code obligations}
+     * @param constantBaseline whether the baseline says the same of every case of a fold (the base rate: warn every
+     *                         run or none), so that it is compared by wrong calls ({@link #compare}), not recall first
      */
-    public record Space(int variants, int optional, String what) {
+    public record Space(int variants, int optional, String what, boolean constantBaseline) {
+
+        /** A space whose baseline reads the case (the raw value, the time pending): compared recall first. */
+        public Space(int variants, int optional, String what) {
+            this(variants, optional, what, false);
+        }
     }
 
     /**
@@ -142,7 +155,7 @@ public final class CrossValidation {
             in.forEach(c -> learned.add(c, r.warnedAt(c), r.calibration()));
             in.forEach(c -> base.add(c, c.baselineAt(), null));
         }
-        boolean baseline = worse(learned, base);
+        boolean baseline = space.constantBaseline() ? compare(learned, base) < 0 : worse(learned, base);
         Scorecard baseCard = base.scorecard(card.withRule(card.baseline()), folds, cases.size(), null, false);
         Scorecard learnedCard = learned.scorecard(card, folds, cases.size(), baseCard, baseline);
         return new Choice(rule, baseline, learnedCard);

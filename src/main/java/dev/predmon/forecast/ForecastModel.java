@@ -147,7 +147,7 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with {@code training} as its obligations, by property id. */
     public ForecastModel withObligations(Map<String, Survival> training) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, training, deadlines, bounds, Clauses.ALL, events);
+                states, startInputs, calibration, scorecards, training, deadlines, bounds, clauses, events);
     }
 
     /** A model without deadline forecasts. */

@@ -26,7 +26,9 @@ import java.util.TreeMap;
  * is forecast as {@code watch}'s own monitor forecast it. The cross-validation fits the calibration and the threshold,
  * and scores the rule beside the property's baseline on the same runs: always saying the base rate (the share of the
  * fold's training runs that violated it), which warns every run where that share is at even odds or more and none
- * where it is not. Where the rule did worse, the baseline warns.
+ * where it is not. A baseline that says the same of every run is compared by wrong calls (misses and false alarms
+ * alike), not recall first ({@link CrossValidation.Space#constantBaseline}). Where the rule did worse, the baseline
+ * warns.
  */
 public final class EventTraining {
 
@@ -110,7 +112,7 @@ public final class EventTraining {
     private static ForecastModel chosen(ForecastModel m, String property, int folds, String unit,
                                         List<CrossValidation.Case> cases) {
         CrossValidation.Choice c = CrossValidation.choose(cases, folds, new CrossValidation.Space(0, 0,
-                Scorecard.RUNS), new Scorecard.Names(property, unit, Scorecard.RUNS, Scorecard.FORECAST, BASE_RATE));
+                Scorecard.RUNS, true), new Scorecard.Names(property, unit, Scorecard.RUNS, Scorecard.FORECAST, BASE_RATE));
         CrossValidation.Rule r = c.rule();
         String note = c.baseline() ? r.note() + "; " + BASELINE_NOTE : r.note();
         ForecastModel chosen = m.withThreshold(r.threshold(), note, r.validated())

@@ -7,15 +7,15 @@ import org.junit.jupiter.api.io.TempDir;
 import java.nio.file.Path;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * A safe run that goes a little lower than every safe training run: 12 runs per scenario (seeds 501-512), and a
  * recharge run (seed 7034) that reaches the charging station at 31%, below the lowest recharge run in training.
  * Counted as "12 of 12 training runs that went as low violated", it was warned at P 0.99; a new safe run falls below
- * all of the n safe ones about once in n + 1, so the forecast must not claim certainty there, and the run is not
- * warned (the thesis's matching does not warn it either: its nominal machine still matches).
+ * all of the n safe ones about once in n + 1, so the forecast must not claim certainty there. Every bound's rule keeps
+ * the raw-value clause (below the lowest safe training reading), so the run is warned where that one-line rule warns
+ * it, and the warning says so rather than resting on the probability.
  */
 class EdgeOfTrainingTest {
 
@@ -32,9 +32,20 @@ class EdgeOfTrainingTest {
         Cli simulated = Cli.run("simulate", "--scenario", "recharge", "--seed", "7034", "--out", run.toString());
         assertEquals(0, simulated.code(), simulated.err());
 
-        Cli watched = Cli.run("watch", "--no-follow", "--log", run.toString(), "--models", models.toString());
-        assertFalse(watched.out().contains("WARNING"), watched.out());
-        assertEquals(0, watched.code(), watched.out() + watched.err());
+        Cli watched = Cli.run("watch", "--no-follow", "--json", "--log", run.toString(), "--models",
+                models.toString());
+        assertTrue(watched.code() == 0 || watched.code() == 1,
+                "a safe run is warned or quiet, never violated: " + watched.code() + " " + watched.err());
+        for (String line : watched.out().lines().toList()) {
+            if (line.startsWith("{\"event\":\"forecast\"") && line.contains("\"property\":\"battery\"")) {
+                double p = Double.parseDouble(line.replaceAll(".*\"probability\":([0-9.Ee-]+).*", "$1"));
+                assertTrue(p < 0.99, "a battery forecast claims certainty on a run below every safe one: " + line);
+            }
+            if (line.startsWith("{\"event\":\"warning\"") && line.contains("\"property\":\"battery\"")) {
+                assertTrue(line.contains("\"clause\":\"novelty\"") && line.contains("below the lowest"),
+                        "the warning is the raw-value clause's, not the probability's: " + line);
+            }
+        }
 
         // The same models still warn a depleted run they never saw, before its violation.
         Path depleted = tmp.resolve("depleted-7001.log");

@@ -124,6 +124,26 @@ class ReplayDifferentialTest {
         assertTrue(paths.deadlines >= 100, "deadline forecasts compared: " + paths.deadlines);
     }
 
+    /**
+     * Models learned on the sample logs, whose cross-validation chose the raw-value baseline for the battery: every
+     * path warns by it alike (the clause of each warning included).
+     */
+    @Test
+    void modelsWhoseBaselineWasChosenWarnAlikeOnEveryPath() throws Exception {
+        Path models = tmp.resolve("baseline-models");
+        Cli learned = Cli.run("learn", "--logs", "sample-logs", "--models", models.toString());
+        assertEquals(0, learned.code(), learned.err());
+        Paths paths = new Paths(models);
+        assertTrue(paths.models.forecast().clauses().baseline(), "the raw value wins on these folds");
+        List<Path> logs = List.of(Path.of("sample-logs/depleted/depleted-1.log"),
+                Path.of("sample-logs/recharge/recharge-3.log"), BoundForecastCliTest.simulate(tmp, "depleted", "700",
+                        "--new-location", "office", "--out", tmp.resolve("depleted-700.log").toString()),
+                BoundForecastCliTest.simulate(tmp, "recharge", "701", "--aborts", "1", "--out",
+                        tmp.resolve("recharge-701.log").toString()));
+        assertEquals(List.of(), disagreements(logs, paths));
+        assertTrue(paths.warnings >= 2, "warnings compared: " + paths.warnings);
+    }
+
     /** Models that forecast two more bound properties, a reserve floor and a ceiling, each its own forecasts. */
     @Test
     void aReserveFloorAndACeilingForecastAlikeOnEveryPath() throws Exception {

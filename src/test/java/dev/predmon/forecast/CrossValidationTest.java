@@ -129,4 +129,79 @@ class CrossValidationTest {
                         0.1));
         assertEquals(1, CrossValidation.fit(quiet, margins).variant());
     }
+    /** An absence's or a precedence's space: no clause but the probability, a baseline that is the fold's base rate. */
+    private static final CrossValidation.Space EVENT = new CrossValidation.Space(0, 0, Scorecard.RUNS, true);
+
+    /**
+     * A run of an absence in a fold whose training runs violated it at {@code baseRate}: one forecast {@code p} at
+     * time 1, violated at 10 or held; the base rate warns it at its first forecast when the rate is at even odds or
+     * more (as {@code learn} makes the case).
+     */
+    private static CrossValidation.Case event(int fold, boolean violated, double p, double baseRate) {
+        return new CrossValidation.Case(fold, violated, violated ? 10 : NO, List.of(p), List.of(1.0), List.of(),
+                List.of(), baseRate >= 0.5 ? 1.0 : NO, baseRate);
+    }
+
+    /**
+     * Each fold: three violating runs, two forecast at 0.9 and one at 0.1, and two runs that held, both at 0.1; each
+     * fold's training runs (the other fold) violated at 3 in 5, above even odds, so the base rate warns all five.
+     * Learned on the other fold, the threshold warns the two at 0.9 (one miss, no false alarm; warning the 0.1s too
+     * would be two false alarms for one violation). Out of fold: the rule warns 4 of 6 violations with no false
+     * alarm, 2 wrong calls; the base rate 6 of 6 with 4 false alarms, 4 wrong calls. The rule is chosen. Recall first,
+     * as against a raw-value baseline, the warn-every-run baseline would win for the one violation it catches more.
+     */
+    @Test
+    void aBaseRateAboveEvenOddsIsJudgedByWrongCallsNotRecall() {
+        List<CrossValidation.Case> cases = new java.util.ArrayList<>();
+        for (int fold = 0; fold < 2; fold++) {
+            cases.addAll(List.of(event(fold, true, 0.9, 0.6), event(fold, true, 0.9, 0.6),
+                    event(fold, true, 0.1, 0.6), event(fold, false, 0.1, 0.6), event(fold, false, 0.1, 0.6)));
+        }
+        Scorecard.Names names = new Scorecard.Names("no abort", "s", Scorecard.RUNS, Scorecard.FORECAST, "base rate");
+        CrossValidation.Choice c = CrossValidation.choose(cases, 2, EVENT, names);
+        assertFalse(c.baseline(), c.scorecard().lines().toString());
+        assertEquals(List.of(4, 6, 0), List.of(c.scorecard().warned(), c.scorecard().violating(),
+                c.scorecard().falseAlarms()));
+        assertEquals(List.of(6, 4), List.of(c.scorecard().baseline().warned(), c.scorecard().baseline().falseAlarms()));
+        assertTrue(c.scorecard().lines().get(2).contains("the forecast's rule warns"), c.scorecard().lines().get(2));
+        // the same runs against a baseline that reads the run: recall first, and the baseline's 6 of 6 wins
+        assertTrue(CrossValidation.choose(cases, 2, new CrossValidation.Space(0, 0, Scorecard.RUNS), names).baseline());
+    }
+
+    /**
+     * Each fold: three violating runs, one forecast at 0.9 and two at 0.1, and one run that held at 0.1; the base rate
+     * (3 in 4) warns all four. Out of fold the rule warns 2 of 6 violations, no false alarm: 4 wrong calls; the base
+     * rate 6 of 6 with 2 false alarms: 2 wrong calls. The base rate warns in the rule's place.
+     *
+     * <p>Below even odds (1 in 4) the base rate warns nothing. Fold 0: a violating run and a safe one at 0.9, two safe
+     * at 0.1; fold 1 the same with one more safe run at 0.9. Learned on fold 0, warning at 0.9 ties with warning
+     * nothing (one wrong call each) and warns; learned on fold 1 it would cost two wrong calls to one, and warns
+     * nothing. Out of fold: 1 of 2 violations, 2 false alarms, 3 wrong calls against the base rate's 2 misses: the base
+     * rate wins, though the rule warns a violation more.
+     */
+    @Test
+    void theBaseRateWinsWhereTheRuleMakesMoreWrongCalls() {
+        List<CrossValidation.Case> often = new java.util.ArrayList<>();
+        List<CrossValidation.Case> rarely = new java.util.ArrayList<>();
+        for (int fold = 0; fold < 2; fold++) {
+            often.addAll(List.of(event(fold, true, 0.9, 0.75), event(fold, true, 0.1, 0.75),
+                    event(fold, true, 0.1, 0.75), event(fold, false, 0.1, 0.75)));
+        }
+        Scorecard.Names names = new Scorecard.Names("no abort", "s", Scorecard.RUNS, Scorecard.FORECAST, "base rate");
+        CrossValidation.Choice c = CrossValidation.choose(often, 2, EVENT, names);
+        assertTrue(c.baseline(), c.scorecard().lines().toString());
+        assertEquals(List.of(2, 0), List.of(c.scorecard().warned(), c.scorecard().falseAlarms()));
+        assertEquals(List.of(6, 2), List.of(c.scorecard().baseline().warned(), c.scorecard().baseline().falseAlarms()));
+
+        rarely.addAll(List.of(event(0, true, 0.9, 0.25), event(0, false, 0.9, 0.25), event(0, false, 0.1, 0.25),
+                event(0, false, 0.1, 0.25), event(1, true, 0.9, 0.25), event(1, false, 0.9, 0.25),
+                event(1, false, 0.9, 0.25), event(1, false, 0.1, 0.25), event(1, false, 0.1, 0.25)));
+        CrossValidation.Choice r = CrossValidation.choose(rarely, 2, EVENT, names);
+        assertEquals(List.of(1, 2), List.of(r.scorecard().warned(), r.scorecard().falseAlarms()),
+                r.scorecard().lines().toString());
+        assertEquals(List.of(0, 0), List.of(r.scorecard().baseline().warned(), r.scorecard().baseline().falseAlarms()));
+        assertFalse(CrossValidation.choose(rarely, 2, new CrossValidation.Space(0, 0, Scorecard.RUNS), names)
+                .baseline(), "recall first, the rule's one violation would have won");
+        assertTrue(r.baseline(), r.scorecard().lines().toString());
+    }
 }

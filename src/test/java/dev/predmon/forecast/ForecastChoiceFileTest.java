@@ -1,5 +1,7 @@
 package dev.predmon.forecast;
 
+import dev.predmon.abstraction.Abstraction;
+import dev.predmon.abstraction.file.AbstractionFiles;
 import org.junit.jupiter.api.Test;
 
 import java.nio.file.Files;
@@ -8,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -55,6 +58,31 @@ class ForecastChoiceFileTest {
         assertEquals(Clauses.NO_MATCHING, back.clauses());
         assertEquals(Clauses.BASELINE, ForecastFile.read(ForecastFile.write(m.withClauses(Clauses.BASELINE)))
                 .clauses());
+    }
+
+    /**
+     * {@code learn} gives the forecast an (empty) entry for every bounded response after the cross-validation chose
+     * its clauses: whatever was chosen (the baseline alone, the rule without the matching, every clause) is what the
+     * model written to {@code forecast.json} warns by.
+     */
+    @Test
+    void theChosenClausesSurviveTheEntriesForEveryDeadline() {
+        Abstraction thesis = AbstractionFiles.builtin("thesis").orElseThrow();
+        ForecastModel m = new ForecastModel(ForecastModel.FORMAT, "s", 20, 10, 2, new Lows(new double[] {30},
+                new double[] {25}), 0.6, "chosen", true, Map.of(), List.of("a"));
+        for (Clauses c : List.of(Clauses.BASELINE, Clauses.NO_MATCHING, Clauses.ALL)) {
+            ForecastModel covered = PropertyParts.covering(m.withClauses(c), thesis);
+            assertTrue(covered.obligations().containsKey("navigation-in-time"), covered.obligations().toString());
+            assertEquals(c, covered.clauses());
+            assertEquals(c, ForecastFile.read(ForecastFile.write(covered)).clauses());
+        }
+        assertFalse(PropertyParts.covering(m.withClauses(Clauses.BASELINE), thesis).matchingWarns());
+        ForecastModel chosen = m.withClauses(Clauses.NO_MATCHING);
+        for (ForecastModel changed : List.of(chosen.withObligations(Map.of()), chosen.withDeadlines(Map.of()),
+                chosen.withBounds(Map.of()), chosen.withEvents(Map.of()), chosen.withThreshold(0.7, "n", true),
+                chosen.withCalibration(Calibration.IDENTITY), chosen.withScorecards(List.of()))) {
+            assertEquals(Clauses.NO_MATCHING, changed.clauses(), "no other part of the model resets the choice");
+        }
     }
 
     /** The shipped models were learned before the choice: every clause, the half margin, no curve by condition. */
