@@ -36,22 +36,6 @@ import java.util.function.BiConsumer;
  */
 final class Wakeups implements AutoCloseable {
 
-    /** A watched directory: its logs by file name, and whether a new file in it may be a new log. */
-    private static final class Watched {
-        final Path dir;
-        final WatchKey key;
-        final Object identity;
-        final Map<Path, List<WatchedLog>> logs = new HashMap<>();
-        final Set<WatchedLog> orphans = new LinkedHashSet<>();
-        boolean source;
-
-        Watched(Path dir, WatchKey key) {
-            this.dir = dir;
-            this.key = key;
-            this.identity = DirectoryWatch.identity(dir);
-        }
-    }
-
     /**
      * How often a log in the middle of a rename rotation is looked at: a quarter of the quiet time after which its
      * follower finishes the renamed file, so the new file is taken at most that much later.
@@ -67,8 +51,8 @@ final class Wakeups implements AutoCloseable {
 
     private final DirectoryWatch watch;
     private final long pauseNanos;
-    private final Map<WatchKey, Watched> byKey = new HashMap<>();
-    private final Map<Path, Watched> byDir = new HashMap<>();
+    private final Map<WatchKey, WatchedDirectory> byKey = new HashMap<>();
+    private final Map<Path, WatchedDirectory> byDir = new HashMap<>();
     /** Per directory, whether its file system is one whose changes are not notified: asked once each. */
     private final Map<Path, Boolean> remote = new HashMap<>();
     /** Polled every pause. */
@@ -113,7 +97,7 @@ final class Wakeups implements AutoCloseable {
     /** Follows {@code log} from now on: notified if its directory can be watched, else polled. */
     void add(WatchedLog log) {
         Path path = log.path().toAbsolutePath().normalize();
-        Watched w = Files.isSymbolicLink(path) || path.getParent() == null ? null : watched(path.getParent());
+        WatchedDirectory w = Files.isSymbolicLink(path) || path.getParent() == null ? null : watched(path.getParent());
         if (w == null) {
             polled.add(log);
             return;
@@ -126,7 +110,7 @@ final class Wakeups implements AutoCloseable {
     void watchSources(Collection<Path> dirs) {
         boolean all = watch != null;
         for (Path d : dirs) {
-            Watched w = watched(d.toAbsolutePath().normalize());
+            WatchedDirectory w = watched(d.toAbsolutePath().normalize());
             if (w == null) {
                 all = false;
             } else {
@@ -152,7 +136,7 @@ final class Wakeups implements AutoCloseable {
      * logs, which may have appeared or fallen below the watch limit. Cheap: one look per directory.
      */
     void recheck() {
-        for (Watched w : List.copyOf(byKey.values())) {
+        for (WatchedDirectory w : List.copyOf(byKey.values())) {
             if (!Objects.equals(w.identity, DirectoryWatch.identity(w.dir))) {
                 w.key.cancel();
                 drop(w);
@@ -212,13 +196,13 @@ final class Wakeups implements AutoCloseable {
                 lastTaken = System.nanoTime();
             }
             for (DirectoryWatch.Change c : changes) {
-                Watched w = byKey.get(c.key());
+                WatchedDirectory w = byKey.get(c.key());
                 if (w != null) {
                     changed(w, c, out);
                 }
             }
             for (WatchKey k : invalid) {
-                Watched w = byKey.get(k);
+                WatchedDirectory w = byKey.get(k);
                 if (w != null) {
                     full(drop(w), out); // a last look at each, now polled
                 }
@@ -242,7 +226,7 @@ final class Wakeups implements AutoCloseable {
         return out;
     }
 
-    private void changed(Watched w, DirectoryWatch.Change c, Set<WatchedLog> out) {
+    private void changed(WatchedDirectory w, DirectoryWatch.Change c, Set<WatchedLog> out) {
         if (c.kind() == DirectoryWatch.Kind.OVERFLOW) {
             w.logs.values().forEach(l -> full(l, out)); // events were lost: anything may have changed
             rescan |= w.source;
@@ -289,7 +273,7 @@ final class Wakeups implements AutoCloseable {
     }
 
     /** Stops watching {@code w}; its logs go back to {@link #add}, where they are watched again or polled. */
-    private List<WatchedLog> drop(Watched w) {
+    private List<WatchedLog> drop(WatchedDirectory w) {
         byKey.remove(w.key);
         byDir.remove(w.dir);
         List<WatchedLog> logs = new ArrayList<>();
@@ -303,11 +287,11 @@ final class Wakeups implements AutoCloseable {
     }
 
     /** The watch of {@code dir}, registered now if need be, or null when its changes must be polled for. */
-    private Watched watched(Path dir) {
+    private WatchedDirectory watched(Path dir) {
         if (watch == null) {
             return null;
         }
-        Watched known = byDir.get(dir);
+        WatchedDirectory known = byDir.get(dir);
         if (known != null && known.key.isValid()) {
             return known;
         }
@@ -325,7 +309,7 @@ final class Wakeups implements AutoCloseable {
             return null;
         }
         // The same directory under another spelling gives the same key: its logs share one table.
-        Watched w = byKey.computeIfAbsent(key, k -> new Watched(dir, k));
+        WatchedDirectory w = byKey.computeIfAbsent(key, k -> new WatchedDirectory(dir, k));
         byDir.put(dir, w);
         return w;
     }
@@ -341,7 +325,7 @@ final class Wakeups implements AutoCloseable {
         polled.remove(log);
         pending.remove(log);
         replacing.remove(log);
-        for (Watched w : byKey.values()) {
+        for (WatchedDirectory w : byKey.values()) {
             w.orphans.remove(log);
             w.logs.values().forEach(l -> l.remove(log));
             w.logs.values().removeIf(List::isEmpty);
