@@ -82,7 +82,7 @@ class PropertyFileTest {
                     a.properties().stream().map(Property::id).toList(), name);
             Response nav = (Response) a.properties().get(3);
             assertEquals(new Deadline(400, Deadline.Unit.TICKS, null), nav.within());
-            assertEquals(Response.Per.CLIENT, nav.per(), "one navigation per goTo client: a preempting goTo owes its"
+            assertEquals(Response.Per.ARGUMENT, nav.per(), "one navigation per destination: a preempting goTo owes its"
                     + " own end");
             Response grasp = (Response) a.properties().get(4);
             assertEquals(8.0, grasp.within().amount());
