@@ -53,9 +53,10 @@ final class NoveltyOptions {
     String gap;
 
     @Option(names = "--never-arrives", paramLabel = "TICKS|LOW..HIGH",
-            description = "The way to the tour location is blocked for good: the robot stops short, the navigation "
-                    + "keeps answering getStatus with 1 (RUNNING), and the log ends TICKS ticks later (drawn per run "
-                    + "when a range). Depleted runs never get there and are not stuck.")
+            description = "The way to the tour location (the long leg; with --abort-on station the way to the "
+                    + "charging station, the short leg of a recharge run) is blocked for good: the robot stops "
+                    + "short, the navigation keeps answering getStatus with 1 (RUNNING), and the log ends TICKS "
+                    + "ticks later (drawn per run when a range). Depleted runs never get there and are not stuck.")
     String neverArrives;
 
     @Option(names = "--grasp", description = "The robot grasps an object at the tour location (ArmService closeHand "

@@ -1,7 +1,6 @@
 package dev.predmon.forecast;
 
 import java.util.List;
-import java.util.Locale;
 
 /**
  * When the deadline forecast of one bounded-response property warns: the probability of a miss at or above which it
@@ -39,13 +38,27 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
         this(threshold, note, validated, calibration, HALF, false);
     }
 
-    /** The rule of a property whose training obligations chose nothing: even odds and the novelty clause. */
-    public static final DeadlineRule DEFAULT = new DeadlineRule(ThresholdChoice.DEFAULT,
-            String.format(Locale.ROOT, "default %.2f: not cross-validated", ThresholdChoice.DEFAULT), false,
-            Calibration.IDENTITY);
-
     /** A threshold no probability reaches: a rule with it warns by the novelty clause alone. */
     public static final double NEVER = 2;
+
+    /**
+     * The rule of a property whose training obligations chose nothing (too few logs, or no held-out obligation
+     * missed): its probability is shown and said to be unvalidated, and it warns by the novelty clause alone, an
+     * obligation pending past every training one. A probability no held-out miss ever checked is no evidence to warn
+     * on: censored training obligations (runs that ended on the way) hold an estimate at even odds from the start.
+     */
+    public static final DeadlineRule DEFAULT = unvalidated("not cross-validated");
+
+    /** An unvalidated rule ({@link #DEFAULT}) with {@code why} in its note. */
+    public static DeadlineRule unvalidated(String why) {
+        return unvalidated(why, false, HALF);
+    }
+
+    /** An unvalidated rule whose novelty clause waits for {@code margin}, the baseline in its place if {@code baseline}. */
+    public static DeadlineRule unvalidated(String why, boolean baseline, double margin) {
+        return new DeadlineRule(NEVER, why + "; not validated: the probability is shown but does not warn, the warning"
+                + " comes past every training obligation", false, Calibration.IDENTITY, margin, baseline);
+    }
 
     /**
      * The rule of a held-out replay ({@code learn}'s cross-validation): only the novelty clause warns, so that the

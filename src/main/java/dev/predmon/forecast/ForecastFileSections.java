@@ -120,9 +120,10 @@ final class ForecastFileSections {
             }
             String at = "obligations/" + e.getKey();
             double threshold = number(n, "threshold");
-            if (!(threshold >= 0 && threshold <= 1)) {
+            if (!((threshold >= 0 && threshold <= 1) || threshold == DeadlineRule.NEVER)) {
                 throw new IllegalArgumentException("'" + at + "/threshold': " + n.get("threshold")
-                        + " is not a probability (from 0 to 1)");
+                        + " is not a probability (from 0 to 1), nor " + (int) DeadlineRule.NEVER
+                        + " (the probability does not warn)");
             }
             JsonNode validated = required(n, "validated");
             if (!validated.isBoolean()) {

@@ -7,14 +7,12 @@ import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.Survival;
-import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.property.Property;
 import dev.predmon.property.Response;
 import dev.predmon.replay.ReplayedRun;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -60,16 +58,12 @@ public final class DeadlineTraining {
         List<Scorecard> cards = new ArrayList<>(model.scorecards());
         for (Response r : responses.values()) {
             if (k < 2) {
-                rules.put(r.id(), new DeadlineRule(ThresholdChoice.DEFAULT, String.format(Locale.ROOT,
-                        "default %.2f: too few logs to cross-validate", ThresholdChoice.DEFAULT), false,
-                        Calibration.IDENTITY));
+                rules.put(r.id(), DeadlineRule.unvalidated("too few logs to cross-validate"));
                 continue;
             }
             List<CrossValidation.Case> cases = cases(r.id(), heldOut);
             if (cases.isEmpty()) {
-                rules.put(r.id(), new DeadlineRule(ThresholdChoice.DEFAULT, String.format(Locale.ROOT, "default %.2f:"
-                        + " no held-out obligation was met or missed", ThresholdChoice.DEFAULT), false,
-                        Calibration.IDENTITY));
+                rules.put(r.id(), DeadlineRule.unvalidated("no held-out obligation was met or missed"));
                 continue;
             }
             CrossValidation.Choice c = CrossValidation.choose(cases, k, new CrossValidation.Space(
@@ -111,8 +105,11 @@ public final class DeadlineTraining {
      */
     static DeadlineRule rule(CrossValidation.Choice c) {
         CrossValidation.Rule x = c.rule();
-        String note = x.validated() ? x.note() : x.note() + "; not validated: even odds, and the warning past every"
-                + " training obligation";
+        if (!x.validated()) {
+            return DeadlineRule.unvalidated(x.note() + "; no held-out obligation missed its deadline", c.baseline(),
+                    DeadlineRule.MARGINS.get(x.variant()));
+        }
+        String note = x.note();
         if (c.baseline()) {
             note += "; the elapsed-time baseline warns: the forecast's rule did worse on the same folds";
         }

@@ -35,6 +35,11 @@ final class DeadlineFollow extends FollowBase {
     private final TriggerInputs triggers;
     /** The curve the pending obligation is judged by: its trigger input's own, else the pooled one; null when none is. */
     private Survival pending;
+    /**
+     * The line of the trigger of the obligation judged ({@link PropertyChecker#pendingLine}), -1 when none is: of
+     * several open at once, the one nearest its deadline.
+     */
+    private long line = -1;
     /** The forecast of the obligation pending now, or null. */
     private Survival.Estimate current;
     /** The pending obligation's forecast as last told ({@link #shown}), or null. */
@@ -56,7 +61,10 @@ final class DeadlineFollow extends FollowBase {
     }
 
     @Override
-    public void closed(double duration, boolean discharged) {
+    public void closed(long line, double duration, boolean discharged) {
+        if (line != this.line) {
+            return; // another instance's obligation, never judged: its end says nothing of the one judged
+        }
         this.ended = true;
         this.duration = duration;
         this.discharged = discharged;
@@ -76,15 +84,19 @@ final class DeadlineFollow extends FollowBase {
             current = null;
             told = null;
             pending = null;
+            line = -1;
         }
         double elapsed = checker.elapsed(index);
         if (Double.isNaN(elapsed)) {
             judgedAt = Double.NaN;
             pending = null;
+            line = -1;
             return;
         }
-        if (pending == null) {
-            pending = triggers == null ? survival : survival.at(triggers.began(index));
+        if (pending == null || checker.pendingLine(index) != line) {
+            line = checker.pendingLine(index);
+            pending = triggers == null ? survival : survival.at(triggers.began(index, line));
+            judgedAt = Double.NaN;
         }
         if (elapsed == judgedAt && current != null) {
             return; // judged at this elapsed time already: a deadline in ticks changes at the next tick only
@@ -119,6 +131,7 @@ final class DeadlineFollow extends FollowBase {
         discharged = false;
         judgedAt = Double.NaN;
         pending = null;
+        line = -1;
     }
 
     @Override

@@ -35,8 +35,11 @@ interface PropertyFollow {
     default void gap(long line) {
     }
 
-    /** An obligation of the property ended after {@code duration}, discharged or let go (as the checker tells it). */
-    default void closed(double duration, boolean discharged) {
+    /**
+     * The property's obligation opened at {@code line} ended after {@code duration}, discharged or let go (as the
+     * checker tells it).
+     */
+    default void closed(long line, double duration, boolean discharged) {
     }
 
     /** The run ends, {@code first} beginning the next: its violation there, if its deadline passed in between. */

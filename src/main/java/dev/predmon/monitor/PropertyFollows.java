@@ -87,11 +87,11 @@ final class PropertyFollows {
         this.headline = head;
         this.triggers = began;
         this.matchingWarns = forecast == null || forecast.matchingWarns();
-        checker.onObligations((index, p, duration, discharged) -> {
+        checker.onObligations((index, p, line, duration, discharged) -> {
             if (triggers != null) {
-                triggers.closed(index);
+                triggers.closed(index, line);
             }
-            follows[index].closed(duration, discharged);
+            follows[index].closed(line, duration, discharged);
         });
         this.violates = violates(models, properties);
     }

@@ -205,9 +205,9 @@ public final class Traces {
             }
             Arrays.fill(otherValues, Double.NaN);
             this.triggers = new TriggerInputs(abstraction, properties);
-            checker.onObligations((i, p, duration, discharged) -> {
-                obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, triggers.began(i)));
-                triggers.closed(i);
+            checker.onObligations((i, p, line, duration, discharged) -> {
+                obligations.add(new RunTiming.Obligation(p.id(), duration, discharged, triggers.began(i, line)));
+                triggers.closed(i, line);
             });
         }
 

@@ -7,7 +7,9 @@ import dev.predmon.property.PropertyChecker;
 import dev.predmon.property.Response;
 
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Where a run was when each obligation of a bounded response began: the condition its deadline forecast is judged
@@ -18,7 +20,8 @@ import java.util.List;
  * condition is the same in each fold of the cross-validation and in {@code watch}; a machine's state number is not.
  *
  * <p>Learning ({@link Traces}) and the monitor keep one each and call {@link #record} after their checker took each
- * record. The abstraction classifies only trigger records (a few per run). Constant state per property.
+ * record. The abstraction classifies only trigger records (a few per run). Per property, the state is one condition
+ * per open obligation.
  */
 public final class TriggerInputs {
 
@@ -29,9 +32,8 @@ public final class TriggerInputs {
 
     private final Abstraction abstraction;
     private final Response[] responses;
-    /** Per property, whether an obligation is pending, and the condition it began under. */
-    private final boolean[] pending;
-    private final String[] began;
+    /** Per property, the condition each open obligation began under, by the line of its trigger. */
+    private final Map<Long, String>[] began;
     /** Per property, the input of its last trigger record in the run, or null before one. */
     private final String[] last;
 
@@ -39,13 +41,15 @@ public final class TriggerInputs {
         this.abstraction = abstraction;
         int n = properties.size();
         this.responses = new Response[n];
+        @SuppressWarnings("unchecked")
+        Map<Long, String>[] b = new Map[n];
+        this.began = b;
         for (int i = 0; i < n; i++) {
             if (properties.get(i) instanceof Response r) {
                 responses[i] = r;
+                began[i] = new HashMap<>();
             }
         }
-        this.pending = new boolean[n];
-        this.began = new String[n];
         this.last = new String[n];
     }
 
@@ -58,16 +62,15 @@ public final class TriggerInputs {
             if (p == null) {
                 continue;
             }
-            boolean open = !Double.isNaN(checker.elapsed(i));
+            long opened = checker.opened(i);
             boolean trigger = p.trigger() != null && p.trigger().matches(r);
-            if ((trigger || (open && !pending[i])) && !classified) {
+            if ((trigger || opened >= 0) && !classified) {
                 input = RunTiming.inputOf(abstraction, r);
                 classified = true;
             }
-            if (open && !pending[i]) {
-                began[i] = input == null ? null : (last[i] == null ? START : last[i]) + AFTER + input;
+            if (opened >= 0) {
+                began[i].put(opened, input == null ? null : (last[i] == null ? START : last[i]) + AFTER + input);
             }
-            pending[i] = open;
             if (trigger && input != null) {
                 last[i] = input;
             }
@@ -75,22 +78,27 @@ public final class TriggerInputs {
     }
 
     /**
-     * The condition property {@code index}'s pending obligation began under (or the last one, once it ended), null
-     * when its trigger maps to no input.
+     * The condition property {@code index}'s obligation opened by the trigger at {@code line} began under, null when
+     * its trigger maps to no input (or no such obligation is open).
      */
-    public String began(int index) {
-        return began[index];
+    public String began(int index, long line) {
+        return began[index] == null ? null : began[index].get(line);
     }
 
-    /** An obligation of property {@code index} ended (as the checker tells it, during its record). */
-    public void closed(int index) {
-        pending[index] = false;
+    /** Property {@code index}'s obligation opened at {@code line} ended (as the checker tells it, during a record). */
+    public void closed(int index, long line) {
+        if (began[index] != null) {
+            began[index].remove(line);
+        }
     }
 
     /** A new run. */
     public void reset() {
-        Arrays.fill(pending, false);
-        Arrays.fill(began, null);
+        for (Map<Long, String> m : began) {
+            if (m != null) {
+                m.clear();
+            }
+        }
         Arrays.fill(last, null);
     }
 

@@ -30,7 +30,10 @@ abstract class Check {
     }
 
     /** Told how each obligation of a bounded response ended; set by the checker. */
-    PropertyChecker.Obligations obligations = (duration, discharged) -> { };
+    PropertyChecker.Obligations obligations = (line, duration, discharged) -> { };
+
+    /** The line of the trigger whose obligation the last record opened, -1 when it opened none; set by the check. */
+    long opened = -1;
 
     /**
      * How long the open obligation has been pending, in its deadline's unit (ticks, seconds, or occurrences of the
@@ -38,6 +41,14 @@ abstract class Check {
      */
     double elapsed() {
         return Double.NaN;
+    }
+
+    /**
+     * The line of the trigger of the open obligation nearest its deadline (the one {@link #elapsed} tells), -1 when
+     * none is open.
+     */
+    long pendingLine() {
+        return -1;
     }
 
     /** The run ends: an obligation still open is told as censored at its elapsed time. */

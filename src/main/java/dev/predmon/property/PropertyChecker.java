@@ -46,18 +46,19 @@ public final class PropertyChecker implements PropertyView {
         /**
          * An obligation ended.
          *
+         * @param line       the line of the trigger that opened it
          * @param duration   how long it was pending, in its deadline's unit
          * @param discharged true when its response came; false when it was let go still pending (the deadline
          *                   passed, its scope closed, or the run ended): a censored duration
          */
-        void closed(double duration, boolean discharged);
+        void closed(long line, double duration, boolean discharged);
     }
 
     /** Told each obligation's end with its property's position. */
     @FunctionalInterface
     public interface ObligationListener {
         /** Property {@code index}'s obligation ended, as {@link Obligations#closed} tells it. */
-        void closed(int index, Property property, double duration, boolean discharged);
+        void closed(int index, Property property, long line, double duration, boolean discharged);
     }
 
     /** A property with its verdict. */
@@ -127,6 +128,7 @@ public final class PropertyChecker implements PropertyView {
         for (int i = 0; i < checks.length; i++) {
             Check c = checks[i];
             c.reading = Double.NaN;
+            c.opened = -1;
             made[i] = null;
             again[i] = false;
             if (violated[i] != null && !c.reads()) {
@@ -190,7 +192,8 @@ public final class PropertyChecker implements PropertyView {
         for (int i = 0; i < checks.length; i++) {
             int index = i;
             Property p = properties.get(i);
-            checks[i].obligations = (duration, discharged) -> listener.closed(index, p, duration, discharged);
+            checks[i].obligations = (line, duration, discharged) -> listener.closed(index, p, line, duration,
+                    discharged);
         }
     }
 
@@ -200,6 +203,16 @@ public final class PropertyChecker implements PropertyView {
      */
     public double elapsed(int index) {
         return checks[index].elapsed();
+    }
+
+    /** The trigger line of property {@code index}'s obligation that {@link #elapsed} tells, -1 when none is open. */
+    public long pendingLine(int index) {
+        return checks[index].pendingLine();
+    }
+
+    /** The line of the trigger whose obligation of property {@code index} the last record opened, or -1. */
+    public long opened(int index) {
+        return checks[index].opened;
     }
 
     /** The value the last record gave property {@code index} (a {@link Bound}), or NaN when it gave none. */

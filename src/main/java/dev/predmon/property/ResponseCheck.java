@@ -5,20 +5,31 @@ import dev.predmon.parse.LogRecord;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
 
 /**
- * The check of a {@link Response}: whether an obligation is open, since when and until when, the count of the
- * counted event, and whether the trigger's condition held at the last reading. Constant state.
+ * The check of a {@link Response}: the obligations open, each since when and until when with the count of the
+ * counted event, and whether the trigger's condition held at the last reading. Without {@link Response#per} one
+ * obligation at most is open (constant state); with it, one per instance whose trigger is unanswered, each removed as
+ * it ends, so the state is bounded by the triggers within one deadline.
  */
 final class ResponseCheck extends Check {
 
+    /** One open obligation: its trigger's line, since when, until when, its count, and its deadline's scale. */
+    private static final class Obligation {
+        long line;
+        double since;
+        double deadline;
+        long count;
+        /** Its deadline's seconds per unit of the log's clock (a tick's length for seconds in a log of ticks), else 1. */
+        double scale = 1;
+    }
+
     private final Response p;
     private final Deadline d;
-    private boolean pending;
-    private long line;
-    private double since;
-    private double deadline;
-    private long count;
+    /** The open obligations by instance ({@code ""} for all without {@code per}), in the order they opened. */
+    private final LinkedHashMap<String, Obligation> open = new LinkedHashMap<>();
     private boolean held;
     /** Whether a lasting response holds (only with {@code cancelledBy}). */
     private boolean answered;
@@ -26,13 +37,8 @@ final class ResponseCheck extends Check {
     private boolean owing;
     /** Where the run was at the last record, on the deadline's clock (the log's ticks for seconds of ticks). */
     private double now;
-    /**
-     * Seconds per tick of a log without time stamps, NaN when not given ({@link #countTicksAs}); and the open
-     * obligation's: its deadline's seconds per unit of the log's clock (a tick's length for a deadline in seconds in
-     * such a log, else 1). The check runs on the log's clock; what it reports is in the deadline's unit.
-     */
+    /** Seconds per tick of a log without time stamps, NaN when not given ({@link #countTicksAs}). */
     private double tickSeconds = Double.NaN;
-    private double scale = 1;
 
     private final Readings readings;
     /** The condition's value's slot in {@link #readings}, or -1 for a trigger that is an event. */
@@ -60,44 +66,69 @@ final class ResponseCheck extends Check {
                 : "no reading of " + p.condition().value().describeWithPorts() + " (its trigger's value)";
     }
 
+    /** The instance {@code r} acts on. */
+    private String instance(LogRecord r) {
+        return p.per() == null ? "" : p.per().of(r);
+    }
+
     @Override
     Verdict.Violated step(LogRecord r, long ticks) {
+        opened = -1;
         // Whether r is a response, asked at most once per record: null until asked.
         Boolean responds = null;
-        if (pending) {
+        if (!open.isEmpty()) {
             if (d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r)) {
-                count++;
+                Obligation o = open.get(instance(r));
+                if (o != null) {
+                    o.count++;
+                }
             }
             now = now(r, ticks);
-            if (now > deadline) {
-                pending = false;
-                obligations.closed(inUnit(now - since()), false);
-                return new Verdict.Violated(r.line(), r.time(), null, null, missed());
+            for (Iterator<Obligation> it = open.values().iterator(); it.hasNext(); ) {
+                Obligation o = it.next();
+                if (at(o) > o.deadline) {
+                    it.remove();
+                    obligations.closed(o.line, elapsed(o), false);
+                    return new Verdict.Violated(r.line(), r.time(), null, null, missed(o));
+                }
             }
             responds = p.response().matches(r);
             if (responds) {
-                pending = false;
-                obligations.closed(inUnit(now - since()), true);
+                Obligation o = open.remove(instance(r));
+                if (o != null) {
+                    obligations.closed(o.line, elapsed(o), true);
+                }
             }
         }
         if (p.cancelledBy() != null) {
             boolean response = responds != null ? responds : p.response().matches(r);
             answered = response || (answered && !p.cancelledBy().matches(r));
         }
-        if (fires(r) && !pending) {
-            pending = true;
-            line = r.line();
-            count = d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r) ? 1 : 0;
-            since = now(r, ticks);
-            now = since;
-            // T seconds in a log that counts ticks of a known length are T / length ticks, as a decimal quotient
-            scale = d.unit() == Deadline.Unit.SECONDS && r.clock() == Clock.TICKS && !Double.isNaN(tickSeconds)
-                    ? tickSeconds : 1;
-            deadline = d.unit() == Deadline.Unit.OCCURRENCES ? d.amount() : since + (scale == 1 ? d.amount()
-                    : BigDecimal.valueOf(d.amount()).divide(BigDecimal.valueOf(scale), MathContext.DECIMAL64)
-                    .doubleValue());
+        if (fires(r)) {
+            String key = instance(r);
+            if (!open.containsKey(key)) {
+                openAt(r, ticks, key);
+            }
         }
         return null;
+    }
+
+    private void openAt(LogRecord r, long ticks, String key) {
+        Obligation o = new Obligation();
+        o.line = r.line();
+        opened = r.line();
+        o.count = d.unit() == Deadline.Unit.OCCURRENCES && d.counted().matches(r) ? 1 : 0;
+        o.since = d.unit() == Deadline.Unit.OCCURRENCES ? o.count : now(r, ticks);
+        if (open.isEmpty()) {
+            now = o.since;
+        }
+        // T seconds in a log that counts ticks of a known length are T / length ticks, as a decimal quotient
+        o.scale = d.unit() == Deadline.Unit.SECONDS && r.clock() == Clock.TICKS && !Double.isNaN(tickSeconds)
+                ? tickSeconds : 1;
+        o.deadline = d.unit() == Deadline.Unit.OCCURRENCES ? d.amount() : o.since + (o.scale == 1 ? d.amount()
+                : BigDecimal.valueOf(d.amount()).divide(BigDecimal.valueOf(o.scale), MathContext.DECIMAL64)
+                .doubleValue());
+        open.put(key, o);
     }
 
     /** A tick of a log without time stamps lasts {@code seconds} (NaN: unknown, a tick counts as a second). */
@@ -106,9 +137,25 @@ final class ResponseCheck extends Check {
         tickSeconds = seconds;
     }
 
-    /** {@code v}, on the log's clock, in the open obligation's deadline's unit. */
-    private double inUnit(double v) {
-        return scale == 1 ? v : BigDecimal.valueOf(v).multiply(BigDecimal.valueOf(scale)).doubleValue();
+    /** Where {@code o} is on its deadline's clock: its count, or the run's clock. */
+    private double at(Obligation o) {
+        return d.unit() == Deadline.Unit.OCCURRENCES ? o.count : now;
+    }
+
+    /** How long {@code o} has been pending, in its deadline's unit: occurrences count from none. */
+    private double elapsed(Obligation o) {
+        return scaled(o, at(o) - (d.unit() == Deadline.Unit.OCCURRENCES ? 0 : o.since));
+    }
+
+    /** The open obligation nearest its deadline (the earliest opened among equals), or null. */
+    private Obligation first() {
+        Obligation first = null;
+        for (Obligation o : open.values()) {
+            if (first == null || o.deadline - at(o) < first.deadline - at(first)) {
+                first = o;
+            }
+        }
+        return first;
     }
 
     /**
@@ -118,40 +165,52 @@ final class ResponseCheck extends Check {
      */
     @Override
     Verdict.Violated overdue(LogRecord r) {
-        if (!pending || d.unit() != Deadline.Unit.SECONDS || r.clock() == Clock.TICKS || !(r.time() > deadline)) {
+        Obligation o = first();
+        if (o == null || d.unit() != Deadline.Unit.SECONDS || r.clock() == Clock.TICKS || !(r.time() > o.deadline)) {
             return null;
         }
-        pending = false;
+        open.remove(key(o));
         double last = now;
         now = r.time();
-        obligations.closed(now - since, false);
-        return new Verdict.Violated(r.line(), r.time(), null, null, missed() + " (nothing was logged from t="
+        obligations.closed(o.line, now - o.since, false);
+        return new Verdict.Violated(r.line(), r.time(), null, null, missed(o) + " (nothing was logged from t="
                 + Numbers.text(last) + " until this record, past the deadline)");
     }
 
-    /** Where the obligation began, in the deadline's unit: occurrences count from none. */
-    private double since() {
-        return d.unit() == Deadline.Unit.OCCURRENCES ? 0 : since;
+    private String key(Obligation o) {
+        for (var e : open.entrySet()) {
+            if (e.getValue() == o) {
+                return e.getKey();
+            }
+        }
+        return null;
     }
 
     @Override
     double elapsed() {
-        return pending ? inUnit(now - since()) : Double.NaN;
+        Obligation o = first();
+        return o == null ? Double.NaN : elapsed(o);
+    }
+
+    @Override
+    long pendingLine() {
+        Obligation o = first();
+        return o == null ? -1 : o.line;
     }
 
     @Override
     void finish() {
-        if (pending) {
-            obligations.closed(inUnit(now - since()), false);
+        for (Obligation o : open.values()) {
+            obligations.closed(o.line, elapsed(o), false);
         }
     }
 
-    /** Where the run is, in the deadline's unit. */
+    /** Where the run is, in the deadline's unit (occurrences are counted per obligation). */
     private double now(LogRecord r, long ticks) {
         return switch (d.unit()) {
             case TICKS -> ticks;
             case SECONDS -> r.time();
-            case OCCURRENCES -> count;
+            case OCCURRENCES -> 0;
         };
     }
 
@@ -174,39 +233,50 @@ final class ResponseCheck extends Check {
 
     @Override
     Verdict.Violated close(LogRecord r) {
-        if (!pending) {
+        Obligation first = first();
+        if (first == null) {
             return null;
         }
-        pending = false;
-        obligations.closed(inUnit(now - since()), false);
+        for (Obligation o : open.values()) {
+            obligations.closed(o.line, elapsed(o), false);
+        }
+        open.clear();
         return new Verdict.Violated(r.line(), r.time(), null, null, "the scope ended before "
-                + p.response().brief() + " answered " + p.briefTrigger() + " at line " + line);
+                + p.response().brief() + " answered " + p.briefTrigger() + " at line " + first.line);
     }
 
     /**
      * The missed deadline in an operator's words: {@code 8 closeHand attempts since line 6650, none answered by
      * hasGrasped 1 or 27503}; {@code no getStatus 2 or halt in 400 ticks since goTo at line 24}.
      */
-    private String missed() {
+    private String missed(Obligation o) {
         String amount = Numbers.text(d.amount());
         return switch (d.unit()) {
             case OCCURRENCES -> amount + " " + d.counted().brief() + (d.amount() == 1 ? " attempt" : " attempts")
-                    + " since line " + line + ", none answered by " + p.response().brief();
+                    + " since line " + o.line + ", none answered by " + p.response().brief();
             case TICKS, SECONDS -> "no " + p.response().brief() + " in " + amount + " "
                     + (d.unit() == Deadline.Unit.TICKS ? "ticks" : "s") + " since " + p.briefTrigger() + " at line "
-                    + line;
+                    + o.line;
         };
     }
 
     @Override
     Verdict owed() {
-        return pending ? new Verdict.Pending(line, inUnit(since), inUnit(deadline), d.unit()) : Verdict.HOLDS;
+        Obligation o = first();
+        if (o == null) {
+            return Verdict.HOLDS;
+        }
+        return new Verdict.Pending(o.line, scaled(o, o.since), scaled(o, o.deadline), d.unit());
+    }
+
+    /** {@code v}, on the log's clock, in {@code o}'s deadline's unit. */
+    private static double scaled(Obligation o, double v) {
+        return o.scale == 1 ? v : BigDecimal.valueOf(v).multiply(BigDecimal.valueOf(o.scale)).doubleValue();
     }
 
     @Override
     void reset() {
-        pending = false;
-        count = 0;
+        open.clear();
         held = false;
         answered = false;
         owing = false;

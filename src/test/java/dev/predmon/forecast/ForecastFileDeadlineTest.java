@@ -75,7 +75,17 @@ class ForecastFileDeadlineTest {
         ((ObjectNode) f.get("obligations").get(ID)).put("threshold", 1.5);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(JSON.writeValueAsString(f), LEARN_ID));
-        assertEquals("'obligations/navigation-in-time/threshold': 1.5 is not a probability (from 0 to 1)",
-                e.getMessage());
+        assertEquals("'obligations/navigation-in-time/threshold': 1.5 is not a probability (from 0 to 1), nor 2"
+                + " (the probability does not warn)", e.getMessage());
+    }
+
+    /** An unvalidated rule, whose probability warns at none, is written and read back as such. */
+    @Test
+    void anUnvalidatedRuleReadsBackAsOneWhoseProbabilityDoesNotWarn() throws Exception {
+        DeadlineRule unvalidated = DeadlineRule.unvalidated("no held-out obligation was met or missed");
+        ForecastModel back = ForecastFile.read(ForecastFile.write(model(Map.of(ID, unvalidated), List.of()),
+                LEARN_ID), LEARN_ID);
+        assertEquals(DeadlineRule.NEVER, back.deadlineRule(ID).threshold());
+        assertFalse(back.deadlineRule(ID).validated());
     }
 }

@@ -79,10 +79,12 @@ class DeadlineTrainingTest {
         DeadlineRule rule = DeadlineTraining.rule(choose(
                 twoFolds(List.of(arrived(2), arrived(3)), List.of(arrived(4), arrived(2)))));
         assertFalse(rule.validated());
-        assertEquals(0.5, rule.threshold());
+        // no held-out miss checked any probability: it is shown, and warns at none
+        assertEquals(DeadlineRule.NEVER, rule.threshold());
         assertEquals(DeadlineRule.DEFAULT.calibration(), rule.calibration());
-        assertTrue(rule.note().startsWith("default 0.50: the 4 held-out obligations all held; not validated"),
-                rule.note());
+        assertTrue(rule.note().contains("not validated: the probability is shown but does not warn"), rule.note());
+        Survival even = new Survival(new double[] {2, 3}, new double[] {1, 1});
+        assertFalse(rule.warns(even.estimate(1, 10), 1, 10, even), "even odds from obligations cut short warn not");
         // with no false alarm at either margin, the earlier one: a navigation past every training one is warned
         assertEquals(0.0, rule.margin());
         Survival s = new Survival(new double[] {2, 3, 4}, new double[0]);

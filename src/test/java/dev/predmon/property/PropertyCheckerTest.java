@@ -111,6 +111,58 @@ class PropertyCheckerTest {
         assertEquals(new Verdict.Pending(7, 2, 5, Deadline.Unit.TICKS), Trace.check(List.of(nav), twice).verdict(0));
     }
 
+    private static Response perNavigation(Deadline within) {
+        return new Response("nav", "a navigation ends in time", null, Scope.GLOBAL, GOTO, null, ARRIVED, null, within,
+                Response.Per.CLIENT);
+    }
+
+    @Test
+    void aNavigationThatPreemptsAnotherOwesItsOwnEnd() {
+        Response nav = perNavigation(new Deadline(3, Deadline.Unit.TICKS, null));
+        // tick 1 (line 1), goTo kitchen (2, 3), tick 2 (4), goTo charging_station (5, 6) while the kitchen one is
+        // owed, then the halt of the kitchen one (7, 8): the way to the station is still owed, since tick 2, due by
+        // tick 5; ticks 3, 4, 5 are lines 9, 10, 11, and tick 6, line 12, is past it
+        Trace preempted = new Trace().tick().goTo("kitchen").tick().goTo("charging_station").halt("kitchen").ticks(4);
+        Trace.Checked c = Trace.check(List.of(nav), preempted);
+        Verdict.Violated v = violated(c.verdict(0));
+        assertEquals(12, v.line());
+        assertEquals("no getStatus 2 or halt in 3 ticks since goTo at line 5", v.what());
+        assertEquals(List.of("nav@12"), c.told());
+        // the same with the kitchen one just discharged (its getStatus 2, lines 4 and 5) before the goTo to the
+        // station: tick 2 is line 6, the goTo lines 7 and 8, due by tick 5; its getStatus 1 lines 9 and 10, ticks 3
+        // to 6 lines 11 to 14
+        Trace after = new Trace().tick().goTo("kitchen").status("kitchen", 2).tick().goTo("charging_station")
+                .status("charging_station", 1).ticks(4);
+        assertEquals(14, violated(Trace.check(List.of(nav), after).verdict(0)).line());
+        // without 'per' the halt of the kitchen one answers every goTo before it: the stuck way is never owed
+        assertEquals(Verdict.HOLDS, Trace.check(List.of(navigation(new Deadline(3, Deadline.Unit.TICKS, null))),
+                preempted).verdict(0), "the uncorrelated property, as the MTL formula reads it");
+        // each answered by its own end: both navigations end in time
+        Trace both = new Trace().tick().goTo("kitchen").tick().goTo("charging_station").halt("kitchen").tick()
+                .status("charging_station", 2).ticks(4);
+        assertEquals(Verdict.HOLDS, Trace.check(List.of(nav), both).verdict(0));
+    }
+
+    @Test
+    void perInstanceTheEarliestUnansweredTriggerIsStillTheOneDue() {
+        Response nav = perNavigation(new Deadline(3, Deadline.Unit.TICKS, null));
+        // a goTo to the kitchen again (lines 5, 6: a retry) does not move the kitchen's deadline: tick 5 is line 9
+        Trace retried = new Trace().tick().goTo("kitchen").tick().goTo("kitchen").ticks(3);
+        assertEquals(9, violated(Trace.check(List.of(nav), retried).verdict(0)).line());
+        // the obligation pending is the one nearest its deadline: the kitchen's, from line 2 (tick 1, due by 4)
+        Trace two = new Trace().tick().goTo("kitchen").tick().goTo("charging_station");
+        Trace.Checked c = Trace.check(List.of(nav), two);
+        assertEquals(new Verdict.Pending(2, 1, 4, Deadline.Unit.TICKS), c.verdict(0));
+        assertEquals(1, c.checker().elapsed(0), "tick 2, one tick after the kitchen's goTo");
+        assertEquals(2, c.checker().pendingLine(0));
+        // once the kitchen's ends, the station's is the one pending: since tick 2, line 5
+        Trace.Checked halted = Trace.check(List.of(nav), new Trace().tick().goTo("kitchen").tick()
+                .goTo("charging_station").halt("kitchen").tick());
+        assertEquals(new Verdict.Pending(5, 2, 5, Deadline.Unit.TICKS), halted.verdict(0));
+        assertEquals(5, halted.checker().pendingLine(0));
+        assertEquals(1, halted.checker().elapsed(0));
+    }
+
     @Test
     void aResponseWithinSeconds() {
         Response nav = navigation(new Deadline(60, Deadline.Unit.SECONDS, null));

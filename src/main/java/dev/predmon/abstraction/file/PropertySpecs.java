@@ -42,7 +42,8 @@ import static dev.predmon.abstraction.file.PropertyParts.value;
  * {@code protocol}, {@code command}, optional {@code from} and {@code to}), a {@code floor} and/or a
  * {@code ceiling}, and optionally {@code underWay} (messages that say its action is under way); {@code absence} an {@code event}; {@code response} a {@code trigger} (an event, or a condition:
  * a {@code value} with one of {@code below}, {@code atMost}, {@code above}, {@code atLeast}), a {@code response} event
- * and {@code within} ({@code {"ticks": T}}, {@code {"seconds": T}} or {@code {"occurrences": K, "of": event}});
+ * and {@code within} ({@code {"ticks": T}}, {@code {"seconds": T}} or {@code {"occurrences": K, "of": event}}),
+ * optionally {@code cancelledBy} (an event) or {@code per} ({@code "client"} or {@code "argument"});
  * {@code precedence} a {@code first} and a {@code then} event. An event is a record matcher ({@code kind},
  * {@code protocol}, {@code command}, {@code from}, {@code to}, {@code argument}, {@code reply}; the last two a string
  * or a list of strings) or a list of them, any of which is the event.
@@ -56,7 +57,8 @@ final class PropertySpecs {
             "bound", new Kind(Set.of("value", "floor", "ceiling", "underWay"), PropertySpecs::bound),
             "absence", new Kind(Set.of("event"), (node, at, id, name, action, scope) -> new Absence(id, name, action,
                     scope, event(need(node, at, "event"), at + "/event"))),
-            "response", new Kind(Set.of("trigger", "response", "cancelledBy", "within"), PropertySpecs::response),
+            "response", new Kind(Set.of("trigger", "response", "cancelledBy", "within", "per"),
+                    PropertySpecs::response),
             "precedence", new Kind(Set.of("first", "then"), (node, at, id, name, action, scope) -> new Precedence(id,
                     name, action, scope, event(need(node, at, "first"), at + "/first"),
                     event(need(node, at, "then"), at + "/then"))));
@@ -172,8 +174,28 @@ final class PropertySpecs {
         }
         Event response = event(need(node, at, "response"), at + "/response");
         Event cancelledBy = node.has("cancelledBy") ? event(node.get("cancelledBy"), at + "/cancelledBy") : null;
+        Response.Per per = per(node, at, event != null, cancelledBy != null);
         return new Response(id, name, action, scope, event, condition, response, cancelledBy,
-                deadline(need(node, at, "within"), at + "/within"));
+                deadline(need(node, at, "within"), at + "/within"), per);
+    }
+
+    /** A response's {@code per}: what tells the instances of its trigger apart, or null. */
+    private static Response.Per per(JsonNode node, String at, boolean triggerEvent, boolean cancelled) throws Invalid {
+        String per = text(node, at, "per", false);
+        if (per == null) {
+            return null;
+        }
+        for (Response.Per p : Response.Per.values()) {
+            if (p.key.equals(per)) {
+                if (!triggerEvent || cancelled) {
+                    throw new Invalid(at + "/per", "'per' tells the instances of a trigger event apart: it needs a"
+                            + " trigger that is an event and no 'cancelledBy'");
+                }
+                return p;
+            }
+        }
+        throw new Invalid(at + "/per", "expected \"client\" (the client's port) or \"argument\" (the first argument),"
+                + " got \"" + per + "\"");
     }
 
     private static Condition condition(JsonNode node, String at) throws Invalid {

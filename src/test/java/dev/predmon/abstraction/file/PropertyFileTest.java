@@ -82,6 +82,8 @@ class PropertyFileTest {
                     a.properties().stream().map(Property::id).toList(), name);
             Response nav = (Response) a.properties().get(3);
             assertEquals(new Deadline(400, Deadline.Unit.TICKS, null), nav.within());
+            assertEquals(Response.Per.ARGUMENT, nav.per(), "one navigation per destination: a preempting goTo owes its"
+                    + " own end");
             Response grasp = (Response) a.properties().get(4);
             assertEquals(8.0, grasp.within().amount());
             assertEquals(Deadline.Unit.OCCURRENCES, grasp.within().unit());
@@ -115,6 +117,15 @@ class PropertyFileTest {
         assertTrue(refused("[{\"id\": \"b\", \"name\": \"b\", \"kind\": \"bound\", \"value\": {\"protocol\": \"B\","
                 + " \"command\": \"level\"}}]").endsWith("properties[0]: a bound needs a 'floor' (the least value that"
                 + " holds) or a 'ceiling' (the greatest)"));
+        String per = refused("""
+                [ { "id": "n", "name": "n", "kind": "response", "trigger": { "command": "goTo" },
+                    "response": { "command": "halt" }, "per": "destination", "within": { "ticks": 3 } } ]""");
+        assertTrue(per.endsWith("properties[0].per: expected \"client\" (the client's port) or \"argument\" (the"
+                + " first argument), got \"destination\""), per);
+        String perCondition = refused("""
+                [ { "id": "n", "name": "n", "kind": "response", "trigger": { "value": { "protocol": "B", "command": "level" },
+                    "below": 30 }, "response": { "command": "goTo" }, "per": "client", "within": { "ticks": 3 } } ]""");
+        assertTrue(perCondition.contains("'per' tells the instances of a trigger event apart"), perCondition);
         assertTrue(refused("[{\"id\": \"e\", \"name\": \"e\", \"kind\": \"absence\", \"event\": {}}]")
                 .contains("properties[0].event: an event needs at least one of"));
     }
