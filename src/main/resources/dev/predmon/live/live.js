@@ -2,7 +2,7 @@
 // /status and refreshed at once when /events says that a log has news. Hand-written, no library, nothing fetched from
 // elsewhere. Acknowledgements and the alert switches are kept in this browser (localStorage): the server only shows.
 'use strict';
-import {STATES, STATE_WORDS, alarmOf, own} from './words.js';
+import {STATES, STATE_WORDS, alarmOf, isOwn, own} from './words.js';
 import {NEEDS_ATTENTION, el, renderRow, renderTile, shownLight, shownState} from './tile.js';
 
 const tilesEl = document.getElementById('tiles');
@@ -35,7 +35,7 @@ function store(key, value) {
 }
 
 // An acknowledgement holds for the state it was given in: any change of state (or run, or staleness) lifts it.
-const worstState = (t) => (t.worst && t.worst.model !== 'forecast' ? t.worst.property + ' ' + t.worst.state : '');
+const worstState = (t) => (t.worst && !isOwn(t.worst, t) ? t.worst.property + ' ' + t.worst.state : '');
 const ackKey = (t) => t.run + '|' + t.state + '|' + t.stale + '|' + worstState(t);
 let acks = stored('acks', {});
 

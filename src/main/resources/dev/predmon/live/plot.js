@@ -1,6 +1,6 @@
 // predmon live view: the property over the run, as SVG, with labelled ticks on both axes.
 'use strict';
-import {num, value} from './words.js';
+import {num, ownProperty, value} from './words.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
 
@@ -31,7 +31,7 @@ const decimals = (step) => step >= 1 ? 0 : Math.min(3, Math.ceil(-Math.log10(ste
  */
 export function plot(t) {
   const W = 440, H = 178, L = 40, R = 12, T = 16, B = 34;
-  const own = (t.properties || []).find(p => p.model === 'forecast');
+  const own = ownProperty(t);
   const others = (t.properties || []).filter(p => p !== own && p.state === 'violated' && typeof p.time === 'number');
   const s = svg('svg', {class: 'plot', viewBox: '0 0 ' + W + ' ' + H, role: 'img',
     'aria-label': (own ? own.property + ' (' + own.name + ')' : t.property || 'the property') + ' over time in run '

@@ -1,7 +1,7 @@
 // predmon live view: a tile (the full view) and a row (the compact view) of one robot. Text from logs goes into the
 // page through textContent only.
 'use strict';
-import {GLYPHS, PROPERTY_GLYPHS, PROPERTY_STATES, PROPERTY_WORDS, STATE_WORDS, alarmOf, at, basisWords, chance, distanceWords, earlierText, eventText, forecastWords, momentText,
+import {GLYPHS, PROPERTY_GLYPHS, PROPERTY_STATES, PROPERTY_WORDS, STATE_WORDS, alarmOf, isOwn, ownProperty, at, basisWords, chance, distanceWords, earlierText, eventText, forecastWords, momentText,
   num, own, pct, propertyForecast, recoveryWords, shortSpan, verdict, whenWords} from './words.js';
 import {plot} from './plot.js';
 
@@ -43,7 +43,7 @@ function propertyList(t) {
     const text = el('div', 'prop-text');
     text.append(head, el('div', 'prop-words', p.words), el('div', 'prop-forecast', propertyForecast(p, t)));
     if (p.recovery) text.append(el('div', 'prop-recovery', 'recovered: ' + p.recovery));
-    if (p.action && (p.state === 'warning' || p.state === 'violated') && p.model !== 'forecast') {
+    if (p.action && (p.state === 'warning' || p.state === 'violated') && !isOwn(p, t)) {
       const a = el('div', 'prop-action');
       a.append(el('b', null, 'Do now: '), p.action);
       text.append(a);
@@ -70,7 +70,7 @@ export function shownState(t) {
  * the tooltip.
  */
 function worstChip(t) {
-  const others = (t.properties || []).filter(p => p.model !== 'forecast');
+  const others = (t.properties || []).filter(p => !isOwn(p, t));
   if (others.length === 0) return null;
   const w = others[0];
   const chip = el('span', 'worst');
@@ -153,8 +153,8 @@ function forecastLine(t, ui) {
   }
   const distance = state !== 'warning' ? distanceWords(f, t.warnsAt) : null;
   // among several properties, the forecast says whose it is
-  const ownProperty = (t.properties || []).length > 1 ? (t.properties || []).find(q => q.model === 'forecast') : null;
-  if (ownProperty) p.append(el('span', 'forecast-of', ownProperty.property + ': '));
+  const mine = (t.properties || []).length > 1 ? ownProperty(t) : null;
+  if (mine) p.append(el('span', 'forecast-of', mine.property + ': '));
   if (distance) {
     p.append(el('span', 'chance distance', distance), el('small', 'basis', basisWords(f)));
   } else {
@@ -202,9 +202,9 @@ export function renderTile(tile, t, ui) {
   const alarm = alarmOf(t);
   words.append(el('div', 'property', alarm ? alarm.name : t.property || 'prediction'), el('div', 'verdict', verdict(t)));
   const big = el('div', 'value-now');
-  const ownProperty = (t.properties || []).find(p => p.model === 'forecast');
+  const mine = ownProperty(t);
   if (t.value !== null) {
-    if (ownProperty && (t.properties || []).length > 1) big.append(el('small', 'value-of', ownProperty.property));
+    if (mine && (t.properties || []).length > 1) big.append(el('small', 'value-of', mine.property));
     big.append(pct(t.value, t.threshold));
   }
   status.append(words, big);
@@ -248,7 +248,7 @@ export function renderTile(tile, t, ui) {
     for (const r of t.earlierRuns) {
       const li = el('li');
       li.append(el('span', 'light small ' + r.light), earlierText(r, t.unit,
-        ((t.properties || []).find(p => p.model === 'forecast') || {}).property));
+        (ownProperty(t) || {}).property));
       ul.appendChild(li);
     }
     const runs = el('section', 'runs');

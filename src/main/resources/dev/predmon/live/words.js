@@ -24,10 +24,26 @@ const missing = (x) => x === null || x === undefined || Number.isNaN(x);
  */
 export const own = (t) => t.forecastState || t.state;
 
+/**
+ * The forecast's own property, whose value, chart and words the tile's headline shows: the one the log's status names
+ * ({@code t.property}). Several properties may have a forecast (bounds, absences), so a forecast alone does not say so.
+ */
+export function ownProperty(t) {
+  const props = t.properties || [];
+  return props.find(p => p.model === 'forecast' && p.name === t.property)
+    || props.find(p => p.model === 'forecast') || null;
+}
+
+/** Whether {@code p} (a property of {@code t}, or its worst) is the forecast's own property. */
+export function isOwn(p, t) {
+  const o = ownProperty(t);
+  return !!o && !!p && p.property === o.property;
+}
+
 /** The worst property when it is not the forecast's and is violated or warned: the tile's headline, or null. */
 export function alarmOf(t) {
   const w = t.worst;
-  return w && w.model !== 'forecast' && (w.state === 'violated' || w.state === 'warning') ? w : null;
+  return w && !isOwn(w, t) && (w.state === 'violated' || w.state === 'warning') ? w : null;
 }
 
 export const num = (x, digits) => missing(x) ? '?' : Number(x).toFixed(digits);
@@ -190,11 +206,21 @@ function unknownWhy(t) {
   return 'the models cannot judge this run';
 }
 
+/**
+ * How a run ended, worst first: every other property it violated, in its own words, then the forecast's property
+ * (named when there are others), its warning and whether any model matched.
+ */
 function runOutcome(t) {
   const thr = t.threshold;
   const parts = [];
-  parts.push(t.violation ? 'violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.value, thr) + ')'
-    : 'the property held' + (t.value === null ? '' : ' (last ' + pct(t.value, thr) + ')'));
+  const props = t.properties || [];
+  for (const p of props) {
+    if (!isOwn(p, t) && p.state === 'violated') parts.push(p.property + ' ' + p.words);
+  }
+  const own = props.length > 1 ? ownProperty(t) : null;
+  const name = own ? own.property + ' ' : 'the property ';
+  parts.push(t.violation ? name + 'violated at ' + at(t.violation.time, t.unit) + ' (' + pct(t.violation.value, thr)
+    + ')' : name + 'held' + (t.value === null ? '' : ' (last ' + pct(t.value, thr) + ')'));
   if (t.warning) parts.push('warned at ' + at(t.warning.time, t.unit));
   if (t.noMatch) parts.push('no model matched');
   return parts.join(', ');
@@ -263,7 +289,7 @@ export function propertyForecast(p, t) {
     if (!f) return 'no forecast yet';
     if (p.skill === false) return 'no skill: the forecast did no better than the base rate';
     if (f.basis === 'violated') return 'violated: no forecast to make';
-    const distance = t && own(t) !== 'warning' ? distanceWords(f, t.warnsAt) : null;
+    const distance = t && isOwn(p, t) && own(t) !== 'warning' ? distanceWords(f, t.warnsAt) : null;
     return distance || chance(f.probability) + ' chance of a violation, ' + whenWords(f);
   }
   if (!f) return p.forecastWords;
