@@ -75,6 +75,9 @@ final class ForecastFileSections {
                 if (rule.margin() != DeadlineRule.HALF) {
                     n.put("margin", rule.margin());
                 }
+                if (rule.late()) {
+                    n.put("level", rule.level());
+                }
                 if (rule.baseline()) {
                     n.put("rule", "baseline");
                 }
@@ -135,12 +138,18 @@ final class ForecastFileSections {
                 throw new IllegalArgumentException("'" + at + "/margin': " + n.get("margin")
                         + " is not a share (from 0 to 1)");
             }
+            double level = n.has("level") ? number(n, "level") : Double.NaN;
+            if (n.has("level") && !(level > 0.5 && level < 1)) {
+                throw new IllegalArgumentException("'" + at + "/level': " + n.get("level")
+                        + " is not a prediction level (above 0.5 and below 1)");
+            }
             JsonNode rule = n.get("rule");
             if (rule != null && !(rule.isTextual() && rule.asText().equals("baseline"))) {
                 throw new IllegalArgumentException("'" + at + "/rule': expected \"baseline\"");
             }
             rules.put(e.getKey(), new DeadlineRule(threshold, required(n, "note").asText(), validated.booleanValue(),
-                    c == null ? Calibration.IDENTITY : calibration(c, at + "/calibration"), margin, rule != null));
+                    c == null ? Calibration.IDENTITY : calibration(c, at + "/calibration"), margin, rule != null,
+                    level));
         }
         return rules;
     }

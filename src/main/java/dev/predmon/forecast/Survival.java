@@ -1,5 +1,7 @@
 package dev.predmon.forecast;
 
+import org.apache.commons.math3.distribution.TDistribution;
+
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.Map;
@@ -30,6 +32,14 @@ import java.util.TreeMap;
  * input means the same in every model learned from the same abstraction (each fold's, and the final one's), where a
  * state number is only a name inside one machine.
  *
+ * <p>A condition's curve also says when an obligation that began there is <em>late</em> ({@link #lateAfter}): past the
+ * upper prediction bound, at a chosen level, of a log-normal fitted to how long its discharged obligations took, the
+ * fit pooled towards the property's own with the weight of {@link ForecastModel#PRIOR_RUNS} obligations (a condition
+ * with ten obligations moves the fit five sixths of the way from the property's to its own), and never later than
+ * every discharged training obligation of the property: a leg that usually takes 10 ticks is late at 40, however long
+ * other legs take. Censored obligations do not enter the fit: they tell how long a response was waited for, not how
+ * long it takes.
+ *
  * <p>Immutable; the durations are kept sorted, and one estimate is two binary searches and a product over the
  * distinct discharge times (a few hundred at most).
  */
@@ -42,6 +52,13 @@ public final class Survival {
     private final double[] after;
     /** By the trigger's input, the curve of the obligations that began there (only inputs with enough of them). */
     private final Map<String, Survival> contexts;
+    /** The property's pooled curve this condition's fit is pooled towards; null for the pooled curve itself. */
+    private final Survival prior;
+    /** Mean and variance of log(1 + duration) over the discharged obligations (NaN without two of them). */
+    private final double logMean;
+    private final double logVariance;
+    /** The last {@link #lateAfter} level asked and its answer: a follower asks the same level at every tick. */
+    private volatile double[] lastLate = {Double.NaN, Double.NaN};
 
     /**
      * A condition needs this many training obligations that were discharged (their response came) for a curve of its
@@ -57,11 +74,12 @@ public final class Survival {
      * @param censored   how long each obligation that was never discharged had been pending when it was let go
      */
     public Survival(double[] discharged, double[] censored) {
-        this(discharged, censored, Map.of());
+        this(discharged, censored, Map.of(), null);
     }
 
-    private Survival(double[] discharged, double[] censored, Map<String, Survival> contexts) {
+    private Survival(double[] discharged, double[] censored, Map<String, Survival> contexts, Survival prior) {
         this.contexts = Collections.unmodifiableMap(new TreeMap<>(contexts));
+        this.prior = prior;
         this.discharged = finiteSorted(discharged, "discharged");
         this.censored = finiteSorted(censored, "censored");
         double[] t = new double[this.discharged.length];
@@ -84,6 +102,17 @@ public final class Survival {
         }
         this.times = Arrays.copyOf(t, distinct);
         this.after = Arrays.copyOf(s, distinct);
+        double sum = 0;
+        for (double d : this.discharged) {
+            sum += Math.log1p(d);
+        }
+        int n = this.discharged.length;
+        this.logMean = n < 2 ? Double.NaN : sum / n;
+        double squares = 0;
+        for (double d : this.discharged) {
+            squares += (Math.log1p(d) - logMean) * (Math.log1p(d) - logMean);
+        }
+        this.logVariance = n < 2 ? Double.NaN : squares / (n - 1);
     }
 
     /**
@@ -91,13 +120,14 @@ public final class Survival {
      * {@link #MIN_CONTEXT} discharged obligations are left out (they are judged by this pooled curve).
      */
     public Survival withContexts(Map<String, Survival> byInput) {
+        Survival pooled = new Survival(discharged, censored);
         Map<String, Survival> kept = new TreeMap<>();
         byInput.forEach((input, s) -> {
             if (s.discharged.length >= MIN_CONTEXT) {
-                kept.put(input, new Survival(s.discharged, s.censored));
+                kept.put(input, new Survival(s.discharged, s.censored, Map.of(), pooled));
             }
         });
-        return new Survival(discharged, censored, kept);
+        return new Survival(discharged, censored, kept, null);
     }
 
     /** The curves by trigger input ({@link #withContexts}), each with enough obligations. */
@@ -130,6 +160,51 @@ public final class Survival {
     /** How long each censored obligation had been pending when it was let go, sorted. */
     public double[] censored() {
         return censored.clone();
+    }
+
+    /**
+     * How long an obligation of this condition may be pending before it is late: the upper {@code level} prediction
+     * bound of the next duration, from a log-normal fitted to the discharged obligations and pooled towards the
+     * property's fit with the weight of {@link ForecastModel#PRIOR_RUNS} obligations; for {@code n} obligations with
+     * mean {@code m} and variance {@code v} of {@code log(1 + d)}, and the property's {@code M} and {@code V} (with
+     * {@code k} the prior's weight):
+     * {@code mu = (n m + k M) / (n + k)}, {@code s2 = ((n-1) v + k V) / (n - 1 + k)},
+     * {@code bound = exp(mu + t(level; n - 1 + k) sqrt(s2 (1 + 1 / (n + k)))) - 1}. Never before this condition's
+     * longest discharged obligation (a leg that long was seen to end), and never after the property's (one pending
+     * longer than every navigation took is late whatever its condition). NaN with fewer than two discharged
+     * obligations in the property.
+     *
+     * @param level the prediction bound's level, above 0.5 and below 1
+     */
+    public double lateAfter(double level) {
+        if (!(level > 0.5 && level < 1)) {
+            throw new IllegalArgumentException("a prediction level is above 0.5 and below 1: " + level);
+        }
+        double[] last = lastLate;
+        if (last[0] == level) {
+            return last[1];
+        }
+        double late = late(level);
+        lastLate = new double[] {level, late};
+        return late;
+    }
+
+    private double late(double level) {
+        Survival pooled = prior == null ? this : prior;
+        if (Double.isNaN(pooled.logMean)) {
+            return Double.NaN;
+        }
+        double n = discharged.length;
+        double k = prior == null || n < 2 ? 0 : ForecastModel.PRIOR_RUNS;
+        Survival own = n < 2 ? pooled : this;
+        double mu = (own.discharged.length * own.logMean + k * pooled.logMean) / (own.discharged.length + k);
+        double df = own.discharged.length - 1 + k;
+        double s2 = ((own.discharged.length - 1) * own.logVariance + k * pooled.logVariance) / df;
+        double t = new TDistribution(null, df).inverseCumulativeProbability(level);
+        double bound = Math.expm1(mu + t * Math.sqrt(s2 * (1 + 1 / (own.discharged.length + k))));
+        double ceiling = pooled.discharged[pooled.discharged.length - 1];
+        double floor = own.discharged[own.discharged.length - 1];
+        return Math.min(Math.max(bound, floor), ceiling);
     }
 
     /** Training obligations, discharged or not. */
@@ -207,7 +282,7 @@ public final class Survival {
 
     @Override
     public int hashCode() {
-        return 31 * Arrays.hashCode(discharged) + Arrays.hashCode(censored);
+        return 31 * Arrays.hashCode(discharged) + Arrays.hashCode(censored); // the prior follows from the pooled curve
     }
 
     private static double[] finiteSorted(double[] values, String what) {

@@ -105,7 +105,7 @@ final class DeadlineFollow extends FollowBase {
         Deadline d = response.within();
         Survival s = pending;
         Survival.Estimate raw = s.estimate(elapsed, d.amount());
-        c.deadlines.forecast(c.now.run, response, r, elapsed, raw);
+        c.deadlines.forecast(c.now.run, response, r, elapsed, raw, s);
         Survival.Estimate e = rule.calibrated(raw);
         current = e;
         String shown = shown(e);
@@ -117,7 +117,7 @@ final class DeadlineFollow extends FollowBase {
         if (active == null && c.forecastRule() && rule.warns(raw, elapsed, d.amount(), s, survival)) {
             // A bounded response has no value: the warning carries none, as its violation and its recovery do not.
             warn(new MonitorEvent.Warning(r.time(), r.line(), List.of(), null, c.now.pairs, r.clock(), c.now.run,
-                    c.rule, null, reason(response, e, elapsed, s), MonitorEvent.Clause.DEADLINE, null,
+                    c.rule, null, reason(response, e, elapsed, s, rule), MonitorEvent.Clause.DEADLINE, null,
                     response.id(), e));
         }
     }
@@ -159,11 +159,29 @@ final class DeadlineFollow extends FollowBase {
      * that long took longer than 400 ticks; P(miss) 0.62; 20 ticks left".
      */
     static String reason(Response p, Survival.Estimate e, double elapsed, Survival s) {
+        return reason(p, e, elapsed, s, DeadlineRule.DEFAULT);
+    }
+
+    /**
+     * As above; when {@code rule}'s late clause warns: "pending 73 ticks, later than 99% of legs like the 10 training
+     * obligations that began where it did (they took 4 to 25 ticks; late past 72); 327 ticks left before the
+     * deadline of 400 ticks".
+     */
+    static String reason(Response p, Survival.Estimate e, double elapsed, Survival s, DeadlineRule rule) {
         Deadline d = p.within();
         String unit = d.unit().key;
         String head = String.format(Locale.ROOT, "'%s' (%s) pending %s %s", p.name(), p.id(),
                 ForecastWords.fixed(elapsed, 0), unit);
         String action = p.action() == null ? "" : "; do now: " + p.action();
+        if (rule.late() && !rule.baseline() && DeadlineRule.pastLate(elapsed, s, rule.level())) {
+            double[] took = s.discharged();
+            return String.format(Locale.ROOT, "%s, later than %s of obligations like the %d training ones that began"
+                            + " where it did (they took %s to %s %s; late past %s); %s %s left before the deadline of"
+                            + " %s%s", head, DeadlineRule.percent(rule.level()), took.length,
+                    ForecastWords.fixed(took[0], 0), ForecastWords.fixed(took[took.length - 1], 0), unit,
+                    ForecastWords.fixed(s.lateAfter(rule.level()), 0), ForecastWords.fixed(e.timeLeft(), 0), unit,
+                    d.describe(), action);
+        }
         if (e.novel()) {
             return String.format(Locale.ROOT, "%s, longer than any of the %d training obligations (the longest: %s):"
                             + " behaviour never seen; %s %s left before the deadline of %s%s", head, s.size(),
