@@ -27,8 +27,9 @@ import java.util.TreeMap;
  * <p>The curve may be conditioned on where the run was when the obligation began: the Mealy input of its trigger
  * record (which skill was asked for, where the robot was sent: {@code goTo_ch} is another leg than {@code goTo_ki}),
  * after the input of the property's previous trigger ({@code goTo_ch_i>goTo_ki_i}, the way on after a recharge).
- * Each condition with at least {@value #MIN_CONTEXT} training obligations has a curve of its own ({@link #at}); one
- * with fewer falls back to its trigger's input alone, then to the pooled curve. The input, not a machine's state number, is the condition: the
+ * Each condition with at least {@value #MIN_CONTEXT} discharged training obligations has a curve of its own
+ * ({@link #at}); one with fewer is estimated by the pooled curve (and one with fewer than {@value #MIN_FIT} falls back
+ * to its trigger's input alone, then to the pooled curve). The input, not a machine's state number, is the condition: the
  * input means the same in every model learned from the same abstraction (each fold's, and the final one's), where a
  * state number is only a name inside one machine.
  *
@@ -54,11 +55,19 @@ public final class Survival {
     private final Map<String, Survival> contexts;
     /** The property's pooled curve this condition's fit is pooled towards; null for the pooled curve itself. */
     private final Survival prior;
+    /**
+     * Whether its estimates are its own Kaplan-Meier curve; a condition with fewer than {@link #MIN_CONTEXT}
+     * discharged obligations is estimated by {@link #prior}'s, and only its late bound is its own (pooled towards it).
+     */
+    private final boolean ownCurve;
     /** Mean and variance of log(1 + duration) over the discharged obligations (NaN without two of them). */
     private final double logMean;
     private final double logVariance;
     /** The last {@link #lateAfter} level asked and its answer: a follower asks the same level at every tick. */
     private volatile double[] lastLate = {Double.NaN, Double.NaN};
+
+    /** A condition needs this many discharged obligations for a late bound of its own (a mean and a spread). */
+    public static final int MIN_FIT = 2;
 
     /**
      * A condition needs this many training obligations that were discharged (their response came) for a curve of its
@@ -80,6 +89,7 @@ public final class Survival {
     private Survival(double[] discharged, double[] censored, Map<String, Survival> contexts, Survival prior) {
         this.contexts = Collections.unmodifiableMap(new TreeMap<>(contexts));
         this.prior = prior;
+        this.ownCurve = prior == null || discharged.length >= MIN_CONTEXT;
         this.discharged = finiteSorted(discharged, "discharged");
         this.censored = finiteSorted(censored, "censored");
         double[] t = new double[this.discharged.length];
@@ -116,21 +126,22 @@ public final class Survival {
     }
 
     /**
-     * This curve with {@code byInput} as the curves of the obligations by where they began; conditions with fewer than
-     * {@link #MIN_CONTEXT} discharged obligations are left out (they are judged by this pooled curve).
+     * This curve with {@code byInput} as the curves of the obligations by where they began. A condition with fewer
+     * than {@link #MIN_FIT} discharged obligations is left out (judged by this pooled curve); one with fewer than
+     * {@link #MIN_CONTEXT} is estimated by this pooled curve, its late bound its own pooled towards this one's.
      */
     public Survival withContexts(Map<String, Survival> byInput) {
         Survival pooled = new Survival(discharged, censored);
         Map<String, Survival> kept = new TreeMap<>();
         byInput.forEach((input, s) -> {
-            if (s.discharged.length >= MIN_CONTEXT) {
+            if (s.discharged.length >= MIN_FIT) {
                 kept.put(input, new Survival(s.discharged, s.censored, Map.of(), pooled));
             }
         });
         return new Survival(discharged, censored, kept, null);
     }
 
-    /** The curves by trigger input ({@link #withContexts}), each with enough obligations. */
+    /** The curves by trigger input ({@link #withContexts}), each with enough obligations for a late bound. */
     public Map<String, Survival> contexts() {
         return contexts;
     }
@@ -207,13 +218,19 @@ public final class Survival {
         return Math.min(Math.max(bound, floor), ceiling);
     }
 
-    /** Training obligations, discharged or not. */
+    /** Training obligations, discharged or not (the pooled curve's for a condition estimated by it). */
     public int size() {
+        if (!ownCurve) {
+            return prior.size();
+        }
         return discharged.length + censored.length;
     }
 
     /** The longest any training obligation was seen pending (discharged or censored); NaN without one. */
     public double longest() {
+        if (!ownCurve) {
+            return prior.longest();
+        }
         double d = discharged.length == 0 ? Double.NEGATIVE_INFINITY : discharged[discharged.length - 1];
         double c = censored.length == 0 ? Double.NEGATIVE_INFINITY : censored[censored.length - 1];
         double m = Math.max(d, c);
@@ -222,12 +239,18 @@ public final class Survival {
 
     /** The Kaplan-Meier estimate of P(still pending after {@code t}); 1 before the first discharge. */
     public double survival(double t) {
+        if (!ownCurve) {
+            return prior.survival(t);
+        }
         int i = Lows.atMost(times, t);
         return i == 0 ? 1.0 : after[i - 1];
     }
 
     /** Training obligations still pending after {@code t}: at risk of missing a deadline beyond it. */
     public int pendingAfter(double t) {
+        if (!ownCurve) {
+            return prior.pendingAfter(t);
+        }
         return discharged.length - Lows.atMost(discharged, t) + censored.length - Lows.atMost(censored, t);
     }
 
@@ -238,6 +261,9 @@ public final class Survival {
      *         there is none), and then its probability is NaN
      */
     public Estimate estimate(double elapsed, double deadline) {
+        if (!ownCurve) {
+            return prior.estimate(elapsed, deadline);
+        }
         double left = Math.max(0.0, deadline - elapsed);
         int atRisk = pendingAfter(elapsed);
         if (atRisk == 0 && !(elapsed <= longest())) {
@@ -258,6 +284,9 @@ public final class Survival {
      * finite number of obligations that all made it reads as a certainty that the next one will.
      */
     public double missRate(double deadline) {
+        if (!ownCurve) {
+            return prior.missRate(deadline);
+        }
         int n = size();
         return (n * survival(deadline) + 0.5) / (n + 1);
     }
