@@ -27,9 +27,11 @@ import java.util.List;
  * @param baseline    whether the elapsed-time baseline warns in place of this rule (pending longer than every training
  *                    obligation of the property), because this rule did worse on the same held-out folds
  * @param level       the late clause's prediction level ({@link #LEVELS}), NaN for the novelty clause
+ * @param waited      whether the late clause's ceiling is every training obligation, those let go still pending
+ *                    included (as the elapsed-time rule's), rather than every one whose response came
  */
 public record DeadlineRule(double threshold, String note, boolean validated, Calibration calibration, double margin,
-                           boolean baseline, double level) {
+                           boolean baseline, double level, boolean waited) {
 
     /** The novelty clause's margin before the cross-validation chose one: half of it. */
     public static final double HALF = 0.5;
@@ -45,26 +47,39 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
 
     /**
      * The clauses the cross-validation chooses from, in the order it tries them: the late clause at each of
-     * {@link #LEVELS}, then the novelty clause at each of {@link #MARGINS}.
+     * {@link #LEVELS} capped at every discharged training obligation, then at each capped at every training obligation
+     * (those let go still pending included: later, where runs ended on the way), then the novelty clause at each of
+     * {@link #MARGINS}.
      */
     public static int variants() {
-        return LEVELS.size() + MARGINS.size();
+        return 2 * LEVELS.size() + MARGINS.size();
     }
 
     /** The prediction level of variant {@code v} ({@link #variants}), NaN for a novelty clause. */
     public static double levelOf(int v) {
-        return v < LEVELS.size() ? LEVELS.get(v) : Double.NaN;
+        return v < 2 * LEVELS.size() ? LEVELS.get(v % LEVELS.size()) : Double.NaN;
+    }
+
+    /** Whether variant {@code v}'s late clause is capped at every training obligation, censored ones included. */
+    public static boolean waitedOf(int v) {
+        return v >= LEVELS.size() && v < 2 * LEVELS.size();
     }
 
     /** The novelty margin of variant {@code v} ({@link #variants}); 0 for a late clause (not used by it). */
     public static double marginOf(int v) {
-        return v < LEVELS.size() ? 0 : MARGINS.get(v - LEVELS.size());
+        return v < 2 * LEVELS.size() ? 0 : MARGINS.get(v - 2 * LEVELS.size());
+    }
+
+    /** A rule whose warning clause is the late clause at {@code level} (NaN: the novelty clause with {@code margin}). */
+    public DeadlineRule(double threshold, String note, boolean validated, Calibration calibration, double margin,
+                        boolean baseline, double level) {
+        this(threshold, note, validated, calibration, margin, baseline, level, false);
     }
 
     /** A rule whose warning clause is the novelty clause with {@code margin}. */
     public DeadlineRule(double threshold, String note, boolean validated, Calibration calibration, double margin,
                         boolean baseline) {
-        this(threshold, note, validated, calibration, margin, baseline, Double.NaN);
+        this(threshold, note, validated, calibration, margin, baseline, Double.NaN, false);
     }
 
     /** A rule whose novelty clause waits for half of the margin, as rules learned before the choice do. */
@@ -95,11 +110,17 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
 
     /** As above, with the late clause at {@code level} in place of the novelty clause when it is a number. */
     public static DeadlineRule unvalidated(String why, boolean baseline, double margin, double level) {
+        return unvalidated(why, baseline, margin, level, false);
+    }
+
+    /** As above, the late clause capped at every training obligation, censored ones included, if {@code waited}. */
+    public static DeadlineRule unvalidated(String why, boolean baseline, double margin, double level,
+                                           boolean waited) {
         return new DeadlineRule(NEVER, why + "; not validated: the probability is shown but does not warn, the warning"
                 + (Double.isNaN(level) ? " comes past every training obligation"
                 : String.format(java.util.Locale.ROOT, " comes past the %s prediction bound of the training"
                 + " obligations that began where it did", percent(level))), false, Calibration.IDENTITY, margin,
-                baseline, level);
+                baseline, level, waited);
     }
 
     /** {@code 0.999} as {@code 99.9%}. */
@@ -153,7 +174,7 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
             return pastEvery(elapsed, pooled);
         }
         if (late()) {
-            return pastLate(elapsed, survival, level)
+            return pastLate(elapsed, survival, level, waited)
                     || (!e.novel() && calibration.apply(e.probability()) >= threshold);
         }
         return e.novel() ? pastEveryObligation(elapsed, deadline, survival, margin)
@@ -169,9 +190,14 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
      * The late clause: pending longer than the {@code level} prediction bound of the obligations of {@code survival}
      * (the curve of those that began where this one did, {@link Survival#lateAfter}).
      */
-    public static boolean pastLate(double elapsed, Survival survival, double level) {
-        double late = survival.lateAfter(level);
+    public static boolean pastLate(double elapsed, Survival survival, double level, boolean waited) {
+        double late = survival.lateAfter(level, waited);
         return !Double.isNaN(late) && elapsed > late;
+    }
+
+    /** The late clause capped at every discharged training obligation. */
+    public static boolean pastLate(double elapsed, Survival survival, double level) {
+        return pastLate(elapsed, survival, level, false);
     }
 
     /** The elapsed-time baseline: pending longer than every obligation of {@code survival}. */

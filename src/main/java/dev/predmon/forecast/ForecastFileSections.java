@@ -77,6 +77,9 @@ final class ForecastFileSections {
                 }
                 if (rule.late()) {
                     n.put("level", rule.level());
+                    if (rule.waited()) {
+                        n.put("lateCeiling", "every");
+                    }
                 }
                 if (rule.baseline()) {
                     n.put("rule", "baseline");
@@ -143,13 +146,17 @@ final class ForecastFileSections {
                 throw new IllegalArgumentException("'" + at + "/level': " + n.get("level")
                         + " is not a prediction level (above 0.5 and below 1)");
             }
+            JsonNode ceiling = n.get("lateCeiling");
+            if (ceiling != null && !(ceiling.isTextual() && ceiling.asText().equals("every"))) {
+                throw new IllegalArgumentException("'" + at + "/lateCeiling': expected \"every\"");
+            }
             JsonNode rule = n.get("rule");
             if (rule != null && !(rule.isTextual() && rule.asText().equals("baseline"))) {
                 throw new IllegalArgumentException("'" + at + "/rule': expected \"baseline\"");
             }
             rules.put(e.getKey(), new DeadlineRule(threshold, required(n, "note").asText(), validated.booleanValue(),
                     c == null ? Calibration.IDENTITY : calibration(c, at + "/calibration"), margin, rule != null,
-                    level));
+                    level, ceiling != null));
         }
         return rules;
     }

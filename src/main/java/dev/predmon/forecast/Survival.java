@@ -63,7 +63,7 @@ public final class Survival {
     /** Mean and variance of log(1 + duration) over the discharged obligations (NaN without two of them). */
     private final double logMean;
     private final double logVariance;
-    /** The last {@link #lateAfter} level asked and its answer: a follower asks the same level at every tick. */
+    /** The last {@link #lateAfter} level asked (negative: with censored legs) and its answer: asked at every tick. */
     private volatile double[] lastLate = {Double.NaN, Double.NaN};
 
     /** A condition needs this many discharged obligations for a late bound of its own (a mean and a spread). */
@@ -185,22 +185,30 @@ public final class Survival {
      * longer than every navigation took is late whatever its condition). NaN with fewer than two discharged
      * obligations in the property.
      *
-     * @param level the prediction bound's level, above 0.5 and below 1
+     * @param level    the prediction bound's level, above 0.5 and below 1
+     * @param censored whether the ceiling is every training obligation of the property, those its run let go still
+     *                 pending included (the elapsed-time rule's), rather than every discharged one
      */
-    public double lateAfter(double level) {
+    public double lateAfter(double level, boolean censored) {
         if (!(level > 0.5 && level < 1)) {
             throw new IllegalArgumentException("a prediction level is above 0.5 and below 1: " + level);
         }
+        double key = censored ? -level : level;
         double[] last = lastLate;
-        if (last[0] == level) {
+        if (last[0] == key) {
             return last[1];
         }
-        double late = late(level);
-        lastLate = new double[] {level, late};
+        double late = late(level, censored);
+        lastLate = new double[] {key, late};
         return late;
     }
 
-    private double late(double level) {
+    /** {@link #lateAfter(double, boolean)} with the ceiling at every discharged training obligation. */
+    public double lateAfter(double level) {
+        return lateAfter(level, false);
+    }
+
+    private double late(double level, boolean censored) {
         Survival pooled = prior == null ? this : prior;
         if (Double.isNaN(pooled.logMean)) {
             return Double.NaN;
@@ -213,7 +221,7 @@ public final class Survival {
         double s2 = ((own.discharged.length - 1) * own.logVariance + k * pooled.logVariance) / df;
         double t = new TDistribution(null, df).inverseCumulativeProbability(level);
         double bound = Math.expm1(mu + t * Math.sqrt(s2 * (1 + 1 / (own.discharged.length + k))));
-        double ceiling = pooled.discharged[pooled.discharged.length - 1];
+        double ceiling = censored ? pooled.longest() : pooled.discharged[pooled.discharged.length - 1];
         double floor = own.discharged[own.discharged.length - 1];
         return Math.min(Math.max(bound, floor), ceiling);
     }

@@ -107,7 +107,8 @@ public final class DeadlineTraining {
         CrossValidation.Rule x = c.rule();
         if (!x.validated()) {
             return DeadlineRule.unvalidated(x.note() + "; no held-out obligation missed its deadline", c.baseline(),
-                    DeadlineRule.marginOf(x.variant()), DeadlineRule.levelOf(x.variant()));
+                    DeadlineRule.marginOf(x.variant()), DeadlineRule.levelOf(x.variant()),
+                    DeadlineRule.waitedOf(x.variant()));
         }
         String note = x.note();
         if (c.baseline()) {
@@ -115,7 +116,7 @@ public final class DeadlineTraining {
         }
         return new DeadlineRule(x.threshold(), note, x.validated(),
                 x.validated() ? x.calibration() : Calibration.IDENTITY, DeadlineRule.marginOf(x.variant()),
-                c.baseline(), DeadlineRule.levelOf(x.variant()));
+                c.baseline(), DeadlineRule.levelOf(x.variant()), DeadlineRule.waitedOf(x.variant()));
     }
 
     /**

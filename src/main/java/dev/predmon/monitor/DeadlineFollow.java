@@ -173,13 +173,13 @@ final class DeadlineFollow extends FollowBase {
         String head = String.format(Locale.ROOT, "'%s' (%s) pending %s %s", p.name(), p.id(),
                 ForecastWords.fixed(elapsed, 0), unit);
         String action = p.action() == null ? "" : "; do now: " + p.action();
-        if (rule.late() && !rule.baseline() && DeadlineRule.pastLate(elapsed, s, rule.level())) {
+        if (rule.late() && !rule.baseline() && DeadlineRule.pastLate(elapsed, s, rule.level(), rule.waited())) {
             double[] took = s.discharged();
             return String.format(Locale.ROOT, "%s, later than %s of obligations like the %d training ones that began"
                             + " where it did (they took %s to %s %s; late past %s); %s %s left before the deadline of"
                             + " %s%s", head, DeadlineRule.percent(rule.level()), took.length,
                     ForecastWords.fixed(took[0], 0), ForecastWords.fixed(took[took.length - 1], 0), unit,
-                    ForecastWords.fixed(s.lateAfter(rule.level()), 0), ForecastWords.fixed(e.timeLeft(), 0), unit,
+                    ForecastWords.fixed(s.lateAfter(rule.level(), rule.waited()), 0), ForecastWords.fixed(e.timeLeft(), 0), unit,
                     d.describe(), action);
         }
         if (e.novel()) {

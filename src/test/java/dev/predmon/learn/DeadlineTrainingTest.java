@@ -111,12 +111,12 @@ class DeadlineTrainingTest {
                 new HeldOutFolds.Fold(0, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(stuck)))),
                 new HeldOutFolds.Fold(1, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(slow))))));
         List<CrossValidation.Case> cases = DeadlineTraining.cases(ID, folds);
-        assertEquals(List.of(4.0, 4.0, 4.0, 7.0), cases.get(0).variants());
+        assertEquals(List.of(4.0, 4.0, 4.0, 4.0, 4.0, 7.0), cases.get(0).variants());
         assertEquals(4.0, cases.get(0).baselineAt());
-        assertEquals(List.of(4.0, 4.0, 4.0, Double.NaN), cases.get(1).variants());
+        assertEquals(List.of(4.0, 4.0, 4.0, 4.0, 4.0, Double.NaN), cases.get(1).variants());
         assertEquals(4.0, cases.get(1).baselineAt());
         Obligation unknown = new Obligation(NAVIGATION, steps(11, shortLegs), 11, false, 11, 11, Double.NaN);
-        assertEquals(List.of(Double.NaN, Double.NaN, 4.0, 7.0), DeadlineTraining.cases(ID, new HeldOutFolds(2,
+        assertEquals(List.of(Double.NaN, Double.NaN, Double.NaN, Double.NaN, 4.0, 7.0), DeadlineTraining.cases(ID, new HeldOutFolds(2,
                 List.of(new HeldOutFolds.Fold(0, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(unknown)))))))
                 .get(0).variants());
     }
