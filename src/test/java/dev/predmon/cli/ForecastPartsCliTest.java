@@ -137,11 +137,17 @@ class ForecastPartsCliTest {
         ModelFilesCliTest.refused(models, file, "'properties.navigation-in-time.note' is missing");
     }
 
-    /** The absence's event forecast is checked as a bound's: its parts, its states, its counts. */
+    /**
+     * The absence's event forecast (learned from the sample logs: 10 of their 30 runs abort) is checked as a bound's:
+     * its parts, its states, its counts.
+     */
     @Test
     void anEventsForecastIsCheckedPartByPart() throws IOException {
-        Path models = ModelFilesCliTest.copyOfShippedModels(tmp);
+        Path models = tmp.resolve("learned");
+        Cli l = Cli.run("learn", "--logs", "sample-logs", "--models", models.toString());
+        assertEquals(ExitCodes.OK, l.code(), l.err());
         ObjectNode shipped = forecast(models);
+        assertEquals("event", properties(shipped).get("no-abort").get("kind").asText());
         Path file = models.resolve("forecast.json");
         ObjectNode f = shipped.deepCopy();
         ((ObjectNode) properties(f).get("no-abort")).put("threshold", 1.5);
@@ -159,6 +165,12 @@ class ForecastPartsCliTest {
         ((ObjectNode) properties(f).get("no-abort").get("calibration")).put("slope", -1);
         write(models, f);
         ModelFilesCliTest.refused(models, file, "'properties.no-abort.calibration.slope': expected a positive number");
+        f = shipped.deepCopy();
+        ObjectNode states = (ObjectNode) properties(f).get("no-abort").get("states");
+        states.set("ghost", states.remove("direct"));
+        write(models, f);
+        ModelFilesCliTest.refused(models, file, "'properties.no-abort.states': machine 'ghost' is not one index.json "
+                + "lists");
     }
 
     @Test

@@ -130,8 +130,8 @@ class LiveScorecardBrowserTest {
         assertTrue(c.skill(), "the sample logs' models know more than the base rate: " + c);
         JsonNode shown = page(models, abstraction(), "live-skill.png");
         assertFalse(shown.get("cardHidden").asBoolean());
-        assertTrue(shown.get("card").asText().startsWith(c.property() + ": these models warned " + c.warned() + " of "
-                + c.violating() + " violations in cross-validation"), "the first floor's first, by name: " + shown);
+        assertTrue(shown.get("card").asText().startsWith("these models warned " + c.warned() + " of " + c.violating()
+                + " violations in cross-validation"), shown.toString());
         assertFalse(shown.get("card").asText().contains("no skill"), shown.toString());
         assertTrue(shown.get("headline").asBoolean(), "the probability is the headline: " + shown);
         // below the threshold the headline is how far the run is from a warning, not a countdown

@@ -196,12 +196,6 @@ class ModelPartsCliTest {
         write(f);
         refused(models.resolve("forecast.json"), "'properties.battery.states': machine 'ghost' is not one index.json "
                 + "lists");
-        f = shipped.deepCopy();
-        ObjectNode event = (ObjectNode) f.get("properties").get("no-abort").get("states");
-        event.set("ghost", event.remove("direct"));
-        write(f);
-        refused(models.resolve("forecast.json"), "'properties.no-abort.states': machine 'ghost' is not one "
-                + "index.json lists");
     }
 
     /** learn refuses such names; read from an index they would reach a hook's environment and the terminal raw. */
