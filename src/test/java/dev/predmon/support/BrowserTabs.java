@@ -45,6 +45,13 @@ public final class BrowserTabs implements AutoCloseable {
         return page;
     }
 
+    /** A tab at the screen's size showing {@code url}; skipped without Chromium, as {@link #blank}. */
+    public HeadlessChromium.Page open(URI url, String untested) throws Exception {
+        HeadlessChromium.Page page = blank(untested);
+        page.call("Page.navigate", JSON.createObjectNode().put("url", url.toString()));
+        return page;
+    }
+
     /** Closes the tabs opened since the last call. */
     public void closeTabs() throws Exception {
         for (HeadlessChromium.Page p : pages) {
