@@ -4,10 +4,10 @@ import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
 import dev.predmon.support.LiveWatch;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Path;
@@ -33,11 +33,11 @@ class LiveOwnPropertyBrowserTest {
     static Path tmp;
     static Path models;
     static Path aborted;
-    private static BrowserTabs tabs;
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs();
 
     @BeforeAll
     static void learn() throws Exception {
-        tabs = BrowserTabs.start();
         Path train = tmp.resolve("train");
         simulate(train, "direct", "100", "10");
         simulate(train, "recharge", "1100", "5", "--aborts", "1", "--abort-on", "station");
@@ -48,11 +48,6 @@ class LiveOwnPropertyBrowserTest {
         assertTrue(learned.out().contains("no-abort: violated in 9 of 19 runs"), learned.out());
         simulate(tmp.resolve("test"), "recharge", "6000", "1", "--aborts", "1", "--abort-on", "station");
         aborted = tmp.resolve("test/recharge/recharge-6000.log");
-    }
-
-    @AfterAll
-    static void stopBrowser() throws Exception {
-        tabs.close();
     }
 
     private static void simulate(Path dir, String scenario, String seed, String runs, String... more) {
@@ -118,9 +113,10 @@ class LiveOwnPropertyBrowserTest {
             assertEquals("0.0", sample(metrics, "predmon_property_state", "property=\"battery\"",
                     "state=\"violated\""), metrics);
 
-            HeadlessChromium.Page page = watch.open(tabs, "the live page's own property is not tested in a browser");
+            HeadlessChromium.Page page = watch.open(TABS, "the live page's own property is not tested in a browser");
             page.await("document.querySelector('article.tile .verdict').textContent.length > 0"
-                    + " && document.querySelectorAll('article.tile li.prop').length > 1", "the tile and its lights", 30);
+                    + " && document.querySelectorAll('article.tile li.prop').length > 1", "the tile and its lights",
+                    30);
             page.screenshot(Path.of("target", "live-own-property.png"));
             assertEquals("light red", page.eval("document.querySelector('article.tile header .light').className"));
             String verdict = page.eval("document.querySelector('article.tile .verdict').textContent");

@@ -22,7 +22,8 @@ import java.util.regex.Pattern;
 /**
  * {@code watch ... --http 0} run in-process on a thread of its own, as a browser test starts it: the live view's
  * address once watch announces it, its {@code /status} and {@code /metrics}, and a tab of the page in Chromium
- * ({@link BrowserTabs}). Closing it stops watch (an interrupt, the in-process way) and waits for it to end.
+ * ({@link BrowserTabs}). Every browser test of the live view that runs watch starts it so. Closing it stops watch
+ * (an interrupt, the in-process way) and waits for it to end.
  */
 public final class LiveWatch implements AutoCloseable {
 
