@@ -100,7 +100,7 @@ export function basisWords(f) {
   const runs = f.violated + ' of ' + f.runs + ' training runs';
   switch (f.basis) {
     case 'matched':
-      return 'matched: ' + runs + ' that were where this run is violated';
+      return 'matched: of ' + f.runs + ' training runs that were where this run is now, ' + f.violated + ' went on to violate';
     case 'resynchronised':
       return 'new behaviour since line ' + f.novelSince + '; matched again on the latest steps: ' + runs
         + ' violated';
