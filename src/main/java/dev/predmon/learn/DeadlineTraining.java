@@ -40,7 +40,7 @@ public final class DeadlineTraining {
     /**
      * {@code model} with the deadline rule of every property it learned obligations for, chosen on {@code heldOut},
      * the cross-validation's replays of its training logs ({@link ForecastTraining#heldOut}), and their scorecards
-     * after its own.
+     * by property.
      */
     public static ForecastModel train(ForecastModel model, HeldOutFolds heldOut, Abstraction abstraction) {
         Map<String, Response> responses = new TreeMap<>();
@@ -55,7 +55,7 @@ public final class DeadlineTraining {
         }
         int k = heldOut.folds();
         Map<String, DeadlineRule> rules = new TreeMap<>();
-        List<Scorecard> cards = new ArrayList<>(model.scorecards());
+        Map<String, List<Scorecard>> cards = new TreeMap<>();
         for (Response r : responses.values()) {
             if (k < 2) {
                 rules.put(r.id(), DeadlineRule.unvalidated("too few logs to cross-validate"));
@@ -71,10 +71,10 @@ public final class DeadlineTraining {
                     r.within().unit().key, Scorecard.OBLIGATIONS, Scorecard.FORECAST, Scorecard.ELAPSED));
             rules.put(r.id(), rule(c));
             if (cases.stream().anyMatch(CrossValidation.Case::violated)) {
-                cards.add(c.scorecard()); // without a missed deadline there is no warning to score (the note says so)
+                cards.put(r.id(), List.of(c.scorecard())); // without a missed deadline there is no warning to score (the note says so)
             }
         }
-        return model.withDeadlines(rules).withScorecards(cards);
+        return model.withDeadlines(rules).withDeadlineScorecards(cards);
     }
 
     /**

@@ -54,14 +54,15 @@ class ForecastChoiceFileTest {
         Scorecard card = new Scorecard("nav", 5, 40, 2, 1, 1, 50, "ticks", 0.05, 0.1, Scorecard.OBLIGATIONS,
                 Scorecard.FORECAST, base, true);
         ForecastModel m = new ForecastModel(ForecastModel.FORMAT, "s", 20, 10, 2, new Lows(new double[] {30},
-                new double[] {25}), 0.6, "chosen", true, Map.of(), List.of("a"), Calibration.IDENTITY, List.of(card),
+                new double[] {25}), 0.6, "chosen", true, Map.of(), List.of("a"), Calibration.IDENTITY, List.of(),
                 Map.of("nav", pooled), Map.of("nav", new DeadlineRule(0.7, "n", true, Calibration.IDENTITY, 0, true)))
-                .withClauses(Clauses.NO_MATCHING);
+                .withClauses(Clauses.NO_MATCHING).withDeadlineScorecards(Map.of("nav", List.of(card)))
+                .named("battery", List.of("battery", "nav"));
         ForecastModel back = ForecastFile.read(ForecastFile.write(m));
         assertEquals(m, back);
         assertEquals(0.0, back.deadlineRule("nav").margin());
         assertTrue(back.deadlineRule("nav").baseline());
-        assertEquals(base, back.scorecards().get(0).inForce());
+        assertEquals(base, back.property("nav").orElseThrow().scorecards().get(0).inForce());
         assertEquals(Clauses.NO_MATCHING, back.clauses());
         assertEquals(Clauses.BASELINE, ForecastFile.read(ForecastFile.write(m.withClauses(Clauses.BASELINE)))
                 .clauses());
@@ -92,10 +93,14 @@ class ForecastChoiceFileTest {
         }
     }
 
-    /** The shipped models were learned before the choice: every clause, the half margin, no curve by condition. */
+    /**
+     * Models learned before the choice (a copy of the shipped forecast of format 1): every clause, the half margin, no
+     * curve by condition.
+     */
     @Test
-    void theShippedForecastStillReadsAsBefore() throws Exception {
-        ForecastModel shipped = ForecastFile.read(Files.readString(Path.of("models", ForecastFile.NAME)));
+    void aForecastLearnedBeforeTheChoiceStillReadsAsBefore() throws Exception {
+        ForecastModel shipped = ForecastFile.read(Files.readString(Path.of("src/test/resources/forecast/format-1",
+                ForecastFile.NAME)));
         assertEquals(Clauses.ALL, shipped.clauses());
         shipped.deadlines().values().forEach(r -> assertEquals(DeadlineRule.HALF, r.margin()));
         shipped.obligations().values().forEach(s -> assertTrue(s.contexts().isEmpty()));
