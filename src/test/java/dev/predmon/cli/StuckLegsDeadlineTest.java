@@ -38,7 +38,7 @@ class StuckLegsDeadlineTest {
         Cli learned = Cli.run("learn", "--logs", "sample-logs", "--models", models.toString());
         assertEquals(0, learned.code(), learned.err());
         JsonNode obligations = JSON.readTree(Files.readString(models.resolve("forecast.json")))
-                .get("obligations").get(ID);
+                .get("properties").get(ID);
         double longest = 0;
         for (JsonNode d : obligations.get("discharged")) {
             longest = Math.max(longest, d.asDouble());
