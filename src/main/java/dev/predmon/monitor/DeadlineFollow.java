@@ -19,8 +19,10 @@ import java.util.Locale;
  *
  * <p>Under the forecast rule it warns once per obligation, by the property's {@link DeadlineRule}: when the calibrated
  * P(miss) reaches the threshold learned by cross-validation (even odds when the training obligations could not choose
- * one), or when the obligation has been pending longer than every training obligation (no evidence either way) and
- * half of the time from the longest of them to the deadline has passed too. A warned obligation discharged in time
+ * one), or by the rule's clause whatever the probability: the obligation is late for its leg (past the prediction
+ * bound of the training obligations that began where it did, {@link Survival#lateAfter}), or, in rules without it,
+ * it has been pending longer than every training obligation (no evidence either way) and the rule's margin of the
+ * time from the longest of them to the deadline has passed too. A warned obligation discharged in time
  * ends its warning (cause {@code discharged}); one that misses its deadline is the property's violation, told by the
  * checker. While an obligation is pending its calibrated forecast is told when it changes as the page shows it: the
  * probability of a miss in whole percent, or that the obligation is past every training one. A property without a
