@@ -137,7 +137,8 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
 
     public DeadlineRule {
         if (!((threshold >= 0 && threshold <= 1) || threshold == NEVER)) {
-            throw new IllegalArgumentException("a threshold is a probability, from 0 to 1: " + threshold);
+            throw new IllegalArgumentException("a threshold is a probability, from 0 to 1, or " + (int) NEVER
+                    + " where the probability does not warn: " + threshold);
         }
         if (!(margin >= 0 && margin <= 1)) {
             throw new IllegalArgumentException("a margin is a share, from 0 to 1: " + margin);

@@ -157,7 +157,8 @@ class SeveralRunsTest {
             }
         }
         assertEquals(ExitCodes.WARNING, watch.code().get(), "stopped after warnings");
-        assertEquals(List.of(0, 2), warnings.stream().map(w -> w.get("run").asInt()).toList(),
-                "the two depleted runs are warned, each in its run: " + out);
+        assertEquals(List.of("0 battery", "0 no-abort", "2 battery", "2 no-abort"),
+                warnings.stream().map(w -> w.get("run").asInt() + " " + w.get("property").asText()).toList(),
+                "the two depleted runs are warned of their battery and their abort, each in its run: " + out);
     }
 }

@@ -22,6 +22,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -55,14 +56,16 @@ class WatchHooksTest {
         log = Files.writeString(dir.resolve("robot-1.log"), FleetWatchTest.run(Scenario.DEPLETED, 9001));
     }
 
-    private JsonNode event(Cli w, String kind) throws Exception {
+    /** The events of {@code kind} that {@code watch --json} printed, in order. */
+    private static List<JsonNode> events(Cli w, String kind) throws Exception {
+        List<JsonNode> found = new ArrayList<>();
         for (String line : w.out().strip().split("\n", -1)) {
             JsonNode e = JSON.readTree(line);
             if (e.get("event").asText().equals(kind)) {
-                return e;
+                found.add(e);
             }
         }
-        throw new AssertionError("no " + kind + " event in " + w.out());
+        return found;
     }
 
     @Test
@@ -73,15 +76,28 @@ class WatchHooksTest {
                 "--on-warning", "echo this-goes-nowhere; cat >> '" + warnings + "'",
                 "--on-violation", "cat >> '" + violations + "'");
         assertEquals(ExitCodes.WARNING, w.code(), w.err());
-        JsonNode warning = event(w, "warning");
-        List<String> delivered = Files.readAllLines(warnings);
-        assertEquals(1, delivered.size(), "once: " + delivered);
-        JsonNode got = JSON.readTree(delivered.get(0));
-        assertEquals(log.toString(), got.get("log").asText(), "the hook always hears which log");
-        ((ObjectNode) got).remove("log");
-        assertEquals(warning, got, "the same object --json prints");
-        assertEquals("violation", JSON.readTree(Files.readAllLines(violations).get(0)).get("event").asText());
+        // the depleted run is warned of its battery, then of the navigation that aborts when the battery is empty
+        assertEquals(List.of("battery", "no-abort"), properties(events(w, "warning")), w.out());
+        assertEquals(events(w, "warning"), heard(warnings), "each warning once, the same object --json prints");
+        assertEquals(List.of("battery", "no-abort"), properties(events(w, "violation")), w.out());
+        assertEquals(events(w, "violation"), heard(violations), "each violation once");
         assertTrue(!w.out().contains("this-goes-nowhere"), "a hook's stdout does not mix with --json: " + w.out());
+    }
+
+    /** What a hook read on its stdin, one event a call, each naming the log, which {@code --json} does not. */
+    private List<JsonNode> heard(Path file) throws Exception {
+        List<JsonNode> got = new ArrayList<>();
+        for (String line : Files.readAllLines(file)) {
+            JsonNode e = JSON.readTree(line);
+            assertEquals(log.toString(), e.get("log").asText(), "the hook always hears which log");
+            ((ObjectNode) e).remove("log");
+            got.add(e);
+        }
+        return got;
+    }
+
+    private static List<String> properties(List<JsonNode> events) {
+        return events.stream().map(e -> e.get("property").asText()).toList();
     }
 
     @Test
@@ -131,22 +147,27 @@ class WatchHooksTest {
     }
 
     /**
-     * The README's YARP recipe, with a stand-in for {@code yarp} (YARP is not installed here) that records what it
-     * was asked to write: the bottle a YARP reader on the robot gets, from the environment variables.
+     * The YARP recipe of docs/watch.md, with a stand-in for {@code yarp} (YARP is not installed here) that records
+     * what it was asked to write: the bottles a YARP reader on the robot gets, from the environment variables, one a
+     * warning. A property without a value (no-abort) leaves its place empty.
      */
     @Test
     void yarpRecipeWritesOneBottleWithTheWarningsFields() throws Exception {
         Path bin = Files.createDirectories(dir.resolve("bin"));
-        Path yarp = Files.writeString(bin.resolve("yarp"), "#!/bin/sh\necho \"$@\" > '" + dir.resolve("args")
-                + "'\ncat > '" + dir.resolve("bottle") + "'\n");
+        Path yarp = Files.writeString(bin.resolve("yarp"), "#!/bin/sh\necho \"$@\" >> '" + dir.resolve("args")
+                + "'\ncat >> '" + dir.resolve("bottles") + "'\n");
         Files.setPosixFilePermissions(yarp, PosixFilePermissions.fromString("rwxr-xr-x"));
-        String recipe = "echo \"warning $PREDMON_SCENARIO $PREDMON_VALUE $PREDMON_TIME\" | yarp write ... /robot/predmon:i";
+        String recipe = "echo \"warning $PREDMON_PROPERTY $PREDMON_VALUE $PREDMON_TIME\" | yarp write ... /robot/predmon:i";
         Cli w = Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow", "--json",
                 "--on-warning", "PATH='" + bin + "':$PATH; " + recipe);
-        JsonNode warning = event(w, "warning");
-        assertEquals("write ... /robot/predmon:i", Files.readString(dir.resolve("args")).strip());
-        assertEquals("warning depleted " + String.format(Locale.ROOT, "%.2f", warning.get("value").asDouble()) + " "
-                + warning.get("time").asDouble(), Files.readString(dir.resolve("bottle")).strip());
+        List<JsonNode> warnings = events(w, "warning");
+        assertEquals(List.of("write ... /robot/predmon:i", "write ... /robot/predmon:i"),
+                Files.readAllLines(dir.resolve("args")));
+        JsonNode battery = warnings.get(0);
+        assertEquals(List.of("warning battery " + String.format(Locale.ROOT, "%.2f", battery.get("value").asDouble())
+                        + " " + battery.get("time").asDouble(),
+                "warning no-abort  " + warnings.get(1).get("time").asDouble()),
+                Files.readAllLines(dir.resolve("bottles")));
     }
 
     /**
@@ -162,7 +183,7 @@ class WatchHooksTest {
                 LogWriter.toText(day.get(0), o) + LogWriter.toText(day.get(1), o));
         Path calls = dir.resolve("calls");
         Cli.Running watch = Cli.start("watch", "--log", robot.toString(), "--models", MODELS.toString(), "--json",
-                "--on-warning", "echo warning $PREDMON_RUN >> '" + calls + "'",
+                "--on-warning", "echo warning $PREDMON_RUN $PREDMON_PROPERTY >> '" + calls + "'",
                 "--on-violation", "echo violation $PREDMON_RUN $PREDMON_PROPERTY >> '" + calls + "'");
         awaitOutput(watch, "\"run\":1,\"time\""); // the history is read: run 0's warning, violations, then run 1
         assertTrue(watch.out().toString().contains("\"event\":\"warning\""), "the history's warning is shown");
@@ -170,17 +191,18 @@ class WatchHooksTest {
         assertFalse(Files.exists(calls), "no hook for the history: " + (Files.exists(calls) ? Files.readString(calls)
                 : ""));
         Files.writeString(robot, LogWriter.toText(day.get(2), o), StandardOpenOption.APPEND);
-        // a depleted run violates the battery's floor, then its navigation aborts (no-abort): in run 0 and in run 2
-        awaitOutput(watch, "\"property\":\"no-abort\"", 2);
+        // a depleted run is warned of its battery and its navigation, violates the battery's floor, then its
+        // navigation aborts (no-abort): in run 0 and in run 2
+        awaitOutput(watch, "\"event\":\"violation\",\"time\"", 4);
         long deadline = System.currentTimeMillis() + 10_000;
         while (System.currentTimeMillis() < deadline
-                && (!Files.exists(calls) || Files.readAllLines(calls).size() < 3)) {
+                && (!Files.exists(calls) || Files.readAllLines(calls).size() < 4)) {
             Thread.sleep(20);
         }
         Thread.sleep(300);
         watch.stop();
         // once each; the two commands run side by side, so either may write first
-        assertEquals(List.of("violation 2 battery", "violation 2 no-abort", "warning 2"),
+        assertEquals(List.of("violation 2 battery", "violation 2 no-abort", "warning 2 battery", "warning 2 no-abort"),
                 Files.readAllLines(calls).stream().sorted().toList(),
                 watch.out().toString());
         assertEquals(ExitCodes.WARNING, watch.code().get(), watch.err().toString());

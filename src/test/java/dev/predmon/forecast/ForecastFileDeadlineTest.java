@@ -83,7 +83,8 @@ class ForecastFileDeadlineTest {
         ((ObjectNode) f.get("properties").get(ID)).put("threshold", 1.5);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(JSON.writeValueAsString(f), LEARN_ID));
-        assertEquals("'properties.navigation-in-time.threshold': a threshold is a probability, from 0 to 1: 1.5",
+        assertEquals("'properties.navigation-in-time.threshold': a threshold is a probability, from 0 to 1, or 2 where the"
+                + " probability does not warn: 1.5",
                 e.getMessage());
         ((ObjectNode) f.get("properties").get(ID)).put("threshold", 0.5).put("margin", -0.5);
         IllegalArgumentException margin = assertThrows(IllegalArgumentException.class,
