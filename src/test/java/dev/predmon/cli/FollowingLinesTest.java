@@ -99,8 +99,8 @@ class FollowingLinesTest {
                 "--timestamps");
         List<String> lines = text.out().lines().filter(l -> l.contains("WARNING") || l.contains("VIOLATION")
                 || l.contains("end of")).toList();
-        // the warning, the battery's violation, the aborted navigation's (no-abort) and the end
-        assertEquals(4, lines.size(), text.out());
+        // the battery's warning and violation, the aborted navigation's (no-abort) warning and violation, the end
+        assertEquals(5, lines.size(), text.out());
         lines.forEach(l -> assertTrue(l.matches(WALL_TIME + " .*"), l));
         assertTrue(Cli.run("watch", "--log", log.toString(), "--models", MODELS.toString(), "--no-follow").out()
                 .startsWith("t="), "no time stamp without --timestamps");

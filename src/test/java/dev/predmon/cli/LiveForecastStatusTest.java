@@ -41,14 +41,16 @@ class LiveForecastStatusTest {
                 HttpResponse.BodyHandlers.ofString()).body()).get("logs").get(0);
     }
 
-    /** The last event of a kind that {@code watch --json} printed so far, or null. */
+    /**
+     * The last event of a kind about the battery that {@code watch --json} printed so far, or null: the tile's
+     * headline is the battery's (the first floor), not the other properties' (no-abort's, a deadline's).
+     */
     private static JsonNode last(Cli.Running w, String kind) throws Exception {
         JsonNode found = null;
         for (String line : w.out().toString().split("\n", 0)) {
             if (line.startsWith("{")) {
                 JsonNode e = JSON.readTree(line);
-                // a bounded response's deadline forecast has no forecast object: the tile shows the battery's
-                if (e.get("event").asText().equals(kind) && !(kind.equals("forecast") && e.get("forecast").isNull())) {
+                if (e.get("event").asText().equals(kind) && e.get("property").asText().equals("battery")) {
                     found = e;
                 }
             }

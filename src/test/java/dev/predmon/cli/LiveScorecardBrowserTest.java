@@ -91,12 +91,18 @@ class LiveScorecardBrowserTest {
     @Timeout(180)
     void theScorecardIsUnderTheHeaderAndAForecastWithSkillIsTheHeadline() throws Exception {
         ModelSet models = models();
-        Scorecard c = models.forecast().scorecards().get(0);
+        List<Scorecard> cards = models.forecast().allScorecards();
+        assertEquals(2, cards.size(), "the battery's and the aborted navigation's: " + cards);
+        Scorecard c = cards.get(0);
         assertTrue(c.skill(), "the sample logs' models know more than the base rate: " + c);
         JsonNode shown = page(models, abstraction(), "live-skill.png");
         assertFalse(shown.get("cardHidden").asBoolean());
-        assertTrue(shown.get("card").asText().startsWith("these models warned " + c.warned() + " of " + c.violating()
-                + " violations in cross-validation"), shown.toString());
+        // one scorecard per property the models forecast, each named, the battery's first
+        assertTrue(shown.get("card").asText().startsWith(c.property() + ": these models warned " + c.warned() + " of "
+                + c.violating() + " violations in cross-validation"), shown.toString());
+        Scorecard next = cards.get(1);
+        assertTrue(shown.get("card").asText().contains(" \u00b7 " + next.property() + ": these models warned "
+                + next.warned() + " of " + next.violating() + " violations"), shown.toString());
         assertFalse(shown.get("card").asText().contains("no skill"), shown.toString());
         assertTrue(shown.get("headline").asBoolean(), "the probability is the headline: " + shown);
         // below the threshold the headline is how far the run is from a warning, not a countdown
