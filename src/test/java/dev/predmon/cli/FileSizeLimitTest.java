@@ -1,5 +1,7 @@
 package dev.predmon.cli;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.report.HtmlReport;
 import dev.predmon.samples.SampleFile;
 import org.junit.jupiter.api.Test;
@@ -23,6 +25,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * line naming the file, and the previous file is left byte for byte as it was, with nothing beside it.
  */
 class FileSizeLimitTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
 
     @TempDir
     Path tmp;
@@ -49,28 +53,44 @@ class FileSizeLimitTest {
     }
 
     /**
+     * The built-in abstraction with a description 4,000 characters longer: the index, which holds the abstraction
+     * as well, grows past the forecast, so that a limit between them stops learn at the index, its last file.
+     */
+    private static Path longerAbstraction(Path dir) throws Exception {
+        Cli shown = Cli.run("abstraction", "show", "thesis");
+        assertEquals(0, shown.code(), shown.err());
+        ObjectNode a = (ObjectNode) JSON.readTree(shown.out());
+        a.put("description", a.get("description").asText() + " " + "padding ".repeat(500).strip());
+        return Files.writeString(dir.resolve("longer.json"), JSON.writeValueAsString(a));
+    }
+
+    /**
      * learn's index.json is larger than the limit: learn fails naming it, the previous models are all there as
      * they were, and the next learn (with room) replaces them as usual.
      */
     @Test
-    void learnThatCannotWriteItsIndexKeepsThePreviousModels() throws Exception {
+    void learnThatCannotWriteItsIndexKeepsThePreviousModels(@TempDir Path elsewhere) throws Exception {
         Path logs = smallLogs();
+        String abstraction = longerAbstraction(elsewhere).toString();
         Path previousLogs = tmp.resolve("previous");
         Files.createDirectories(previousLogs);
         copyDir(logs.resolve("direct"), previousLogs.resolve("direct"));
-        assertEquals(0, Child.run(tmp, "learn", "--logs", "previous", "--models", "models").code());
+        assertEquals(0, Child.run(tmp, "learn", "--logs", "previous", "--models", "models", "--abstraction",
+                abstraction).code());
         Map<String, String> before = snapshot(tmp.resolve("models"));
-        // 8 KiB: the abstraction with its properties fits, the index (which holds it too) does not
-        assertTrue(Files.size(tmp.resolve("models/index.json")) > 8192, "the index is larger than the limit");
-        assertTrue(Files.size(tmp.resolve("models/abstraction.json")) < 8192, "the abstraction is not");
+        // 12 KiB: the abstraction with its properties fits, and so does the forecast of the logs (written before
+        // the index), but the index (which holds the abstraction too) does not
+        assertTrue(Files.size(tmp.resolve("models/index.json")) > 12288, "the index is larger than the limit");
+        assertTrue(Files.size(tmp.resolve("models/abstraction.json")) < 12288, "the abstraction is not");
 
-        Child r = Child.runWithFileSizeLimit(tmp, 8, "learn", "--logs", "logs", "--models", "models");
+        Child r = Child.runWithFileSizeLimit(tmp, 12, "learn", "--logs", "logs", "--models", "models",
+                "--abstraction", abstraction);
         failedNaming(r, "models/index.json");
         assertTrue(r.err().contains("the previous models are unchanged"), r.err());
         assertEquals(before, snapshot(tmp.resolve("models")));
         assertEquals(List.of("logs", "models", "previous"), names(tmp), "no staging or set-aside directory is left");
 
-        Child again = Child.run(tmp, "learn", "--logs", "logs", "--models", "models");
+        Child again = Child.run(tmp, "learn", "--logs", "logs", "--models", "models", "--abstraction", abstraction);
         assertEquals(0, again.code(), again.err());
         assertTrue(Files.isRegularFile(tmp.resolve("models/depleted.dot")));
     }
