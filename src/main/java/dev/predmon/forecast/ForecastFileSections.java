@@ -177,6 +177,12 @@ final class ForecastFileSections {
         if (rule.margin() != DeadlineRule.HALF) {
             n.put("margin", rule.margin());
         }
+        if (rule.late()) {
+            n.put("level", rule.level());
+            if (rule.waited()) {
+                n.put("lateCeiling", "every");
+            }
+        }
         if (rule.baseline()) {
             n.put("rule", "baseline");
         }
@@ -198,6 +204,15 @@ final class ForecastFileSections {
             n.get("margin").built(() -> new DeadlineRule(DeadlineRule.NEVER, "", false, Calibration.IDENTITY,
                     margin, false));
         }
+        double level = n.has("level") ? n.number("level") : Double.NaN;
+        if (n.has("level")) {
+            n.get("level").built(() -> new DeadlineRule(DeadlineRule.NEVER, "", false, Calibration.IDENTITY,
+                    DeadlineRule.HALF, false, level));
+        }
+        JsonAt ceiling = n.optional("lateCeiling");
+        if (ceiling != null && !(ceiling.node().isTextual() && ceiling.node().asText().equals("every"))) {
+            throw ceiling.wrong("expected \"every\"");
+        }
         boolean validated = n.bool("validated");
         JsonAt rule = n.optional("rule");
         if (rule != null && !(rule.node().isTextual() && rule.node().asText().equals("baseline"))) {
@@ -205,7 +220,7 @@ final class ForecastFileSections {
         }
         JsonAt c = n.optional("calibration");
         return new DeadlineRule(threshold, n.text("note"), validated, c == null ? Calibration.IDENTITY
-                : calibration(c), margin, rule != null);
+                : calibration(c), margin, rule != null, level, ceiling != null);
     }
 
     /**

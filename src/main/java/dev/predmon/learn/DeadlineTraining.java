@@ -67,7 +67,7 @@ public final class DeadlineTraining {
                 continue;
             }
             CrossValidation.Choice c = CrossValidation.choose(cases, k, new CrossValidation.Space(
-                    DeadlineRule.MARGINS.size(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(r.name(),
+                    DeadlineRule.variants(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(r.name(),
                     r.within().unit().key, Scorecard.OBLIGATIONS, Scorecard.FORECAST, Scorecard.ELAPSED));
             rules.put(r.id(), rule(c));
             if (cases.stream().anyMatch(CrossValidation.Case::violated)) {
@@ -107,15 +107,16 @@ public final class DeadlineTraining {
         CrossValidation.Rule x = c.rule();
         if (!x.validated()) {
             return DeadlineRule.unvalidated(x.note() + "; no held-out obligation missed its deadline", c.baseline(),
-                    DeadlineRule.MARGINS.get(x.variant()));
+                    DeadlineRule.marginOf(x.variant()), DeadlineRule.levelOf(x.variant()),
+                    DeadlineRule.waitedOf(x.variant()));
         }
         String note = x.note();
         if (c.baseline()) {
             note += "; the elapsed-time baseline warns: the forecast's rule did worse on the same folds";
         }
         return new DeadlineRule(x.threshold(), note, x.validated(),
-                x.validated() ? x.calibration() : Calibration.IDENTITY, DeadlineRule.MARGINS.get(x.variant()),
-                c.baseline());
+                x.validated() ? x.calibration() : Calibration.IDENTITY, DeadlineRule.marginOf(x.variant()),
+                c.baseline(), DeadlineRule.levelOf(x.variant()), DeadlineRule.waitedOf(x.variant()));
     }
 
     /**

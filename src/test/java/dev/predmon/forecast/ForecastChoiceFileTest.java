@@ -34,12 +34,19 @@ class ForecastChoiceFileTest {
         Survival legs = new Survival(durations(10, 5), durations(0, 0));
         Survival pooled = new Survival(durations(30, 5), new double[] {3}).withContexts(Map.of(
                 "goTo_ch_i>goTo_ki_i", legs, "goTo_ki_i", new Survival(durations(20, 5), new double[0]),
-                "goTo_ch_i", new Survival(new double[] {1, 2}, new double[] {2, 2, 2, 2, 2, 2, 2, 2, 2, 2})));
-        // a condition needs ten discharged obligations: goTo_ch_i's ten censored ones do not make a curve
-        assertEquals(List.of("goTo_ch_i>goTo_ki_i", "goTo_ki_i"), List.copyOf(pooled.contexts().keySet()));
+                "goTo_ch_i", new Survival(new double[] {1, 2}, new double[] {2, 2, 2, 2, 2, 2, 2, 2, 2, 2}),
+                "halt_ch_i", new Survival(new double[] {1}, new double[] {2, 2})));
+        // a curve needs ten discharged obligations: goTo_ch_i's ten censored ones do not make one, its two discharged
+        // ones make only a late bound (its estimates are the pooled curve's); one discharged obligation makes nothing
+        assertEquals(List.of("goTo_ch_i", "goTo_ch_i>goTo_ki_i", "goTo_ki_i"),
+                List.copyOf(pooled.contexts().keySet()));
         assertEquals(legs, pooled.at("goTo_ch_i>goTo_ki_i"));
         assertEquals(20, pooled.at("start>goTo_ki_i").size(), "unknown condition: its trigger's input");
-        assertSame(pooled, pooled.at("goTo_ch_i"));
+        Survival station = pooled.at("goTo_ch_i");
+        assertEquals(pooled.size(), station.size());
+        assertEquals(pooled.estimate(4, 10), station.estimate(4, 10));
+        assertEquals(34.0, station.lateAfter(0.99), 1e-9, "two legs bound little: capped at the property's longest");
+        assertSame(pooled, pooled.at("halt_ch_i"));
         assertSame(pooled, pooled.at(null));
 
         Scorecard base = new Scorecard("nav", 5, 40, 2, 2, 0, 100, "ticks", 0.1, 0.1, Scorecard.OBLIGATIONS,

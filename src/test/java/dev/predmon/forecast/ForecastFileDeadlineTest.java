@@ -101,4 +101,34 @@ class ForecastFileDeadlineTest {
         assertEquals(DeadlineRule.NEVER, back.deadlineRule(ID).threshold());
         assertFalse(back.deadlineRule(ID).validated());
     }
+
+    /**
+     * A rule whose late clause was chosen keeps its level as {@code "level"} in the property's section, and
+     * reads back warning by it; a level that is no prediction level is refused where it is; a file without it reads as
+     * the novelty clause.
+     */
+    @Test
+    void theLateClausesLevelRoundTripsAndABadOneIsRefused() throws Exception {
+        DeadlineRule late = DeadlineRule.unvalidated("no held-out obligation missed its deadline", false, 0, 0.99);
+        String text = ForecastFile.write(model(Map.of(ID, late), List.of()), LEARN_ID);
+        assertEquals(0.99, JSON.readTree(text).get("properties").get(ID).get("level").asDouble());
+        DeadlineRule back = ForecastFile.read(text, LEARN_ID).deadlineRule(ID);
+        assertEquals(late, back);
+        assertTrue(back.late());
+        assertTrue(back.note().contains("past the 99% prediction bound"), back.note());
+        ObjectNode f = (ObjectNode) JSON.readTree(text);
+        ((ObjectNode) f.get("properties").get(ID)).put("level", 99);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ForecastFile.read(JSON.writeValueAsString(f), LEARN_ID));
+        assertEquals("'properties.navigation-in-time.level': a prediction level is above 0.5 and below 1: 99.0",
+                e.getMessage());
+        ((ObjectNode) f.get("properties").get(ID)).put("level", 0.99).put("lateCeiling", "all");
+        IllegalArgumentException ceiling = assertThrows(IllegalArgumentException.class,
+                () -> ForecastFile.read(JSON.writeValueAsString(f), LEARN_ID));
+        assertEquals("'properties.navigation-in-time.lateCeiling': expected \"every\"", ceiling.getMessage());
+        ((ObjectNode) f.get("properties").get(ID)).put("lateCeiling", "every");
+        assertTrue(ForecastFile.read(JSON.writeValueAsString(f), LEARN_ID).deadlineRule(ID).waited());
+        ((ObjectNode) f.get("properties").get(ID)).remove(List.of("level", "lateCeiling"));
+        assertFalse(ForecastFile.read(JSON.writeValueAsString(f), LEARN_ID).deadlineRule(ID).late());
+    }
 }
