@@ -155,10 +155,12 @@ public final class Benchmarks {
                         double paceP99 = FleetBench.Result.percentile(p.millis(), 0.99);
                         boolean atPace = p.writtenRate() >= 0.95 * r.paceRate();
                         String pace = atPace
-                                ? f("at robot pace (%.0f records/s per log: %.1f written, %.1f read)", r.paceRate(),
-                                p.writtenRate(), p.readRate())
+                                ? f("at robot pace (%.0f records/s per log: %.1f written, %.1f read; the writer "
+                                + "process %.0f%% of a core)", r.paceRate(), p.writtenRate(), p.readRate(),
+                                100 * p.writerCore())
                                 : f("NOT at robot pace: the writer fell behind (%.1f of %.0f records/s per log written, "
-                                + "%.1f read)", p.writtenRate(), r.paceRate(), p.readRate());
+                                + "%.1f read; the writer process %.0f%% of a core)", p.writtenRate(), r.paceRate(),
+                                p.readRate(), 100 * p.writerCore());
                         out.accept(f("fleet: %d log%s in one process, %s: catch-up %.0f ns CPU/record; idle %.1f%% of "
                                         + "a core (following thread %.1f%%); %s %.1f%% of a core, %.0f ns CPU/record, "
                                         + "append->warning median %.3f ms, p99 %.3f ms (%d samples); quiet append->warning "

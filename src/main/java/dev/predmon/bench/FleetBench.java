@@ -42,7 +42,7 @@ import java.util.stream.IntStream;
  *       tenth as many logs more meanwhile ({@link RobotPace});</li>
  *   <li><b>append to warning</b>: every log holds a depleted run up to the record that triggers the warning; the
  *       bench appends that record to the logs one by one, in random order, 1 to 3 ms apart, and each log's time
- *       from the end of the write to its warning event is one sample (as {@link LatencyBench} measures one log).</li>
+ *       from the start of the write to its warning event is one sample (as {@link LatencyBench} measures one log).</li>
  * </ul>
  */
 final class FleetBench {
@@ -172,8 +172,11 @@ final class FleetBench {
         return Math.max(1, Math.min(samples, logs / 10));
     }
 
-    /** {share of a core of the process, of the following thread} while following logs that do not grow. */
-    private double[] idle(Following following) throws Exception {
+    /**
+     * Waits at least {@link #IDLE_SETTLE_MILLIS}, and until the JIT compiler has been quiet that long (at most 20 s),
+     * so that compiling what ran before is not counted as the cost of what is measured next.
+     */
+    static void compilerQuiet() throws InterruptedException {
         CompilationMXBean jit = ManagementFactory.getCompilationMXBean();
         long settled = System.nanoTime() + 20_000_000_000L;
         long compiled;
@@ -181,6 +184,11 @@ final class FleetBench {
             compiled = jit.getTotalCompilationTime();
             Thread.sleep(IDLE_SETTLE_MILLIS);
         } while (jit.getTotalCompilationTime() != compiled && System.nanoTime() < settled);
+    }
+
+    /** {share of a core of the process, of the following thread} while following logs that do not grow. */
+    private double[] idle(Following following) throws Exception {
+        compilerQuiet();
         long cpu = os.getProcessCpuTime();
         long loop = threads.getThreadCpuTime(following.thread().getId());
         long start = System.nanoTime();
@@ -192,7 +200,7 @@ final class FleetBench {
 
     /**
      * Appends {@code trigger}, the warning's record, to each of {@code files} once, in random order, 1 to 3 ms apart, and waits for
-     * their warnings: each log's time from the end of its write to its warning goes to {@code into} from {@code at}.
+     * their warnings: each log's time from the start of its write to its warning goes to {@code into} from {@code at}.
      */
     static void latencies(List<Path> files, byte[] trigger, AtomicLongArray warnedAt, Random random, double[] into, int at)
             throws Exception {
@@ -204,9 +212,11 @@ final class FleetBench {
         long[] writtenAt = new long[files.size()];
         for (int i : order) {
             try (OutputStream out = Files.newOutputStream(files.get(i), StandardOpenOption.APPEND)) {
+                // Before the write: on a busy machine the threads the write wakes can run first and warn before
+                // this thread reads the clock again, which made such samples 0.
+                writtenAt[i] = System.nanoTime();
                 out.write(trigger);
             }
-            writtenAt[i] = System.nanoTime(); // closed: the record is in the file
             LockSupport.parkNanos(1_000_000L + random.nextInt(2_000_000));
         }
         long deadline = System.nanoTime() + 60_000_000_000L;
@@ -217,8 +227,7 @@ final class FleetBench {
             if (warnedAt.get(i) == 0) {
                 throw new IllegalStateException("log " + i + " of " + files.size() + ": no warning within 60 s");
             }
-            // The warning can be seen before the writer stores its clock; such a sample is ~0.
-            into[at + i] = Math.max(0, warnedAt.get(i) - writtenAt[i]) / 1e6;
+            into[at + i] = (warnedAt.get(i) - writtenAt[i]) / 1e6;
         }
     }
 }
