@@ -273,6 +273,8 @@ public final class Tile {
         o.put("line", line);
         o.put("unit", clock.unit());
         o.put("property", safety.map(Bound::name).orElse(null));
+        // the headline property's id, the key of its light in properties (its name may be shared or reworded)
+        o.put("propertyId", safety.map(Bound::id).orElse(null));
         o.put("action", shown.action());
         o.put("exists", shown.exists());
         o.put("noVerdict", noVerdict);

@@ -22,9 +22,10 @@ import java.util.Map;
  * that a noisy reading does not end it) and past every safe training run's extreme; a warning of the thesis's
  * matching, whose verdict never changes, only when the property's action was under way too (the action recovered the
  * run; {@link ActionProgress}, {@link MonitorEvent.UnderWay}). Its violation and "holds again" are the checker's
- * ({@link FollowBase}). Out of its scope the forecast follows the run untold; when the scope opens it starts over.
+ * ({@link FollowBase}), its forecast's pairs, resets and status those of every tracked kind ({@link TrackedFollow}).
+ * Out of its scope the forecast follows the run untold; when the scope opens it starts over.
  */
-final class BoundFollow extends FollowBase {
+final class BoundFollow extends TrackedFollow {
 
     /** How far back from the bound the value must move past where it warned, as a share of its distance to it. */
     static final double RISE = 0.05;
@@ -32,23 +33,19 @@ final class BoundFollow extends FollowBase {
     private final Bound bound;
     /** The learned forecast and its side, or null without one. */
     private final BoundModel model;
-    private final ForecastTracker tracker;
     /** The bound the forecast predicts the crossing of, on the forecast's scale. */
     private final double limit;
     private final ActionProgress action;
     /** The last value on the forecast's scale, and as read; NaN before one. */
     private double value = Double.NaN;
     private double raw = Double.NaN;
-    /** Whether the scope opened since the last value: the segment's first value is judged even if unchanged. */
-    private boolean opened;
 
     /** The bound {@code bound}, property {@code index}, forecast by {@code model} over {@code machines} if not null. */
     BoundFollow(int index, Bound bound, BoundModel model, Map<String, CompactMealy<String, String>> machines,
                 FollowContext c) {
-        super(index, bound, c);
+        super(index, bound, model == null ? null : ForecastTracker.of(model.model(), machines), c);
         this.bound = bound;
         this.model = model;
-        this.tracker = model == null ? null : ForecastTracker.of(model.model(), machines);
         this.limit = BoundModel.limit(bound, model == null ? BoundModel.FLOOR : model.side());
         this.action = new ActionProgress(bound.underWay());
     }
@@ -88,40 +85,9 @@ final class BoundFollow extends FollowBase {
     }
 
     @Override
-    public void pair(IoPair pair, Matching.Step step, LogRecord trigger) {
-        if (tracker == null) {
-            return;
-        }
-        Forecast news = tracker.pair(pair.input(), pair.output(), trigger.time(), value, trigger.line());
-        if (open) {
-            told(news, trigger);
-        }
-    }
-
-    @Override
     public void decide(IoPair pair, Matching.Step step, LogRecord trigger) {
         if (tracker != null && open) {
             decide(tracker.last(), trigger, "after " + pair.input() + " -> " + pair.output());
-        }
-    }
-
-    @Override
-    public void gap(long line) {
-        if (tracker != null) {
-            tracker.unseen(line);
-        }
-    }
-
-    @Override
-    void opened(LogRecord r) {
-        startOver();
-        opened = true;
-    }
-
-    @Override
-    void startOver() {
-        if (tracker != null) {
-            tracker.startOver();
         }
     }
 
@@ -135,52 +101,27 @@ final class BoundFollow extends FollowBase {
         return !Double.isNaN(raw);
     }
 
-    /** The latest forecast of the run as the property reads, or null before one (or without a forecast). */
-    Forecast last() {
-        return tracker == null ? null : model.shown(tracker.last());
-    }
-
     @Override
     public void reset() {
         super.reset();
         value = Double.NaN;
         raw = Double.NaN;
-        opened = false;
         action.reset();
-        if (tracker != null) {
-            tracker.reset();
-        }
     }
 
     @Override
-    public void countTicksAs(TickSeconds t) {
-        if (tracker != null) {
-            tracker.countTicksAs(t);
-        }
+    double tracked() {
+        return value;
     }
 
     @Override
-    public PropertyStatus status(PropertyChecker checker) {
-        if (tracker == null) {
-            return super.status(checker);
-        }
-        return new PropertyStatus(property, checker.verdict(index), PropertyStatus.Model.FORECAST, warned(), null,
-                null, open ? last() : null);
+    Forecast shown(Forecast f) {
+        return model.shown(f);
     }
 
     /** {@code v} as read on the forecast's scale (mirrored for a ceiling's). */
     private double scale(double v) {
         return model == null ? v : model.value(v);
-    }
-
-    /** Reports {@code news} if it is news; returns the latest forecast (on the forecast's scale). */
-    private Forecast told(Forecast news, LogRecord r) {
-        c.bounds.forecast(property.id(), model.shown(tracker.last()), c.now.run);
-        if (news != null) {
-            c.events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), model.shown(news), r.clock(),
-                    c.now.run, property.id()));
-        }
-        return tracker.last();
     }
 
     /** At a new value, {@code f} the forecast on it (null without one): whether the warning's cause ended. */

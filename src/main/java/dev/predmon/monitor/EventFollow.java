@@ -22,21 +22,16 @@ import java.util.Map;
  * "holds again" and the end of its alarms are the checker's ({@link FollowBase}). A property whose training runs could
  * not teach a forecast says why in its status ({@link EventModel#why}), and is only checked.
  */
-final class EventFollow extends FollowBase {
+final class EventFollow extends TrackedFollow {
 
     private final EventModel model;
-    /** Its forecast over the machines, or null without one. */
-    private final ForecastTracker tracker;
-    /** Whether the scope opened since the last forecast: the forecast in the states the run is in is told then. */
-    private boolean opened;
     /** Whether the forecast knows of the violation (its indicator fell to {@link EventModel#BROKEN}). */
     private boolean broken;
 
     EventFollow(int index, Property property, EventModel model, Map<String, CompactMealy<String, String>> machines,
                 FollowContext c) {
-        super(index, property, c);
+        super(index, property, model.forecasts() ? ForecastTracker.of(model.model(), machines) : null, c);
         this.model = model;
-        this.tracker = model.forecasts() ? ForecastTracker.of(model.model(), machines) : null;
     }
 
     @Override
@@ -58,13 +53,9 @@ final class EventFollow extends FollowBase {
 
     @Override
     public void pair(IoPair pair, Matching.Step step, LogRecord trigger) {
-        if (tracker == null) {
-            return;
-        }
-        Forecast news = tracker.pair(pair.input(), pair.output(), trigger.time(), indicator(), trigger.line());
+        super.pair(pair, step, trigger);
         if (open) {
-            opened = false;
-            told(news, trigger);
+            opened = false; // the forecast in the states the run is in was told
         }
     }
 
@@ -91,65 +82,36 @@ final class EventFollow extends FollowBase {
     }
 
     @Override
-    public void gap(long line) {
-        if (tracker != null) {
-            tracker.unseen(line);
-        }
-    }
-
-    @Override
-    void opened(LogRecord r) {
-        startOver();
-        opened = true;
-    }
-
-    @Override
     void startOver() {
-        if (tracker != null) {
-            tracker.startOver();
-        }
+        super.startOver();
         broken = false;
     }
 
     @Override
     public void reset() {
         super.reset();
-        opened = false;
         broken = false;
-        if (tracker != null) {
-            tracker.reset();
-        }
     }
 
     @Override
-    public void countTicksAs(TickSeconds t) {
-        if (tracker != null) {
-            tracker.countTicksAs(t);
-        }
+    PropertyStatus untracked(PropertyChecker checker) {
+        return new PropertyStatus(property, checker.verdict(index), PropertyStatus.Model.NONE, warned(), null,
+                null, null, model.why());
     }
 
     @Override
-    public PropertyStatus status(PropertyChecker checker) {
-        if (tracker == null) {
-            return new PropertyStatus(property, checker.verdict(index), PropertyStatus.Model.NONE, warned(), null,
-                    null, null, model.why());
-        }
-        return new PropertyStatus(property, checker.verdict(index), PropertyStatus.Model.FORECAST, warned(), null,
-                null, open ? EventModel.shown(tracker.last()) : null);
+    double tracked() {
+        return indicator();
+    }
+
+    @Override
+    Forecast shown(Forecast f) {
+        return EventModel.shown(f);
     }
 
     /** The property's indicator now: {@link EventModel#BROKEN} once violated, else {@link EventModel#HOLDS}. */
     private double indicator() {
         return violated ? EventModel.BROKEN : EventModel.HOLDS;
-    }
-
-    /** Tells the replay's stream the latest forecast, and everyone {@code news} if it is news. */
-    private void told(Forecast news, LogRecord r) {
-        c.bounds.forecast(property.id(), EventModel.shown(tracker.last()), c.now.run);
-        if (news != null) {
-            c.events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), EventModel.shown(news), r.clock(),
-                    c.now.run, property.id()));
-        }
     }
 
     /**

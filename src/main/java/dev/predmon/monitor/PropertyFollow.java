@@ -16,7 +16,8 @@ import dev.predmon.property.PropertyChecker;
  * <p>{@link FollowBase} writes the part every kind shares once: the violation, "holds again", the end of an alarm at
  * the scope's close and at the run's end, the matching's warning and the status. A new forecast kind extends it with
  * {@link FollowBase#follow} (its forecast at a record, and its warning) and, if the pairs move its forecast, {@link
- * #pair} and {@link #decide}.
+ * #pair} and {@link #decide}; a kind forecast over the learned machines extends {@link TrackedFollow}, which writes
+ * that forecast's pairs, start-overs, resets and status once.
  */
 interface PropertyFollow {
 

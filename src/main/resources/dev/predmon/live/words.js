@@ -25,19 +25,18 @@ const missing = (x) => x === null || x === undefined || Number.isNaN(x);
 export const own = (t) => t.forecastState || t.state;
 
 /**
- * The forecast's own property, whose value, chart and words the tile's headline shows: the one the log's status names
- * ({@code t.property}). Several properties may have a forecast (bounds, absences), so a forecast alone does not say so.
+ * The forecast's own property, whose value, chart and words the tile's headline shows: the one whose id the log's
+ * status names ({@code t.propertyId}), or null when it names none. Several properties may have a forecast (bounds,
+ * absences) and two may share a name, so neither a forecast nor a name says which one it is.
  */
 export function ownProperty(t) {
-  const props = t.properties || [];
-  return props.find(p => p.model === 'forecast' && p.name === t.property)
-    || props.find(p => p.model === 'forecast') || null;
+  if (!t.propertyId) return null;
+  return (t.properties || []).find(p => p.property === t.propertyId) || null;
 }
 
 /** Whether {@code p} (a property of {@code t}, or its worst) is the forecast's own property. */
 export function isOwn(p, t) {
-  const o = ownProperty(t);
-  return !!o && !!p && p.property === o.property;
+  return !!p && !!t.propertyId && p.property === t.propertyId;
 }
 
 /** The worst property when it is not the forecast's and is violated or warned: the tile's headline, or null. */
@@ -101,7 +100,7 @@ export function basisWords(f) {
   const runs = f.violated + ' of ' + f.runs + ' training runs';
   switch (f.basis) {
     case 'matched':
-      return 'matched: ' + runs + ' that were where this run is violated';
+      return 'matched: of ' + f.runs + ' training runs that were where this run is now, ' + f.violated + ' went on to violate';
     case 'resynchronised':
       return 'new behaviour since line ' + f.novelSince + '; matched again on the latest steps: ' + runs
         + ' violated';
@@ -235,14 +234,17 @@ export function eventText(e, t) {
     case 'eliminated':
       return where + 'model ' + e.model + ' (' + (e.faulty ? 'faulty' : 'nominal') + ') eliminated: ' + e.reason;
     case 'warning':
-      if (e.clause === 'deadline') return where + 'WARNING of ' + e.property + ': ' + e.reason.split(';')[0];
+      // another property's warning (or one without a value: a deadline's, an absence's) in its own words
+      if (e.clause === 'deadline' || missing(e.value) || (e.property && e.property !== t.propertyId)) {
+        return where + 'WARNING of ' + e.property + ': ' + (e.reason || '').split(';')[0];
+      }
       // The reason's first clause: the whole of it is under the tile's verdict.
       return where + 'WARNING at ' + pct(e.value, thr) + ': '
         + (e.reason ? e.reason.split(';')[0] : 'only ' + e.scenarios.join(', ') + ' left');
     case 'violation':
       // the forecast's property's value in the tile's terms; another property's in its own words
       return where + 'VIOLATION of ' + e.property + ': '
-        + (missing(e.value) || e.name !== t.property ? e.what || '' : pct(e.value, thr));
+        + (missing(e.value) || e.property !== t.propertyId ? e.what || '' : pct(e.value, thr));
     case 'no-match':
       return where + 'no learned scenario matches this run any more';
     case 'run':

@@ -1,5 +1,6 @@
 package dev.predmon.cli;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import dev.predmon.support.SimulatedSets;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -36,16 +37,25 @@ class EdgeOfTrainingTest {
                 models.toString());
         assertTrue(watched.code() == 0 || watched.code() == 1,
                 "a safe run is warned or quiet, never violated: " + watched.code() + " " + watched.err());
-        for (String line : watched.out().lines().toList()) {
-            if (line.startsWith("{\"event\":\"forecast\"") && line.contains("\"property\":\"battery\"")) {
-                double p = Double.parseDouble(line.replaceAll(".*\"probability\":([0-9.Ee-]+).*", "$1"));
-                assertTrue(p < 0.99, "a battery forecast claims certainty on a run below every safe one: " + line);
+        int forecasts = 0;
+        for (JsonNode e : watched.jsonLines()) {
+            if (!e.path("property").asText().equals("battery")) {
+                continue;
             }
-            if (line.startsWith("{\"event\":\"warning\"") && line.contains("\"property\":\"battery\"")) {
-                assertTrue(line.contains("\"clause\":\"novelty\"") && line.contains("below the lowest"),
-                        "the warning is the raw-value clause's, not the probability's: " + line);
+            if (e.path("event").asText().equals("forecast")) {
+                JsonNode p = e.path("forecast").path("probability");
+                assertTrue(p.isNumber(), "a battery forecast without a probability: " + e);
+                assertTrue(p.asDouble() < 0.99, "a battery forecast claims certainty on a run below every safe one: "
+                        + e);
+                forecasts++;
+            }
+            if (e.path("event").asText().equals("warning")) {
+                assertEquals("novelty", e.path("clause").asText(),
+                        "the warning is the raw-value clause's, not the probability's: " + e);
+                assertTrue(e.path("reason").asText().contains("below the lowest"), e.toString());
             }
         }
+        assertTrue(forecasts > 0, "the battery was forecast: " + watched.out());
 
         // The same models still warn a depleted run they never saw, before its violation.
         Path depleted = tmp.resolve("depleted-7001.log");

@@ -5,10 +5,9 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.live.RobotNames;
 import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.net.URI;
@@ -31,21 +30,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class GraspLiveTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
-    private static BrowserTabs tabs;
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs();
     private final HttpClient http = HttpClient.newHttpClient();
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void startBrowser() throws Exception {
-        tabs = BrowserTabs.start();
-    }
-
-    @AfterAll
-    static void stopBrowser() throws Exception {
-        tabs.close();
-    }
 
     private String get(URI url, String path) throws Exception {
         return http.send(HttpRequest.newBuilder(url.resolve(path)).build(), HttpResponse.BodyHandlers.ofString())
@@ -89,13 +79,9 @@ class GraspLiveTest {
             assertEquals("1.0", sample(metrics, "predmon_property_state", "property=\"battery\"", "state=\"holds\""),
                     metrics);
 
-            HeadlessChromium.Page page = tabs.blank("the live page is not tested in a browser");
-            page.call("Page.navigate", JSON.createObjectNode().put("url", scene.url().toString()));
-            long deadline = System.nanoTime() + 30_000_000_000L;
-            while (!"true".equals(page.eval("String(document.querySelectorAll('article.tile li.prop').length === 5)"))) {
-                assertTrue(System.nanoTime() < deadline, "the tile never showed its five lights");
-                Thread.sleep(50);
-            }
+            HeadlessChromium.Page page = TABS.open(scene.url(), "the live page is not tested in a browser");
+            page.await("document.querySelectorAll('article.tile li.prop').length === 5",
+                    "the tile never showed its five lights", 30);
             page.screenshot(Path.of("target", "live-grasp.png"));
             String headline = page.eval("document.querySelector('article.tile .verdict').textContent");
             assertTrue(headline.startsWith("VIOLATED: grasp-in-time \u2014 line ")
@@ -128,13 +114,9 @@ class GraspLiveTest {
             }
             assertEquals("violation", earlier.get("state").asText(), String.valueOf(earlier));
             assertEquals("[\"grasp-in-time\"]", earlier.get("violated").toString());
-            deadline = System.nanoTime() + 30_000_000_000L;
             String shown = "[...document.querySelectorAll('article.tile')].map(t => (t.querySelector('.runs li') "
                     + "|| {}).textContent || '').join('')";
-            while (!page.eval(shown).contains("run 0")) {
-                assertTrue(System.nanoTime() < deadline, "the earlier run never showed");
-                Thread.sleep(50);
-            }
+            page.await(shown + ".includes('run 0')", "the earlier run never showed", 30);
             assertTrue(page.eval(shown).startsWith("run 0 (line 1): grasp-in-time violated; battery no warning, held"),
                     page.eval(shown));
         }

@@ -141,9 +141,13 @@ class GraspVoiceTest {
         assertTrue(w.out().contains("8 closeHand attempts since line "), w.out());
 
         Cli x = Cli.run("explain", "--log", log.toString(), "--models", MODELS.toString());
+        assertEquals(ExitCodes.UNWARNED_VIOLATION, x.code(), x.err());
         assertTrue(x.out().contains("\ngrasp-in-time VIOLATED at line ") && x.out().contains(OTHERS_HOLD
                 + " throughout the log\n"), x.out());
+        assertFalse(x.out().contains("the safety property holds"), x.out());
         Cli c = Cli.run("classify", "--log", log.toString(), "--models", MODELS.toString());
+        assertEquals(ExitCodes.UNWARNED_VIOLATION, c.code(), c.err());
+        assertFalse(c.out().contains("a warning was raised"), c.out());
         assertTrue(c.out().contains("watch's verdict at the end of the log: grasp-in-time VIOLATED with no warning "
                 + "before it; " + OTHERS_HOLD + " (exit 6)"), c.out());
     }

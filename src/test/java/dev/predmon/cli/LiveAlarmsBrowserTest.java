@@ -10,12 +10,11 @@ import dev.predmon.monitor.WarningRule;
 import dev.predmon.parse.Clock;
 import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
+import dev.predmon.support.LiveWatch;
 import dev.predmon.support.Records;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.net.URI;
@@ -45,30 +44,14 @@ class LiveAlarmsBrowserTest {
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final int WIDTH = BrowserTabs.WIDTH;
     private static final Set<String> DOCUMENTED = Set.of("live-alarms.png", "live-single.png", "live-names.png");
-    private static BrowserTabs tabs;
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs();
 
     @TempDir
     Path dir;
 
-    @BeforeAll
-    static void startBrowser() throws Exception {
-        tabs = BrowserTabs.start();
-    }
-
-    @AfterAll
-    static void stopBrowser() throws Exception {
-        tabs.close();
-    }
-
-    @AfterEach
-    void closeTabs() throws Exception {
-        tabs.closeTabs();
-    }
-
-    private HeadlessChromium.Page open(URI url) throws Exception {
-        HeadlessChromium.Page page = tabs.blank("the live page's alarms are not tested in a browser");
-        page.call("Page.navigate", JSON.createObjectNode().put("url", url.toString()));
-        return page;
+    private static HeadlessChromium.Page open(URI url) throws Exception {
+        return TABS.open(url, "the live page's alarms are not tested in a browser");
     }
 
     private static String of(String log) throws Exception {
@@ -76,26 +59,8 @@ class LiveAlarmsBrowserTest {
                 + JSON.writeValueAsString(log) + ")";
     }
 
-    private static void waitFor(HeadlessChromium.Page page, String condition, String what, long seconds)
-            throws Exception {
-        long deadline = System.nanoTime() + seconds * 1_000_000_000L;
-        while (!"true".equals(page.eval("String(!!(() => { try { return " + condition + "; } catch (e) { return false; }"
-                + " })())"))) {
-            assertTrue(System.nanoTime() < deadline, "timed out: " + what);
-            Thread.sleep(50);
-        }
-    }
-
     private static String text(HeadlessChromium.Page page, String element) throws Exception {
         return page.eval("(" + element + ").innerText");
-    }
-
-    private static void screenshot(HeadlessChromium.Page page, String name) throws Exception {
-        page.screenshot(Path.of("target", name));
-        String docs = System.getProperty("predmon.screenshots");
-        if (docs != null && !docs.isBlank() && DOCUMENTED.contains(name)) {
-            page.screenshot(Path.of(docs, name));
-        }
     }
 
     private static Forecast forecast(double p, double level) {
@@ -143,7 +108,7 @@ class LiveAlarmsBrowserTest {
             scene.board.tile(dir.resolve("r4.log").toString());
 
             HeadlessChromium.Page page = open(scene.url());
-            waitFor(page, "document.querySelectorAll('article.tile').length === 4", "four tiles", 30);
+            page.await("document.querySelectorAll('article.tile').length === 4", "four tiles", 30);
             String t1 = of(dir.resolve("r1.log").toString());
             assertEquals("ok", page.eval(t1 + ".dataset.state"));
             String words1 = text(page, t1);
@@ -171,16 +136,16 @@ class LiveAlarmsBrowserTest {
             String words4 = text(page, of(dir.resolve("r4.log").toString()));
             assertTrue(words4.contains("no such file yet"), words4);
             assertFalse(words4.contains("log grew"), words4);
-            screenshot(page, "live-alarms.png");
+            BrowserTabs.screenshot(page, "live-alarms.png", DOCUMENTED);
 
             page.eval("document.getElementById('view').click(), 'ok'");
-            waitFor(page, "document.querySelectorAll('#tiles.compact .row').length === 4", "the compact view", 30);
+            page.await("document.querySelectorAll('#tiles.compact .row').length === 4", "the compact view", 30);
             String row1 = text(page, t1);
             assertTrue(row1.contains("OK, recovered t=80.00 s") && row1.contains("P 0.21, warning at"), row1);
             String row2 = text(page, t2);
             assertTrue(row2.contains("under way since t=36.00 s"), row2);
             assertFalse(row2.contains("send the robot"), "no action to do while it is under way: " + row2);
-            screenshot(page, "live-alarms-compact.png");
+            BrowserTabs.screenshot(page, "live-alarms-compact.png", DOCUMENTED);
         }
     }
 
@@ -188,23 +153,20 @@ class LiveAlarmsBrowserTest {
     @Timeout(120)
     void aFileThatIsNotAMonitorLogSaysSoWithinFiveSeconds() throws Exception {
         Path robots = Files.createDirectories(dir.resolve("robots"));
-        Cli.Running watch = Cli.start("watch", "--log", robots.toString(), "--models", "models", "--http", "0");
-        try {
-            HeadlessChromium.Page page = open(LiveViewTest.url(watch));
-            waitFor(page, "!document.getElementById('empty').hidden", "the empty page", 30);
+        try (LiveWatch watch = LiveWatch.start("--log", robots.toString(), "--models", "models")) {
+            HeadlessChromium.Page page = open(watch.url());
+            page.await("!document.getElementById('empty').hidden", "the empty page", 30);
             StringBuilder info = new StringBuilder();
             for (int i = 0; i < 40; i++) {
                 info.append("[INFO] |yarp.os.Port| Port /tool").append(i).append(" active at tcp://10.0.0.1:10002/\n");
             }
             Path notes = Files.writeString(robots.resolve("yarp.log"), info);
             long written = System.nanoTime();
-            waitFor(page, of(notes.toString()) + ".dataset.state === 'no-verdict'", "says no verdict", 10);
+            page.await(of(notes.toString()) + ".dataset.state === 'no-verdict'", "says no verdict", 10);
             double seconds = (System.nanoTime() - written) / 1e9;
             assertTrue(seconds < 5, "within 5 s: " + seconds);
             assertTrue(text(page, of(notes.toString())).contains("not a monitor log?"));
-            assertTrue(watch.err().toString().contains("not a monitor log?"), watch.err().toString());
-        } finally {
-            watch.stop();
+            assertTrue(watch.err().contains("not a monitor log?"), watch.err());
         }
     }
 
@@ -216,14 +178,14 @@ class LiveAlarmsBrowserTest {
             scene.board.warnsAt(WarningRule.FORECAST, scene.models);
             recovered(scene, scene.board.tile(dir.resolve("monitor2022-10-11T15_17+02_00.txt").toString()));
             HeadlessChromium.Page page = open(scene.url());
-            waitFor(page, "document.querySelector('article.tile svg.plot') !== null", "the tile", 30);
+            page.await("document.querySelector('article.tile svg.plot') !== null", "the tile", 30);
             JsonNode size = JSON.readTree(page.eval("JSON.stringify({tile: document.querySelector('article.tile')"
                     + ".getBoundingClientRect().width, plot: document.querySelector('article.tile svg.plot')"
                     + ".getBoundingClientRect().width, name: document.querySelector('article.tile h2').textContent})"));
             assertTrue(size.get("tile").asDouble() > WIDTH * 0.9, "the tile spans the screen: " + size);
             assertTrue(size.get("plot").asDouble() > WIDTH * 0.5, "a large plot: " + size);
             assertEquals("monitor2022-10-11T15_17+02_00", size.get("name").asText(), "one log: its whole name");
-            screenshot(page, "live-single.png");
+            BrowserTabs.screenshot(page, "live-single.png", DOCUMENTED);
         }
     }
 
@@ -248,7 +210,7 @@ class LiveAlarmsBrowserTest {
                 }
             }
             HeadlessChromium.Page page = open(scene.url().resolve("/?view=compact"));
-            waitFor(page, "document.querySelectorAll('#tiles.compact .row').length === 50", "50 rows", 30);
+            page.await("document.querySelectorAll('#tiles.compact .row').length === 50", "50 rows", 30);
             JsonNode fit = JSON.readTree(page.eval("JSON.stringify({outside: [...document.querySelectorAll('.row')]"
                     + ".filter(r => { const b = r.getBoundingClientRect(); return b.top < 0 || b.left < 0"
                     + " || b.bottom > innerHeight || b.right > innerWidth; }).length,"
@@ -260,7 +222,7 @@ class LiveAlarmsBrowserTest {
             List<String> names = new ArrayList<>();
             fit.get("names").forEach(n -> names.add(n.asText()));
             assertEquals(expected.stream().sorted().toList(), names, "the part all logs share dropped");
-            screenshot(page, "live-names.png");
+            BrowserTabs.screenshot(page, "live-names.png", DOCUMENTED);
         }
     }
 }

@@ -7,24 +7,24 @@ import dev.predmon.simulate.LogWriter;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.simulate.SimOptions;
 import dev.predmon.simulate.SimRun;
+import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
+import dev.predmon.support.LiveWatch;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
-import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * The live page in a real browser (headless Chromium): {@code watch --http} follows a log that a simulated faulty run
@@ -40,6 +40,9 @@ class LiveBrowserTest {
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final SimOptions O = SimOptions.defaults();
     private static final Path MODELS = Path.of("models");
+    /** The README's screenshot's size. */
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs(1400, 940);
 
     @TempDir
     Path dir;
@@ -101,9 +104,7 @@ class LiveBrowserTest {
     @Test
     @Timeout(180)
     void theTileTurnsYellowBeforeRedAndShowsTheLead() throws Exception {
-        Optional<Path> chromium = HeadlessChromium.find();
-        assumeTrue(chromium.isPresent(), "no Chromium found (apt-get install chromium, or -Dpredmon.chromium=PATH): "
-                + "the live page is not tested in a browser");
+        TABS.assumeBrowser("the live page is not tested in a browser");
 
         // robot-1: a robot's day, a direct run then a depleted one, the depleted one appended while the page is open.
         StringBuilder day = new StringBuilder();
@@ -130,11 +131,9 @@ class LiveBrowserTest {
                 + cut(other, first(otherTruth, "warning").get("line").asLong(),
                 first(otherTruth, "violation").get("line").asLong())[1]);
 
-        Cli.Running watch = Cli.start("watch", "--log", robots.toString(), "--models", MODELS.toString(),
-                "--http", "0", "--stale-after", "60");
-        try (HeadlessChromium browser = HeadlessChromium.start(chromium.get(), 1400, 940)) {
-            URI url = LiveViewTest.url(watch);
-            HeadlessChromium.Page page = browser.open(url);
+        try (LiveWatch watch = LiveWatch.start("--log", robots.toString(), "--models", MODELS.toString(),
+                "--stale-after", "60")) {
+            HeadlessChromium.Page page = watch.open(TABS, "the live page is not tested in a browser");
             List<String> seen = new ArrayList<>();
 
             JsonNode green = until(page, robot1.toString(), "green", seen);
@@ -168,8 +167,6 @@ class LiveBrowserTest {
             if (docs != null && !docs.isBlank()) {
                 page.screenshot(Path.of(docs));
             }
-        } finally {
-            watch.stop();
         }
     }
 }

@@ -13,12 +13,11 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.simulate.Scenario;
 import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
+import dev.predmon.support.LiveWatch;
 import dev.predmon.support.Records;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.net.URI;
@@ -52,28 +51,14 @@ class LivePageBrowserTest {
     private static final int HEIGHT = BrowserTabs.HEIGHT;
     /** The screenshots the documentation shows. */
     private static final Set<String> DOCUMENTED = Set.of("live-fleet.png", "live-compact.png");
-    private static BrowserTabs tabs;
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs();
 
     @TempDir
     Path dir;
 
-    @BeforeAll
-    static void startBrowser() throws Exception {
-        tabs = BrowserTabs.start();
-    }
-
-    @AfterAll
-    static void stopBrowser() throws Exception {
-        tabs.close();
-    }
-
-    @AfterEach
-    void closeTabs() throws Exception {
-        tabs.closeTabs();
-    }
-
     private HeadlessChromium.Page open(URI url) throws Exception {
-        HeadlessChromium.Page page = tabs.blank("the live page is not tested in a browser");
+        HeadlessChromium.Page page = TABS.blank("the live page is not tested in a browser");
         // Stand-ins for the browser's notifications and sound, which a headless browser cannot show or play.
         page.call("Page.enable", JSON.createObjectNode());
         page.call("Page.addScriptToEvaluateOnNewDocument", JSON.createObjectNode().put("source", """
@@ -97,15 +82,6 @@ class LivePageBrowserTest {
     private static String of(String log) throws Exception {
         return "[...document.querySelectorAll('[data-log]')].find(a => a.dataset.log === "
                 + JSON.writeValueAsString(log) + ")";
-    }
-
-    private static void waitFor(HeadlessChromium.Page page, String condition, String what) throws Exception {
-        long deadline = System.nanoTime() + 30_000_000_000L;
-        while (!"true".equals(page.eval("String(!!(() => { try { return " + condition + "; } catch (e) { return false; }"
-                + " })())"))) {
-            assertTrue(System.nanoTime() < deadline, "timed out: " + what);
-            Thread.sleep(50);
-        }
     }
 
     /**
@@ -136,14 +112,6 @@ class LivePageBrowserTest {
         for (String type : new String[] {"mousePressed", "mouseReleased"}) {
             page.call("Input.dispatchMouseEvent", JSON.createObjectNode().put("type", type).put("x", x).put("y", y)
                     .put("button", "left").put("clickCount", 1));
-        }
-    }
-
-    private static void screenshot(HeadlessChromium.Page page, String name) throws Exception {
-        page.screenshot(Path.of("target", name));
-        String docs = System.getProperty("predmon.screenshots");
-        if (docs != null && !docs.isBlank() && DOCUMENTED.contains(name)) {
-            page.screenshot(Path.of(docs, name));
         }
     }
 
@@ -184,11 +152,10 @@ class LivePageBrowserTest {
     void aRunNoModelMatchesIsUnknownNeitherGreenNorRedAndAnEmptyPageSaysWhatItWaitsFor() throws Exception {
         Path models = ForecastModels.get();
         Path robots = Files.createDirectories(dir.resolve("robots"));
-        Cli.Running watch = Cli.start("watch", "--log", robots.toString(), "--models", models.toString(), "--http", "0",
-                "--stale-after", "600", "--name-pattern", "{file}");
-        try {
-            HeadlessChromium.Page page = open(LiveViewTest.url(watch));
-            waitFor(page, "!document.getElementById('empty').hidden", "the empty page");
+        try (LiveWatch watch = LiveWatch.start("--log", robots.toString(), "--models", models.toString(),
+                "--stale-after", "600", "--name-pattern", "{file}")) {
+            HeadlessChromium.Page page = open(watch.url());
+            page.await("!document.getElementById('empty').hidden", "the empty page", 30);
             String empty = page.eval("document.getElementById('empty').innerText");
             assertTrue(empty.contains("Waiting for logs") && empty.contains("logs in " + robots), empty);
 
@@ -198,8 +165,8 @@ class LivePageBrowserTest {
             String log = robots.resolve("blocked.log").toString();
             // the run's two aborts violate no-abort: the robot's state is that violation; its battery's, no model
             // matching the run, is unknown
-            waitFor(page, of(log) + ".querySelector('li.prop[data-property=battery]').dataset.state === 'unknown'",
-                    "the blocked robot's battery turns unknown");
+            page.await(of(log) + ".querySelector('li.prop[data-property=battery]').dataset.state === 'unknown'",
+                    "the blocked robot's battery turns unknown", 30);
             assertTrue(page.eval("document.getElementById('empty').hidden ? 'yes' : 'no'").equals("yes"));
             JsonNode tile = JSON.readTree(page.eval("JSON.stringify((() => { const t = " + of(log) + ";"
                     + " const light = t.querySelector('header .light');"
@@ -214,9 +181,7 @@ class LivePageBrowserTest {
             assertTrue(tile.get("verdict").asText().startsWith("VIOLATED: no-abort \u2014 line "), tile.toString());
             assertEquals("blocked", tile.get("name").asText(), "the robot's name, not the path");
             assertTrue(tile.get("forecast").asText().contains("warning at"), "how far from a warning: " + tile);
-            screenshot(page, "live-unknown.png");
-        } finally {
-            watch.stop();
+            BrowserTabs.screenshot(page, "live-unknown.png", DOCUMENTED);
         }
     }
 
@@ -236,7 +201,7 @@ class LivePageBrowserTest {
             scene.follow(fine);
             HeadlessChromium.Page page = open(scene.url());
             String r1 = of(warned.toString());
-            waitFor(page, r1 + ".dataset.state === 'warning'", "r1 warned");
+            page.await(r1 + ".dataset.state === 'warning'", "r1 warned", 30);
             assertEquals(warned.toString(), page.eval("document.querySelector('[data-log]').dataset.log"),
                     "the warning comes first");
             assertTrue(page.eval(r1 + ".querySelector('.action').textContent")
@@ -249,11 +214,11 @@ class LivePageBrowserTest {
             assertEquals("acknowledged", page.eval(r1 + ".querySelector('button.ack').textContent"));
             assertTrue(page.eval("document.getElementById('summary').textContent").contains("1 acknowledged"));
             page.call("Page.reload", JSON.createObjectNode());
-            waitFor(page, of(warned.toString()) + ".dataset.ack === 'true'", "still acknowledged after a reload");
+            page.await(of(warned.toString()) + ".dataset.ack === 'true'", "still acknowledged after a reload", 30);
 
             Files.writeString(warned, tail(depleted, at[1]), StandardOpenOption.APPEND);
             scene.follow(warned);
-            waitFor(page, r1 + ".dataset.state === 'violation'", "r1 violated");
+            page.await(r1 + ".dataset.state === 'violation'", "r1 violated", 30);
             // the watched value, as /status gives it, wherever the tile shows one
             JsonNode shown = JSON.readTree(page.eval("JSON.stringify((() => { const t = " + r1 + ";"
                     + " const text = s => (t.querySelector(s) || {}).textContent || '';"
@@ -274,15 +239,15 @@ class LivePageBrowserTest {
             assertTrue(shown.get("warning").asText().matches(".*WARNING at " + percent + ": .*"), shown.toString());
             assertTrue(shown.get("violation").asText().matches(".*VIOLATION of battery: " + percent), shown.toString());
             assertEquals(1, shown.get("series").asInt(), "the value over the run: " + shown);
-            waitFor(page, r1 + ".dataset.ack === 'false'", "a new state lifts the acknowledgement");
+            page.await(r1 + ".dataset.ack === 'false'", "a new state lifts the acknowledgement", 30);
             assertEquals("acknowledge", page.eval(r1 + ".querySelector('button.ack').textContent"));
-            waitFor(page, "window.__notes.length > 0", "a notification of the violation");
+            page.await("window.__notes.length > 0", "a notification of the violation", 30);
             assertEquals("[\"r1: VIOLATION\"]", page.eval("JSON.stringify(window.__notes)"));
             assertEquals("0", page.eval("String(window.__beeps)"), "no sound unless switched on");
             click(page, "document.getElementById('sound')");
-            waitFor(page, "window.__beeps > 0", "switching the sound on plays it once: "
-                    + page.eval("document.getElementById('sound').textContent + ' ' + JSON.stringify(window.__errors)"));
-            screenshot(page, "live-acknowledged.png");
+            page.await("window.__beeps > 0", "switching the sound on plays it once: " + page.eval(
+                    "document.getElementById('sound').textContent + ' ' + JSON.stringify(window.__errors)"), 30);
+            BrowserTabs.screenshot(page, "live-acknowledged.png", DOCUMENTED);
         }
     }
 
@@ -327,9 +292,9 @@ class LivePageBrowserTest {
             }
             try (AutoCloseable growing = scene.growing(live)) {
                 HeadlessChromium.Page page = open(scene.url().resolve("/?view=compact"));
-                waitFor(page, "document.querySelectorAll('#tiles.compact .row').length === 100", "100 rows");
-                waitFor(page, "document.querySelectorAll('.row[data-state=ended]').length === 9", "the ended runs");
-                waitFor(page, "document.querySelectorAll('.row[data-stale=true]').length === 5", "the stale ones");
+                page.await("document.querySelectorAll('#tiles.compact .row').length === 100", "100 rows", 30);
+                page.await("document.querySelectorAll('.row[data-state=ended]').length === 9", "the ended runs", 30);
+                page.await("document.querySelectorAll('.row[data-stale=true]').length === 5", "the stale ones", 30);
                 JsonNode fit = JSON.readTree(page.eval("JSON.stringify({w: innerWidth, h: innerHeight,"
                         + " scroll: document.documentElement.scrollHeight, outside: [...document.querySelectorAll('.row')]"
                         + ".filter(r => { const b = r.getBoundingClientRect(); return b.top < 0 || b.left < 0"
@@ -344,10 +309,10 @@ class LivePageBrowserTest {
                 assertEquals(List.of("violation", "violation", "violation", "violation"), states.subList(0, 4),
                         "worst first: " + states);
                 assertEquals("ended", states.get(99));
-                screenshot(page, "live-compact.png");
+                BrowserTabs.screenshot(page, "live-compact.png", DOCUMENTED);
 
                 click(page, "document.getElementById('view')");
-                waitFor(page, "document.querySelectorAll('#tiles.tiles article.tile').length === 100", "the tiles");
+                page.await("document.querySelectorAll('#tiles.tiles article.tile').length === 100", "the tiles", 30);
                 assertFalse(page.eval("location.search").contains("compact"));
             }
         }
@@ -380,8 +345,8 @@ class LivePageBrowserTest {
             scene.board.tile(dir.resolve("robots/r6/monitor.log").toString());
             try (AutoCloseable growing = scene.growing(tiles)) {
                 HeadlessChromium.Page page = open(scene.url());
-                waitFor(page, "document.querySelectorAll('article.tile').length === 6", "six tiles");
-                waitFor(page, "document.querySelector('[data-state=ended]') !== null", "r5's run ended");
+                page.await("document.querySelectorAll('article.tile').length === 6", "six tiles", 30);
+                page.await("document.querySelector('[data-state=ended]') !== null", "r5's run ended", 30);
                 List<String> states = new ArrayList<>();
                 JSON.readTree(page.eval("JSON.stringify([...document.querySelectorAll('article.tile')]"
                         + ".map(t => t.dataset.state))")).forEach(s -> states.add(s.asText()));
@@ -395,7 +360,7 @@ class LivePageBrowserTest {
                 assertTrue(ticks.get("x").asInt() >= 8, "several labelled ticks on the axes: " + ticks);
                 assertEquals("0", page.eval("String([...document.querySelectorAll('.events li')].filter(li =>"
                         + " getComputedStyle(li).textOverflow === 'ellipsis').length)"), "no event is cut off");
-                screenshot(page, "live-fleet.png");
+                BrowserTabs.screenshot(page, "live-fleet.png", DOCUMENTED);
             }
         }
     }

@@ -8,11 +8,9 @@ import dev.predmon.parse.LogRecord;
 import dev.predmon.parse.RecordKind;
 import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Path;
@@ -20,6 +18,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -38,25 +37,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class LivePropertiesBrowserTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
-    private static BrowserTabs tabs;
+    /** The screenshot the documentation shows. */
+    private static final Set<String> DOCUMENTED = Set.of("live-properties.png");
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs();
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void startBrowser() throws Exception {
-        tabs = BrowserTabs.start();
-    }
-
-    @AfterAll
-    static void stopBrowser() throws Exception {
-        tabs.close();
-    }
-
-    @AfterEach
-    void closeTabs() throws Exception {
-        tabs.closeTabs();
-    }
 
     /** A robot's log as records: a tick a second, with a battery reading at each, and what else {@code at} adds. */
     private static final class Robot {
@@ -106,15 +93,6 @@ class LivePropertiesBrowserTest {
                 + JSON.writeValueAsString(log) + ")";
     }
 
-    private static void waitFor(HeadlessChromium.Page page, String condition, String what) throws Exception {
-        long deadline = System.nanoTime() + 30_000_000_000L;
-        while (!"true".equals(page.eval("String(!!(() => { try { return " + condition + "; } catch (e) { return false; }"
-                + " })())"))) {
-            assertTrue(System.nanoTime() < deadline, "timed out: " + what);
-            Thread.sleep(50);
-        }
-    }
-
     /** Each light of a robot's tile, in the page's order: {@code property state}. */
     private static List<String> lights(HeadlessChromium.Page page, String log) throws Exception {
         JsonNode a = JSON.readTree(page.eval("JSON.stringify([...(" + of(log) + ").querySelectorAll('li.prop')]"
@@ -122,14 +100,6 @@ class LivePropertiesBrowserTest {
         List<String> out = new ArrayList<>();
         a.forEach(x -> out.add(x.asText()));
         return out;
-    }
-
-    private static void screenshot(HeadlessChromium.Page page, String name) throws Exception {
-        page.screenshot(Path.of("target", name));
-        String docs = System.getProperty("predmon.screenshots");
-        if (docs != null && !docs.isBlank() && name.equals("live-properties.png")) {
-            page.screenshot(Path.of(docs, name));
-        }
     }
 
     @Test
@@ -151,9 +121,9 @@ class LivePropertiesBrowserTest {
             Tile r4 = scene.board.tile(underWay);
             scene.feed(r4, new Robot().ticks(1, 1).goTo(1, "kitchen").ticks(2, 40).records);
 
-            HeadlessChromium.Page page = tabs.blank("the live page is not tested in a browser");
-            page.call("Page.navigate", JSON.createObjectNode().put("url", scene.url().toString()));
-            waitFor(page, "document.querySelectorAll('article.tile li.prop').length === 20", "five lights on four tiles");
+            HeadlessChromium.Page page = TABS.open(scene.url(), "the live page is not tested in a browser");
+            page.await("document.querySelectorAll('article.tile li.prop').length === 20", "five lights on four tiles",
+                    30);
 
             List<String> r1 = lights(page, aborts);
             assertEquals("no-abort violated", r1.get(0), "worst first: " + r1);
@@ -195,10 +165,11 @@ class LivePropertiesBrowserTest {
             String own = "(l => l.className.split(' ').pop() + ' ' + l.getAttribute('aria-label'))";
             assertEquals("red VIOLATION", page.eval(own + "((" + of(aborts) + ").querySelector('.light'))"));
             assertEquals("yellow WARNING", page.eval(own + "((" + of(stuck) + ").querySelector('.light'))"));
-            screenshot(page, "live-properties.png");
+            BrowserTabs.screenshot(page, "live-properties.png", DOCUMENTED);
 
             page.eval("document.getElementById('view').click(), 'ok'");
-            waitFor(page, "document.querySelectorAll('#tiles.compact .row .worst').length === 4", "the compact view");
+            page.await("document.querySelectorAll('#tiles.compact .row .worst').length === 4", "the compact view",
+                    30);
             JsonNode rows = JSON.readTree(page.eval("JSON.stringify([...document.querySelectorAll('.row')].map(r => "
                     + "({log: r.dataset.log, light: r.dataset.light, worst: (r.querySelector('.worst .worst-text') || {}).textContent || '', state: r.querySelector('.worst').dataset.state})))"));
             assertEquals("red", rows.get(0).get("light").asText(), rows.toString());
@@ -210,7 +181,7 @@ class LivePropertiesBrowserTest {
             // its worst is a property nothing of which occurred yet: no evidence, never "holds"
             assertEquals("no-evidence", rows.get(2).get("state").asText(), rows.toString());
             assertEquals("yellow", rows.get(1).get("light").asText(), rows.toString());
-            screenshot(page, "live-properties-compact.png");
+            BrowserTabs.screenshot(page, "live-properties-compact.png", DOCUMENTED);
         }
     }
 }

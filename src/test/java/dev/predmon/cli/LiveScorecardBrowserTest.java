@@ -10,24 +10,22 @@ import dev.predmon.live.RobotNames;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
 import dev.predmon.simulate.Scenario;
+import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
-import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
-import java.util.Optional;
+import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * The models' scorecard on the live page, in headless Chromium at 1920x1080: under the header in words, and, where
@@ -40,25 +38,13 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 class LiveScorecardBrowserTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
-    private static HeadlessChromium browser;
+    /** The screenshot the documentation shows. */
+    private static final Set<String> DOCUMENTED = Set.of("live-no-skill.png");
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs();
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void startBrowser() throws Exception {
-        Optional<Path> chromium = HeadlessChromium.find();
-        if (chromium.isPresent()) {
-            browser = HeadlessChromium.start(chromium.get(), 1920, 1080);
-        }
-    }
-
-    @AfterAll
-    static void stopBrowser() throws Exception {
-        if (browser != null) {
-            browser.close();
-        }
-    }
 
     private static Abstraction abstraction() throws Exception {
         return AbstractionFiles.load(ModelStore.storedAbstraction(ForecastModels.get()).orElseThrow());
@@ -79,46 +65,25 @@ class LiveScorecardBrowserTest {
 
     /** What the page shows of the scorecard and of the robot's forecast, once the robot's tile is OK. */
     private JsonNode page(ModelSet models, Abstraction abstraction, String screenshot) throws Exception {
-        assumeTrue(browser != null, "no Chromium found (apt-get install chromium, or -Dpredmon.chromium=PATH): the "
-                + "scorecard is not tested in a browser");
+        TABS.assumeBrowser("the scorecard is not tested in a browser");
         Path log = robot();
         try (LiveScene scene = new LiveScene(models, abstraction, Duration.ofMinutes(10), RobotNames.pattern("{dir}"),
                 List.of())) {
             scene.follow(log);
-            HeadlessChromium.Page tab = browser.open(URI.create("about:blank"));
-            try {
-                tab.call("Emulation.setDeviceMetricsOverride", JSON.createObjectNode().put("width", 1920)
-                        .put("height", 1080).put("deviceScaleFactor", 1).put("mobile", false));
-                tab.call("Page.navigate", JSON.createObjectNode().put("url", scene.url().toString()));
-                String tile = "document.querySelector('article.tile')";
-                long deadline = System.nanoTime() + 30_000_000_000L;
-                while (!"true".equals(tab.eval("String(!!(" + tile + " && " + tile + ".dataset.state === 'ok' && "
-                        + tile + ".querySelector('.forecast')))"))) {
-                    assertTrue(System.nanoTime() < deadline, "timed out waiting for the robot's OK tile");
-                    Thread.sleep(50);
-                }
-                JsonNode shown = JSON.readTree(tab.eval("JSON.stringify({card: document.getElementById('scorecard')"
-                        + ".innerText, cardHidden: document.getElementById('scorecard').hidden, forecast: " + tile
-                        + ".querySelector('.forecast').innerText, headline: !!" + tile + ".querySelector("
-                        + "'.forecast .chance')})"));
-                tab.screenshot(Path.of("target", screenshot));
-                String docs = System.getProperty("predmon.screenshots");
-                if (docs != null && !docs.isBlank() && screenshot.equals("live-no-skill.png")) {
-                    tab.screenshot(Path.of(docs, screenshot));
-                }
-                // the compact view: the row's words carry no probability either way it has no skill
-                tab.call("Page.navigate", JSON.createObjectNode().put("url", scene.url() + "?view=compact"));
-                deadline = System.nanoTime() + 30_000_000_000L;
-                while (!"true".equals(tab.eval("String(!!document.querySelector('.row .line2'))"))) {
-                    assertTrue(System.nanoTime() < deadline, "timed out waiting for the compact row");
-                    Thread.sleep(50);
-                }
-                ((ObjectNode) shown).put("row",
-                        tab.eval("document.querySelector('.row .line2').textContent"));
-                return shown;
-            } finally {
-                tab.call("Page.close", JSON.createObjectNode());
-            }
+            HeadlessChromium.Page tab = TABS.open(scene.url(), "the scorecard is not tested in a browser");
+            String tile = "document.querySelector('article.tile')";
+            tab.await(tile + " && " + tile + ".dataset.state === 'ok' && " + tile + ".querySelector('.forecast')",
+                    "the robot's OK tile", 30);
+            JsonNode shown = JSON.readTree(tab.eval("JSON.stringify({card: document.getElementById('scorecard')"
+                    + ".innerText, cardHidden: document.getElementById('scorecard').hidden, forecast: " + tile
+                    + ".querySelector('.forecast').innerText, headline: !!" + tile + ".querySelector("
+                    + "'.forecast .chance')})"));
+            BrowserTabs.screenshot(tab, screenshot, DOCUMENTED);
+            // the compact view: the row's words carry no probability either way it has no skill
+            tab.call("Page.navigate", JSON.createObjectNode().put("url", scene.url() + "?view=compact"));
+            tab.await("document.querySelector('.row .line2')", "the compact row", 30);
+            ((ObjectNode) shown).put("row", tab.eval("document.querySelector('.row .line2').textContent"));
+            return shown;
         }
     }
 

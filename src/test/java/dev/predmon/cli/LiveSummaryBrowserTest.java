@@ -1,16 +1,13 @@
 package dev.predmon.cli;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
 import dev.predmon.live.RobotNames;
 import dev.predmon.live.Tile;
 import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HandRuns;
 import dev.predmon.support.HeadlessChromium;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Path;
@@ -27,26 +24,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class LiveSummaryBrowserTest {
 
-    private static final ObjectMapper JSON = new ObjectMapper();
-    private static BrowserTabs tabs;
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs();
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void startBrowser() throws Exception {
-        tabs = BrowserTabs.start();
-    }
-
-    @AfterAll
-    static void stopBrowser() throws Exception {
-        tabs.close();
-    }
-
-    @AfterEach
-    void closeTabs() throws Exception {
-        tabs.closeTabs();
-    }
 
     private static String summary(HeadlessChromium.Page page) throws Exception {
         return page.eval("(document.getElementById('summary') || {}).textContent || ''");
@@ -72,8 +54,7 @@ class LiveSummaryBrowserTest {
             Tile r2 = scene.board.tile(dir.resolve("r2.log").toString());
             scene.feed(r2, HandRuns.recharge().list()); // a run no learned model matches: unknown
 
-            HeadlessChromium.Page page = tabs.blank("the live page's header is not tested in a browser");
-            page.call("Page.navigate", JSON.createObjectNode().put("url", scene.url().toString()));
+            HeadlessChromium.Page page = TABS.open(scene.url(), "the live page's header is not tested in a browser");
             awaitSummary(page, "2 robots: 1 violation, 1 unknown");
 
             Tile r3 = scene.board.tile(dir.resolve("r3.log").toString());

@@ -12,14 +12,14 @@ import dev.predmon.learn.ScenarioLayout;
 import dev.predmon.model.LearnedModel;
 import dev.predmon.model.ModelSet;
 import dev.predmon.model.ModelStore;
+import dev.predmon.support.BrowserTabs;
 import dev.predmon.support.HeadlessChromium;
 import dev.predmon.support.RealLogs;
 import dev.predmon.support.SimulatedSets;
 import dev.predmon.support.SvgTexts;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.charset.StandardCharsets;
@@ -48,27 +48,14 @@ class ReportInChromiumTest {
 
     @TempDir
     static Path dir;
-    static HeadlessChromium browser;
+    @RegisterExtension
+    static final BrowserTabs TABS = new BrowserTabs(1400, 1000);
+    private static final String UNTESTED = "the report is not rendered; MachineLayoutTest and HtmlReportTest still "
+            + "check the layouts and the page";
     private static Evaluation sample;
 
-    @BeforeAll
-    static void start() throws Exception {
-        var chromium = HeadlessChromium.find();
-        if (chromium.isPresent()) {
-            browser = HeadlessChromium.start(chromium.get(), 1400, 1000);
-        }
-    }
-
-    @AfterAll
-    static void stop() throws Exception {
-        if (browser != null) {
-            browser.close();
-        }
-    }
-
     private static void assumeChromium() {
-        assumeTrue(browser != null, "no Chromium found (apt-get install chromium, or -Dpredmon.chromium=PATH), so the "
-                + "report is not rendered; MachineLayoutTest and HtmlReportTest still check the layouts and the page");
+        TABS.assumeBrowser(UNTESTED);
     }
 
     /** The shipped sample logs, evaluated by 5-fold cross-validation (once for the tests that show them). */
@@ -82,7 +69,7 @@ class ReportInChromiumTest {
 
     private static HeadlessChromium.Page open(String name, String html) throws Exception {
         Path file = Files.writeString(dir.resolve(name), html, StandardCharsets.UTF_8);
-        HeadlessChromium.Page page = browser.open(file.toUri());
+        HeadlessChromium.Page page = TABS.open(file.toUri(), UNTESTED);
         SvgTexts.loaded(page);
         return page;
     }

@@ -168,6 +168,21 @@ public final class HeadlessChromium implements AutoCloseable {
             return v == null || v.isNull() ? null : v.asText();
         }
 
+        /**
+         * Waits up to {@code seconds} until the JavaScript {@code condition} holds (one that throws does not), else
+         * fails the test: timed out, {@code what}.
+         */
+        public void await(String condition, String what, long seconds) throws Exception {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+            while (!"true".equals(eval("String(!!(() => { try { return " + condition + "; } catch (e) { return false; }"
+                    + " })())"))) {
+                if (System.nanoTime() > deadline) {
+                    throw new AssertionError("timed out after " + seconds + " s: " + what);
+                }
+                Thread.sleep(50);
+            }
+        }
+
         /** Saves a PNG of what the tab shows. */
         public void screenshot(Path png) throws Exception {
             JsonNode r = call("Page.captureScreenshot", JSON.createObjectNode().put("format", "png"));
