@@ -52,6 +52,12 @@ public final class Benchmarks {
                           long bagMessages, Path fleetDir) {
     }
 
+    /** What is said of {@code early} logs that warned before the warning's record was appended, if any. */
+    static String early(int early) {
+        return early == 0 ? "" : f("; %d more warned before the record that raises the warning was appended, so "
+                + "gave no sample", early);
+    }
+
     /** {@code dir} and the type of its file system ({@code /dev/shm (tmpfs)}). */
     static String fileSystem(Path dir) {
         try {
@@ -163,14 +169,14 @@ public final class Benchmarks {
                                 p.readRate(), 100 * p.writerCore());
                         out.accept(f("fleet: %d log%s in one process, %s: catch-up %.0f ns CPU/record; idle %.1f%% of "
                                         + "a core (following thread %.1f%%); %s %.1f%% of a core, %.0f ns CPU/record, "
-                                        + "append->warning median %.3f ms, p99 %.3f ms (%d samples); quiet append->warning "
-                                        + "median %.3f ms, p99 %.3f ms, max %.3f ms (%d samples); logs on %s; load average "
+                                        + "append->warning median %.3f ms, p99 %.3f ms (%d samples%s); quiet append->warning "
+                                        + "median %.3f ms, p99 %.3f ms, max %.3f ms (%d samples%s); logs on %s; load average "
                                         + "%.1f%s", r.logs(),
                                 r.logs() == 1 ? "" : "s", how, r.catchUpNanos(), 100 * r.idleCore(),
                                 100 * r.idleLoopCore(), pace, 100 * p.core(),
                                 p.nanosPerRecord(), FleetBench.Result.percentile(p.millis(), 0.5), paceP99,
-                                p.millis().length, r.percentile(0.5), r.percentile(0.99),
-                                r.millis()[r.millis().length - 1], r.millis().length, fileSystem(o.fleetDir()),
+                                p.millis().length, early(p.early()), r.percentile(0.5), r.percentile(0.99),
+                                r.percentile(1), r.millis().length, early(r.early()), fileSystem(o.fleetDir()),
                                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(),
                                 r.logs() < 1000 ? "" : r.logs() < 10_000
                                         ? f("; target idle < 5%% of a core and p99 < 20 ms: %s",

@@ -55,17 +55,25 @@ final class FleetBench {
      * @param paceRate      records per second each log should grow by at robot pace
      * @param pace          the robot-pace phase: CPU, the rates written and read, latencies meanwhile
      * @param millis        append-to-warning latencies of a quiet fleet, sorted
+     * @param early         logs of the quiet fleet that warned before the warning's record was written (no sample)
      */
     // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
     @SuppressWarnings("ArrayRecordComponent")
     record Result(int logs, double catchUpNanos, double idleCore, double idleLoopCore, double paceRate,
-                  RobotPace.Load pace, double[] millis) {
+                  RobotPace.Load pace, double[] millis, int early) {
         double percentile(double q) {
             return percentile(millis, q);
         }
 
+        /** The {@code q} quantile of {@code sorted}, NaN when there is no sample. */
         static double percentile(double[] sorted, double q) {
-            return sorted[Math.min(sorted.length - 1, (int) Math.ceil(q * sorted.length) - 1)];
+            return sorted.length == 0 ? Double.NaN
+                    : sorted[Math.min(sorted.length - 1, (int) Math.ceil(q * sorted.length) - 1)];
+        }
+
+        /** The samples of {@code millis} that are latencies (not NaN), sorted. */
+        static double[] latencies(double[] millis) {
+            return Arrays.stream(millis).filter(m -> !Double.isNaN(m)).sorted().toArray();
         }
     }
 
@@ -161,10 +169,10 @@ final class FleetBench {
                 }
             }
         }
-        Arrays.sort(millis);
         RobotPace.Load load = pace.measure(logs, full ? phaseNanos : phaseNanos / 5, pacedSamples(logs, samples),
                 before, trigger, beforeRecords);
-        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load, millis);
+        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load,
+                Result.latencies(millis), millis.length - Result.latencies(millis).length);
     }
 
     /** Warnings measured at robot pace: one per log of a tenth of the fleet more, at most {@code samples}. */
@@ -200,7 +208,8 @@ final class FleetBench {
 
     /**
      * Appends {@code trigger}, the warning's record, to each of {@code files} once, in random order, 1 to 3 ms apart, and waits for
-     * their warnings: each log's time from the start of its write to its warning goes to {@code into} from {@code at}.
+     * their warnings: each log's time from the start of its write to its warning goes to {@code into} from {@code at}
+     * (NaN for a log that had warned before).
      */
     static void latencies(List<Path> files, byte[] trigger, AtomicLongArray warnedAt, Random random, double[] into, int at)
             throws Exception {
@@ -227,7 +236,9 @@ final class FleetBench {
             if (warnedAt.get(i) == 0) {
                 throw new IllegalStateException("log " + i + " of " + files.size() + ": no warning within 60 s");
             }
-            into[at + i] = (warnedAt.get(i) - writtenAt[i]) / 1e6;
+            // A log that warned before the record was written gives no latency (NaN), and is counted apart.
+            long after = warnedAt.get(i) - writtenAt[i];
+            into[at + i] = after < 0 ? Double.NaN : after / 1e6;
         }
     }
 }

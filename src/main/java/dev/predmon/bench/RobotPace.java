@@ -42,11 +42,12 @@ final class RobotPace {
      * @param readRate       records per second read per log
      * @param millis         append-to-warning latencies at robot pace, sorted
      * @param writerCore     share of one core the writer process spent
+     * @param early          logs that warned before the warning's record was written: no sample
      */
     // An array: sorted samples for percentiles; a result is printed, never compared or hashed.
     @SuppressWarnings("ArrayRecordComponent")
     record Load(double core, double nanosPerRecord, double writtenRate, double readRate, double[] millis,
-                double writerCore) {
+                double writerCore, int early) {
     }
 
     private final FleetSetup setup;
@@ -134,11 +135,11 @@ final class RobotPace {
                     records = paced(fleet, index) - readBefore;
                     wrote = writer.stop();
                 }
-                Arrays.sort(millis);
                 double writtenRate = Long.parseLong(wrote[1]) / (Long.parseLong(wrote[2]) / 1e9) / logs;
                 return new Load(used / wall, (double) used / Math.max(1, records), writtenRate,
-                        records / (wall / 1e9) / logs, millis,
-                        Double.parseDouble(wrote[3]) / Double.parseDouble(wrote[2]));
+                        records / (wall / 1e9) / logs, FleetBench.Result.latencies(millis),
+                        Double.parseDouble(wrote[3]) / Double.parseDouble(wrote[2]),
+                        samples - FleetBench.Result.latencies(millis).length);
             }
         }
     }

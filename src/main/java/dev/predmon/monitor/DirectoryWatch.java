@@ -29,7 +29,9 @@ import static java.nio.file.StandardWatchEventKinds.OVERFLOW;
  * directories of a fleet's logs. Directories, not files, are watched: one inotify watch per directory however many
  * logs it holds (the per-user limit, {@code fs.inotify.max_user_watches}, is often 8192), and a directory's watch
  * also tells of files created, renamed or deleted in it, which rotation does. A whole fleet shares one inotify
- * instance ({@code fs.inotify.max_user_instances} is often 128 per user).
+ * instance ({@code fs.inotify.max_user_instances} is often 128 per user). A thread of its own ({@code predmon-notify})
+ * takes the JDK's changes as they come, once a millisecond at most, and queues them for {@link #take}: the JDK holds
+ * 512 changes per directory, beyond which it reports an overflow.
  *
  * <p>The caller polls instead where a notification would not be trusted: a directory on a network or FUSE file
  * system ({@link #remote}: inotify only sees changes made through this machine's kernel, not a writer on another
