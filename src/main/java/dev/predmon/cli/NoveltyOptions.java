@@ -53,8 +53,9 @@ final class NoveltyOptions {
     String gap;
 
     @Option(names = "--never-arrives", paramLabel = "TICKS|LOW..HIGH",
-            description = "The way to the tour location (the long leg; with --abort-on station the way to the "
-                    + "charging station, the short leg of a recharge run) is blocked for good: the robot stops "
+            description = "The way to the tour location (the long leg of a direct run; of a recharge run the way "
+                    + "back after charging; with --abort-on station the way to the charging station, the short leg "
+                    + "of a recharge run) is blocked for good: the robot stops "
                     + "short, the navigation keeps answering getStatus with 1 (RUNNING), and the log ends TICKS "
                     + "ticks later (drawn per run when a range). Depleted runs never get there and are not stuck.")
     String neverArrives;

@@ -5,10 +5,12 @@ import java.util.List;
 /**
  * When the deadline forecast of one bounded-response property warns: the probability of a miss at or above which it
  * does, chosen by cross-validation over the training obligations ({@link ThresholdChoice}), the calibration of
- * {@link Survival}'s estimate fitted on the same held-out forecasts, and the novelty clause: an obligation pending
- * longer than every training obligation (no evidence either way) is warned once half of the time from the longest of
- * them to the deadline has passed too, so that a robot stuck in a way no training run was is warned with that half of
- * the margin left.
+ * {@link Survival}'s estimate fitted on the same held-out forecasts, and a clause that warns whatever the probability.
+ * That clause is the <em>late</em> clause where the cross-validation chose a prediction level: an obligation pending
+ * past the upper prediction bound of how long the obligations that began where it did (which skill, where to) took
+ * ({@link Survival#lateAfter}), so that a leg that usually takes 10 ticks is warned long before one that takes 200;
+ * else the novelty clause: an obligation pending longer than every training obligation (no evidence either way) is
+ * warned once {@code margin} of the time from the longest of them to the deadline has passed too.
  *
  * <p>Where the training obligations cannot choose (too few logs to cross-validate, or no held-out obligation missed
  * its deadline) the rule is {@link #DEFAULT}: even odds on the raw estimate, and the novelty clause. It is not
@@ -24,14 +26,61 @@ import java.util.List;
  *                    soon as the obligation is past every training one from the same input)
  * @param baseline    whether the elapsed-time baseline warns in place of this rule (pending longer than every training
  *                    obligation of the property), because this rule did worse on the same held-out folds
+ * @param level       the late clause's prediction level ({@link #LEVELS}), NaN for the novelty clause
+ * @param waited      whether the late clause's ceiling is every training obligation, those let go still pending
+ *                    included (as the elapsed-time rule's), rather than every one whose response came
  */
 public record DeadlineRule(double threshold, String note, boolean validated, Calibration calibration, double margin,
-                           boolean baseline) {
+                           boolean baseline, double level, boolean waited) {
 
     /** The novelty clause's margin before the cross-validation chose one: half of it. */
     public static final double HALF = 0.5;
     /** The margins the cross-validation chooses from, earliest first. */
     public static final List<Double> MARGINS = List.of(0.0, HALF);
+    /**
+     * The late clause's prediction levels the cross-validation chooses from, earliest first: of 100 and of 1000 legs
+     * like the training ones, about one would outlast the bound. A lower level is not offered: a clause that expects
+     * one false alarm in twenty legs (a few runs) raises more than an operator keeps listening to, and a few dozen
+     * held-out obligations are too few to tell it from one in a hundred.
+     */
+    public static final List<Double> LEVELS = List.of(0.99, 0.999);
+
+    /**
+     * The clauses the cross-validation chooses from, in the order it tries them: the late clause at each of
+     * {@link #LEVELS} capped at every discharged training obligation, then at each capped at every training obligation
+     * (those let go still pending included: later, where runs ended on the way), then the novelty clause at each of
+     * {@link #MARGINS}.
+     */
+    public static int variants() {
+        return 2 * LEVELS.size() + MARGINS.size();
+    }
+
+    /** The prediction level of variant {@code v} ({@link #variants}), NaN for a novelty clause. */
+    public static double levelOf(int v) {
+        return v < 2 * LEVELS.size() ? LEVELS.get(v % LEVELS.size()) : Double.NaN;
+    }
+
+    /** Whether variant {@code v}'s late clause is capped at every training obligation, censored ones included. */
+    public static boolean waitedOf(int v) {
+        return v >= LEVELS.size() && v < 2 * LEVELS.size();
+    }
+
+    /** The novelty margin of variant {@code v} ({@link #variants}); 0 for a late clause (not used by it). */
+    public static double marginOf(int v) {
+        return v < 2 * LEVELS.size() ? 0 : MARGINS.get(v - 2 * LEVELS.size());
+    }
+
+    /** A rule whose warning clause is the late clause at {@code level} (NaN: the novelty clause with {@code margin}). */
+    public DeadlineRule(double threshold, String note, boolean validated, Calibration calibration, double margin,
+                        boolean baseline, double level) {
+        this(threshold, note, validated, calibration, margin, baseline, level, false);
+    }
+
+    /** A rule whose warning clause is the novelty clause with {@code margin}. */
+    public DeadlineRule(double threshold, String note, boolean validated, Calibration calibration, double margin,
+                        boolean baseline) {
+        this(threshold, note, validated, calibration, margin, baseline, Double.NaN, false);
+    }
 
     /** A rule whose novelty clause waits for half of the margin, as rules learned before the choice do. */
     public DeadlineRule(double threshold, String note, boolean validated, Calibration calibration) {
@@ -56,8 +105,27 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
 
     /** An unvalidated rule whose novelty clause waits for {@code margin}, the baseline in its place if {@code baseline}. */
     public static DeadlineRule unvalidated(String why, boolean baseline, double margin) {
+        return unvalidated(why, baseline, margin, Double.NaN);
+    }
+
+    /** As above, with the late clause at {@code level} in place of the novelty clause when it is a number. */
+    public static DeadlineRule unvalidated(String why, boolean baseline, double margin, double level) {
+        return unvalidated(why, baseline, margin, level, false);
+    }
+
+    /** As above, the late clause capped at every training obligation, censored ones included, if {@code waited}. */
+    public static DeadlineRule unvalidated(String why, boolean baseline, double margin, double level,
+                                           boolean waited) {
         return new DeadlineRule(NEVER, why + "; not validated: the probability is shown but does not warn, the warning"
-                + " comes past every training obligation", false, Calibration.IDENTITY, margin, baseline);
+                + (Double.isNaN(level) ? " comes past every training obligation"
+                : String.format(java.util.Locale.ROOT, " comes past the %s prediction bound of the training"
+                + " obligations that began where it did", percent(level))), false, Calibration.IDENTITY, margin,
+                baseline, level, waited);
+    }
+
+    /** {@code 0.999} as {@code 99.9%}. */
+    public static String percent(double level) {
+        return new java.math.BigDecimal(Double.toString(level * 100)).stripTrailingZeros().toPlainString() + "%";
     }
 
     /**
@@ -74,6 +142,14 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
         if (!(margin >= 0 && margin <= 1)) {
             throw new IllegalArgumentException("a margin is a share, from 0 to 1: " + margin);
         }
+        if (!Double.isNaN(level) && !(level > 0.5 && level < 1)) {
+            throw new IllegalArgumentException("a prediction level is above 0.5 and below 1: " + level);
+        }
+    }
+
+    /** Whether its warning clause is the late clause ({@link #level} a number). */
+    public boolean late() {
+        return !Double.isNaN(level);
     }
 
     /** {@code e} with its probability calibrated (a novel estimate has none and stays as it is). */
@@ -97,6 +173,10 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
         if (baseline) {
             return pastEvery(elapsed, pooled);
         }
+        if (late()) {
+            return pastLate(elapsed, survival, level, waited)
+                    || (!e.novel() && calibration.apply(e.probability()) >= threshold);
+        }
         return e.novel() ? pastEveryObligation(elapsed, deadline, survival, margin)
                 : calibration.apply(e.probability()) >= threshold;
     }
@@ -104,6 +184,20 @@ public record DeadlineRule(double threshold, String note, boolean validated, Cal
     /** As above, with one curve for both (no input of its own). */
     public boolean warns(Survival.Estimate e, double elapsed, double deadline, Survival survival) {
         return warns(e, elapsed, deadline, survival, survival);
+    }
+
+    /**
+     * The late clause: pending longer than the {@code level} prediction bound of the obligations of {@code survival}
+     * (the curve of those that began where this one did, {@link Survival#lateAfter}).
+     */
+    public static boolean pastLate(double elapsed, Survival survival, double level, boolean waited) {
+        double late = survival.lateAfter(level, waited);
+        return !Double.isNaN(late) && elapsed > late;
+    }
+
+    /** The late clause capped at every discharged training obligation. */
+    public static boolean pastLate(double elapsed, Survival survival, double level) {
+        return pastLate(elapsed, survival, level, false);
     }
 
     /** The elapsed-time baseline: pending longer than every obligation of {@code survival}. */

@@ -5,34 +5,25 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
-import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import dev.predmon.abstraction.file.LocatedJson;
 
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
-
-import static dev.predmon.forecast.ForecastFileSections.calibration;
-import static dev.predmon.forecast.ForecastFileSections.count;
-import static dev.predmon.forecast.ForecastFileSections.doubles;
-import static dev.predmon.forecast.ForecastFileSections.integer;
-import static dev.predmon.forecast.ForecastFileSections.number;
-import static dev.predmon.forecast.ForecastFileSections.numbers;
-import static dev.predmon.forecast.ForecastFileSections.readDeadlines;
-import static dev.predmon.forecast.ForecastFileSections.readObligations;
-import static dev.predmon.forecast.ForecastFileSections.required;
-import static dev.predmon.forecast.ForecastFileSections.writeCalibration;
-import static dev.predmon.forecast.ForecastFileSections.writeObligations;
-import static dev.predmon.forecast.ScorecardJson.readScorecards;
-import static dev.predmon.forecast.ScorecardJson.writeScorecards;
+import java.util.Set;
 
 /**
  * The text of {@code forecast.json}: a {@link ForecastModel} as JSON, numbers that are not known written as
  * {@code null} (JSON has no NaN), keys in a fixed order so that the same training runs give the same bytes.
+ *
+ * <p>Format {@value ForecastModel#FORMAT}, the one written: after {@code format}, {@code learnId}, {@code unit} and
+ * {@code runs} (the training runs), {@code properties} holds one entry per property the forecast learned something
+ * for, keyed by its id in the abstraction's order, each {@code {"kind": "bound" | "deadline" | "event", ...}} with
+ * everything that property's forecast needs ({@link PropertyCodec}); the abstraction's first floor is a bound like any
+ * other. Format 1 (the first floor at the top level, the other properties in side maps) is still read
+ * ({@link ForecastFileOne}).
  */
 public final class ForecastFile {
 
@@ -52,62 +43,34 @@ public final class ForecastFile {
         return write(m, null);
     }
 
-    /** The JSON text of {@code m} with the learn id of the models it was learned with (none when null). */
+    /** The top-level keys of the format written; every other part is a property's, under {@code properties}. */
+    private static final Set<String> TOP = Set.of("format", LEARN_ID, "unit", "runs", "properties");
+
+    /**
+     * The JSON text of {@code m} with the learn id of the models it was learned with (none when null), in the format
+     * {@value ForecastModel#FORMAT} whatever format {@code m} was read from.
+     *
+     * @throws IllegalStateException when {@code m} forecasts a first floor it does not name ({@link PropertyParts#named})
+     */
     public static String write(ForecastModel m, String learnId) {
+        if (m.first() == null && !Double.isNaN(m.limit())) {
+            throw new IllegalStateException("the forecast of a first floor (limit " + m.limit() + ") without its "
+                    + "property's id: name its properties with the abstraction before writing it");
+        }
         ObjectNode root = JSON.createObjectNode();
-        root.put("format", m.format());
+        root.put("format", ForecastModel.FORMAT);
         if (learnId != null) {
             root.put(LEARN_ID, learnId);
         }
         root.put("unit", m.unit());
-        body(root, m);
-        if (!m.bounds().isEmpty()) {
-            ObjectNode bounds = root.putObject("bounds");
-            new TreeMap<>(m.bounds()).forEach((id, b) -> {
-                ObjectNode n = bounds.putObject(id);
-                n.put("side", b.side());
-                body(n, b.model());
-            });
-        }
-        writeEvents(root, m.events());
+        root.put("runs", m.runs());
+        ObjectNode properties = root.putObject("properties");
+        m.properties().forEach(p -> PropertyCodec.write(properties, p));
         try {
             return JSON.writeValueAsString(root) + "\n";
         } catch (JsonProcessingException e) {
             throw new IllegalStateException("a JSON tree does not write", e);
         }
-    }
-
-    /** Everything of {@code m} but its format and unit, into {@code root}. */
-    private static void body(ObjectNode root, ForecastModel m) {
-        number(root, "limit", m.limit());
-        root.put("runs", m.runs());
-        root.put("violating", m.violating());
-        root.put("threshold", m.threshold());
-        root.put("thresholdNote", m.thresholdNote());
-        root.put("thresholdValidated", m.validated());
-        ForecastFileSections.writeClauses(root, m.clauses());
-        writeCalibration(root, m.calibration());
-        writeScorecards(root, m.scorecards());
-        writeObligations(root, m.obligations(), m.deadlines());
-        ArrayNode starts = root.putArray("startInputs");
-        m.startInputs().forEach(starts::add);
-        lows(root, m.lows());
-        ObjectNode machines = root.putObject("states");
-        new TreeMap<>(m.states()).forEach((id, table) -> {
-            ObjectNode states = machines.putObject(id);
-            new TreeMap<>(table).forEach((state, s) -> {
-                ObjectNode n = states.putObject(Integer.toString(state));
-                n.put("runs", s.runs());
-                n.put("violated", s.violated());
-                numbers(n.putArray("toViolation"), new double[] {s.toViolationLow(), s.toViolationMedian(),
-                        s.toViolationHigh()});
-                number(n, "toEnd", s.toEnd());
-                number(n, "drift", s.drift());
-                number(n, "driftSpread", s.driftSpread());
-                n.put("driftRuns", s.driftRuns());
-                lows(n, s.lows());
-            });
-        });
     }
 
     /**
@@ -164,158 +127,40 @@ public final class ForecastFile {
         return root;
     }
 
-    private static ForecastModel read(JsonNode root) {
-        int format = integer(root, "format");
+    private static ForecastModel read(JsonNode node) {
+        JsonAt root = JsonAt.root(node);
+        int format = root.integer("format");
+        if (format == ForecastModel.FORMAT_1) {
+            return ForecastFileOne.read(root);
+        }
         if (format != ForecastModel.FORMAT) {
-            throw new IllegalArgumentException("format " + format + ", expected " + ForecastModel.FORMAT);
+            throw root.get("format").wrong(format + ", expected " + ForecastModel.FORMAT_1 + " or "
+                    + ForecastModel.FORMAT);
         }
-        String unit = required(root, "unit").asText();
-        ForecastModel m = body(root, format, unit);
-        m = m.withEvents(readEvents(root, format, unit));
-        JsonNode bounds = root.get("bounds");
-        if (bounds == null) {
-            return m;
-        }
-        if (!bounds.isObject()) {
-            throw new IllegalArgumentException("'bounds': expected an object");
-        }
-        Map<String, BoundModel> read = new TreeMap<>();
-        for (Iterator<Map.Entry<String, JsonNode>> it = bounds.fields(); it.hasNext(); ) {
-            Map.Entry<String, JsonNode> e = it.next();
-            try {
-                if (!e.getValue().isObject()) {
-                    throw new IllegalArgumentException("expected an object");
-                }
-                read.put(e.getKey(), new BoundModel(required(e.getValue(), "side").asText(),
-                        body(e.getValue(), format, unit)));
-            } catch (IllegalArgumentException x) {
-                throw new IllegalArgumentException("'bounds/" + e.getKey() + "': " + x.getMessage(), x);
+        for (Map.Entry<String, JsonAt> e : root.members().entrySet()) {
+            if (!TOP.contains(e.getKey())) {
+                throw e.getValue().wrong("not a key of format " + format + ", where each property's forecast is "
+                        + "under 'properties'");
             }
         }
-        return m.withBounds(read);
-    }
-
-    /**
-     * The optional {@code events}: by absence or precedence id, its forecast as a bound's is written, or without one
-     * the counts that say why ({@link EventModel#why}).
-     */
-    private static void writeEvents(ObjectNode root, Map<String, EventModel> events) {
-        if (events.isEmpty()) {
-            return;
+        String unit = root.text("unit");
+        int runs = root.count("runs");
+        List<PropertyModel> properties = new ArrayList<>();
+        JsonAt all = root.get("properties");
+        for (Map.Entry<String, JsonAt> e : all.members().entrySet()) {
+            properties.add(PropertyCodec.read(e.getKey(), e.getValue(), unit));
         }
-        ObjectNode all = root.putObject("events");
-        new TreeMap<>(events).forEach((id, e) -> {
-            ObjectNode n = all.putObject(id);
-            if (e.forecasts()) {
-                body(n, e.model());
-            } else {
-                n.put("runs", e.runs());
-                n.put("violating", e.violating());
-                n.put("noForecast", e.why());
-            }
-        });
-    }
-
-    private static Map<String, EventModel> readEvents(JsonNode root, int format, String unit) {
-        JsonNode events = root.get("events");
-        Map<String, EventModel> read = new TreeMap<>();
-        if (events == null) {
-            return read;
+        ForecastModel m = all.built(() -> ForecastModel.of(unit, runs, properties));
+        if (m.runs() != runs) {
+            throw root.get("runs").wrong(runs + ", but the first floor '" + m.first() + "' counts " + m.runs()
+                    + " training runs");
         }
-        if (!events.isObject()) {
-            throw new IllegalArgumentException("'events': expected an object");
-        }
-        for (Iterator<Map.Entry<String, JsonNode>> it = events.fields(); it.hasNext(); ) {
-            Map.Entry<String, JsonNode> e = it.next();
-            String at = "events/" + e.getKey();
-            try {
-                JsonNode n = e.getValue();
-                if (!n.isObject()) {
-                    throw new IllegalArgumentException("expected an object");
-                }
-                if (n.has("states")) {
-                    ForecastModel m = body(n, format, unit);
-                    read.put(e.getKey(), new EventModel(m.runs(), m.violating(), m));
-                } else {
-                    read.put(e.getKey(), new EventModel(count(n, "runs", null), count(n, "violating", null), null));
-                }
-            } catch (IllegalArgumentException x) {
-                throw new IllegalArgumentException("'" + at + "': " + x.getMessage(), x);
-            }
-        }
-        return read;
-    }
-
-    /** The model {@link #body(ObjectNode, ForecastModel)} wrote into {@code root}. */
-    private static ForecastModel body(JsonNode root, int format, String unit) {
-        Map<String, Map<Integer, StateStats>> states = new TreeMap<>();
-        JsonNode machines = required(root, "states");
-        for (Iterator<Map.Entry<String, JsonNode>> it = machines.fields(); it.hasNext(); ) {
-            Map.Entry<String, JsonNode> machine = it.next();
-            Map<Integer, StateStats> table = new TreeMap<>();
-            for (Iterator<Map.Entry<String, JsonNode>> st = machine.getValue().fields(); st.hasNext(); ) {
-                Map.Entry<String, JsonNode> e = st.next();
-                JsonNode n = e.getValue();
-                double[] tv = doubles(required(n, "toViolation"));
-                if (tv.length != 3) {
-                    throw new IllegalArgumentException("states/" + machine.getKey() + "/" + e.getKey()
-                            + "/toViolation: expected 3 numbers");
-                }
-                int state;
-                try {
-                    state = Integer.parseInt(e.getKey());
-                } catch (NumberFormatException x) {
-                    throw new IllegalArgumentException("states/" + machine.getKey() + ": '" + e.getKey()
-                            + "' is not a state number");
-                }
-                String at = "states/" + machine.getKey() + "/" + e.getKey();
-                int runs = count(n, "runs", at);
-                int violated = count(n, "violated", at);
-                if (violated > runs) {
-                    throw new IllegalArgumentException("'" + at + "': " + violated + " violated of " + runs
-                            + " runs");
-                }
-                table.put(state, new StateStats(runs, violated, tv[0], tv[1], tv[2], number(n, "toEnd"),
-                        number(n, "drift"), number(n, "driftSpread"), count(n, "driftRuns", at), lows(n)));
-            }
-            states.put(machine.getKey(), table);
-        }
-        List<String> starts = new ArrayList<>();
-        required(root, "startInputs").forEach(s -> starts.add(s.asText()));
-        Calibration calibration = Calibration.IDENTITY;
-        JsonNode c = root.get("calibration");
-        if (c != null) {
-            calibration = calibration(c, "calibration");
-        }
-        int runs = count(root, "runs", null);
-        int violating = count(root, "violating", null);
-        if (violating > runs) {
-            throw new IllegalArgumentException("'violating': " + violating + " of " + runs + " runs");
-        }
-        double threshold = number(root, "threshold");
-        if (!(threshold >= 0 && threshold <= 1)) {
-            throw new IllegalArgumentException("'threshold': " + root.get("threshold")
-                    + " is not a probability (from 0 to 1)");
-        }
-        return new ForecastModel(format, unit, number(root, "limit"),
-                runs, violating, lows(root), threshold,
-                required(root, "thresholdNote").asText(), required(root, "thresholdValidated").asBoolean(), states,
-                starts, calibration, readScorecards(root), readObligations(root), readDeadlines(root))
-                .withClauses(ForecastFileSections.readClauses(root));
+        return m;
     }
 
     /** One scorecard as {@code forecast.json} holds it (and {@code /status} shows it). */
     public static ObjectNode scorecard(Scorecard c) {
         return ScorecardJson.scorecard(c);
-    }
-
-    private static void lows(ObjectNode n, Lows lows) {
-        numbers(n.putArray("safeLows"), lows.safe());
-        numbers(n.putArray("violatingLows"), lows.violating());
-    }
-
-    private static Lows lows(JsonNode n) {
-        return new Lows(doubles(required(n, "safeLows")), doubles(required(n, "violatingLows")));
     }
 
 }

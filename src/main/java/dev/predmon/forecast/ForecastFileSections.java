@@ -1,22 +1,114 @@
 package dev.predmon.forecast;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import java.util.Iterator;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
+import static dev.predmon.forecast.JsonAt.number;
+import static dev.predmon.forecast.JsonAt.numbers;
+
 /**
- * The parts of {@code forecast.json} beside the per-state tables ({@link ForecastFile}): the calibration, the
- * scorecards, and per bounded-response property its training obligations with the rule its deadline forecast warns
- * by; and the number reading and writing the whole file shares. Every part added after the first format is optional,
- * so that an older file still reads.
+ * The parts of {@code forecast.json} that entries of several kinds and both formats share ({@link ForecastFile}): a
+ * value forecast's body (its rule, calibration, scorecards, lows and per-state tables), a deadline forecast's training
+ * obligations and rule. Every part added after the first format is optional, so that an older file still reads. Each
+ * range is checked once: here where the type does not check it itself, else by the type's constructor
+ * ({@link JsonAt#built}), told at the value's path.
  */
 final class ForecastFileSections {
 
     private ForecastFileSections() {
+    }
+
+    /** A value forecast's own parts into {@code n}: everything but its format, unit and the other properties. */
+    static void writeBody(ObjectNode n, ForecastModel m) {
+        number(n, "limit", m.limit());
+        n.put("runs", m.runs());
+        n.put("violating", m.violating());
+        n.put("threshold", m.threshold());
+        n.put("thresholdNote", m.thresholdNote());
+        n.put("thresholdValidated", m.validated());
+        writeClauses(n, m.clauses());
+        writeCalibration(n, m.calibration());
+        ScorecardJson.writeScorecards(n, m.scorecards());
+        writeRest(n, m);
+    }
+
+    /** The start inputs, the lows and the per-state tables of {@code m}. */
+    static void writeRest(ObjectNode n, ForecastModel m) {
+        ArrayNode starts = n.putArray("startInputs");
+        m.startInputs().forEach(starts::add);
+        lows(n, m.lows());
+        ObjectNode machines = n.putObject("states");
+        new TreeMap<>(m.states()).forEach((id, table) -> {
+            ObjectNode states = machines.putObject(id);
+            new TreeMap<>(table).forEach((state, s) -> {
+                ObjectNode o = states.putObject(Integer.toString(state));
+                o.put("runs", s.runs());
+                o.put("violated", s.violated());
+                numbers(o.putArray("toViolation"), new double[] {s.toViolationLow(), s.toViolationMedian(),
+                        s.toViolationHigh()});
+                number(o, "toEnd", s.toEnd());
+                number(o, "drift", s.drift());
+                number(o, "driftSpread", s.driftSpread());
+                o.put("driftRuns", s.driftRuns());
+                lows(o, s.lows());
+            });
+        });
+    }
+
+    /** The value forecast {@link #writeBody} wrote at {@code n}, its times in {@code unit}. */
+    static ForecastModel readBody(JsonAt n, int format, String unit) {
+        Map<String, Map<Integer, StateStats>> states = new TreeMap<>();
+        for (Map.Entry<String, JsonAt> machine : n.get("states").members().entrySet()) {
+            Map<Integer, StateStats> table = new TreeMap<>();
+            for (Map.Entry<String, JsonAt> e : machine.getValue().members().entrySet()) {
+                JsonAt s = e.getValue().object();
+                int state;
+                try {
+                    state = Integer.parseInt(e.getKey());
+                } catch (NumberFormatException x) {
+                    throw machine.getValue().wrong("'" + e.getKey() + "' is not a state number");
+                }
+                double[] tv = s.doubles("toViolation");
+                if (tv.length != 3) {
+                    throw s.get("toViolation").wrong("expected 3 numbers");
+                }
+                int runs = s.count("runs");
+                int violated = s.count("violated");
+                double toEnd = s.number("toEnd");
+                double drift = s.number("drift");
+                double spread = s.number("driftSpread");
+                int driftRuns = s.count("driftRuns");
+                Lows lows = lows(s);
+                table.put(state, s.built(() -> new StateStats(runs, violated, tv[0], tv[1], tv[2], toEnd, drift,
+                        spread, driftRuns, lows)));
+            }
+            states.put(machine.getKey(), table);
+        }
+        JsonAt startNode = n.get("startInputs");
+        if (!startNode.node().isArray()) {
+            throw startNode.wrong("expected an array of inputs");
+        }
+        List<String> starts = new ArrayList<>();
+        startNode.node().forEach(s -> starts.add(s.asText()));
+        JsonAt c = n.optional("calibration");
+        Calibration calibration = c == null ? Calibration.IDENTITY : calibration(c);
+        int runs = n.count("runs");
+        int violating = n.count("violating");
+        if (violating > runs) {
+            throw n.get("violating").wrong(violating + " of " + runs + " runs");
+        }
+        double threshold = n.number("threshold");
+        if (!(threshold >= 0 && threshold <= 1)) {
+            throw n.get("threshold").wrong(n.get("threshold").node() + " is not a probability (from 0 to 1)");
+        }
+        return new ForecastModel(format, unit, n.number("limit"), runs, violating, lows(n), threshold,
+                n.text("thresholdNote"), n.bool("thresholdValidated"), states, starts, calibration,
+                ScorecardJson.readScorecards(n)).withClauses(readClauses(n));
     }
 
     /** {@code c} under {@code calibration}, when it was fitted (the identity is written as nothing). */
@@ -29,139 +121,106 @@ final class ForecastFileSections {
         }
     }
 
-    /** The calibration object {@code c}; {@code at} says where it is, for the message. */
-    static Calibration calibration(JsonNode c, String at) {
-        if (!c.isObject()) {
-            throw new IllegalArgumentException("'" + at + "': expected an object");
-        }
-        double slope = number(c, "slope");
+    /** The calibration object at {@code c}. */
+    static Calibration calibration(JsonAt c) {
+        c.object();
+        double slope = c.number("slope");
         if (!(slope > 0)) {
-            throw new IllegalArgumentException("'" + at + "/slope': expected a positive number");
+            throw c.get("slope").wrong("expected a positive number");
         }
-        double intercept = number(c, "intercept");
+        double intercept = c.number("intercept");
         if (Double.isNaN(intercept)) {
-            throw new IllegalArgumentException("'" + at + "/intercept': expected a number");
+            throw c.get("intercept").wrong("expected a number");
         }
-        return new Calibration(slope, intercept, count(c, "runs", at));
+        return new Calibration(slope, intercept, c.count("runs"));
+    }
+
+    /** A deadline forecast's training obligations into {@code n}: pooled, and by trigger input when learned so. */
+    static void writeSurvival(ObjectNode n, Survival survival) {
+        numbers(n.putArray("discharged"), survival.discharged());
+        numbers(n.putArray("censored"), survival.censored());
+        if (!survival.contexts().isEmpty()) {
+            ObjectNode by = n.putObject("byInput");
+            survival.contexts().forEach((input, s) -> {
+                ObjectNode c = by.putObject(input);
+                numbers(c.putArray("discharged"), s.discharged());
+                numbers(c.putArray("censored"), s.censored());
+            });
+        }
+    }
+
+    /** The training obligations {@link #writeSurvival} wrote at {@code n}. */
+    static Survival readSurvival(JsonAt n) {
+        n.object();
+        Survival pooled = new Survival(n.doubles("discharged"), n.doubles("censored"));
+        JsonAt by = n.optional("byInput");
+        if (by == null) {
+            return pooled;
+        }
+        Map<String, Survival> contexts = new TreeMap<>();
+        for (Map.Entry<String, JsonAt> c : by.members().entrySet()) {
+            JsonAt s = c.getValue().object();
+            contexts.put(c.getKey(), new Survival(s.doubles("discharged"), s.doubles("censored")));
+        }
+        return pooled.withContexts(contexts);
+    }
+
+    /** When a deadline forecast warns, into {@code n}: nothing for a property without a learned rule. */
+    static void writeRule(ObjectNode n, DeadlineRule rule) {
+        if (rule == null) {
+            return;
+        }
+        n.put("threshold", rule.threshold());
+        n.put("note", rule.note());
+        n.put("validated", rule.validated());
+        writeCalibration(n, rule.calibration());
+        if (rule.margin() != DeadlineRule.HALF) {
+            n.put("margin", rule.margin());
+        }
+        if (rule.late()) {
+            n.put("level", rule.level());
+            if (rule.waited()) {
+                n.put("lateCeiling", "every");
+            }
+        }
+        if (rule.baseline()) {
+            n.put("rule", "baseline");
+        }
     }
 
     /**
-     * The optional {@code obligations}: per bounded-response property, the training obligations' durations and,
-     * when one was learned, the rule its deadline forecast warns by.
+     * The rule {@link #writeRule} wrote at {@code n}, null without a {@code threshold}. The threshold's and the
+     * margin's ranges are {@link DeadlineRule}'s own, each told at its key.
      */
-    static void writeObligations(ObjectNode root, Map<String, Survival> obligations, Map<String, DeadlineRule> rules) {
-        if (obligations.isEmpty()) {
-            return;
+    static DeadlineRule readRule(JsonAt n) {
+        if (!n.has("threshold")) {
+            return null;
         }
-        ObjectNode o = root.putObject("obligations");
-        new TreeMap<>(obligations).forEach((id, survival) -> {
-            ObjectNode n = o.putObject(id);
-            numbers(n.putArray("discharged"), survival.discharged());
-            numbers(n.putArray("censored"), survival.censored());
-            if (!survival.contexts().isEmpty()) {
-                ObjectNode by = n.putObject("byInput");
-                survival.contexts().forEach((input, s) -> {
-                    ObjectNode c = by.putObject(input);
-                    numbers(c.putArray("discharged"), s.discharged());
-                    numbers(c.putArray("censored"), s.censored());
-                });
-            }
-            DeadlineRule rule = rules.get(id);
-            if (rule != null) {
-                n.put("threshold", rule.threshold());
-                n.put("note", rule.note());
-                n.put("validated", rule.validated());
-                writeCalibration(n, rule.calibration());
-                if (rule.margin() != DeadlineRule.HALF) {
-                    n.put("margin", rule.margin());
-                }
-                if (rule.baseline()) {
-                    n.put("rule", "baseline");
-                }
-            }
-        });
-    }
-
-    /** The training obligations of {@link #writeObligations}. */
-    static Map<String, Survival> readObligations(JsonNode root) {
-        Map<String, Survival> obligations = new TreeMap<>();
-        for (Map.Entry<String, JsonNode> e : obligationNodes(root).entrySet()) {
-            try {
-                Survival pooled = new Survival(doubles(required(e.getValue(), "discharged")),
-                        doubles(required(e.getValue(), "censored")));
-                JsonNode by = e.getValue().get("byInput");
-                if (by != null) {
-                    if (!by.isObject()) {
-                        throw new IllegalArgumentException("'byInput': expected an object");
-                    }
-                    Map<String, Survival> contexts = new TreeMap<>();
-                    for (Iterator<Map.Entry<String, JsonNode>> it = by.fields(); it.hasNext(); ) {
-                        Map.Entry<String, JsonNode> c = it.next();
-                        contexts.put(c.getKey(), new Survival(doubles(required(c.getValue(), "discharged")),
-                                doubles(required(c.getValue(), "censored"))));
-                    }
-                    pooled = pooled.withContexts(contexts);
-                }
-                obligations.put(e.getKey(), pooled);
-            } catch (IllegalArgumentException x) {
-                throw new IllegalArgumentException("'obligations/" + e.getKey() + "': " + x.getMessage(), x);
-            }
+        double threshold = n.number("threshold");
+        double margin = n.has("margin") ? n.number("margin") : DeadlineRule.HALF;
+        n.get("threshold").built(() -> new DeadlineRule(threshold, "", false, Calibration.IDENTITY,
+                DeadlineRule.HALF, false));
+        if (n.has("margin")) {
+            n.get("margin").built(() -> new DeadlineRule(DeadlineRule.NEVER, "", false, Calibration.IDENTITY,
+                    margin, false));
         }
-        return obligations;
-    }
-
-    /** The deadline rules of {@link #writeObligations}: a property without a {@code threshold} has none. */
-    static Map<String, DeadlineRule> readDeadlines(JsonNode root) {
-        Map<String, DeadlineRule> rules = new TreeMap<>();
-        for (Map.Entry<String, JsonNode> e : obligationNodes(root).entrySet()) {
-            JsonNode n = e.getValue();
-            if (n.get("threshold") == null) {
-                continue;
-            }
-            String at = "obligations/" + e.getKey();
-            double threshold = number(n, "threshold");
-            if (!((threshold >= 0 && threshold <= 1) || threshold == DeadlineRule.NEVER)) {
-                throw new IllegalArgumentException("'" + at + "/threshold': " + n.get("threshold")
-                        + " is not a probability (from 0 to 1), nor " + (int) DeadlineRule.NEVER
-                        + " (the probability does not warn)");
-            }
-            JsonNode validated = required(n, "validated");
-            if (!validated.isBoolean()) {
-                throw new IllegalArgumentException("'" + at + "/validated': expected true or false");
-            }
-            JsonNode c = n.get("calibration");
-            double margin = n.has("margin") ? number(n, "margin") : DeadlineRule.HALF;
-            if (!(margin >= 0 && margin <= 1)) {
-                throw new IllegalArgumentException("'" + at + "/margin': " + n.get("margin")
-                        + " is not a share (from 0 to 1)");
-            }
-            JsonNode rule = n.get("rule");
-            if (rule != null && !(rule.isTextual() && rule.asText().equals("baseline"))) {
-                throw new IllegalArgumentException("'" + at + "/rule': expected \"baseline\"");
-            }
-            rules.put(e.getKey(), new DeadlineRule(threshold, required(n, "note").asText(), validated.booleanValue(),
-                    c == null ? Calibration.IDENTITY : calibration(c, at + "/calibration"), margin, rule != null));
+        double level = n.has("level") ? n.number("level") : Double.NaN;
+        if (n.has("level")) {
+            n.get("level").built(() -> new DeadlineRule(DeadlineRule.NEVER, "", false, Calibration.IDENTITY,
+                    DeadlineRule.HALF, false, level));
         }
-        return rules;
-    }
-
-    private static Map<String, JsonNode> obligationNodes(JsonNode root) {
-        Map<String, JsonNode> nodes = new TreeMap<>();
-        JsonNode o = root.get("obligations");
-        if (o == null) {
-            return nodes;
+        JsonAt ceiling = n.optional("lateCeiling");
+        if (ceiling != null && !(ceiling.node().isTextual() && ceiling.node().asText().equals("every"))) {
+            throw ceiling.wrong("expected \"every\"");
         }
-        if (!o.isObject()) {
-            throw new IllegalArgumentException("'obligations': expected an object");
+        boolean validated = n.bool("validated");
+        JsonAt rule = n.optional("rule");
+        if (rule != null && !(rule.node().isTextual() && rule.node().asText().equals("baseline"))) {
+            throw rule.wrong("expected \"baseline\"");
         }
-        for (Iterator<Map.Entry<String, JsonNode>> it = o.fields(); it.hasNext(); ) {
-            Map.Entry<String, JsonNode> e = it.next();
-            if (!e.getValue().isObject()) {
-                throw new IllegalArgumentException("'obligations/" + e.getKey() + "': expected an object");
-            }
-            nodes.put(e.getKey(), e.getValue());
-        }
-        return nodes;
+        JsonAt c = n.optional("calibration");
+        return new DeadlineRule(threshold, n.text("note"), validated, c == null ? Calibration.IDENTITY
+                : calibration(c), margin, rule != null, level, ceiling != null);
     }
 
     /**
@@ -169,98 +228,34 @@ final class ForecastFileSections {
      * file learned before the choice reads as it did: {@code "rule": "baseline"} for the raw-value baseline,
      * {@code "matching": false} for the forecast's rule without the thesis's matching.
      */
-    static void writeClauses(ObjectNode root, Clauses c) {
+    static void writeClauses(ObjectNode n, Clauses c) {
         if (c.baseline()) {
-            root.put("rule", "baseline");
+            n.put("rule", "baseline");
         } else if (!c.matching()) {
-            root.put("matching", false);
+            n.put("matching", false);
         }
     }
 
     /** The clauses of {@link #writeClauses}: every clause when neither key is there. */
-    static Clauses readClauses(JsonNode root) {
-        JsonNode rule = root.get("rule");
-        if (rule != null && !(rule.isTextual() && (rule.asText().equals("baseline")
-                || rule.asText().equals("forecast")))) {
-            throw new IllegalArgumentException("'rule': expected \"baseline\" or \"forecast\"");
+    static Clauses readClauses(JsonAt n) {
+        JsonAt rule = n.optional("rule");
+        if (rule != null && !(rule.node().isTextual() && (rule.node().asText().equals("baseline")
+                || rule.node().asText().equals("forecast")))) {
+            throw rule.wrong("expected \"baseline\" or \"forecast\"");
         }
-        JsonNode matching = root.get("matching");
-        if (matching != null && !matching.isBoolean()) {
-            throw new IllegalArgumentException("'matching': expected true or false");
-        }
-        if (rule != null && rule.asText().equals("baseline")) {
+        boolean matching = !n.has("matching") || n.bool("matching");
+        if (rule != null && rule.node().asText().equals("baseline")) {
             return Clauses.BASELINE;
         }
-        return matching == null || matching.booleanValue() ? Clauses.ALL : Clauses.NO_MATCHING;
+        return matching ? Clauses.ALL : Clauses.NO_MATCHING;
     }
 
-    static void number(ObjectNode n, String key, double v) {
-        if (Double.isNaN(v) || Double.isInfinite(v)) {
-            n.putNull(key);
-        } else {
-            n.put(key, v);
-        }
+    private static void lows(ObjectNode n, Lows lows) {
+        numbers(n.putArray("safeLows"), lows.safe());
+        numbers(n.putArray("violatingLows"), lows.violating());
     }
 
-    static void numbers(ArrayNode a, double[] values) {
-        for (double v : values) {
-            if (Double.isNaN(v) || Double.isInfinite(v)) {
-                a.addNull();
-            } else {
-                a.add(v);
-            }
-        }
-    }
-
-    static JsonNode required(JsonNode n, String key) {
-        JsonNode v = n.get(key);
-        if (v == null) {
-            throw new IllegalArgumentException("'" + key + "' is missing");
-        }
-        return v;
-    }
-
-    static int integer(JsonNode n, String key) {
-        JsonNode v = required(n, key);
-        if (!v.canConvertToInt() || !v.isIntegralNumber()) {
-            throw new IllegalArgumentException("'" + key + "': expected a whole number");
-        }
-        return v.intValue();
-    }
-
-    /** A count: a whole number, 0 or more; {@code at} says where, null at the top. */
-    static int count(JsonNode n, String key, String at) {
-        int v = integer(n, key);
-        if (v < 0) {
-            throw new IllegalArgumentException("'" + (at == null ? "" : at + "/") + key + "': " + v
-                    + ", expected 0 or more");
-        }
-        return v;
-    }
-
-    static double number(JsonNode n, String key) {
-        JsonNode v = required(n, key);
-        if (v.isNull()) {
-            return Double.NaN;
-        }
-        if (!v.isNumber()) {
-            throw new IllegalArgumentException("'" + key + "': expected a number or null");
-        }
-        return v.doubleValue();
-    }
-
-    static double[] doubles(JsonNode a) {
-        if (!a.isArray()) {
-            throw new IllegalArgumentException("expected an array of numbers");
-        }
-        double[] out = new double[a.size()];
-        for (int i = 0; i < out.length; i++) {
-            JsonNode v = a.get(i);
-            if (!v.isNull() && !v.isNumber()) {
-                throw new IllegalArgumentException("expected an array of numbers");
-            }
-            out[i] = v.isNull() ? Double.NaN : v.doubleValue();
-        }
-        return out;
+    private static Lows lows(JsonAt n) {
+        return new Lows(n.doubles("safeLows"), n.doubles("violatingLows"));
     }
 }

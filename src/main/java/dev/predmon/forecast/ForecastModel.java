@@ -3,6 +3,8 @@ package dev.predmon.forecast;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
 import java.util.TreeMap;
 
 /**
@@ -38,16 +40,25 @@ import java.util.TreeMap;
  * @param events      by id, every absence and precedence of the abstraction: the forecast of its event coming in
  *                    the rest of the run, or why the training runs cannot give one ({@link EventModel}); empty in
  *                    models learned before it
+ * @param deadlineCards by bounded-response property id, the scorecard of its deadline forecast (a property without a
+ *                    missed held-out deadline has none)
+ * @param first       the id of the property the top-level fields forecast, the abstraction's first floor; null when it
+ *                    has none, or when the model was read from a file of format 1, which does not name it
+ * @param order       the properties' ids in the abstraction's order, the order {@code forecast.json} lists them in
+ *                    (empty when not known: then the first floor, then by id)
  */
 public record ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
                             double threshold, String thresholdNote, boolean validated,
                             Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
                             Calibration calibration, List<Scorecard> scorecards,
                             Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines,
-                            Map<String, BoundModel> bounds, Clauses clauses, Map<String, EventModel> events) {
+                            Map<String, BoundModel> bounds, Clauses clauses, Map<String, EventModel> events,
+                            Map<String, List<Scorecard>> deadlineCards, String first, List<String> order) {
 
-    /** Current format. */
-    public static final int FORMAT = 1;
+    /** The format {@code forecast.json} is written in: one entry per property. */
+    public static final int FORMAT = 2;
+    /** The first format: the first floor at the top level, the other properties in side maps; still read. */
+    public static final int FORMAT_1 = 1;
 
     /** The strength of the prior, in runs: a state seen by two runs moves the estimate only half way. */
     public static final double PRIOR_RUNS = 2.0;
@@ -61,9 +72,22 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
         deadlines = Map.copyOf(deadlines);
         bounds = Map.copyOf(bounds);
         events = Map.copyOf(events);
+        deadlineCards = Map.copyOf(deadlineCards);
+        order = List.copyOf(order);
         if (clauses == null) {
             throw new IllegalArgumentException("a forecast model needs its clauses");
         }
+    }
+
+    /** A model whose properties are not named (a model of the first floor and side maps, as format 1 holds it). */
+    public ForecastModel(int format, String unit, double limit, int runs, int violating, Lows lows,
+                         double threshold, String thresholdNote, boolean validated,
+                         Map<String, Map<Integer, StateStats>> states, List<String> startInputs,
+                         Calibration calibration, List<Scorecard> scorecards,
+                         Map<String, Survival> obligations, Map<String, DeadlineRule> deadlines,
+                         Map<String, BoundModel> bounds, Clauses clauses, Map<String, EventModel> events) {
+        this(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated, states, startInputs,
+                calibration, scorecards, obligations, deadlines, bounds, clauses, events, Map.of(), null, List.of());
     }
 
     /** A model without forecasts of absences and precedences. */
@@ -80,7 +104,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with {@code forecasts} as the absences' and precedences' forecasts, by property id. */
     public ForecastModel withEvents(Map<String, EventModel> forecasts) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, forecasts);
+                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, forecasts,
+                deadlineCards, first, order);
     }
 
     /** A model that warns by every clause of the forecast's rule. */
@@ -97,7 +122,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model warning by {@code c}. */
     public ForecastModel withClauses(Clauses c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, c, events);
+                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, c, events,
+                deadlineCards, first, order);
     }
 
     /** A model without other bound properties' forecasts. */
@@ -110,9 +136,10 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 calibration, scorecards, obligations, deadlines, Map.of());
     }
 
-    /** Every property's scorecard: this model's, then each other bound property's by id. */
+    /** Every property's scorecard: this model's, then each deadline's, each other bound's and each event's, by id. */
     public List<Scorecard> allScorecards() {
         List<Scorecard> all = new ArrayList<>(scorecards);
+        new TreeMap<>(deadlineCards).values().forEach(all::addAll);
         new TreeMap<>(bounds).values().forEach(b -> all.addAll(b.model().scorecards()));
         new TreeMap<>(events).values().forEach(e -> all.addAll(e.scorecards()));
         return List.copyOf(all);
@@ -121,7 +148,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with {@code forecasts} as the other bound properties' forecasts, by property id. */
     public ForecastModel withBounds(Map<String, BoundModel> forecasts) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, deadlines, forecasts, clauses, events);
+                states, startInputs, calibration, scorecards, obligations, deadlines, forecasts, clauses, events,
+                deadlineCards, first, order);
     }
 
     /** A model whose deadline forecasts warn by the default rule. */
@@ -141,13 +169,15 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with {@code rules} as its deadline rules, by property id. */
     public ForecastModel withDeadlines(Map<String, DeadlineRule> rules) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, obligations, rules, bounds, clauses, events);
+                states, startInputs, calibration, scorecards, obligations, rules, bounds, clauses, events,
+                deadlineCards, first, order);
     }
 
     /** This model with {@code training} as its obligations, by property id. */
     public ForecastModel withObligations(Map<String, Survival> training) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, scorecards, training, deadlines, bounds, clauses, events);
+                states, startInputs, calibration, scorecards, training, deadlines, bounds, clauses, events,
+                deadlineCards, first, order);
     }
 
     /** A model without deadline forecasts. */
@@ -234,19 +264,57 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
     /** This model with another warning threshold. */
     public ForecastModel withThreshold(double p, String note, boolean validated) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, p, note, validated, states,
-                startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, events);
+                startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, events,
+                deadlineCards, first, order);
     }
 
     /** This model with another calibration (the threshold is left as it is). */
     public ForecastModel withCalibration(Calibration c) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, c, scorecards, obligations, deadlines, bounds, clauses, events);
+                states, startInputs, c, scorecards, obligations, deadlines, bounds, clauses, events,
+                deadlineCards, first, order);
     }
 
     /** This model with {@code cards} as its scorecards. */
     public ForecastModel withScorecards(List<Scorecard> cards) {
         return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
-                states, startInputs, calibration, cards, obligations, deadlines, bounds, clauses, events);
+                states, startInputs, calibration, cards, obligations, deadlines, bounds, clauses, events,
+                deadlineCards, first, order);
+    }
+
+    /** This model with {@code cards} as its deadline forecasts' scorecards, by property id. */
+    public ForecastModel withDeadlineScorecards(Map<String, List<Scorecard>> cards) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, events, cards,
+                first, order);
+    }
+
+    /** This model with its properties named: {@code id} the first floor's (null for none), {@code ids} in order. */
+    ForecastModel named(String id, List<String> ids) {
+        return new ForecastModel(format, unit, limit, runs, violating, lows, threshold, thresholdNote, validated,
+                states, startInputs, calibration, scorecards, obligations, deadlines, bounds, clauses, events,
+                deadlineCards, id, ids);
+    }
+
+    /**
+     * What the forecast learned for each property, by kind, in the abstraction's order ({@link #order}; the first
+     * floor first, then by id, when not known): the first floor as an ordinary bound with its floor as side.
+     */
+    public List<PropertyModel> properties() {
+        return PropertyModels.of(this);
+    }
+
+    /** What the forecast learned for property {@code id}, by its kind; empty when it learned nothing for it. */
+    public Optional<PropertyModel> property(String id) {
+        return properties().stream().filter(p -> p.id().equals(id)).findFirst();
+    }
+
+    /**
+     * The model of {@code properties} (in the abstraction's order) over {@code runs} training runs in {@code unit}:
+     * the first bound forecast on its floor is the first floor ({@link PropertyModels#assemble}).
+     */
+    public static ForecastModel of(String unit, int runs, List<PropertyModel> properties) {
+        return PropertyModels.assemble(unit, runs, properties);
     }
 
     @Override
@@ -257,7 +325,8 @@ public record ForecastModel(int format, String unit, double limit, int runs, int
                 && Double.compare(threshold, m.threshold) == 0 && thresholdNote.equals(m.thresholdNote) && validated == m.validated
                 && states.equals(m.states) && startInputs.equals(m.startInputs) && calibration.equals(m.calibration)
                 && scorecards.equals(m.scorecards) && obligations.equals(m.obligations) && deadlines.equals(m.deadlines)
-                && bounds.equals(m.bounds) && clauses.equals(m.clauses) && events.equals(m.events);
+                && bounds.equals(m.bounds) && clauses.equals(m.clauses) && events.equals(m.events)
+                && deadlineCards.equals(m.deadlineCards) && Objects.equals(first, m.first) && order.equals(m.order);
     }
 
     @Override

@@ -53,12 +53,12 @@ public final class PropertyParts {
             for (Map.Entry<String, T> e : new TreeMap<>(have).entrySet()) {
                 Property p = byId.get(e.getKey());
                 if (p == null || !covers.test(p, a)) {
-                    throw new IllegalArgumentException("'" + key + "/" + e.getKey() + "': not " + what
+                    throw new IllegalArgumentException("'" + entry(m, key, e.getKey()) + "': not " + what
                             + " of the abstraction");
                 }
                 String wrong = problem.apply(p, e.getValue());
                 if (wrong != null) {
-                    throw new IllegalArgumentException("'" + key + "/" + e.getKey() + "': " + wrong);
+                    throw new IllegalArgumentException("'" + entry(m, key, e.getKey()) + "': " + wrong);
                 }
             }
             if (!required) {
@@ -66,7 +66,8 @@ public final class PropertyParts {
             }
             for (Property p : a.properties()) {
                 if (covers.test(p, a) && !have.containsKey(p.id())) {
-                    throw new IllegalArgumentException("'" + key + "' has no entry for '" + p.id() + "', " + what
+                    throw new IllegalArgumentException("'" + part(m, key) + "' has no entry for '" + p.id() + "', "
+                            + what
                             + " of the abstraction the models were learned with (learn writes one for each, empty when "
                             + "training gave it nothing)");
                 }
@@ -90,14 +91,87 @@ public final class PropertyParts {
     }
 
     /**
-     * Checks every per-property part of {@code m} against {@code abstraction}.
+     * Checks every per-property part of {@code m} against {@code abstraction}: in a file of format 2, first that its
+     * first floor is the abstraction's, and that floor as any other bound.
      *
-     * @throws IllegalArgumentException what is wrong, naming the part and the entry
+     * @throws IllegalArgumentException what is wrong, naming the part and the entry as the file has them
      */
     public static void check(ForecastModel m, Abstraction abstraction) {
+        if (m.format() >= ForecastModel.FORMAT) {
+            firstFloor(m, abstraction);
+        }
         for (Part<?> part : PARTS) {
             part.check(m, abstraction);
         }
+    }
+
+    /** The first floor of a file that names it is the abstraction's, and its limit the property's floor. */
+    private static void firstFloor(ForecastModel m, Abstraction abstraction) {
+        Bound safety = abstraction.safety().orElse(null);
+        if (safety == null && m.first() != null) {
+            throw new IllegalArgumentException("'properties." + m.first() + "': forecast on its floor as the first "
+                    + "floor, but the abstraction has no bound with a floor");
+        }
+        if (safety == null) {
+            return;
+        }
+        if (m.first() == null) {
+            throw new IllegalArgumentException("'properties' has no entry for '" + safety.id() + "', the first floor of"
+                    + " the abstraction the models were learned with (the first bound with a floor)");
+        }
+        if (!m.first().equals(safety.id())) {
+            throw new IllegalArgumentException("'properties." + m.first() + "': the first bound forecast on its floor, "
+                    + "but the abstraction's first floor is '" + safety.id() + "'");
+        }
+        if (Double.compare(m.limit(), safety.floor()) != 0) {
+            throw new IllegalArgumentException("'properties." + m.first() + ".limit': " + shown(m.limit())
+                    + " is not the property's floor (" + shown(safety.floor()) + ")");
+        }
+    }
+
+    /** Where a part is in the file {@code m} was read from: under {@code properties} from format 2 on. */
+    private static String part(ForecastModel m, String key) {
+        return m.format() >= ForecastModel.FORMAT ? "properties" : key;
+    }
+
+    /** Where the entry of property {@code id} of a part is in the file {@code m} was read from. */
+    private static String entry(ForecastModel m, String key, String id) {
+        return part(m, key) + "." + id;
+    }
+
+    /**
+     * {@code m} with its properties named by {@code abstraction}, the one its models were learned with: the first
+     * floor is the abstraction's (a model of format 1 does not say), the properties in its order, and each scorecard
+     * of a deadline that a model of format 1 keeps beside the first floor's given to its property (by its name).
+     */
+    public static ForecastModel named(ForecastModel m, Abstraction abstraction) {
+        String first = m.first() != null || Double.isNaN(m.limit()) ? m.first()
+                : abstraction.safety().map(Bound::id).orElse(null);
+        List<String> order = abstraction.properties().stream().map(Property::id).toList();
+        List<Scorecard> own = new ArrayList<>();
+        Map<String, List<Scorecard>> deadlines = new TreeMap<>(m.deadlineCards());
+        for (Scorecard c : m.scorecards()) {
+            Response r = Scorecard.OBLIGATIONS.equals(c.counted()) ? response(abstraction, c.property()) : null;
+            if (r == null) {
+                own.add(c);
+            } else {
+                deadlines.merge(r.id(), List.of(c), (a, b) -> {
+                    List<Scorecard> both = new ArrayList<>(a);
+                    both.addAll(b);
+                    return both;
+                });
+            }
+        }
+        return m.withScorecards(own).withDeadlineScorecards(deadlines).named(first, order);
+    }
+
+    private static Response response(Abstraction abstraction, String name) {
+        for (Property p : abstraction.properties()) {
+            if (p instanceof Response r && r.name().equals(name)) {
+                return r;
+            }
+        }
+        return null;
     }
 
     /**
@@ -117,8 +191,10 @@ public final class PropertyParts {
     }
 
     /**
-     * {@code m} with an entry under {@code obligations} for every bounded response of {@code abstraction}: an empty
-     * one (no duration) for a property no training run opened an obligation of, which gets no deadline forecast.
+     * {@code m}, learned with {@code abstraction}, as {@code forecast.json} holds it: named ({@link #named}), with an
+     * entry for every bounded response (an empty one, no duration, for a property no training run opened an
+     * obligation of, which gets no deadline forecast), each property's forecast its own only, and without a first
+     * floor nothing at the top level ({@link ForecastModel#of}). What learn keeps is what watch reads.
      */
     public static ForecastModel covering(ForecastModel m, Abstraction abstraction) {
         Map<String, Survival> all = new TreeMap<>(m.obligations());
@@ -127,7 +203,8 @@ public final class PropertyParts {
                 all.putIfAbsent(p.id(), new Survival(new double[0], new double[0]));
             }
         }
-        return m.withObligations(all);
+        ForecastModel named = named(m.withObligations(all), abstraction);
+        return ForecastModel.of(m.unit(), m.runs(), named.properties());
     }
 
     /**

@@ -1,6 +1,5 @@
 package dev.predmon.forecast;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -8,9 +7,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
 
-import static dev.predmon.forecast.ForecastFileSections.integer;
-import static dev.predmon.forecast.ForecastFileSections.number;
-import static dev.predmon.forecast.ForecastFileSections.required;
+import static dev.predmon.forecast.JsonAt.number;
 
 /**
  * The {@code scorecards} of {@code forecast.json} ({@link ForecastFile}): one per property, each with its baseline's
@@ -56,52 +53,54 @@ final class ScorecardJson {
         return n;
     }
 
-    static List<Scorecard> readScorecards(JsonNode root) {
-        JsonNode a = root.get("scorecards");
+    /** The optional {@code scorecards} list at {@code n}: none when it is not there. */
+    static List<Scorecard> readScorecards(JsonAt n) {
+        JsonAt a = n.optional("scorecards");
         if (a == null) {
             return List.of();
         }
-        if (!a.isArray()) {
-            throw new IllegalArgumentException("'scorecards': expected an array");
+        if (!a.node().isArray()) {
+            throw a.wrong("expected an array");
         }
         List<Scorecard> cards = new ArrayList<>();
-        for (JsonNode n : a) {
-            if (!n.isObject()) {
-                throw new IllegalArgumentException("'scorecards': expected an array of objects");
-            }
-            cards.add(scorecardOf(n));
+        for (int i = 0; i < a.node().size(); i++) {
+            cards.add(scorecardOf(new JsonAt(a.node().get(i), a.at(Integer.toString(i)))));
         }
         return cards;
     }
 
     /** One scorecard of {@link #scorecard}, its baseline's read the same way. */
-    private static Scorecard scorecardOf(JsonNode n) {
-        JsonNode b = n.get("baseline");
-        if (b != null && !b.isObject()) {
-            throw new IllegalArgumentException("'scorecards' of '" + n.path("property").asText()
-                    + "': 'baseline' expected an object");
-        }
+    private static Scorecard scorecardOf(JsonAt n) {
+        n.object();
+        JsonAt b = n.optional("baseline");
         Scorecard baseline = b == null ? null : scorecardOf(b);
-        JsonNode chosen = n.get("baselineChosen");
-        if (chosen != null && (!chosen.isBoolean() || baseline == null)) {
-            throw new IllegalArgumentException("'scorecards' of '" + n.path("property").asText()
-                    + "': 'baselineChosen' expected true or false, beside a 'baseline'");
+        JsonAt chosen = n.optional("baselineChosen");
+        if (chosen != null && (!chosen.node().isBoolean() || baseline == null)) {
+            throw chosen.wrong("expected true or false, beside a 'baseline'");
         }
-        Scorecard c = new Scorecard(required(n, "property").asText(), integer(n, "folds"), integer(n, "runs"),
-                integer(n, "violating"), integer(n, "warned"), integer(n, "falseAlarms"), number(n, "medianLead"),
-                required(n, "unit").asText(), number(n, "brier"), number(n, "baseBrier"),
-                n.has("counted") ? n.get("counted").asText() : Scorecard.RUNS,
-                n.has("rule") ? n.get("rule").asText() : Scorecard.FORECAST, baseline,
-                chosen != null && chosen.booleanValue());
+        String property = n.text("property");
+        int folds = n.integer("folds");
+        int runs = n.integer("runs");
+        int violating = n.integer("violating");
+        int warned = n.integer("warned");
+        int alarms = n.integer("falseAlarms");
+        double lead = n.number("medianLead");
+        String unit = n.text("unit");
+        double brier = n.number("brier");
+        double baseBrier = n.number("baseBrier");
+        String counted = n.has("counted") ? n.text("counted") : Scorecard.RUNS;
+        String rule = n.has("rule") ? n.text("rule") : Scorecard.FORECAST;
+        boolean baselineChosen = chosen != null && chosen.node().booleanValue();
+        Scorecard c = n.built(() -> new Scorecard(property, folds, runs, violating, warned, alarms, lead, unit, brier,
+                baseBrier, counted, rule, baseline, baselineChosen));
         if (c.runs() < 0 || c.violating() < 0 || c.violating() > c.runs() || c.warned() < 0
                 || c.warned() > c.violating() || c.falseAlarms() < 0 || c.falseAlarms() > c.held()) {
-            throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected 0 <= warned <= "
-                    + "violating <= runs and 0 <= falseAlarms <= runs - violating");
+            throw n.wrong("the scorecard of '" + c.property() + "': expected 0 <= warned <= violating <= runs and "
+                    + "0 <= falseAlarms <= runs - violating");
         }
         if (!(Double.isNaN(c.brier()) || (c.brier() >= 0 && c.brier() <= 1))
                 || !(Double.isNaN(c.baseBrier()) || (c.baseBrier() >= 0 && c.baseBrier() <= 1))) {
-            throw new IllegalArgumentException("'scorecards' of '" + c.property() + "': expected Brier scores "
-                    + "between 0 and 1");
+            throw n.wrong("the scorecard of '" + c.property() + "': expected Brier scores between 0 and 1");
         }
         return c;
     }

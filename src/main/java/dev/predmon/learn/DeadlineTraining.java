@@ -40,7 +40,7 @@ public final class DeadlineTraining {
     /**
      * {@code model} with the deadline rule of every property it learned obligations for, chosen on {@code heldOut},
      * the cross-validation's replays of its training logs ({@link ForecastTraining#heldOut}), and their scorecards
-     * after its own.
+     * by property.
      */
     public static ForecastModel train(ForecastModel model, HeldOutFolds heldOut, Abstraction abstraction) {
         Map<String, Response> responses = new TreeMap<>();
@@ -55,7 +55,7 @@ public final class DeadlineTraining {
         }
         int k = heldOut.folds();
         Map<String, DeadlineRule> rules = new TreeMap<>();
-        List<Scorecard> cards = new ArrayList<>(model.scorecards());
+        Map<String, List<Scorecard>> cards = new TreeMap<>();
         for (Response r : responses.values()) {
             if (k < 2) {
                 rules.put(r.id(), DeadlineRule.unvalidated("too few logs to cross-validate"));
@@ -67,14 +67,14 @@ public final class DeadlineTraining {
                 continue;
             }
             CrossValidation.Choice c = CrossValidation.choose(cases, k, new CrossValidation.Space(
-                    DeadlineRule.MARGINS.size(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(r.name(),
+                    DeadlineRule.variants(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(r.name(),
                     r.within().unit().key, Scorecard.OBLIGATIONS, Scorecard.FORECAST, Scorecard.ELAPSED));
             rules.put(r.id(), rule(c));
             if (cases.stream().anyMatch(CrossValidation.Case::violated)) {
-                cards.add(c.scorecard()); // without a missed deadline there is no warning to score (the note says so)
+                cards.put(r.id(), List.of(c.scorecard())); // without a missed deadline there is no warning to score (the note says so)
             }
         }
-        return model.withDeadlines(rules).withScorecards(cards);
+        return model.withDeadlines(rules).withDeadlineScorecards(cards);
     }
 
     /**
@@ -107,15 +107,16 @@ public final class DeadlineTraining {
         CrossValidation.Rule x = c.rule();
         if (!x.validated()) {
             return DeadlineRule.unvalidated(x.note() + "; no held-out obligation missed its deadline", c.baseline(),
-                    DeadlineRule.MARGINS.get(x.variant()));
+                    DeadlineRule.marginOf(x.variant()), DeadlineRule.levelOf(x.variant()),
+                    DeadlineRule.waitedOf(x.variant()));
         }
         String note = x.note();
         if (c.baseline()) {
             note += "; the elapsed-time baseline warns: the forecast's rule did worse on the same folds";
         }
         return new DeadlineRule(x.threshold(), note, x.validated(),
-                x.validated() ? x.calibration() : Calibration.IDENTITY, DeadlineRule.MARGINS.get(x.variant()),
-                c.baseline());
+                x.validated() ? x.calibration() : Calibration.IDENTITY, DeadlineRule.marginOf(x.variant()),
+                c.baseline(), DeadlineRule.levelOf(x.variant()), DeadlineRule.waitedOf(x.variant()));
     }
 
     /**

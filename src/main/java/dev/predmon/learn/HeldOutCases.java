@@ -81,10 +81,11 @@ final class HeldOutCases {
     /**
      * Held-out obligation {@code o}, forecast in its fold by the curve of its trigger's input, {@code pooled} being
      * every training obligation of its property in the fold. Its times are how long it had been pending. Its variants
-     * are the novelty clause at each margin of {@link DeadlineRule#MARGINS}: pending past every training obligation
-     * from the same input (its first forecast that says so), and that share of the time from there to the deadline
-     * passed too. Its baseline, the elapsed-time rule, warns once it is pending longer than every obligation of
-     * {@code pooled}.
+     * ({@link DeadlineRule#variants}) are the late clause at each level of {@link DeadlineRule#LEVELS} and each ceiling:
+     * its first forecast pending past that prediction bound of its curve ({@link DeadlineRule#pastLate}); then the novelty clause
+     * at each margin of {@link DeadlineRule#MARGINS}: pending past every training obligation from the same input (its
+     * first forecast that says so), and that share of the time from there to the deadline passed too. Its baseline,
+     * the elapsed-time rule, warns once it is pending longer than every obligation of {@code pooled}.
      */
     static CrossValidation.Case deadline(int fold, ReplayedRun.Obligation o, Survival pooled) {
         double deadline = o.property().within().amount();
@@ -104,6 +105,17 @@ final class HeldOutCases {
             }
         }
         List<Double> variants = new ArrayList<>();
+        for (int v = 0; !Double.isNaN(DeadlineRule.levelOf(v)); v++) {
+            double at = Double.NaN;
+            for (ReplayedRun.Step step : o.forecasts()) {
+                if (o.curve() != null && DeadlineRule.pastLate(step.elapsed(), o.curve(), DeadlineRule.levelOf(v),
+                        DeadlineRule.waitedOf(v))) {
+                    at = step.elapsed();
+                    break;
+                }
+            }
+            variants.add(at);
+        }
         for (double margin : DeadlineRule.MARGINS) {
             double at = Double.NaN;
             if (!Double.isNaN(novelFrom)) {

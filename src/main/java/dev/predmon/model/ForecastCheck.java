@@ -2,8 +2,8 @@ package dev.predmon.model;
 
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.PropertyModel;
 import dev.predmon.forecast.PropertyParts;
 import dev.predmon.forecast.StateStats;
 import dev.predmon.property.Bound;
@@ -12,12 +12,11 @@ import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
 
 /**
- * Checks a forecast against the models beside it: its property's bound is the abstraction's, its per-property parts
- * cover the abstraction's properties as learn writes them ({@link PropertyParts}), and it keeps statistics only for
- * machines the index lists and for states those machines have. A forecast that does not fit would give every run of a
+ * Checks a forecast against the models beside it: its per-property parts cover the abstraction's properties as learn
+ * writes them and fit them, its first floor's among them ({@link PropertyParts}), and every property's forecast keeps
+ * statistics only for machines the index lists and for states those machines have. A forecast that does not fit would give every run of a
  * machine it does not know the base rate, warn on a bound nobody watches, or drop a property's warnings unseen.
  */
 final class ForecastCheck {
@@ -32,21 +31,30 @@ final class ForecastCheck {
      */
     static void check(Path file, Path indexFile, ForecastModel forecast, List<LearnedModel> models,
                       Abstraction abstraction) throws BadInputException {
-        double bound = abstraction.safety().map(Bound::floor).orElse(Double.NaN);
-        if (Double.compare(forecast.limit(), bound) != 0) {
-            throw new BadInputException(file + ": limit " + shown(forecast.limit()) + " is not the bound of the "
-                    + "abstraction's safety property (" + shown(bound) + "); relearn with the abstraction in use");
-        }
         try {
             PropertyParts.check(forecast, abstraction);
         } catch (IllegalArgumentException e) {
             throw new BadInputException(file + ": " + e.getMessage() + "; relearn");
         }
+        double bound = abstraction.safety().map(Bound::floor).orElse(Double.NaN);
+        if (Double.compare(forecast.limit(), bound) != 0) {
+            throw new BadInputException(file + ": limit " + shown(forecast.limit()) + " is not the bound of the "
+                    + "abstraction's safety property (" + shown(bound) + "); relearn with the abstraction in use");
+        }
         Map<String, Integer> sizes = new HashMap<>();
         models.forEach(m -> sizes.put(m.id(), m.machine().size()));
-        states(file, indexFile, "", forecast, sizes);
-        for (Map.Entry<String, BoundModel> b : new TreeMap<>(forecast.bounds()).entrySet()) {
-            states(file, indexFile, "'bounds/" + b.getKey() + "': ", b.getValue().model(), sizes);
+        boolean named = forecast.format() >= ForecastModel.FORMAT;
+        if (!named) {
+            states(file, indexFile, "", forecast, sizes);
+        }
+        for (PropertyModel p : forecast.properties()) {
+            String where = "'" + (named ? "properties." + p.id() : (p instanceof PropertyModel.OfBound ? "bounds."
+                    : "events.") + p.id()) + ".states': ";
+            if (p instanceof PropertyModel.OfBound b) {
+                states(file, indexFile, where, b.model().model(), sizes);
+            } else if (p instanceof PropertyModel.OfEvent e && e.model().forecasts()) {
+                states(file, indexFile, where, e.model().model(), sizes);
+            }
         }
     }
 

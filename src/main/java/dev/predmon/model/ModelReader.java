@@ -4,6 +4,7 @@ import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.forecast.ForecastFile;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.PropertyParts;
 import dev.predmon.mealy.MealyAlphabet;
 import net.automatalib.alphabet.Alphabet;
 import net.automatalib.automaton.CompactTransition;
@@ -96,6 +97,7 @@ final class ModelReader {
         ForecastModel forecast = reader.forecast(base, index);
         if (forecast != null) {
             ForecastCheck.check(base.resolve(ForecastFile.NAME), indexFile, forecast, models, abstraction);
+            forecast = PropertyParts.named(forecast, abstraction);
         }
         return new ModelSet(base, index, List.copyOf(models), forecast);
     }

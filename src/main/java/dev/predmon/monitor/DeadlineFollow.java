@@ -19,8 +19,10 @@ import java.util.Locale;
  *
  * <p>Under the forecast rule it warns once per obligation, by the property's {@link DeadlineRule}: when the calibrated
  * P(miss) reaches the threshold learned by cross-validation (even odds when the training obligations could not choose
- * one), or when the obligation has been pending longer than every training obligation (no evidence either way) and
- * half of the time from the longest of them to the deadline has passed too. A warned obligation discharged in time
+ * one), or by the rule's clause whatever the probability: the obligation is late for its leg (past the prediction
+ * bound of the training obligations that began where it did, {@link Survival#lateAfter}), or, in rules without it,
+ * it has been pending longer than every training obligation (no evidence either way) and the rule's margin of the
+ * time from the longest of them to the deadline has passed too. A warned obligation discharged in time
  * ends its warning (cause {@code discharged}); one that misses its deadline is the property's violation, told by the
  * checker. While an obligation is pending its calibrated forecast is told when it changes as the page shows it: the
  * probability of a miss in whole percent, or that the obligation is past every training one. A property without a
@@ -105,7 +107,7 @@ final class DeadlineFollow extends FollowBase {
         Deadline d = response.within();
         Survival s = pending;
         Survival.Estimate raw = s.estimate(elapsed, d.amount());
-        c.deadlines.forecast(c.now.run, response, r, elapsed, raw);
+        c.deadlines.forecast(c.now.run, response, r, elapsed, raw, s);
         Survival.Estimate e = rule.calibrated(raw);
         current = e;
         String shown = shown(e);
@@ -117,7 +119,7 @@ final class DeadlineFollow extends FollowBase {
         if (active == null && c.forecastRule() && rule.warns(raw, elapsed, d.amount(), s, survival)) {
             // A bounded response has no value: the warning carries none, as its violation and its recovery do not.
             warn(new MonitorEvent.Warning(r.time(), r.line(), List.of(), null, c.now.pairs, r.clock(), c.now.run,
-                    c.rule, null, reason(response, e, elapsed, s), MonitorEvent.Clause.DEADLINE, null,
+                    c.rule, null, reason(response, e, elapsed, s, rule), MonitorEvent.Clause.DEADLINE, null,
                     response.id(), e));
         }
     }
@@ -159,11 +161,29 @@ final class DeadlineFollow extends FollowBase {
      * that long took longer than 400 ticks; P(miss) 0.62; 20 ticks left".
      */
     static String reason(Response p, Survival.Estimate e, double elapsed, Survival s) {
+        return reason(p, e, elapsed, s, DeadlineRule.DEFAULT);
+    }
+
+    /**
+     * As above; when {@code rule}'s late clause warns: "pending 73 ticks, later than 99% of legs like the 10 training
+     * obligations that began where it did (they took 4 to 25 ticks; late past 72); 327 ticks left before the
+     * deadline of 400 ticks".
+     */
+    static String reason(Response p, Survival.Estimate e, double elapsed, Survival s, DeadlineRule rule) {
         Deadline d = p.within();
         String unit = d.unit().key;
         String head = String.format(Locale.ROOT, "'%s' (%s) pending %s %s", p.name(), p.id(),
                 ForecastWords.fixed(elapsed, 0), unit);
         String action = p.action() == null ? "" : "; do now: " + p.action();
+        if (rule.late() && !rule.baseline() && DeadlineRule.pastLate(elapsed, s, rule.level(), rule.waited())) {
+            double[] took = s.discharged();
+            return String.format(Locale.ROOT, "%s, later than %s of obligations like the %d training ones that began"
+                            + " where it did (they took %s to %s %s; late past %s); %s %s left before the deadline of"
+                            + " %s%s", head, DeadlineRule.percent(rule.level()), took.length,
+                    ForecastWords.fixed(took[0], 0), ForecastWords.fixed(took[took.length - 1], 0), unit,
+                    ForecastWords.fixed(s.lateAfter(rule.level(), rule.waited()), 0), ForecastWords.fixed(e.timeLeft(), 0), unit,
+                    d.describe(), action);
+        }
         if (e.novel()) {
             return String.format(Locale.ROOT, "%s, longer than any of the %d training obligations (the longest: %s):"
                             + " behaviour never seen; %s %s left before the deadline of %s%s", head, s.size(),

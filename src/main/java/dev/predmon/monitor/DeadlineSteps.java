@@ -17,8 +17,11 @@ public interface DeadlineSteps {
      *
      * @param elapsed how long it had been pending, in its deadline's unit
      * @param raw     the estimate before the deadline rule's calibration
+     * @param curve   the training obligations it is judged against: those that began where it did
+     *                ({@link Survival#at}), from which its late clause is computed
      */
-    void forecast(int run, Response property, LogRecord record, double elapsed, Survival.Estimate raw);
+    void forecast(int run, Response property, LogRecord record, double elapsed, Survival.Estimate raw,
+                  Survival curve);
 
     /**
      * An obligation of {@code property} that had a forecast ended at {@code record}.

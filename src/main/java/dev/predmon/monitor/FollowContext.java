@@ -27,7 +27,8 @@ final class FollowContext {
     /** Told every deadline judgement and every forecast obligation's end. */
     DeadlineSteps deadlines = new DeadlineSteps() {
         @Override
-        public void forecast(int run, Response property, LogRecord record, double elapsed, Survival.Estimate raw) {
+        public void forecast(int run, Response property, LogRecord record, double elapsed, Survival.Estimate raw,
+                             Survival curve) {
         }
 
         @Override

@@ -125,9 +125,10 @@ public final class LogReplay {
         monitor.onEveryDeadlineForecast(new DeadlineSteps() {
             @Override
             public void forecast(int run, Response property, LogRecord record, double elapsed,
-                                 Survival.Estimate raw) {
-                of(runs, run).pending.computeIfAbsent(property.id(), id -> new Pending()).steps
-                        .add(new ReplayedRun.Step(raw, elapsed, record.time(), record.line()));
+                                 Survival.Estimate raw, Survival curve) {
+                Pending p = of(runs, run).pending.computeIfAbsent(property.id(), id -> new Pending());
+                p.steps.add(new ReplayedRun.Step(raw, elapsed, record.time(), record.line()));
+                p.curve = curve;
             }
 
             @Override
@@ -135,7 +136,7 @@ public final class LogReplay {
                 Pending p = of(runs, run).pending.remove(property.id());
                 of(runs, run).obligations.add(new ReplayedRun.Obligation(property,
                         p == null ? List.of() : p.steps, duration, discharged, record.time(), record.line(),
-                        p == null ? Double.NaN : p.warnedAt));
+                        p == null ? Double.NaN : p.warnedAt, p == null ? null : p.curve));
             }
         });
         monitor.onEveryForecast((Forecast f, int run) -> of(runs, run).forecasts.add(new ReplayedRun.Timed(f,
@@ -199,5 +200,7 @@ public final class LogReplay {
     private static final class Pending {
         final List<ReplayedRun.Step> steps = new ArrayList<>();
         double warnedAt = Double.NaN;
+        /** The curve it is judged against. */
+        Survival curve;
     }
 }

@@ -103,12 +103,20 @@ public record ReplayedRun(int run, RunOutcome outcome, List<Pair> pairs, List<Lo
      * @param time       the time of the record that ended it
      * @param line       that record's line
      * @param warnedAt   how long it had been pending when the monitor warned of its deadline, NaN when it did not
+     * @param curve      the training obligations it was judged against (those that began where it did,
+     *                   {@link Survival#at}), null when it had no forecast
      */
     public record Obligation(Response property, List<Step> forecasts, double duration, boolean discharged,
-                             double time, long line, double warnedAt) {
+                             double time, long line, double warnedAt, Survival curve) {
 
         public Obligation {
             forecasts = List.copyOf(forecasts);
+        }
+
+        /** As above, its curve not known. */
+        public Obligation(Response property, List<Step> forecasts, double duration, boolean discharged, double time,
+                          long line, double warnedAt) {
+            this(property, forecasts, duration, discharged, time, line, warnedAt, null);
         }
 
         /** Whether it was let go past its deadline: the deadline was missed (the property's violation). */

@@ -182,15 +182,17 @@ class BoundForecastCliTest {
         assertTrue(learn.out().contains("scorecard of 'battery reserve >= 40%' (5-fold cross-validation on 24 runs)"),
                 learn.out());
         assertTrue(learn.out().contains("scorecard of 'battery <= 99.5%' (5-fold"), learn.out());
-        JsonNode forecast = JSON.readTree(models.resolve("forecast.json").toFile());
-        assertEquals(20.0, forecast.get("limit").asDouble(), "the battery's forecast stays the top-level one");
-        JsonNode reserve = forecast.get("bounds").get("reserve");
+        JsonNode all = JSON.readTree(models.resolve("forecast.json").toFile()).get("properties");
+        JsonNode forecast = all.get("battery");
+        assertEquals("floor", forecast.get("side").asText(), "the battery's forecast is a bound's as any other");
+        assertEquals(20.0, forecast.get("limit").asDouble());
+        JsonNode reserve = all.get("reserve");
         assertEquals("floor", reserve.get("side").asText());
         assertEquals(40.0, reserve.get("limit").asDouble());
         assertTrue(reserve.get("violating").asInt() > forecast.get("violating").asInt(),
                 "labelled by its own violation: recharge runs cross 40 and hold 20 " + reserve);
         assertTrue(reserve.get("thresholdValidated").asBoolean(), reserve.toString());
-        JsonNode full = forecast.get("bounds").get("full");
+        JsonNode full = all.get("full");
         assertEquals("ceiling", full.get("side").asText());
         assertEquals(-99.5, full.get("limit").asDouble(), "a ceiling is forecast as the floor of the mirrored value");
 

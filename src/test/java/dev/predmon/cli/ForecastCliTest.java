@@ -60,7 +60,9 @@ class ForecastCliTest {
         assertEquals("forecast.json", index.get("forecast").asText());
         JsonNode f = JSON.readTree(models.resolve("forecast.json").toFile());
         assertEquals(30, f.get("runs").asInt(), "every training run is counted");
-        assertTrue(f.get("thresholdValidated").asBoolean(), f.get("thresholdNote").asText());
+        JsonNode battery = f.get("properties").get("battery");
+        assertEquals(30, battery.get("runs").asInt());
+        assertTrue(battery.get("thresholdValidated").asBoolean(), battery.get("thresholdNote").asText());
     }
 
     @Test

@@ -117,18 +117,24 @@ class ModelPartsCliTest {
         refused(models.resolve("forecast.json"), "it has no learn id");
     }
 
+    /** The first floor's entry, under {@code properties} as every property's. */
+    private static ObjectNode battery(ObjectNode forecast) {
+        return (ObjectNode) forecast.get("properties").get("battery");
+    }
+
     @Test
     void aThresholdThatIsNotAProbability() throws IOException {
         for (double threshold : new double[] {2.0, -1.0}) {
             ObjectNode f = forecast();
-            f.put("threshold", threshold);
+            battery(f).put("threshold", threshold);
             write(f);
-            refused(models.resolve("forecast.json"), "'threshold': " + threshold + " is not a probability (from 0 to 1)");
+            refused(models.resolve("forecast.json"), "'properties.battery.threshold': " + threshold
+                    + " is not a probability (from 0 to 1)");
         }
         ObjectNode f = forecast();
-        f.putNull("threshold");
+        battery(f).putNull("threshold");
         write(f);
-        refused(models.resolve("forecast.json"), "'threshold': null is not a probability");
+        refused(models.resolve("forecast.json"), "'properties.battery.threshold': null is not a probability");
     }
 
     @Test
@@ -137,36 +143,59 @@ class ModelPartsCliTest {
         f.put("runs", -5);
         write(f);
         refused(models.resolve("forecast.json"), "'runs': -5, expected 0 or more");
-        f.put("runs", 30).put("violating", 31);
+        f.put("runs", 31);
         write(f);
-        refused(models.resolve("forecast.json"), "'violating': 31 of 30 runs");
+        refused(models.resolve("forecast.json"), "'runs': 31, but the first floor 'battery' counts 30 training runs");
+        f.put("runs", 30);
+        battery(f).put("runs", -5);
+        write(f);
+        refused(models.resolve("forecast.json"), "'properties.battery.runs': -5, expected 0 or more");
+        battery(f).put("runs", 30).put("violating", 31);
+        write(f);
+        refused(models.resolve("forecast.json"), "'properties.battery.violating': 31 of 30 runs");
     }
 
     @Test
     void aBoundOtherThanTheAbstractions() throws IOException {
         ObjectNode f = forecast();
-        f.put("limit", 200.0);
+        battery(f).put("limit", 200.0);
         write(f);
-        refused(models.resolve("forecast.json"),
-                "limit 200.0 is not the bound of the abstraction's safety property (20.0)");
+        refused(models.resolve("forecast.json"), "'properties.battery.limit': 200.0 is not the property's floor (20.0)");
+    }
+
+    /** Keys of format 1 at the top of a file of format 2 would be ignored: refused. */
+    @Test
+    void aKeyOfFormat1AtTheTopOfFormat2() throws IOException {
+        ObjectNode f = forecast();
+        f.put("threshold", 0.5);
+        write(f);
+        refused(models.resolve("forecast.json"), "'threshold': not a key of format 2, where each property's forecast "
+                + "is under 'properties'");
+        f = forecast();
+        f.put("format", 3);
+        write(f);
+        refused(models.resolve("forecast.json"), "'format': 3, expected 1 or 2");
     }
 
     @Test
     void aStateTheMachineDoesNotHave() throws IOException {
         ObjectNode f = forecast();
-        ObjectNode direct = (ObjectNode) f.get("states").get("direct");
+        ObjectNode direct = (ObjectNode) battery(f).get("states").get("direct");
         direct.set("99", direct.get("0").deepCopy());
         write(f);
-        refused(models.resolve("forecast.json"), "state 99 of machine 'direct' is not in its DOT file (states 0 to 6)");
+        refused(models.resolve("forecast.json"), "'properties.battery.states': state 99 of machine 'direct' is not in "
+                + "its DOT file (states 0 to 6)");
     }
 
     @Test
     void aMachineTheIndexDoesNotList() throws IOException {
-        ObjectNode f = forecast();
-        ObjectNode states = (ObjectNode) f.get("states");
+        ObjectNode shipped = forecast();
+        ObjectNode f = shipped.deepCopy();
+        ObjectNode states = (ObjectNode) battery(f).get("states");
         states.set("ghost", states.remove("direct"));
         write(f);
-        refused(models.resolve("forecast.json"), "machine 'ghost' is not one index.json lists");
+        refused(models.resolve("forecast.json"), "'properties.battery.states': machine 'ghost' is not one index.json "
+                + "lists");
     }
 
     /** learn refuses such names; read from an index they would reach a hook's environment and the terminal raw. */
@@ -192,8 +221,8 @@ class ModelPartsCliTest {
     @Test
     void aForecastWithA1500DigitNumber() throws IOException {
         String text = Files.readString(models.resolve("forecast.json"));
-        Files.writeString(models.resolve("forecast.json"), text.replace("\"runs\" : 30,", "\"runs\" : "
+        Files.writeString(models.resolve("forecast.json"), text.replaceFirst("\"runs\" : 30,", "\"runs\" : "
                 + "9".repeat(1_500) + ","));
-        refused(models.resolve("forecast.json"), "line 6: not JSON: a number longer than 1000 digits");
+        refused(models.resolve("forecast.json"), "line 5: not JSON: a number longer than 1000 digits");
     }
 }

@@ -124,7 +124,7 @@ class ScopedBoundCliTest {
         Cli learn = Cli.run("learn", "--logs", logs.toString(), "--models", models.toString(), "--abstraction",
                 abstraction.toString());
         assertEquals(0, learn.code(), learn.err());
-        JsonNode forecast = JSON.readTree(models.resolve("forecast.json").toFile()).get("bounds").get(ID);
+        JsonNode forecast = JSON.readTree(models.resolve("forecast.json").toFile()).get("properties").get(ID);
         assertEquals(scoped, forecast.get("violating").asLong(), "labelled by the scoped verdict: " + forecast);
         assertFalse(forecast.get("safeLows").isEmpty(), forecast.toString());
         forecast.get("safeLows").forEach(low -> assertTrue(low.asDouble() >= 48,

@@ -63,7 +63,8 @@ class ScorecardCliTest {
         assertTrue(m.matches(), first);
         assertTrue(second.matches("  Brier score 0\\.\\d{3} vs 0\\.\\d{3} for the base rate: .+"), second);
 
-        JsonNode f = JSON.readTree(models.resolve("forecast.json").toFile());
+        JsonNode file = JSON.readTree(models.resolve("forecast.json").toFile());
+        JsonNode f = file.get("properties").get("battery");
         JsonNode cards = f.get("scorecards");
         assertEquals(1, cards.size(), "the battery's; no navigation missed its deadline, so it has none: " + cards);
         JsonNode c = cards.get(0);
@@ -89,7 +90,7 @@ class ScorecardCliTest {
         assertTrue(second.endsWith("the forecast knows more than how often runs violate"), second);
 
         // the deadline's rule says it was not validated, and why
-        JsonNode rule = f.get("obligations").get("navigation-in-time");
+        JsonNode rule = file.get("properties").get("navigation-in-time");
         assertFalse(rule.get("validated").asBoolean(), rule.toString());
         assertTrue(rule.get("note").asText().contains("all held"), rule.toString());
     }
@@ -122,7 +123,8 @@ class ScorecardCliTest {
             JsonNode cards = JSON.readTree(r.body()).get("scorecards");
             assertEquals(2, cards.size(), "the battery's and the aborts' " + r.body());
             JsonNode c = cards.get(0);
-            JsonNode stored = JSON.readTree(models.resolve("forecast.json").toFile()).get("scorecards").get(0);
+            JsonNode stored = JSON.readTree(models.resolve("forecast.json").toFile()).get("properties")
+                    .get("battery").get("scorecards").get(0);
             for (String key : List.of("property", "folds", "runs", "violating", "warned", "falseAlarms", "brier",
                     "baseBrier")) {
                 assertEquals(stored.get(key), c.get(key), key);

@@ -117,25 +117,28 @@ class BoundForecastTest {
     @Test
     void forecastJsonKeepsEachBoundsForecastByItsId() {
         ForecastModel safety = StatsLearner.learn(ForecastTestRuns.machines(), List.of(STAYS), "s", 20)
-                .withThreshold(0.7, "0.70 chosen", true);
+                .withThreshold(0.7, "0.70 chosen", true).named("safe", List.of("safe"));
         ForecastModel own = StatsLearner.learn(ForecastTestRuns.machines(),
                 BoundRuns.view(HOT, BoundModel.CEILING, List.of(HEATS, STAYS)), "s", -70)
                 .withCalibration(new Calibration(1.5, -0.25, 12)).withThreshold(0.4, "0.40 by hand", true);
-        ForecastModel both = safety.withBounds(Map.of("hot", new BoundModel(BoundModel.CEILING, own)));
+        ForecastModel both = safety.withBounds(Map.of("hot", new BoundModel(BoundModel.CEILING, own)))
+                .named("safe", List.of("safe", "hot"));
         String text = ForecastFile.write(both);
-        assertTrue(text.contains("\"bounds\" : {\n    \"hot\" : {\n      \"side\" : \"ceiling\",\n      \"limit\" : -70.0"),
-                text);
+        assertTrue(text.contains("\"safe\" : {\n      \"kind\" : \"bound\",\n      \"side\" : \"floor\",\n      "
+                + "\"limit\" : 20.0"), "the first floor as any other bound: " + text);
+        assertTrue(text.contains("\"hot\" : {\n      \"kind\" : \"bound\",\n      \"side\" : \"ceiling\",\n      "
+                + "\"limit\" : -70.0"), text);
         ForecastModel read = ForecastFile.read(text);
         assertEquals(both, read);
         assertEquals(0.4, read.bounds().get("hot").model().threshold());
         assertEquals(safety, ForecastFile.read(ForecastFile.write(safety)), "a model of one property");
-        assertFalse(ForecastFile.write(safety).contains("bounds"), "writes as before");
+        assertFalse(ForecastFile.write(safety).contains("\"hot\""), "one entry, the first floor's");
 
         IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(text.replace("\"side\" : \"ceiling\"", "\"side\" : \"up\"")));
-        assertTrue(bad.getMessage().startsWith("'bounds/hot': side 'up'"), bad.getMessage());
+        assertEquals("'properties.hot.side': side 'up': expected floor or ceiling", bad.getMessage());
         IllegalArgumentException missing = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(text.replace("\"side\" : \"ceiling\",", "")));
-        assertEquals("'bounds/hot': 'side' is missing", missing.getMessage());
+        assertEquals("'properties.hot.side' is missing", missing.getMessage());
     }
 }

@@ -194,8 +194,8 @@ class EventForecastTest {
     void forecastJsonKeepsEveryEventForecastAndWhyAPropertyHasNone() {
         EventModel learned = EventModel.learn(MACHINES, NO_ABORT, training(), "s");
         EventModel none = new EventModel(43, 0, null);
-        ForecastModel m = StatsLearner.learn(MACHINES, List.of(), "s", Double.NaN)
-                .withEvents(Map.of("no-abort", learned, "other", none));
+        ForecastModel m = ForecastModel.of("s", 43, List.of(new PropertyModel.OfEvent("no-abort", learned),
+                new PropertyModel.OfEvent("other", none)));
         String text = ForecastFile.write(m);
         assertTrue(text.contains("\"noForecast\" : \"never violated in 43 training runs\""), text);
         ForecastModel back = ForecastFile.read(text);
@@ -204,7 +204,7 @@ class EventForecastTest {
         assertTrue(ForecastFile.read(ForecastFile.write(StatsLearner.learn(MACHINES, List.of(), "s", Double.NaN)))
                 .events().isEmpty(), "a file without events reads as one learned before them");
         IllegalArgumentException bad = assertThrows(IllegalArgumentException.class, () -> ForecastFile.read(
-                text.replace("\"runs\" : 43", "\"runs\" : -1")));
-        assertEquals("'events/other': 'runs': -1, expected 0 or more", bad.getMessage());
+                text.replace("\"runs\" : 43,\n      \"violating\" : 0", "\"runs\" : -1,\n      \"violating\" : 0")));
+        assertEquals("'properties.other.runs': -1, expected 0 or more", bad.getMessage());
     }
 }

@@ -34,12 +34,19 @@ class ForecastChoiceFileTest {
         Survival legs = new Survival(durations(10, 5), durations(0, 0));
         Survival pooled = new Survival(durations(30, 5), new double[] {3}).withContexts(Map.of(
                 "goTo_ch_i>goTo_ki_i", legs, "goTo_ki_i", new Survival(durations(20, 5), new double[0]),
-                "goTo_ch_i", new Survival(new double[] {1, 2}, new double[] {2, 2, 2, 2, 2, 2, 2, 2, 2, 2})));
-        // a condition needs ten discharged obligations: goTo_ch_i's ten censored ones do not make a curve
-        assertEquals(List.of("goTo_ch_i>goTo_ki_i", "goTo_ki_i"), List.copyOf(pooled.contexts().keySet()));
+                "goTo_ch_i", new Survival(new double[] {1, 2}, new double[] {2, 2, 2, 2, 2, 2, 2, 2, 2, 2}),
+                "halt_ch_i", new Survival(new double[] {1}, new double[] {2, 2})));
+        // a curve needs ten discharged obligations: goTo_ch_i's ten censored ones do not make one, its two discharged
+        // ones make only a late bound (its estimates are the pooled curve's); one discharged obligation makes nothing
+        assertEquals(List.of("goTo_ch_i", "goTo_ch_i>goTo_ki_i", "goTo_ki_i"),
+                List.copyOf(pooled.contexts().keySet()));
         assertEquals(legs, pooled.at("goTo_ch_i>goTo_ki_i"));
         assertEquals(20, pooled.at("start>goTo_ki_i").size(), "unknown condition: its trigger's input");
-        assertSame(pooled, pooled.at("goTo_ch_i"));
+        Survival station = pooled.at("goTo_ch_i");
+        assertEquals(pooled.size(), station.size());
+        assertEquals(pooled.estimate(4, 10), station.estimate(4, 10));
+        assertEquals(34.0, station.lateAfter(0.99), 1e-9, "two legs bound little: capped at the property's longest");
+        assertSame(pooled, pooled.at("halt_ch_i"));
         assertSame(pooled, pooled.at(null));
 
         Scorecard base = new Scorecard("nav", 5, 40, 2, 2, 0, 100, "ticks", 0.1, 0.1, Scorecard.OBLIGATIONS,
@@ -47,14 +54,15 @@ class ForecastChoiceFileTest {
         Scorecard card = new Scorecard("nav", 5, 40, 2, 1, 1, 50, "ticks", 0.05, 0.1, Scorecard.OBLIGATIONS,
                 Scorecard.FORECAST, base, true);
         ForecastModel m = new ForecastModel(ForecastModel.FORMAT, "s", 20, 10, 2, new Lows(new double[] {30},
-                new double[] {25}), 0.6, "chosen", true, Map.of(), List.of("a"), Calibration.IDENTITY, List.of(card),
+                new double[] {25}), 0.6, "chosen", true, Map.of(), List.of("a"), Calibration.IDENTITY, List.of(),
                 Map.of("nav", pooled), Map.of("nav", new DeadlineRule(0.7, "n", true, Calibration.IDENTITY, 0, true)))
-                .withClauses(Clauses.NO_MATCHING);
+                .withClauses(Clauses.NO_MATCHING).withDeadlineScorecards(Map.of("nav", List.of(card)))
+                .named("battery", List.of("battery", "nav"));
         ForecastModel back = ForecastFile.read(ForecastFile.write(m));
         assertEquals(m, back);
         assertEquals(0.0, back.deadlineRule("nav").margin());
         assertTrue(back.deadlineRule("nav").baseline());
-        assertEquals(base, back.scorecards().get(0).inForce());
+        assertEquals(base, back.property("nav").orElseThrow().scorecards().get(0).inForce());
         assertEquals(Clauses.NO_MATCHING, back.clauses());
         assertEquals(Clauses.BASELINE, ForecastFile.read(ForecastFile.write(m.withClauses(Clauses.BASELINE)))
                 .clauses());
@@ -85,10 +93,14 @@ class ForecastChoiceFileTest {
         }
     }
 
-    /** The shipped models were learned before the choice: every clause, the half margin, no curve by condition. */
+    /**
+     * Models learned before the choice (a copy of the shipped forecast of format 1): every clause, the half margin, no
+     * curve by condition.
+     */
     @Test
-    void theShippedForecastStillReadsAsBefore() throws Exception {
-        ForecastModel shipped = ForecastFile.read(Files.readString(Path.of("models", ForecastFile.NAME)));
+    void aForecastLearnedBeforeTheChoiceStillReadsAsBefore() throws Exception {
+        ForecastModel shipped = ForecastFile.read(Files.readString(Path.of("src/test/resources/forecast/format-1",
+                ForecastFile.NAME)));
         assertEquals(Clauses.ALL, shipped.clauses());
         shipped.deadlines().values().forEach(r -> assertEquals(DeadlineRule.HALF, r.margin()));
         shipped.obligations().values().forEach(s -> assertTrue(s.contexts().isEmpty()));

@@ -22,7 +22,7 @@ class ForecasterTest {
         for (int i = 0; i < violating; i++) {
             runs.add(run(List.of("a/x", "b/y", "c/z", "c/z"), new double[] {90, 50, 30, 10}, 3.0));
         }
-        return StatsLearner.learn(ForecastTestRuns.machines(), runs, "s", 20.0);
+        return StatsLearner.learn(ForecastTestRuns.machines(), runs, "s", 20.0).named("battery", List.of("battery"));
     }
 
     private static double afterB(ForecastModel m) {

@@ -22,7 +22,7 @@ class ScorecardTest {
     private static ForecastModel model(List<Scorecard> cards) {
         Lows lows = new Lows(new double[] {30, 31}, new double[] {21});
         return new ForecastModel(ForecastModel.FORMAT, "ticks", 20, 43, 11, lows, 0.86, "chosen", true, Map.of(),
-                List.of("a"), Calibration.IDENTITY, cards);
+                List.of("a"), Calibration.IDENTITY, cards).named("battery", List.of("battery"));
     }
 
     @Test
@@ -68,15 +68,16 @@ class ScorecardTest {
         String text = ForecastFile.write(model(List.of(NO_SKILL)));
         IllegalArgumentException more = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(text.replace("\"warned\" : 2", "\"warned\" : 12")));
-        assertTrue(more.getMessage().contains("'scorecards' of 'battery level >= 20%'"), more.getMessage());
+        assertTrue(more.getMessage().startsWith("'properties.battery.scorecards.0': the scorecard of 'battery level >= "
+                + "20%"), more.getMessage());
         IllegalArgumentException brier = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(text.replace("\"brier\" : 0.2004", "\"brier\" : 7")));
         assertTrue(brier.getMessage().contains("Brier"), brier.getMessage());
         IllegalArgumentException missing = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(text.replace("\"folds\" : 5,", "")));
-        assertEquals("'folds' is missing", missing.getMessage());
+        assertEquals("'properties.battery.scorecards.0.folds' is missing", missing.getMessage());
         IllegalArgumentException notList = assertThrows(IllegalArgumentException.class,
                 () -> ForecastFile.read(text.replaceFirst("\"scorecards\" : \\[", "\"scorecards\" : 3, \"x\" : [")));
-        assertEquals("'scorecards': expected an array", notList.getMessage());
+        assertEquals("'properties.battery.scorecards': expected an array", notList.getMessage());
     }
 }

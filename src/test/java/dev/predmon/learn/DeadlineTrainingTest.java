@@ -85,8 +85,9 @@ class DeadlineTrainingTest {
         assertTrue(rule.note().contains("not validated: the probability is shown but does not warn"), rule.note());
         Survival even = new Survival(new double[] {2, 3}, new double[] {1, 1});
         assertFalse(rule.warns(even.estimate(1, 10), 1, 10, even), "even odds from obligations cut short warn not");
-        // with no false alarm at either margin, the earlier one: a navigation past every training one is warned
-        assertEquals(0.0, rule.margin());
+        // with no false alarm by any clause, the earliest: the late clause at 99%, which for these three legs (2, 3
+        // and 4 ticks; a bound far past them with two degrees of freedom) is capped at the longest of them
+        assertEquals(0.99, rule.level());
         Survival s = new Survival(new double[] {2, 3, 4}, new double[0]);
         assertFalse(rule.warns(s.estimate(4, 10), 4, 10, s));
         assertTrue(rule.warns(s.estimate(5, 10), 5, 10, s));
@@ -95,21 +96,29 @@ class DeadlineTrainingTest {
     /**
      * A fold trained on navigations that arrived after 2 and 3 ticks: one stuck for good is past every one of them
      * from tick 4, so the novelty clause warns it there at no margin, and at 4 + (10 - 4) / 2 = 7 with half of it; the
-     * elapsed-time baseline warns it at 4 too. One arriving after 5 ticks is warned at 4 by both: a false alarm.
+     * elapsed-time baseline warns it at 4 too. One arriving after 5 ticks is warned at 4 by both: a false alarm. The
+     * late clause at either level is capped at the longest leg, 3 ticks (the bound of a log-normal fitted to two legs,
+     * with one degree of freedom, is far past it), and warns both at 4 as well; without the curve it was judged
+     * against, an obligation gets no late clause.
      */
     @Test
     void theNoveltyClauseAtEachMarginAndTheBaselineAsHandWorked() {
         Survival shortLegs = new Survival(new double[] {2, 3}, new double[0]);
-        Obligation stuck = new Obligation(NAVIGATION, steps(11, shortLegs), 11, false, 11, 11, Double.NaN);
-        Obligation slow = new Obligation(NAVIGATION, steps(5, shortLegs), 5, true, 5, 5, Double.NaN);
+        Obligation stuck = new Obligation(NAVIGATION, steps(11, shortLegs), 11, false, 11, 11, Double.NaN,
+                shortLegs);
+        Obligation slow = new Obligation(NAVIGATION, steps(5, shortLegs), 5, true, 5, 5, Double.NaN, shortLegs);
         HeldOutFolds folds = new HeldOutFolds(2, List.of(
                 new HeldOutFolds.Fold(0, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(stuck)))),
                 new HeldOutFolds.Fold(1, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(slow))))));
         List<CrossValidation.Case> cases = DeadlineTraining.cases(ID, folds);
-        assertEquals(List.of(4.0, 7.0), cases.get(0).variants());
+        assertEquals(List.of(4.0, 4.0, 4.0, 4.0, 4.0, 7.0), cases.get(0).variants());
         assertEquals(4.0, cases.get(0).baselineAt());
-        assertEquals(List.of(4.0, Double.NaN), cases.get(1).variants());
+        assertEquals(List.of(4.0, 4.0, 4.0, 4.0, 4.0, Double.NaN), cases.get(1).variants());
         assertEquals(4.0, cases.get(1).baselineAt());
+        Obligation unknown = new Obligation(NAVIGATION, steps(11, shortLegs), 11, false, 11, 11, Double.NaN);
+        assertEquals(List.of(Double.NaN, Double.NaN, Double.NaN, Double.NaN, 4.0, 7.0), DeadlineTraining.cases(ID, new HeldOutFolds(2,
+                List.of(new HeldOutFolds.Fold(0, 0.5, Map.of(ID, shortLegs), true, List.of(run(List.of(unknown)))))))
+                .get(0).variants());
     }
 
     /**
@@ -138,7 +147,7 @@ class DeadlineTrainingTest {
 
     private static CrossValidation.Choice choose(HeldOutFolds folds) {
         return CrossValidation.choose(DeadlineTraining.cases(ID, folds), 2, new CrossValidation.Space(
-                DeadlineRule.MARGINS.size(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(NAVIGATION.name(),
+                DeadlineRule.variants(), 0, Scorecard.OBLIGATIONS), new Scorecard.Names(NAVIGATION.name(),
                 "ticks", Scorecard.OBLIGATIONS, Scorecard.FORECAST, Scorecard.ELAPSED));
     }
 

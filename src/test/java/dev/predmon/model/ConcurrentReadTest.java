@@ -3,7 +3,9 @@ package dev.predmon.model;
 import dev.predmon.BadInputException;
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.abstraction.file.AbstractionFiles;
+import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.ForecastModel;
+import dev.predmon.forecast.PropertyModel;
 import dev.predmon.forecast.StateStats;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -70,13 +72,29 @@ class ConcurrentReadTest {
         Map<String, String> fewer = new LinkedHashMap<>(dots);
         fewer.remove("direct.dot");
         ForecastModel f = set.forecast();
-        Map<String, Map<Integer, StateStats>> states = new TreeMap<>(f.states());
-        states.remove("direct");
-        ForecastModel forecast = new ForecastModel(f.format(), f.unit(), f.limit(), f.runs(), f.violating(), f.lows(),
-                f.threshold(), f.thresholdNote(), f.validated(), states, f.startInputs(), f.calibration(),
-                f.scorecards(), f.obligations(), f.deadlines());
+        List<PropertyModel> properties = new ArrayList<>();
+        for (PropertyModel p : f.properties()) {
+            if (p instanceof PropertyModel.OfBound b) {
+                properties.add(new PropertyModel.OfBound(b.id(), new BoundModel(b.model().side(),
+                        withoutDirect(b.model().model()))));
+            } else if (p instanceof PropertyModel.OfEvent e && e.model().forecasts()) {
+                properties.add(new PropertyModel.OfEvent(e.id(), e.model().with(withoutDirect(e.model().model()))));
+            } else {
+                properties.add(p);
+            }
+        }
+        ForecastModel forecast = ForecastModel.of(f.unit(), f.runs(), properties);
         withoutDirect = new Written(new ModelIndex(i.format(), i.abstraction(), i.alphabet(), scenarios), fewer,
                 abstraction, forecast);
+    }
+
+    /** {@code m} without the statistics of the machine {@code direct}. */
+    private static ForecastModel withoutDirect(ForecastModel m) {
+        Map<String, Map<Integer, StateStats>> states = new TreeMap<>(m.states());
+        states.remove("direct");
+        return new ForecastModel(m.format(), m.unit(), m.limit(), m.runs(), m.violating(), m.lows(), m.threshold(),
+                m.thresholdNote(), m.validated(), states, m.startInputs(), m.calibration(), m.scorecards())
+                .withClauses(m.clauses());
     }
 
     /** Whether {@code set} is all of one of the two: its index, its machines and its forecast. */
