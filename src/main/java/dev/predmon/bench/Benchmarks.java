@@ -9,7 +9,9 @@ import dev.predmon.monitor.WarningRule;
 import dev.predmon.property.Property;
 import dev.predmon.property.Response;
 
+import java.io.IOException;
 import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -42,11 +44,27 @@ public final class Benchmarks {
      * @param fleetPolling    the fleet polls every log ({@code watch --polling}) instead of waiting for notifications
      * @param fleetIdleLogs   logs of the idle fleet whose cost is measured apart (0: none)
      * @param bagMessages     messages in the ROS 2 bag of the bag benchmark
+     * @param fleetDir        where the fleet benchmark's logs go
      */
     public record Options(long batchMegabytes, int latencyRuns, long pollMicros, long memoryRecords,
                           long cpuRecords, List<Integer> learnRuns, int modelRuns, Path tempDir, List<Integer> fleetLogs,
                           int fleetSamples, double fleetSeconds, boolean fleetPolling, int fleetIdleLogs,
-                          long bagMessages) {
+                          long bagMessages, Path fleetDir) {
+    }
+
+    /** What is said of {@code early} logs that warned before the warning's record was appended, if any. */
+    static String early(int early) {
+        return early == 0 ? "" : f("; %d more warned before the record that raises the warning was appended, so "
+                + "gave no sample", early);
+    }
+
+    /** {@code dir} and the type of its file system ({@code /dev/shm (tmpfs)}). */
+    static String fileSystem(Path dir) {
+        try {
+            return dir + " (" + Files.getFileStore(dir).type() + ")";
+        } catch (IOException e) {
+            return dir.toString();
+        }
     }
 
     private Benchmarks() {
@@ -138,31 +156,38 @@ public final class Benchmarks {
                     String how = o.fleetPolling() ? f("polling every %d us", o.pollMicros())
                             : "woken by file-change notification";
                     for (FleetBench.Result r : FleetBench.run(abstraction, models, o.fleetLogs(), o.fleetSamples(),
-                            o.pollMicros(), o.fleetPolling(), o.fleetSeconds(), o.tempDir())) {
+                            o.pollMicros(), o.fleetPolling(), o.fleetSeconds(), o.fleetDir())) {
                         RobotPace.Load p = r.pace();
                         double paceP99 = FleetBench.Result.percentile(p.millis(), 0.99);
+                        boolean atPace = p.writtenRate() >= 0.95 * r.paceRate();
+                        String pace = atPace
+                                ? f("at robot pace (%.0f records/s per log: %.1f written, %.1f read; the writer "
+                                + "process %.0f%% of a core)", r.paceRate(), p.writtenRate(), p.readRate(),
+                                100 * p.writerCore())
+                                : f("NOT at robot pace: the writer fell behind (%.1f of %.0f records/s per log written, "
+                                + "%.1f read; the writer process %.0f%% of a core)", p.writtenRate(), r.paceRate(),
+                                p.readRate(), 100 * p.writerCore());
                         out.accept(f("fleet: %d log%s in one process, %s: catch-up %.0f ns CPU/record; idle %.1f%% of "
-                                        + "a core (following thread %.1f%%); at robot pace (%.0f records/s per log: %.1f "
-                                        + "written, %.1f read) %.1f%% of a core, %.0f ns CPU/record, append->warning "
-                                        + "median %.3f ms, p99 %.3f ms (%d samples); quiet append->warning median %.3f ms, "
-                                        + "p99 %.3f ms, max %.3f ms (%d samples); load average %.1f%s", r.logs(),
+                                        + "a core (following thread %.1f%%); %s %.1f%% of a core, %.0f ns CPU/record, "
+                                        + "append->warning median %.3f ms, p99 %.3f ms (%d samples%s); quiet append->warning "
+                                        + "median %.3f ms, p99 %.3f ms, max %.3f ms (%d samples%s); logs on %s; load average "
+                                        + "%.1f%s", r.logs(),
                                 r.logs() == 1 ? "" : "s", how, r.catchUpNanos(), 100 * r.idleCore(),
-                                100 * r.idleLoopCore(), r.paceRate(), p.writtenRate(), p.readRate(), 100 * p.core(),
+                                100 * r.idleLoopCore(), pace, 100 * p.core(),
                                 p.nanosPerRecord(), FleetBench.Result.percentile(p.millis(), 0.5), paceP99,
-                                p.millis().length, r.percentile(0.5), r.percentile(0.99),
-                                r.millis()[r.millis().length - 1], r.millis().length,
+                                p.millis().length, early(p.early()), r.percentile(0.5), r.percentile(0.99),
+                                r.percentile(1), r.millis().length, early(r.early()), fileSystem(o.fleetDir()),
                                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(),
                                 r.logs() < 1000 ? "" : r.logs() < 10_000
                                         ? f("; target idle < 5%% of a core and p99 < 20 ms: %s",
                                         r.idleCore() < 0.05 && r.percentile(0.99) < 20 ? "met" : "MISSED")
                                         : f("; target robot pace within one core and p99 < 20 ms: %s%s",
-                                        p.core() < 1 && paceP99 < 20 ? "met" : "MISSED",
-                                        p.writtenRate() < 0.95 * r.paceRate() ? " (the writer fell behind the pace)"
-                                                : "")));
+                                        atPace && p.core() < 1 && paceP99 < 20 ? "met" : "MISSED",
+                                        atPace ? "" : " (not measured at robot pace)")));
                     }
                     if (o.fleetIdleLogs() > 0) {
                         IdleFleetBench r = IdleFleetBench.run(new FleetSetup(abstraction, models,
-                                o.pollMicros() * 1000, o.fleetPolling(), o.tempDir()), o.fleetIdleLogs(),
+                                o.pollMicros() * 1000, o.fleetPolling(), o.fleetDir()), o.fleetIdleLogs(),
                                 o.fleetSeconds());
                         out.accept(f("fleet idle: %d logs of 12 records in one process, %s: %.1f%% of a core "
                                         + "(following thread %.1f%%); heap after GC %.0f MB (%.0f before the fleet, %.1f "

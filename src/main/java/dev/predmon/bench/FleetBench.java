@@ -42,7 +42,7 @@ import java.util.stream.IntStream;
  *       tenth as many logs more meanwhile ({@link RobotPace});</li>
  *   <li><b>append to warning</b>: every log holds a depleted run up to the record that triggers the warning; the
  *       bench appends that record to the logs one by one, in random order, 1 to 3 ms apart, and each log's time
- *       from the end of the write to its warning event is one sample (as {@link LatencyBench} measures one log).</li>
+ *       from the start of the write to its warning event is one sample (as {@link LatencyBench} measures one log).</li>
  * </ul>
  */
 final class FleetBench {
@@ -55,17 +55,25 @@ final class FleetBench {
      * @param paceRate      records per second each log should grow by at robot pace
      * @param pace          the robot-pace phase: CPU, the rates written and read, latencies meanwhile
      * @param millis        append-to-warning latencies of a quiet fleet, sorted
+     * @param early         logs of the quiet fleet that warned before the warning's record was written (no sample)
      */
     // Arrays: sorted samples for percentiles; a result is printed, never compared or hashed.
     @SuppressWarnings("ArrayRecordComponent")
     record Result(int logs, double catchUpNanos, double idleCore, double idleLoopCore, double paceRate,
-                  RobotPace.Load pace, double[] millis) {
+                  RobotPace.Load pace, double[] millis, int early) {
         double percentile(double q) {
             return percentile(millis, q);
         }
 
+        /** The {@code q} quantile of {@code sorted}, NaN when there is no sample. */
         static double percentile(double[] sorted, double q) {
-            return sorted[Math.min(sorted.length - 1, (int) Math.ceil(q * sorted.length) - 1)];
+            return sorted.length == 0 ? Double.NaN
+                    : sorted[Math.min(sorted.length - 1, (int) Math.ceil(q * sorted.length) - 1)];
+        }
+
+        /** The samples of {@code millis} that are latencies (not NaN), sorted. */
+        static double[] latencies(double[] millis) {
+            return Arrays.stream(millis).filter(m -> !Double.isNaN(m)).sorted().toArray();
         }
     }
 
@@ -161,10 +169,10 @@ final class FleetBench {
                 }
             }
         }
-        Arrays.sort(millis);
         RobotPace.Load load = pace.measure(logs, full ? phaseNanos : phaseNanos / 5, pacedSamples(logs, samples),
                 before, trigger, beforeRecords);
-        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load, millis);
+        return new Result(logs, (double) catchUpCpu / caughtUp, idleCore[0], idleCore[1], pace.rate(), load,
+                Result.latencies(millis), millis.length - Result.latencies(millis).length);
     }
 
     /** Warnings measured at robot pace: one per log of a tenth of the fleet more, at most {@code samples}. */
@@ -172,8 +180,11 @@ final class FleetBench {
         return Math.max(1, Math.min(samples, logs / 10));
     }
 
-    /** {share of a core of the process, of the following thread} while following logs that do not grow. */
-    private double[] idle(Following following) throws Exception {
+    /**
+     * Waits at least {@link #IDLE_SETTLE_MILLIS}, and until the JIT compiler has been quiet that long (at most 20 s),
+     * so that compiling what ran before is not counted as the cost of what is measured next.
+     */
+    static void compilerQuiet() throws InterruptedException {
         CompilationMXBean jit = ManagementFactory.getCompilationMXBean();
         long settled = System.nanoTime() + 20_000_000_000L;
         long compiled;
@@ -181,6 +192,11 @@ final class FleetBench {
             compiled = jit.getTotalCompilationTime();
             Thread.sleep(IDLE_SETTLE_MILLIS);
         } while (jit.getTotalCompilationTime() != compiled && System.nanoTime() < settled);
+    }
+
+    /** {share of a core of the process, of the following thread} while following logs that do not grow. */
+    private double[] idle(Following following) throws Exception {
+        compilerQuiet();
         long cpu = os.getProcessCpuTime();
         long loop = threads.getThreadCpuTime(following.thread().getId());
         long start = System.nanoTime();
@@ -192,7 +208,8 @@ final class FleetBench {
 
     /**
      * Appends {@code trigger}, the warning's record, to each of {@code files} once, in random order, 1 to 3 ms apart, and waits for
-     * their warnings: each log's time from the end of its write to its warning goes to {@code into} from {@code at}.
+     * their warnings: each log's time from the start of its write to its warning goes to {@code into} from {@code at}
+     * (NaN for a log that had warned before).
      */
     static void latencies(List<Path> files, byte[] trigger, AtomicLongArray warnedAt, Random random, double[] into, int at)
             throws Exception {
@@ -204,9 +221,11 @@ final class FleetBench {
         long[] writtenAt = new long[files.size()];
         for (int i : order) {
             try (OutputStream out = Files.newOutputStream(files.get(i), StandardOpenOption.APPEND)) {
+                // Before the write: on a busy machine the threads the write wakes can run first and warn before
+                // this thread reads the clock again, which made such samples 0.
+                writtenAt[i] = System.nanoTime();
                 out.write(trigger);
             }
-            writtenAt[i] = System.nanoTime(); // closed: the record is in the file
             LockSupport.parkNanos(1_000_000L + random.nextInt(2_000_000));
         }
         long deadline = System.nanoTime() + 60_000_000_000L;
@@ -217,8 +236,9 @@ final class FleetBench {
             if (warnedAt.get(i) == 0) {
                 throw new IllegalStateException("log " + i + " of " + files.size() + ": no warning within 60 s");
             }
-            // The warning can be seen before the writer stores its clock; such a sample is ~0.
-            into[at + i] = Math.max(0, warnedAt.get(i) - writtenAt[i]) / 1e6;
+            // A log that warned before the record was written gives no latency (NaN), and is counted apart.
+            long after = warnedAt.get(i) - writtenAt[i];
+            into[at + i] = after < 0 ? Double.NaN : after / 1e6;
         }
     }
 }

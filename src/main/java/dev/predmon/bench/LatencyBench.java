@@ -149,7 +149,7 @@ final class LatencyBench {
         return new double[] {Math.max(0, warnedAt.get() - written.get()) / 1e6, polled / 1e6};
     }
 
-    /** A depleted run the models warn on, split at the warning's record: the text before it and its seven lines. */
+    /** A depleted run the models warn on, split at its first warning's record: the text before it and its seven lines. */
     static String[] warningRun(Abstraction abstraction, ModelSet models, Path dir) throws Exception {
         String[] parts = null;
         for (long seed = 20_000; parts == null && seed < 20_100; seed++) {
@@ -174,8 +174,8 @@ final class LatencyBench {
             Files.writeString(file, text);
             long[] line = {-1};
             PredictiveMonitor monitor = new PredictiveMonitor(models, abstraction, 0, e -> {
-                if (e instanceof MonitorEvent.Warning w) {
-                    line[0] = w.line();
+                if (e instanceof MonitorEvent.Warning w && line[0] < 0) {
+                    line[0] = w.line(); // the first: the text before it must raise none
                 }
             });
             try (LogWatcher w = new LogWatcher(file, monitor, p -> {

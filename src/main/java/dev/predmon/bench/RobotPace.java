@@ -41,10 +41,13 @@ final class RobotPace {
      * @param writtenRate    records per second the writer appended per log: below the robot's pace when it lagged
      * @param readRate       records per second read per log
      * @param millis         append-to-warning latencies at robot pace, sorted
+     * @param writerCore     share of one core the writer process spent
+     * @param early          logs that warned before the warning's record was written: no sample
      */
     // An array: sorted samples for percentiles; a result is printed, never compared or hashed.
     @SuppressWarnings("ArrayRecordComponent")
-    record Load(double core, double nanosPerRecord, double writtenRate, double readRate, double[] millis) {
+    record Load(double core, double nanosPerRecord, double writtenRate, double readRate, double[] millis,
+                double writerCore, int early) {
     }
 
     private final FleetSetup setup;
@@ -70,8 +73,8 @@ final class RobotPace {
 
     /**
      * The load of following {@code logs} logs growing at the robot's pace for {@code nanos} (longer when the
-     * {@code samples} warnings take longer), measured over its last two thirds, and the latency of {@code samples}
-     * warnings meanwhile: {@code before}
+     * {@code samples} warnings take longer), measured over its last two thirds once the compiler is quiet, and the
+     * latency of {@code samples} warnings meanwhile: {@code before}
      * is a depleted run up to {@code trigger}, the record that raises the warning.
      */
     Load measure(int logs, long nanos, int samples, byte[] before, byte[] trigger, long beforeRecords)
@@ -116,8 +119,10 @@ final class RobotPace {
                      Writer writer = new Writer(runFile, round.path(), logs, rate, scratch.resolve("writer.err"))) {
                     Thread.sleep(FleetBench.SETTLE_MILLIS);
                     writer.go();
-                    // The first third: the compiler meets the paths of whole runs, which the catch-up did not take.
+                    // The first third: the compiler meets the paths of whole runs, which the catch-up did not take;
+                    // then until it has been quiet for a second (at most 20 s more).
                     LockSupport.parkNanos(nanos / 3);
+                    FleetBench.compilerQuiet();
                     long cpu = os.getProcessCpuTime();
                     long mine = threads.getCurrentThreadCpuTime();
                     readBefore = paced(fleet, index);
@@ -130,10 +135,11 @@ final class RobotPace {
                     records = paced(fleet, index) - readBefore;
                     wrote = writer.stop();
                 }
-                Arrays.sort(millis);
                 double writtenRate = Long.parseLong(wrote[1]) / (Long.parseLong(wrote[2]) / 1e9) / logs;
                 return new Load(used / wall, (double) used / Math.max(1, records), writtenRate,
-                        records / (wall / 1e9) / logs, millis);
+                        records / (wall / 1e9) / logs, FleetBench.Result.latencies(millis),
+                        Double.parseDouble(wrote[3]) / Double.parseDouble(wrote[2]),
+                        samples - FleetBench.Result.latencies(millis).length);
             }
         }
     }

@@ -2,7 +2,7 @@ package dev.predmon.cli;
 
 import dev.predmon.Terminal;
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.evaluate.Replay;
+import dev.predmon.evaluate.Approaches;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.event.ForecastJson;
 import dev.predmon.event.OutcomeJson;
@@ -48,10 +48,10 @@ final class ExplainCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         Abstraction abstraction = input.tuned();
-        Replay.Approach approach = Explanation.approach(input.models(), abstraction);
-        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), confirm.value(abstraction), approach::record,
+        Approaches approaches = Approaches.of(input.models(), abstraction);
+        ReplayedLog replayed = input.replay(spec.commandLine().getErr(), confirm.value(abstraction), approaches::record,
                 LogReplay.Detail.FORECASTS);
-        List<Explanation> runs = Explanation.of(replayed, input.models(), abstraction, approach);
+        List<Explanation> runs = Explanation.of(replayed, input.models(), abstraction, approaches);
         if (input.json) {
             // One document for a log of one run, as always; a log of several runs gives one per run.
             List<ExplanationJson> json = runs.stream().map(ExplanationJson::of).toList();

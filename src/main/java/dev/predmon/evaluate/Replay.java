@@ -1,24 +1,19 @@
 package dev.predmon.evaluate;
 
 import dev.predmon.abstraction.Abstraction;
-import dev.predmon.forecast.BoundModel;
 import dev.predmon.forecast.EventModel;
-import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.model.ModelSet;
 import dev.predmon.monitor.MonitorEvent;
 import dev.predmon.monitor.PredictiveMonitor;
 import dev.predmon.monitor.RunOutcome;
 import dev.predmon.monitor.WarningRule;
-import dev.predmon.parse.LogRecord;
 import dev.predmon.pipeline.RunId;
 import dev.predmon.pipeline.RunLabel;
 import dev.predmon.property.Absence;
-import dev.predmon.property.Bound;
 import dev.predmon.property.Precedence;
 import dev.predmon.property.Property;
 import dev.predmon.property.PropertyChecker;
-import dev.predmon.property.PropertyView;
 import dev.predmon.replay.LogReplay;
 import dev.predmon.replay.ReplayedLog;
 import dev.predmon.replay.ReplayedRun;
@@ -27,11 +22,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 
 /**
  * Judges one log exactly as {@code watch --no-follow} would, run by run, from the one replay of it ({@link
@@ -70,39 +62,31 @@ public final class Replay {
     public static List<RunResult> run(Path log, String scenario, boolean faulty, RunLabel label, int fold,
                                       ModelSet models, Abstraction abstraction, int tolerance, int confirm,
                                       WarningRule rule, Map<String, Double> baseRates) throws IOException {
-        Approach approach = new Approach(abstraction.safety().orElse(null),
-                models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
-        Map<String, Approach> bounds = Approach.others(abstraction, models.forecast());
-        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, tolerance, confirm, rule, (r, run, j) -> {
-            approach.record(r, run, j);
-            bounds.values().forEach(a -> a.record(r, run, j));
-        });
-        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, baseRates, bounds);
+        Approaches approaches = Approaches.of(models, abstraction);
+        ReplayedLog replayed = LogReplay.replay(log, models, abstraction, tolerance, confirm, rule,
+                approaches::record);
+        return of(replayed, scenario, faulty, label, fold, models, abstraction, approaches, baseRates);
     }
 
     /**
-     * As above, from the one replay of the log ({@link LogReplay}): each run's verdict, its forecasts before the
-     * violation with their times, its eliminations and its other properties come from that replay's stream.
+     * As above, from the one replay of the log ({@link LogReplay}), {@code approaches} having taken its records: each
+     * run's verdict, its forecasts before the violation with their times, its eliminations and its other properties
+     * come from that replay's stream.
      */
     public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
-                                     ModelSet models, Abstraction abstraction, Approach approach) {
-        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, Map.of());
+                                     ModelSet models, Abstraction abstraction, Approaches approaches) {
+        return of(replayed, scenario, faulty, label, fold, models, abstraction, approaches, Map.of());
     }
 
-    /** As above, with the base rates of the other properties' value forecasts by property id. */
+    /**
+     * As above, with the base rates of the other properties' value forecasts by property id. When the raw-value
+     * baseline of a bound warned ({@link Approach#belowFloor}) is the run's {@code beyond} for that property, as the
+     * elapsed-time baseline's is for a deadline.
+     */
     public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
-                                     ModelSet models, Abstraction abstraction, Approach approach,
+                                     ModelSet models, Abstraction abstraction, Approaches approaches,
                                      Map<String, Double> baseRates) {
-        return of(replayed, scenario, faulty, label, fold, models, abstraction, approach, baseRates, Map.of());
-    }
-
-    /**
-     * As above, with the raw-value baseline of each other bound property by id ({@link Approach#others}): when it
-     * warned a run is the run's {@code beyond} for that property, as the elapsed-time baseline's is for a deadline.
-     */
-    public static List<RunResult> of(ReplayedLog replayed, String scenario, boolean faulty, RunLabel label, int fold,
-                                     ModelSet models, Abstraction abstraction, Approach approach,
-                                     Map<String, Double> baseRates, Map<String, Approach> bounds) {
+        Approach approach = approaches.of(abstraction.safety().map(Property::id).orElse(null));
         List<ReplayedRun> runs = replayed.runs();
         List<RunResult> results = new ArrayList<>();
         for (ReplayedRun r : runs) {
@@ -129,7 +113,7 @@ public final class Replay {
                     beyond.putIfAbsent(c.property(), c.time());
                 }
             }
-            bounds.forEach((id, a) -> {
+            approaches.all().forEach((id, a) -> {
                 Double at = a.belowFloor(o.run());
                 if (at != null) {
                     beyond.put(id, at);
@@ -148,7 +132,7 @@ public final class Replay {
                     violationTime, lead, noMatch != null, noMatch == null ? null : noMatch.time(),
                     runs.size() == 1 ? replayed.records() : -1, o.pairs(), replayed.problems().size(),
                     List.copyOf(eliminations), o.safetyObserved(), replayed.unit(),
-                    violation != null && approach.near(o.run()) < RunResult.SUDDEN_READINGS, approach.start(o.run()),
+                    violation != null && approach.near(o.run()) < RunResult.SUDDEN_READINGS, approaches.start(o.run()),
                     approach.near(o.run()), violation == null ? null : violation.before(),
                     models.forecast() == null ? null : new RunResult.ForecastTrace(
                             scored.stream().map(t -> t.forecast().probability()).toList(), o.forecast(),
@@ -156,7 +140,7 @@ public final class Replay {
                             models.forecast().threshold(), approach.belowFloor(o.run()),
                             scored.stream().map(ReplayedRun.Timed::time).toList()),
                     others(abstraction, o.properties(), warnings, baseRateWarnings(abstraction, beyond, baseRates,
-                            approach.start(o.run())), violations, PropertyForecasts.of(r.events(), abstraction,
+                            approaches.start(o.run())), violations, PropertyForecasts.of(r.events(), abstraction,
                             models.forecast(), baseRates), models)));
         }
         return results;
@@ -198,110 +182,5 @@ public final class Replay {
             }
         }
         return out;
-    }
-
-    /**
-     * Per run, the time of its first record and the readings near the bound on the way to its violation (since the
-     * value was last above the band), seen after the
-     * monitor took each record (so that {@link PredictiveMonitor#run()} already counts a record that starts a run).
-     * The value and the violation are the monitor's checker's ({@link PropertyView}: the reading within the
-     * property's scope, and whether it is violated now), so the violation counted up to is the one it reported.
-     */
-    public static final class Approach {
-        private final Bound rule;
-        private int index = -1;
-        /** The lowest value a safe training run read: the raw-value baseline warns below it (NaN: never). */
-        private final double floor;
-        /** Per run, when the value first went below the floor, and when the current stretch below it began. */
-        private final Map<Integer, Double> firstBelow = new HashMap<>();
-        private final Map<Integer, Double> below = new HashMap<>();
-        private final Map<Integer, Double> belowAtViolation = new HashMap<>();
-        private final Map<Integer, Double> start = new HashMap<>();
-        private final Map<Integer, Integer> near = new HashMap<>();
-        private final Set<Integer> violated = new HashSet<>();
-
-        /** Whether the value is read mirrored (a ceiling's, whose floor is on the mirrored scale). */
-        private final boolean mirrored;
-
-        /** @param floor the raw-value baseline's: the lowest value a safe training run read (NaN: never) */
-        public Approach(Bound rule, double floor) {
-            this(rule, floor, false);
-        }
-
-        /** As above, of a value read {@code mirrored} ({@code -v}: a ceiling forecast as a floor) against {@code floor}. */
-        Approach(Bound rule, double floor, boolean mirrored) {
-            this.rule = rule;
-            this.floor = floor;
-            this.mirrored = mirrored;
-        }
-
-        /**
-         * The raw-value baseline of every bound property but the safety property that {@code forecast} has a value
-         * forecast of, by id: below the lowest value (above the highest, for a ceiling) a safe training run of it read.
-         */
-        static Map<String, Approach> others(Abstraction abstraction, ForecastModel forecast) {
-            Map<String, Approach> out = new LinkedHashMap<>();
-            if (forecast == null) {
-                return out;
-            }
-            for (Property p : abstraction.properties()) {
-                BoundModel b = forecast.bounds().get(p.id());
-                if (p instanceof Bound bound && b != null) {
-                    out.put(p.id(), new Approach(bound, b.model().lows().safeFloor(),
-                            BoundModel.CEILING.equals(b.side())));
-                }
-            }
-            return out;
-        }
-
-        /** Takes record {@code r} of run {@code run}, after the monitor took it and judged it as {@code judged}. */
-        public void record(LogRecord r, int run, PropertyView judged) {
-            start.putIfAbsent(run, r.time());
-            if (rule == null || violated.contains(run)) {
-                return;
-            }
-            index = index < 0 ? judged.indexOf(rule.id()) : index;
-            double v = mirrored ? -judged.reading(index) : judged.reading(index);
-            if (Double.isNaN(v)) {
-                return;
-            }
-            if (judged.violatedNow(index)) {
-                violated.add(run);
-                Double stretch = below.get(run);
-                if (stretch != null) {
-                    belowAtViolation.put(run, stretch);
-                }
-                return;
-            }
-            if (v < floor) {
-                firstBelow.putIfAbsent(run, r.time());
-                below.putIfAbsent(run, r.time());
-            } else {
-                below.remove(run); // the baseline's alarm ends when its cause ends, as the monitor's do
-            }
-            if (v < rule.floor() + RunResult.APPROACH_BAND) {
-                near.merge(run, 1, Integer::sum);
-            } else {
-                // Back above the band: an earlier dip that recovered (a recharge) is no approach to a later violation.
-                near.remove(run);
-            }
-        }
-
-        double start(int run) {
-            return start.getOrDefault(run, 0.0);
-        }
-
-        /**
-         * When the raw-value baseline warned run {@code run}, or null: for a violated run, the start of the stretch
-         * below the floor that lasted until the violation (a dip that recovered earlier does not foresee it); for a
-         * run that held, its first stretch (a false alarm).
-         */
-        Double belowFloor(int run) {
-            return violated.contains(run) ? belowAtViolation.get(run) : firstBelow.get(run);
-        }
-
-        int near(int run) {
-            return near.getOrDefault(run, 0);
-        }
     }
 }

@@ -71,7 +71,7 @@ public record RunResult(String scenario, boolean faulty, RunId log, int fold, Ve
      * @param violation the time of its violation, or null
      * @param beyond    when its baseline warned, or null: a deadline's elapsed-time rule (an obligation first pending
      *                  longer than every training obligation), a bound's raw-value rule (as the safety property's,
-     *                  {@link Replay.Approach#belowFloor}), an absence's or a precedence's base rate (the run's start
+     *                  {@link Approach#belowFloor}), an absence's or a precedence's base rate (the run's start
      *                  where the training runs violated it at even odds or more)
      * @param forecasts what its forecast said before its violation (or the run's end), each forecast with its
      *                  outcome, and the base rate of the models that judged the run; null when it has no forecast

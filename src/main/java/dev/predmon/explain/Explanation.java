@@ -2,6 +2,7 @@ package dev.predmon.explain;
 
 import dev.predmon.abstraction.Abstraction;
 import dev.predmon.compact.IoPair;
+import dev.predmon.evaluate.Approaches;
 import dev.predmon.evaluate.Replay;
 import dev.predmon.evaluate.RunResult;
 import dev.predmon.forecast.Forecast;
@@ -79,22 +80,16 @@ public record Explanation(String log, List<Step> steps, List<ModelFate> models, 
      */
     public static List<Explanation> of(Path log, ModelSet models, Abstraction abstraction, int tolerance, int confirm)
             throws IOException {
-        Replay.Approach approach = approach(models, abstraction);
+        Approaches approaches = Approaches.of(models, abstraction);
         return of(LogReplay.replay(log, models, abstraction, tolerance, confirm, PredictiveMonitor.defaultRule(models),
-                approach::record), models, abstraction, approach);
+                approaches::record), models, abstraction, approaches);
     }
 
-    /** What the verdicts of an explanation need of each record as it is replayed ({@link Replay.Approach}). */
-    public static Replay.Approach approach(ModelSet models, Abstraction abstraction) {
-        return new Replay.Approach(abstraction.safety().orElse(null),
-                models.forecast() == null ? Double.NaN : models.forecast().lows().safeFloor());
-    }
-
-    /** Explains a log already replayed, {@code approach} having taken its records: one explanation per run. */
+    /** Explains a log already replayed, {@code approaches} ({@link Approaches#of}) having taken its records. */
     public static List<Explanation> of(ReplayedLog replayed, ModelSet models, Abstraction abstraction,
-                                       Replay.Approach approach) {
+                                       Approaches approaches) {
         WarningRule rule = replayed.monitor().rule();
-        List<RunResult> verdicts = Replay.of(replayed, "?", false, RunLabel.ALL, -1, models, abstraction, approach);
+        List<RunResult> verdicts = Replay.of(replayed, "?", false, RunLabel.ALL, -1, models, abstraction, approaches);
         List<Explanation> all = new ArrayList<>();
         for (int i = 0; i < replayed.runs().size(); i++) {
             all.add(of(replayed.runs().get(i), verdicts.get(i), rule,

@@ -1,9 +1,15 @@
 package dev.predmon.forecast;
 
+import dev.predmon.abstraction.Abstraction;
 import dev.predmon.property.Bound;
+import dev.predmon.property.Property;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
 
 /**
- * The value forecast of one bound property other than the abstraction's safety property: a {@link ForecastModel} of
+ * The value forecast of one bound property (the abstraction's first floor is one, kept at the top level of the
+ * {@link ForecastModel} of every property; {@link #of} finds either): a {@link ForecastModel} of
  * its own (per-state statistics over the runs labelled by its violation, lows, threshold, calibration, scorecard),
  * and the side of the bound it forecasts.
  *
@@ -28,6 +34,32 @@ public record BoundModel(String side, ForecastModel model) {
         if (!FLOOR.equals(side) && !CEILING.equals(side)) {
             throw new IllegalArgumentException("side '" + side + "': expected " + FLOOR + " or " + CEILING);
         }
+    }
+
+    /**
+     * The value forecast {@code forecast} holds for bound property {@code id}, or null (none, or no forecast): the
+     * first floor's is its top level, forecast on the floor ({@code firstFloor}, the abstraction's {@link
+     * Abstraction#safety}, which names it in a model not yet named by {@link ForecastModel#first}), every other
+     * bound's is among its {@link ForecastModel#bounds}. One way to every bound's forecast, the first floor's too.
+     */
+    public static BoundModel of(ForecastModel forecast, String id, String firstFloor) {
+        if (forecast == null) {
+            return null;
+        }
+        return id != null && id.equals(firstFloor) ? new BoundModel(FLOOR, forecast) : forecast.bounds().get(id);
+    }
+
+    /** Every bound property of {@code abstraction} that {@code forecast} has a value forecast of, by id, in its order. */
+    public static Map<String, BoundModel> all(ForecastModel forecast, Abstraction abstraction) {
+        String first = abstraction.safety().map(Bound::id).orElse(null);
+        Map<String, BoundModel> out = new LinkedHashMap<>();
+        for (Property p : abstraction.properties()) {
+            BoundModel m = p instanceof Bound ? of(forecast, p.id(), first) : null;
+            if (m != null) {
+                out.put(p.id(), m);
+            }
+        }
+        return out;
     }
 
     /** Whether the values are mirrored (a ceiling). */

@@ -19,6 +19,7 @@ import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -101,17 +102,14 @@ public final class ForecastTraining {
             return PropertyParts.covering(stats.withThreshold(ThresholdChoice.DEFAULT, note, false)
                     .withBounds(bounds).withEvents(events), abstraction);
         }
-        List<CrossValidation.Case> judged = new ArrayList<>();
-        Map<String, List<CrossValidation.Case>> boundJudged = new TreeMap<>();
-        others.forEach(b -> boundJudged.put(b.id(), new ArrayList<>()));
+        String first = abstraction.safety().map(Bound::id).orElse(null);
+        Map<String, List<CrossValidation.Case>> judged = new HashMap<>(); // by bound id, the first floor's too
+        judged.put(first, new ArrayList<>());
+        others.forEach(b -> judged.put(b.id(), new ArrayList<>()));
         for (HeldOutFolds.Fold fold : heldOut.judged()) {
-            if (fold.bothOutcomes()) { // a fold that trains on one outcome only says nothing about where to draw the line
-                fold.runs().forEach(r -> judged.add(HeldOutCases.bound(fold.index(), r, fold.baseRate(),
-                        fold.safeFloor(), v -> v)));
-            }
-            fold.bounds().forEach((id, b) -> {
+            fold.values(first).forEach((id, b) -> {
                 boolean ceiling = BoundModel.CEILING.equals(sides.get(id));
-                b.runs().forEach(r -> boundJudged.get(id).add(HeldOutCases.bound(fold.index(), r, b.baseRate(),
+                b.runs().forEach(r -> judged.get(id).add(HeldOutCases.bound(fold.index(), r, b.baseRate(),
                         b.safeFloor(), v -> ceiling ? -v : v)));
             });
         }
@@ -119,9 +117,9 @@ public final class ForecastTraining {
         for (Bound b : others) {
             BoundModel m = boundStats.get(b.id());
             bounds.put(b.id(), new BoundModel(m.side(), chosen(m.model(), b.name(), heldOut.folds(), unit,
-                    boundJudged.get(b.id()), new CrossValidation.Space(1, 0, Scorecard.RUNS))));
+                    judged.get(b.id()), new CrossValidation.Space(1, 0, Scorecard.RUNS))));
         }
-        return PropertyParts.covering(chosen(stats, property, heldOut.folds(), unit, judged,
+        return PropertyParts.covering(chosen(stats, property, heldOut.folds(), unit, judged.get(first),
                 new CrossValidation.Space(1, 1, Scorecard.RUNS)).withBounds(bounds).withEvents(events), abstraction);
     }
 

@@ -20,6 +20,7 @@ import net.automatalib.automaton.transducer.CompactMealy;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -76,6 +77,18 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
             events = Map.copyOf(events);
         }
 
+        /**
+         * Every bound's part of this fold by id: the first floor's ({@code firstFloor}: the runs, base rate and
+         * raw-value line above, when its training runs had both outcomes) as any other bound's ({@link #bounds}).
+         */
+        public Map<String, BoundFold> values(String firstFloor) {
+            Map<String, BoundFold> all = new HashMap<>(bounds);
+            if (bothOutcomes) {
+                all.put(firstFloor, new BoundFold(baseRate, runs, safeFloor));
+            }
+            return all;
+        }
+
         /** A fold without absences' and precedences' forecasts. */
         public Fold(int index, double baseRate, Map<String, Survival> obligations, boolean bothOutcomes,
                     List<HeldOutRun> runs, Map<String, BoundFold> bounds, double safeFloor) {
@@ -101,6 +114,11 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
 
         public BoundFold {
             runs = List.copyOf(runs);
+        }
+
+        /** The fold of the bound forecast by {@code model} (on its scale), its held-out runs {@code runs}. */
+        static BoundFold of(ForecastModel model, List<HeldOutRun> runs) {
+            return new BoundFold(model.baseRate(), runs, model.lows().safeFloor());
         }
     }
 
@@ -188,13 +206,13 @@ public record HeldOutFolds(int folds, List<Fold> judged) {
                 }
             }
             Map<String, BoundFold> bounds = new TreeMap<>();
-            boundRuns.forEach((id, rs) -> bounds.put(id, new BoundFold(boundModels.get(id).model().baseRate(), rs,
-                    boundModels.get(id).model().lows().safeFloor())));
+            boundRuns.forEach((id, rs) -> bounds.put(id, BoundFold.of(boundModels.get(id).model(), rs)));
             Map<String, BoundFold> events = new TreeMap<>();
             eventRuns.forEach((id, rs) -> events.put(id, new BoundFold(eventModels.get(id).model().baseRate(), rs,
                     Double.NaN)));
-            judged.add(new Fold(fold, stats.baseRate(), stats.obligations(), both, runs, bounds,
-                    stats.lows().safeFloor(), events));
+            BoundFold first = BoundFold.of(stats, runs); // the first floor's, as every other bound's
+            judged.add(new Fold(fold, first.baseRate(), stats.obligations(), both, first.runs(), bounds,
+                    first.safeFloor(), events));
         }
         return new HeldOutFolds(used, judged);
     }

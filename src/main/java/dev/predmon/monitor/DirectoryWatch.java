@@ -12,6 +12,7 @@ import java.nio.file.WatchKey;
 import java.nio.file.WatchService;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
@@ -28,7 +29,9 @@ import static java.nio.file.StandardWatchEventKinds.OVERFLOW;
  * directories of a fleet's logs. Directories, not files, are watched: one inotify watch per directory however many
  * logs it holds (the per-user limit, {@code fs.inotify.max_user_watches}, is often 8192), and a directory's watch
  * also tells of files created, renamed or deleted in it, which rotation does. A whole fleet shares one inotify
- * instance ({@code fs.inotify.max_user_instances} is often 128 per user).
+ * instance ({@code fs.inotify.max_user_instances} is often 128 per user). A thread of its own ({@code predmon-notify})
+ * takes the JDK's changes as they come, once a millisecond at most, and queues them for {@link #take}: the JDK holds
+ * 512 changes per directory, beyond which it reports an overflow.
  *
  * <p>The caller polls instead where a notification would not be trusted: a directory on a network or FUSE file
  * system ({@link #remote}: inotify only sees changes made through this machine's kernel, not a writer on another
@@ -52,10 +55,27 @@ final class DirectoryWatch implements AutoCloseable {
     record Change(WatchKey key, Kind kind, Path name) {
     }
 
+    /** Changes queued for {@link #take} beyond which a directory's further creations and deletions are an overflow. */
+    static final int MAX_QUEUED = 1 << 16;
+    /** The reading thread's pause after each take of the JDK's changes. */
+    static final long READ_PAUSE_NANOS = 1_000_000L;
+
     private final WatchService service;
+    private final Object lock = new Object();
+    /** Changes read and not yet taken, in order; guarded by {@link #lock}. */
+    private List<Change> queued = new ArrayList<>();
+    /** The writes and overflows among {@link #queued}: each once. */
+    private final Set<Change> modified = new HashSet<>();
+    private final List<WatchKey> queuedInvalid = new ArrayList<>();
+    /** Whether {@link #take} waits for a change. */
+    private boolean waiting;
+    private RuntimeException failure;
 
     private DirectoryWatch(WatchService service) {
         this.service = service;
+        Thread reader = new Thread(this::read, "predmon-notify");
+        reader.setDaemon(true);
+        reader.start();
     }
 
     /** The file system's notification, or null where there is none worth having (the caller then polls). */
@@ -149,31 +169,105 @@ final class DirectoryWatch implements AutoCloseable {
 
     /**
      * Waits up to {@code nanos} for changes, then takes every change already signalled without waiting more.
-     * Each directory's key is reset before its changes are handed out, so that a write after this call signals
-     * again even while the caller is still reading the file: no write goes unannounced.
+     * Each directory's key is reset before its changes are handed out (by the reading thread, as soon as the JDK
+     * signals it), so that a write after this call signals again even while the caller is still reading the file: no
+     * write goes unannounced.
      *
      * @param invalid receives the keys of directories that are no longer watched (deleted, unmounted)
      * @return the changes, empty when none came in time
      */
     List<Change> take(long nanos, List<WatchKey> invalid) throws InterruptedException {
-        List<Change> out = new ArrayList<>();
-        WatchKey key = nanos > 0 ? service.poll(nanos, TimeUnit.NANOSECONDS) : service.poll();
-        while (key != null) {
-            for (WatchEvent<?> e : key.pollEvents()) {
-                WatchEvent.Kind<?> kind = e.kind();
-                if (kind == OVERFLOW) {
-                    out.add(new Change(key, Kind.OVERFLOW, null));
-                } else {
-                    out.add(new Change(key, kind == ENTRY_CREATE ? Kind.CREATED
-                            : kind == ENTRY_DELETE ? Kind.DELETED : Kind.MODIFIED, (Path) e.context()));
+        synchronized (lock) {
+            long deadline = System.nanoTime() + nanos;
+            while (queued.isEmpty() && queuedInvalid.isEmpty() && failure == null) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    break;
+                }
+                waiting = true;
+                try {
+                    TimeUnit.NANOSECONDS.timedWait(lock, left);
+                } finally {
+                    waiting = false;
                 }
             }
-            if (!key.reset()) {
-                invalid.add(key);
+            if (failure != null) {
+                throw failure;
             }
-            key = service.poll();
+            List<Change> out = queued;
+            queued = new ArrayList<>();
+            modified.clear();
+            invalid.addAll(queuedInvalid);
+            queuedInvalid.clear();
+            return out;
         }
-        return out;
+    }
+
+    /**
+     * The reading thread: takes each key as soon as the JDK signals it, resets it, and queues its changes for
+     * {@link #take}, a write to a file already queued as written counted once. The JDK holds at most 512 changes per
+     * directory between two takes and turns the rest into an overflow, after which every log of the directory must be
+     * looked at: 10,000 logs written at a robot's pace fill that in 2 ms, less than the following thread spends
+     * reading what one wakeup brought. Taken here at once, they overflow only when the following thread lags by
+     * {@link #MAX_QUEUED} changes.
+     */
+    private void read() {
+        List<Change> batch = new ArrayList<>();
+        List<WatchKey> gone = new ArrayList<>();
+        try {
+            while (true) {
+                WatchKey key = service.take();
+                while (key != null) {
+                    for (WatchEvent<?> e : key.pollEvents()) {
+                        WatchEvent.Kind<?> kind = e.kind();
+                        batch.add(kind == OVERFLOW ? new Change(key, Kind.OVERFLOW, null)
+                                : new Change(key, kind == ENTRY_CREATE ? Kind.CREATED
+                                : kind == ENTRY_DELETE ? Kind.DELETED : Kind.MODIFIED, (Path) e.context()));
+                    }
+                    if (!key.reset()) {
+                        gone.add(key);
+                    }
+                    key = service.poll();
+                }
+                queue(batch, gone);
+                batch.clear();
+                gone.clear();
+                // The changes of the next millisecond gather in the JDK's lists (far from 512 per directory at
+                // 270,000 writes a second): one wakeup of this thread per millisecond, not one per write.
+                TimeUnit.NANOSECONDS.sleep(READ_PAUSE_NANOS);
+            }
+        } catch (ClosedWatchServiceException | InterruptedException closed) {
+            // closed: following ended
+        } catch (RuntimeException | Error e) {
+            synchronized (lock) {
+                failure = new IllegalStateException("the file-change notification failed", e);
+                lock.notifyAll();
+            }
+        }
+    }
+
+    private void queue(List<Change> batch, List<WatchKey> gone) {
+        synchronized (lock) {
+            boolean was = queued.isEmpty() && queuedInvalid.isEmpty();
+            for (Change c : batch) {
+                if (c.kind() == Kind.MODIFIED || c.kind() == Kind.OVERFLOW) {
+                    if (!modified.add(c)) {
+                        continue; // queued already: one read takes both writes
+                    }
+                } else if (queued.size() >= MAX_QUEUED) {
+                    Change lost = new Change(c.key(), Kind.OVERFLOW, null);
+                    if (modified.add(lost)) {
+                        queued.add(lost);
+                    }
+                    continue;
+                }
+                queued.add(c);
+            }
+            queuedInvalid.addAll(gone);
+            if (was && waiting && !(queued.isEmpty() && queuedInvalid.isEmpty())) {
+                lock.notifyAll();
+            }
+        }
     }
 
     @Override

@@ -5,7 +5,6 @@ import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.ForecastWords;
 import dev.predmon.forecast.Forecaster;
 import dev.predmon.matching.Matching;
-import dev.predmon.model.ModelSet;
 import net.automatalib.automaton.transducer.CompactMealy;
 
 import java.util.Map;
@@ -33,13 +32,10 @@ final class ForecastTracker {
         this.forecaster = forecaster;
     }
 
-    /** The tracker of {@code models}, or null when they carry no forecast. */
-    static ForecastTracker of(ModelSet models) {
-        return models.forecast() == null ? null : new ForecastTracker(new Forecaster(models.forecast(),
-                models.machines()));
-    }
-
-    /** The tracker of the forecast {@code model} over {@code machines} (a bound property's, {@link BoundFollow}). */
+    /**
+     * The tracker of the forecast {@code model} over {@code machines}: a bound property's ({@link BoundFollow}, the
+     * first floor's as any other's) or an event's ({@link EventFollow}).
+     */
     static ForecastTracker of(ForecastModel model, Map<String, CompactMealy<String, String>> machines) {
         return new ForecastTracker(new Forecaster(model, machines));
     }

@@ -69,7 +69,7 @@ final class PropertyFollows {
         for (int i = 0; i < follows.length; i++) {
             Property p = properties.get(i);
             if (p instanceof Bound b) {
-                BoundModel m = boundModel(forecast, b, c.headline);
+                BoundModel m = BoundModel.of(forecast, b.id(), c.headline);
                 BoundFollow f = new BoundFollow(i, b, m, models.machines(), c);
                 head = b.id().equals(c.headline) ? f : head;
                 follows[i] = f;
@@ -94,17 +94,6 @@ final class PropertyFollows {
             follows[index].closed(line, duration, discharged);
         });
         this.violates = violates(models, properties);
-    }
-
-    /**
-     * The value forecast {@code forecast} holds for bound {@code b}, or null: {@code forecast.json} keeps the headline
-     * property's at its top level (a floor) and every other bound's among its {@code bounds}.
-     */
-    static BoundModel boundModel(ForecastModel forecast, Bound b, String headline) {
-        if (forecast == null) {
-            return null;
-        }
-        return b.id().equals(headline) ? new BoundModel(BoundModel.FLOOR, forecast) : forecast.bounds().get(b.id());
     }
 
     /** Takes {@code r}, the next record of the run: every property's events at it. */

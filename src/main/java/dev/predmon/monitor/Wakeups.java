@@ -69,6 +69,8 @@ final class Wakeups implements AutoCloseable {
     /** When changes were last taken, and the logs of the last {@link #due} that were only announced as written. */
     private long lastTaken = System.nanoTime() - GATHER_NANOS;
     private final Set<WatchedLog> written = new HashSet<>();
+    /** What the last {@link #due} gave: one set, cleared at each call, not one per wakeup. */
+    private final Set<WatchedLog> due = new LinkedHashSet<>();
     private boolean rescan;
     private boolean sourcesWatched = true;
 
@@ -170,7 +172,7 @@ final class Wakeups implements AutoCloseable {
 
     /**
      * Waits up to {@code nanos} (less when a polled log's pause or a rotation's next look comes first) for changes,
-     * and gives the logs to poll now, each once.
+     * and gives the logs to poll now, each once: a set the next call empties.
      */
     Set<WatchedLog> due(long nanos) throws InterruptedException {
         long now = System.nanoTime();
@@ -181,7 +183,8 @@ final class Wakeups implements AutoCloseable {
         for (long at : replacing.values()) {
             wait = Math.min(wait, at - now);
         }
-        Set<WatchedLog> out = new LinkedHashSet<>();
+        Set<WatchedLog> out = due;
+        out.clear();
         written.clear();
         if (watch == null) {
             TimeUnit.NANOSECONDS.sleep(Math.max(0, wait));
@@ -258,6 +261,9 @@ final class Wakeups implements AutoCloseable {
 
     /** {@code logs} are to be polled, each with a look at its path. */
     private void full(Collection<WatchedLog> logs, Set<WatchedLog> out) {
+        if (logs.isEmpty()) {
+            return;
+        }
         for (WatchedLog log : logs) {
             out.add(log);
             written.remove(log);

@@ -14,8 +14,14 @@ import java.util.Arrays;
  * ({@code /GoToDestination/BT_rpc/client}, {@code /IsAtDestination/BT_rpc/client}): a hash of a few sampled bytes made
  * them evict each other on every record, a third of a large log's allocation. A collision costs one allocation,
  * never a wrong string, since the bytes are compared in full.
+ *
+ * <p>One table per thread ({@link #local()}), shared by every parser on it: the logs of a fleet repeat the same
+ * values, and one warm table serves thousands of logs read in turn, where a table per log was cold at every record
+ * (its compares were a sixth of a fleet's following time at robot pace) and cost a few KB per log.
  */
 final class AsciiStrings {
+
+    private static final ThreadLocal<AsciiStrings> LOCAL = ThreadLocal.withInitial(AsciiStrings::new);
 
     private static final int SETS = 512;
     private static final int MAX_CACHED = 64;
@@ -25,6 +31,11 @@ final class AsciiStrings {
     private final byte[][] keys = new byte[2 * SETS][];
     /** Per set, the hash of the last value that missed there; a second miss with it admits the value. */
     private final int[] missed = new int[SETS];
+
+    /** This thread's table. */
+    static AsciiStrings local() {
+        return LOCAL.get();
+    }
 
     /** The string of {@code len} ASCII bytes of {@code b} from {@code offset}. */
     String of(byte[] b, int offset, int len) {

@@ -14,7 +14,13 @@ final class FileReading {
 
     private static final int BUFFER_BYTES = 64 * 1024;
     /** One read buffer per thread: a fleet of thousands of logs polled by one thread holds one. */
-    private static final ThreadLocal<byte[]> BUFFER = ThreadLocal.withInitial(() -> new byte[BUFFER_BYTES]);
+    private static final ThreadLocal<Buffer> BUFFER = ThreadLocal.withInitial(Buffer::new);
+
+    /** A thread's read buffer: its bytes and the one buffer wrapping them (not one wrapper per read). */
+    private static final class Buffer {
+        final byte[] bytes = new byte[BUFFER_BYTES];
+        final ByteBuffer wrapped = ByteBuffer.wrap(bytes);
+    }
 
     /** The open file; null while released to spare a descriptor, and once closed. */
     FileChannel channel;
@@ -44,8 +50,9 @@ final class FileReading {
 
     /** Reads and delivers the complete lines appended since the last read; whether anything was read. */
     boolean read(long now) throws IOException {
-        byte[] bytes = BUFFER.get();
-        ByteBuffer buffer = ByteBuffer.wrap(bytes);
+        Buffer b = BUFFER.get();
+        ByteBuffer buffer = b.wrapped;
+        byte[] bytes = b.bytes;
         boolean progress = false;
         while (true) {
             buffer.clear();
@@ -72,8 +79,10 @@ final class FileReading {
      *         read, {@code 0} when nothing was appended
      */
     int readChecked(long now) throws IOException {
-        byte[] bytes = BUFFER.get();
-        ByteBuffer buffer = ByteBuffer.wrap(bytes);
+        Buffer b = BUFFER.get();
+        ByteBuffer buffer = b.wrapped;
+        byte[] bytes = b.bytes;
+        buffer.clear();
         int kept = tail.length();
         int n = channel.read(buffer, position - kept);
         if (kept > 0 && (n < kept || !tail.matches(bytes))) {

@@ -17,7 +17,6 @@ abstract class RecordLayout implements LogLayout {
 
     private final Consumer<LogRecord> records;
     private final Consumer<ParseProblem> problems;
-    final AsciiStrings strings = new AsciiStrings();
     RecordDraft draft;
     /** The draft of the last record built, which {@link #startDraft} reuses; {@code null} if none. */
     private RecordDraft spare;
@@ -165,7 +164,7 @@ abstract class RecordLayout implements LogLayout {
             valueEnd--;
         }
         // Non-ASCII, a save-file marker or a colour code: the general path decides (null).
-        String value = strings.ofPlain(b, valueStart, valueEnd - valueStart);
+        String value = AsciiStrings.local().ofPlain(b, valueStart, valueEnd - valueStart);
         if (value == null) {
             return false;
         }

@@ -20,7 +20,7 @@ class BenchmarksTest {
     void everyBuiltInPropertyIsOnAndNamedAndACpuFigurePerRecordIsPrinted(@TempDir Path dir) throws Exception {
         List<String> lines = new ArrayList<>();
         Benchmarks.run(List.of(Benchmarks.Kind.CPU), new Benchmarks.Options(1, 1, 1000, 1, 20_000, List.of(), 20, dir,
-                List.of(), 1, 1, false, 0, 1000), lines::add);
+                List.of(), 1, 1, false, 0, 1000, dir), lines::add);
         assertEquals("properties on in every benchmark: 5 of abstraction thesis-tables-4.1-4.2-bands-5.2: battery "
                 + "(forecast), charger-in-time, no-abort, navigation-in-time (deadline forecast), grasp-in-time",
                 lines.get(1));
@@ -36,7 +36,7 @@ class BenchmarksTest {
     void theBagBenchmarkReadsEveryMessageAndPrintsItsFiguresBesideYarps(@TempDir Path dir) throws Exception {
         List<String> lines = new ArrayList<>();
         Benchmarks.run(List.of(Benchmarks.Kind.BAG), new Benchmarks.Options(1, 1, 1000, 1, 1, List.of(), 1, dir,
-                List.of(), 1, 1, false, 0, 3000), lines::add);
+                List.of(), 1, 1, false, 0, 3000, dir), lines::add);
         String bag = lines.stream().filter(l -> l.startsWith("bag: read+decode")).findFirst().orElseThrow();
         assertTrue(bag.contains(" 3000 messages ") && bag.contains("messages/s"), bag);
         assertTrue(lines.stream().anyMatch(l -> l.startsWith("bag: beside it, the YARP parser")), lines.toString());

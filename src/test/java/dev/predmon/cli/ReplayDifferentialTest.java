@@ -39,7 +39,9 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Objects;
+import java.util.TreeMap;
 import java.util.stream.Stream;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -670,10 +672,20 @@ class ReplayDifferentialTest {
             differ.add("explain: " + log + " " + runs.size() + " runs, the replay " + reference.runs().size());
             return;
         }
+        // evaluate's replay of the same log with the same models: each property's baseline (when the raw-value rule
+        // of a bound, the first floor's as any other's, or a deadline's elapsed-time rule warned) as explain gives it
+        List<RunResult> evaluated = Replay.run(log, "?", false, RunLabel.ALL, -1, paths.models, paths.abstraction, 0,
+                paths.confirm);
         for (int i = 0; i < runs.size(); i++) {
             ReplayedRun run = reference.runs().get(i);
             JsonNode e = runs.get(i);
             String where = log + " run " + i;
+            Map<String, Double> baselines = new TreeMap<>();
+            e.get("run").get("properties").forEach(p -> baselines.put(p.get("property").asText(),
+                    p.get("beyond").isNull() ? null : p.get("beyond").asDouble()));
+            Map<String, Double> expectedBaselines = new TreeMap<>();
+            evaluated.get(i).properties().forEach(p -> expectedBaselines.put(p.property(), p.beyond()));
+            same(differ, "explain", where + " each property's baseline", expectedBaselines, baselines);
             List<String> after = new ArrayList<>();
             e.get("steps").forEach(s -> after.add(s.get("forecast").isNull() ? null
                     : printed(s.get("line").asLong(), s.get("forecast"))));
