@@ -271,7 +271,9 @@ final class PropertyLights {
         o.put("forecastWords", f == null ? "no forecast yet"
                 : f.basis() == Forecast.Basis.VIOLATED ? "no forecast: the property is violated"
                 : Boolean.FALSE.equals(skill) ? "no skill: the forecast did no better than the base rate"
-                : "P(violation) " + Math.round(f.probability() * 100) + "%, " + ForecastWords.time(f)
+                : "P(violation) " + Math.round(f.probability() * 100) + "%, "
+                // not warned: no countdown to a violation its rule does not expect
+                + (light == Light.WARNING ? ForecastWords.time(f) : "no warning")
                 + (skill == null ? " (skill not measured)" : ""));
         String recovery = recoveries.get(s.property().id());
         o.put("recovery", light == Light.WARNING ? null : recovery);

@@ -292,7 +292,10 @@ export function propertyForecast(p, t) {
     if (p.skill === false) return 'no skill: the forecast did no better than the base rate';
     if (f.basis === 'violated') return 'violated: no forecast to make';
     const distance = t && isOwn(p, t) && own(t) !== 'warning' ? distanceWords(f, t.warnsAt) : null;
-    return distance || chance(f.probability) + ' chance of a violation, ' + whenWords(f);
+    if (distance) return distance;
+    // not warned: no countdown to a violation its rule does not expect
+    if (p.state !== 'warning' && !(t && isOwn(p, t))) return 'P ' + num(f.probability, 2) + ', no warning';
+    return chance(f.probability) + ' chance of a violation, ' + whenWords(f);
   }
   if (!f) return p.forecastWords;
   const left = num(f.timeLeft, 0) + ' ' + f.unit + ' left';

@@ -223,7 +223,9 @@ class LivePageBrowserTest {
             JsonNode shown = JSON.readTree(page.eval("JSON.stringify((() => { const t = " + r1 + ";"
                     + " const text = s => (t.querySelector(s) || {}).textContent || '';"
                     + " return {now: text('.value-now'), verdict: text('.verdict'), lead: text('.lead'),"
-                    + " history: text('.history'), warning: text('.events li.warning'),"
+                    + " history: text('.history'),"
+                    + " warning: [...t.querySelectorAll('.events li.warning')].map(l => l.textContent)"
+                    + ".find(l => l.includes('WARNING at ')) || '',"
                     + " violation: [...t.querySelectorAll('.events li.violation')].map(l => l.textContent)"
                     + ".find(l => l.includes('VIOLATION of battery')) || '',"
                     + " series: t.querySelectorAll('svg.plot polyline.series').length}; })())"));
@@ -236,6 +238,7 @@ class LivePageBrowserTest {
                     + percent), shown.toString());
             assertTrue(shown.get("history").asText().matches("this run: warned t=.* \\(" + percent + "\\) \u2192 "
                     + "violated t=.* \\(" + percent + "\\).*"), shown.toString());
+            // the battery's warning among the others (the depleted run is warned of its abort too)
             assertTrue(shown.get("warning").asText().matches(".*WARNING at " + percent + ": .*"), shown.toString());
             assertTrue(shown.get("violation").asText().matches(".*VIOLATION of battery: " + percent), shown.toString());
             assertEquals(1, shown.get("series").asInt(), "the value over the run: " + shown);

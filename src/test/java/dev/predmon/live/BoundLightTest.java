@@ -81,7 +81,7 @@ class BoundLightTest {
         assertEquals("forecast", reserve.get("model").asText());
         assertEquals(0.62, reserve.get("forecast").get("probability").asDouble());
         assertEquals(55.0, reserve.get("forecast").get("value").asDouble());
-        assertEquals("P(violation) 62%, about 8.50 s to the violation (6.50-12.3 s) (skill not measured)",
+        assertEquals("P(violation) 62%, no warning (skill not measured)",
                 reserve.get("forecastWords").asText());
 
         b.event(t, LogEvent.of("a.log", new MonitorEvent.ForecastChanged(1, 30, f, Clock.SECONDS, 0, "reserve")));
@@ -96,6 +96,8 @@ class BoundLightTest {
         reserve = light(b, "reserve");
         assertEquals("yellow", reserve.get("light").asText());
         assertEquals(reason, reserve.get("words").asText());
+        assertEquals("P(violation) 62%, about 8.50 s to the violation (6.50-12.3 s) (skill not measured)",
+                reserve.get("forecastWords").asText(), "a warned forecast says when the violation comes");
         tile = b.status("a.log").get("logs").get(0);
         assertEquals("warning", tile.get("state").asText(), "the robot's state is its worst property's: " + tile);
         assertEquals("ok", tile.get("forecastState").asText(), "the battery's alarm is untouched: " + tile);

@@ -129,7 +129,8 @@ class PropertyLightsTest {
     }
 
     /**
-     * An absence's event forecast is on its light as a bound's value forecast is (a probability and a time, no value);
+     * An absence's event forecast is on its light as a bound's value forecast is (a probability, no value, and no
+     * countdown while it does not warn: its rule does not expect the violation);
      * one the training runs could not teach says why.
      */
     @Test
@@ -144,7 +145,7 @@ class PropertyLightsTest {
         assertEquals("forecast", light.get("model").asText());
         assertEquals(0.62, light.get("forecast").get("probability").asDouble(), 1e-9);
         assertTrue(light.get("forecast").get("value").isNull(), light.toString());
-        assertEquals("P(violation) 62%, about 40.0 s to the violation (20.0-90.0 s) (skill not measured)",
+        assertEquals("P(violation) 62%, no warning (skill not measured)",
                 light.get("forecastWords").asText());
 
         t.properties(statuses(Map.of("no-abort", new PropertyStatus(property("no-abort"), Verdict.HOLDS,
