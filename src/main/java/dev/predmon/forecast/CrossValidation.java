@@ -82,13 +82,18 @@ public final class CrossValidation {
      * A learned rule: its calibration and threshold, its variant and the optional clauses it keeps.
      *
      * @param validated whether held-out cases of both outcomes chose the threshold
-     * @param note      how it was chosen, in one line
+     * @param why       how it was chosen, in one line, without the threshold
      */
     public record Rule(Calibration calibration, double threshold, boolean validated, int variant, List<Boolean> kept,
-                       String note) {
+                       String why) {
 
         public Rule {
             kept = List.copyOf(kept);
+        }
+
+        /** How it was chosen, after its threshold: {@code 0.94 by cross-validation ...}, {@code default 0.50: ...}. */
+        public String note() {
+            return String.format(Locale.ROOT, validated ? "%.2f %s" : "default %.2f: %s", threshold, why);
         }
 
         /** Whether it keeps optional clause {@code i}. */
@@ -251,10 +256,8 @@ public final class CrossValidation {
         ThresholdChoice.Choice c = ThresholdChoice.choose(cases.stream().map(x -> new ThresholdChoice.Peak(
                 calibration.apply(x.peak()), x.violated(), before(x.caughtAt(variant, kept), x))).toList(),
                 space.what());
-        return c.validated()
-                ? new Rule(calibration, c.threshold(), true, variant, kept,
-                String.format(Locale.ROOT, "%.2f %s", c.threshold(), c.note()))
-                : new Rule(Calibration.IDENTITY, c.threshold(), false, variant, kept, c.note());
+        return new Rule(c.validated() ? calibration : Calibration.IDENTITY, c.threshold(), c.validated(), variant, kept,
+                c.note());
     }
 
     private static boolean before(double at, Case c) {

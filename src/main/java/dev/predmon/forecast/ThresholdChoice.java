@@ -43,7 +43,10 @@ public final class ThresholdChoice {
         }
     }
 
-    /** The chosen threshold, why in one line, and whether held-out runs of both outcomes chose it. */
+    /**
+     * The chosen threshold, why in one line (without the threshold: the rule that uses it says it), and whether
+     * held-out runs of both outcomes chose it.
+     */
     public record Choice(double threshold, String note, boolean validated) {
     }
 
@@ -60,8 +63,8 @@ public final class ThresholdChoice {
         long bad = peaks.stream().filter(Peak::violated).count();
         long good = peaks.size() - bad;
         if (bad == 0 || good == 0) {
-            return new Choice(DEFAULT, String.format(Locale.ROOT, "default %.2f: the %d held-out %s %s",
-                    DEFAULT, peaks.size(), what, bad == 0 ? "all held" : "all violated"), false);
+            return new Choice(DEFAULT, String.format(Locale.ROOT, "the %d held-out %s %s", peaks.size(), what,
+                    bad == 0 ? "all held" : "all violated"), false);
         }
         TreeSet<Double> distinct = new TreeSet<>();
         peaks.forEach(p -> distinct.add(p.probability()));

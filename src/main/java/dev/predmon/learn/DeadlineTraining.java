@@ -7,14 +7,12 @@ import dev.predmon.forecast.DeadlineRule;
 import dev.predmon.forecast.ForecastModel;
 import dev.predmon.forecast.Scorecard;
 import dev.predmon.forecast.Survival;
-import dev.predmon.forecast.ThresholdChoice;
 import dev.predmon.property.Property;
 import dev.predmon.property.Response;
 import dev.predmon.replay.ReplayedRun;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -108,11 +106,8 @@ public final class DeadlineTraining {
     static DeadlineRule rule(CrossValidation.Choice c) {
         CrossValidation.Rule x = c.rule();
         if (!x.validated()) {
-            // the choice's "default 0.50" is not this rule's threshold: an unvalidated deadline rule never warns on it
-            String prefix = String.format(Locale.ROOT, "default %.2f: ", ThresholdChoice.DEFAULT);
-            String why = x.note().startsWith(prefix) ? x.note().substring(prefix.length())
-                    : x.note() + "; no held-out obligation missed its deadline";
-            return DeadlineRule.unvalidated(why, c.baseline(),
+            // why, without the choice's default threshold: an unvalidated deadline rule never warns on a probability
+            return DeadlineRule.unvalidated(x.why(), c.baseline(),
                     DeadlineRule.marginOf(x.variant()), DeadlineRule.levelOf(x.variant()),
                     DeadlineRule.waitedOf(x.variant()));
         }
