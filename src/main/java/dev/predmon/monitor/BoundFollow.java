@@ -81,13 +81,13 @@ final class BoundFollow extends TrackedFollow {
         }
         Forecast f = told(tracker.reading(r.time(), v), r);
         recover(r, f);
-        decide(f, r, "at the new reading " + ForecastWords.fixed(read, 2));
+        decide(f, r, null, read);
     }
 
     @Override
     public void decide(IoPair pair, Matching.Step step, LogRecord trigger) {
         if (tracker != null && open) {
-            decide(tracker.last(), trigger, "after " + pair.input() + " -> " + pair.output());
+            decide(tracker.last(), trigger, pair, Double.NaN);
         }
     }
 
@@ -152,11 +152,17 @@ final class BoundFollow extends TrackedFollow {
         ended(r, byAction ? "action" : "forecast", raw, reason);
     }
 
-    /** The forecast rule's warning on {@code f}, made at {@code r} ({@code where}), if it warns. */
-    private void decide(Forecast f, LogRecord r, String where) {
+    /**
+     * The forecast rule's warning on {@code f}, made at {@code r} after {@code pair}, or at the new reading
+     * {@code read} when {@code pair} is null, if it warns. Where it was made is put in words only for a warning: a
+     * reading is judged at every record that carries one.
+     */
+    private void decide(Forecast f, LogRecord r, IoPair pair, double read) {
         if (!c.forecastRule() || f == null || active != null || violated || !tracker.warns(f, c.beyondNominal())) {
             return;
         }
+        String where = pair != null ? "after " + pair.input() + " -> " + pair.output()
+                : "at the new reading " + ForecastWords.fixed(read, 2);
         Forecast shown = model.shown(f);
         String reason = label() + ": " + tracker.reason(shown, where, model.mirrored())
                 + (bound.action() == null ? "" : "; do now: " + bound.action());

@@ -30,6 +30,12 @@ import java.util.Locale;
  */
 final class DeadlineFollow extends FollowBase {
 
+    /** Codes of {@link #shownCode} besides a percent: nothing told yet, novel, under 1% and over 99%. */
+    private static final int NONE = Integer.MIN_VALUE;
+    private static final int NOVEL = Integer.MIN_VALUE + 1;
+    private static final int BELOW_1 = Integer.MIN_VALUE + 2;
+    private static final int ABOVE_99 = Integer.MIN_VALUE + 3;
+
     private final Response response;
     private final Survival survival;
     private final DeadlineRule rule;
@@ -44,8 +50,8 @@ final class DeadlineFollow extends FollowBase {
     private long line = -1;
     /** The forecast of the obligation pending now, or null. */
     private Survival.Estimate current;
-    /** The pending obligation's forecast as last told ({@link #shown}), or null. */
-    private String told;
+    /** The pending obligation's forecast as last told ({@link #shownCode} of {@link #shown}), {@link #NONE} before. */
+    private int told = NONE;
     /** Whether an obligation ended at the last record, whether discharged, and after how long. */
     private boolean ended;
     private boolean discharged;
@@ -84,7 +90,7 @@ final class DeadlineFollow extends FollowBase {
                 active = null; // let go at a missed deadline (the checker's violation): the next one is judged afresh
             }
             current = null;
-            told = null;
+            told = NONE;
             pending = null;
             line = -1;
         }
@@ -110,8 +116,8 @@ final class DeadlineFollow extends FollowBase {
         c.deadlines.forecast(c.now.run, response, r, elapsed, raw, s);
         Survival.Estimate e = rule.calibrated(raw);
         current = e;
-        String shown = shown(e);
-        if (!shown.equals(told)) {
+        int shown = shownCode(e);
+        if (shown != told) {
             told = shown;
             c.events.accept(new MonitorEvent.ForecastChanged(r.time(), r.line(), null, r.clock(), c.now.run,
                     response.id(), e, d.unit().key));
@@ -128,7 +134,7 @@ final class DeadlineFollow extends FollowBase {
     public void reset() {
         super.reset();
         current = null;
-        told = null;
+        told = NONE;
         ended = false;
         discharged = false;
         judgedAt = Double.NaN;
@@ -153,6 +159,19 @@ final class DeadlineFollow extends FollowBase {
         double p = e.probability();
         long v = Math.round(p * 100);
         return p > 0 && v == 0 ? "<1%" : p < 1 && v == 100 ? ">99%" : v + "%";
+    }
+
+    /**
+     * {@link #shown} as a number, one per text it can be (the percent, {@link #NOVEL}, {@link #BELOW_1},
+     * {@link #ABOVE_99}), so that the forecast judged at every record is compared without being written.
+     */
+    static int shownCode(Survival.Estimate e) {
+        if (e.novel()) {
+            return NOVEL;
+        }
+        double p = e.probability();
+        long v = Math.round(p * 100);
+        return p > 0 && v == 0 ? BELOW_1 : p < 1 && v == 100 ? ABOVE_99 : (int) v;
     }
 
     /**

@@ -65,11 +65,11 @@ final class EventFollow extends TrackedFollow {
             return;
         }
         Forecast f = EventModel.shown(tracker.last());
-        String where = "after " + pair.input() + " -> " + pair.output();
         if (active != null && !violated && active.clause() == MonitorEvent.Clause.FORECAST
                 && !model.model().clauses().baseline() && f.probability() < tracker.threshold() - ForecastTracker.STEP) {
             ended(trigger, "forecast", Double.NaN, label() + ": the forecast no longer warns (" + ForecastWords
-                    .probability(f) + ", warning at " + ForecastWords.fixed(tracker.threshold(), 2) + ") " + where);
+                    .probability(f) + ", warning at " + ForecastWords.fixed(tracker.threshold(), 2) + ") "
+                    + where(pair));
             return;
         }
         if (!c.forecastRule() || active != null || violated || !model.warns(f)) {
@@ -77,7 +77,7 @@ final class EventFollow extends TrackedFollow {
         }
         var faulty = c.faultyAlive();
         warn(new MonitorEvent.Warning(trigger.time(), trigger.line(), faulty, null, c.now.pairs, trigger.clock(),
-                c.now.run, c.rule, f, reason(f, where), MonitorEvent.Clause.FORECAST, c.likeliestFaulty(faulty),
+                c.now.run, c.rule, f, reason(f, where(pair)), MonitorEvent.Clause.FORECAST, c.likeliestFaulty(faulty),
                 property.id()));
     }
 
@@ -107,6 +107,11 @@ final class EventFollow extends TrackedFollow {
     @Override
     Forecast shown(Forecast f) {
         return EventModel.shown(f);
+    }
+
+    /** The pair a recovery or a warning was made after, in words (built only for one: a decision runs every pair). */
+    private static String where(IoPair pair) {
+        return "after " + pair.input() + " -> " + pair.output();
     }
 
     /** The property's indicator now: {@link EventModel#BROKEN} once violated, else {@link EventModel#HOLDS}. */

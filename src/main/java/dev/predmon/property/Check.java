@@ -121,12 +121,12 @@ abstract class Check {
             if (Double.isNaN(v)) {
                 return null;
             }
-            Double before = Double.isNaN(last) ? null : last;
+            double before = last;
             last = v;
             if (!p.violatedBy(v)) {
                 return null;
             }
-            return new Verdict.Violated(r.line(), r.time(), v, before, p.violation(v));
+            return new Verdict.Violated(r.line(), r.time(), v, Double.isNaN(before) ? null : before, p.violation(v));
         }
 
         @Override

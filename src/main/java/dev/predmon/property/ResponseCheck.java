@@ -39,6 +39,15 @@ final class ResponseCheck extends Check {
     private double now;
     /** Seconds per tick of a log without time stamps, NaN when not given ({@link #countTicksAs}). */
     private double tickSeconds = Double.NaN;
+    /**
+     * {@link #first()} as last found, for the obligations as they were after {@code edits} changes (an obligation
+     * opened or closed, or a count moved) and at {@link #now} {@code firstNow}: the monitor asks for it several times
+     * a record, and one obligation is all that is open most of the time.
+     */
+    private Obligation nearestFound;
+    private long edits;
+    private long firstEdits = -1;
+    private double firstNow;
 
     private final Readings readings;
     /** The condition's value's slot in {@link #readings}, or -1 for a trigger that is an event. */
@@ -81,6 +90,7 @@ final class ResponseCheck extends Check {
                 Obligation o = open.get(instance(r));
                 if (o != null) {
                     o.count++;
+                    edits++;
                 }
             }
             now = now(r, ticks);
@@ -88,6 +98,7 @@ final class ResponseCheck extends Check {
                 Obligation o = it.next();
                 if (at(o) > o.deadline) {
                     it.remove();
+                    edits++;
                     obligations.closed(o.line, elapsed(o), false);
                     return new Verdict.Violated(r.line(), r.time(), null, null, missed(o));
                 }
@@ -96,6 +107,7 @@ final class ResponseCheck extends Check {
             if (responds) {
                 Obligation o = open.remove(instance(r));
                 if (o != null) {
+                    edits++;
                     obligations.closed(o.line, elapsed(o), true);
                 }
             }
@@ -129,6 +141,7 @@ final class ResponseCheck extends Check {
                 : BigDecimal.valueOf(d.amount()).divide(BigDecimal.valueOf(o.scale), MathContext.DECIMAL64)
                 .doubleValue());
         open.put(key, o);
+        edits++;
     }
 
     /** A tick of a log without time stamps lasts {@code seconds} (NaN: unknown, a tick counts as a second). */
@@ -149,13 +162,19 @@ final class ResponseCheck extends Check {
 
     /** The open obligation nearest its deadline (the earliest opened among equals), or null. */
     private Obligation first() {
-        Obligation first = null;
+        if (firstEdits == edits && (open.size() <= 1 || Double.compare(firstNow, now) == 0)) {
+            return nearestFound; // nothing it depends on changed: one obligation (or none) whatever the time, else the same time
+        }
+        Obligation nearest = null;
         for (Obligation o : open.values()) {
-            if (first == null || o.deadline - at(o) < first.deadline - at(first)) {
-                first = o;
+            if (nearest == null || o.deadline - at(o) < nearest.deadline - at(nearest)) {
+                nearest = o;
             }
         }
-        return first;
+        nearestFound = nearest;
+        firstEdits = edits;
+        firstNow = now;
+        return nearest;
     }
 
     /**
@@ -170,6 +189,7 @@ final class ResponseCheck extends Check {
             return null;
         }
         open.remove(key(o));
+        edits++;
         double last = now;
         now = r.time();
         obligations.closed(o.line, now - o.since, false);
@@ -241,6 +261,7 @@ final class ResponseCheck extends Check {
             obligations.closed(o.line, elapsed(o), false);
         }
         open.clear();
+        edits++;
         return new Verdict.Violated(r.line(), r.time(), null, null, "the scope ended before "
                 + p.response().brief() + " answered " + p.briefTrigger() + " at line " + first.line);
     }
@@ -277,6 +298,7 @@ final class ResponseCheck extends Check {
     @Override
     void reset() {
         open.clear();
+        edits++;
         held = false;
         answered = false;
         owing = false;
