@@ -1,6 +1,7 @@
 package dev.predmon.monitor;
 
 import dev.predmon.parse.LogRecord;
+import dev.predmon.parse.RecordKind;
 import dev.predmon.property.UnderWay;
 
 import java.util.Arrays;
@@ -28,6 +29,9 @@ final class ActionProgress {
      * is false), when this record changed whether it is under way; else null.
      */
     UnderWay record(LogRecord r) {
+        if (r.kind() != RecordKind.COMMAND) {
+            return null; // only a command starts or stops an action (UnderWay#starts, #ends)
+        }
         boolean before = underWay();
         UnderWay changed = null;
         for (int i = 0; i < messages.size(); i++) {

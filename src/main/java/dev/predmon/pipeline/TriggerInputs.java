@@ -63,7 +63,8 @@ public final class TriggerInputs {
                 continue;
             }
             long opened = checker.opened(i);
-            boolean trigger = p.trigger() != null && p.trigger().matches(r);
+            int asked = checker.triggered(i); // the checker's answer, when its step asked it: one match a record
+            boolean trigger = p.trigger() != null && (asked >= 0 ? asked == 1 : p.trigger().matches(r));
             if ((trigger || opened >= 0) && !classified) {
                 input = RunTiming.inputOf(abstraction, r);
                 classified = true;

@@ -34,6 +34,11 @@ abstract class Check {
 
     /** The line of the trigger whose obligation the last record opened, -1 when it opened none; set by the check. */
     long opened = -1;
+    /**
+     * Whether the last record was the property's trigger event, as the check asked it: 1 or 0, -1 when the check did not
+     * ask (no trigger event, or the record ended its step before); set by the check.
+     */
+    int triggered = -1;
 
     /**
      * How long the open obligation has been pending, in its deadline's unit (ticks, seconds, or occurrences of the

@@ -129,6 +129,7 @@ public final class PropertyChecker implements PropertyView {
             Check c = checks[i];
             c.reading = Double.NaN;
             c.opened = -1;
+            c.triggered = -1;
             made[i] = null;
             again[i] = false;
             if (violated[i] != null && !c.reads()) {
@@ -213,6 +214,15 @@ public final class PropertyChecker implements PropertyView {
     /** The line of the trigger whose obligation of property {@code index} the last record opened, or -1. */
     public long opened(int index) {
         return checks[index].opened;
+    }
+
+    /**
+     * Whether the last record was property {@code index}'s trigger event (a bounded response's), as its check asked
+     * it: 1 or 0; -1 when the check did not ask (no trigger event, out of its scope, violated, or ended its step
+     * before), so the caller asks itself.
+     */
+    public int triggered(int index) {
+        return checks[index].triggered;
     }
 
     /** The value the last record gave property {@code index} (a {@link Bound}), or NaN when it gave none. */

@@ -94,13 +94,23 @@ final class ResponseCheck extends Check {
                 }
             }
             now = now(r, ticks);
-            for (Iterator<Obligation> it = open.values().iterator(); it.hasNext(); ) {
-                Obligation o = it.next();
+            if (open.size() == 1) {
+                Obligation o = first(); // the only one, found once while it is open
                 if (at(o) > o.deadline) {
-                    it.remove();
+                    open.clear();
                     edits++;
                     obligations.closed(o.line, elapsed(o), false);
                     return new Verdict.Violated(r.line(), r.time(), null, null, missed(o));
+                }
+            } else {
+                for (Iterator<Obligation> it = open.values().iterator(); it.hasNext(); ) {
+                    Obligation o = it.next();
+                    if (at(o) > o.deadline) {
+                        it.remove();
+                        edits++;
+                        obligations.closed(o.line, elapsed(o), false);
+                        return new Verdict.Violated(r.line(), r.time(), null, null, missed(o));
+                    }
                 }
             }
             responds = p.response().matches(r);
@@ -240,7 +250,9 @@ final class ResponseCheck extends Check {
      */
     private boolean fires(LogRecord r) {
         if (p.trigger() != null) {
-            return p.trigger().matches(r) && !answered;
+            boolean event = p.trigger().matches(r);
+            triggered = event ? 1 : 0;
+            return event && !answered;
         }
         double v = readings.value(slot); // p.condition().value().valueOf(r), read once for every property
         if (!Double.isNaN(v)) {
