@@ -44,7 +44,7 @@ final class Rules {
                 return true;
             }
             for (Reply r : replies) {
-                if (r.symbol.contains(Definition.LOC)) {
+                if (r.located) {
                     return true;
                 }
             }
@@ -52,8 +52,11 @@ final class Rules {
         }
     }
 
-    /** A compiled reply: exactly one of {@code any}, {@code values}, {@code band} is set. */
-    private record Reply(boolean any, Set<String> values, Band band, String symbol) {
+    /**
+     * A compiled reply: exactly one of {@code any}, {@code values}, {@code band} is set; {@code located} when its
+     * symbol contains {@code {loc}} (looked up once here, not at every reply it maps).
+     */
+    private record Reply(boolean any, Set<String> values, Band band, String symbol, boolean located) {
         /** @param number the value parsed once per record, NaN when it is not a decimal number */
         boolean matches(String value, double number) {
             if (any) {
@@ -112,7 +115,7 @@ final class Rules {
             List<Reply> replies = new ArrayList<>();
             for (Definition.Reply p : r.replies()) {
                 replies.add(new Reply(p.any(), p.values() == null ? null : Set.copyOf(p.values()), p.range(),
-                        p.symbol()));
+                        p.symbol(), p.symbol().contains(Definition.LOC)));
             }
             // An array, not a List: rules have one to a dozen replies, and List.of's two classes (up to two elements,
             // more) made the JIT recompile classify's reply loop whenever the other kind came along.
@@ -142,17 +145,18 @@ final class Rules {
         }
         String value = r.reply();
         double number = rule.numeric ? Decimals.parse(value) : Double.NaN;
-        String template = null;
+        Reply taken = null;
         for (Reply p : rule.replies) {
             if (p.matches(value, number)) {
-                template = p.symbol;
+                taken = p;
                 break;
             }
         }
-        if (template == null) {
+        if (taken == null) {
             return unmapped(r, UnmappedMessage.Kind.REPLY, r.reply());
         }
-        if (template.contains(Definition.LOC)) {
+        String template = taken.symbol;
+        if (taken.located) {
             String abbreviation = route.location != null ? route.location : locations.get(r.reply().trim());
             if (abbreviation == null) {
                 abbreviation = route.client;

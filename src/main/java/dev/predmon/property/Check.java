@@ -29,8 +29,25 @@ abstract class Check {
         return Verdict.HOLDS;
     }
 
+    /**
+     * Told how each obligation of a bounded response ended: what learning measures the deadline forecast on
+     * ({@code forecast.Survival}).
+     */
+    @FunctionalInterface
+    interface Obligations {
+        /**
+         * An obligation ended.
+         *
+         * @param line       the line of the trigger that opened it
+         * @param duration   how long it was pending, in its deadline's unit
+         * @param discharged true when its response came; false when it was let go still pending (the deadline
+         *                   passed, its scope closed, or the run ended): a censored duration
+         */
+        void closed(long line, double duration, boolean discharged);
+    }
+
     /** Told how each obligation of a bounded response ended; set by the checker. */
-    PropertyChecker.Obligations obligations = (line, duration, discharged) -> { };
+    Obligations obligations = (line, duration, discharged) -> { };
 
     /** The line of the trigger whose obligation the last record opened, -1 when it opened none; set by the check. */
     long opened = -1;

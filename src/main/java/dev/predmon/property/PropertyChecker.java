@@ -37,27 +37,14 @@ public final class PropertyChecker implements PropertyView {
         void violated(int index, Property property, Verdict.Violated verdict);
     }
 
-    /**
-     * Told how each obligation of a bounded response ended: what learning measures the deadline forecast on
-     * ({@code forecast.Survival}).
-     */
-    @FunctionalInterface
-    public interface Obligations {
-        /**
-         * An obligation ended.
-         *
-         * @param line       the line of the trigger that opened it
-         * @param duration   how long it was pending, in its deadline's unit
-         * @param discharged true when its response came; false when it was let go still pending (the deadline
-         *                   passed, its scope closed, or the run ended): a censored duration
-         */
-        void closed(long line, double duration, boolean discharged);
-    }
-
     /** Told each obligation's end with its property's position. */
     @FunctionalInterface
     public interface ObligationListener {
-        /** Property {@code index}'s obligation ended, as {@link Obligations#closed} tells it. */
+        /**
+         * Property {@code index}'s obligation, opened by the trigger at {@code line}, ended after {@code duration} in
+         * its deadline's unit: {@code discharged} when its response came, else let go still pending (a censored
+         * duration).
+         */
         void closed(int index, Property property, long line, double duration, boolean discharged);
     }
 
@@ -73,6 +60,9 @@ public final class PropertyChecker implements PropertyView {
     /** Per property, its value's slot in {@link #readings} (a bound's), or -1. */
     private final int[] slots;
     private final boolean[] open;
+    /** Per property, whether its scope is the whole run, and whether its check reads a value ({@link Check#reads}). */
+    private final boolean[] global;
+    private final boolean[] reads;
     private final Verdict.Violated[] violated;
     /** Per property, whether the run showed evidence for it ({@link Check#evidences}), and whether its scope opened. */
     private final boolean[] evidenced;
@@ -95,12 +85,16 @@ public final class PropertyChecker implements PropertyView {
         this.checks = new Check[this.properties.size()];
         this.scopes = new Scope[checks.length];
         this.slots = new int[checks.length];
+        this.global = new boolean[checks.length];
+        this.reads = new boolean[checks.length];
         this.readings = new Readings(this.properties);
         for (int i = 0; i < checks.length; i++) {
             Property p = this.properties.get(i);
             checks[i] = Check.of(p, readings);
             scopes[i] = p.scope();
             slots[i] = p instanceof Bound b ? readings.slot(b.value()) : -1;
+            global[i] = scopes[i].global();
+            reads[i] = checks[i].reads();
         }
         this.open = new boolean[checks.length];
         this.violated = new Verdict.Violated[checks.length];
@@ -132,12 +126,12 @@ public final class PropertyChecker implements PropertyView {
             c.triggered = -1;
             made[i] = null;
             again[i] = false;
-            if (violated[i] != null && !c.reads()) {
+            if (violated[i] != null && !reads[i]) {
                 continue; // the verdict is final; only a bound still reads its value, for the forecast
             }
             Scope s = scopes[i];
             Verdict.Violated v;
-            if (s.global()) {
+            if (global[i]) {
                 v = c.step(r, ticks);
                 if (!evidenced[i]) {
                     evidenced[i] = c.evidences(r);
@@ -164,7 +158,7 @@ public final class PropertyChecker implements PropertyView {
                 }
             }
             judge(i, c, v);
-            if (!inScope(i) && c.reads()) {
+            if (!inScope(i) && reads[i]) {
                 now[i] = false; // out of its scope a bound cannot be violated: its violation ends with the scope
             }
             if (v != null && violated[i] == null) {
@@ -216,11 +210,7 @@ public final class PropertyChecker implements PropertyView {
         return checks[index].opened;
     }
 
-    /**
-     * Whether the last record was property {@code index}'s trigger event (a bounded response's), as its check asked
-     * it: 1 or 0; -1 when the check did not ask (no trigger event, out of its scope, violated, or ended its step
-     * before), so the caller asks itself.
-     */
+    /** Whether the last record was property {@code index}'s trigger event, 1 or 0; -1 when its check did not ask. */
     public int triggered(int index) {
         return checks[index].triggered;
     }
@@ -246,7 +236,7 @@ public final class PropertyChecker implements PropertyView {
      */
     @Override
     public boolean inScope(int index) {
-        return scopes[index].global() || open[index];
+        return global[index] || open[index];
     }
 
     /**
