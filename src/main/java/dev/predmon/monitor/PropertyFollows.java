@@ -37,7 +37,8 @@ import java.util.Map;
 final class PropertyFollows {
 
     private final PropertyChecker checker;
-    private final PropertyFollow[] follows;
+    /** Typed by their common base, not the interface: one call per property and record, bound without a lookup. */
+    private final FollowBase[] follows;
     private final FollowContext c;
     /** The headline property's follower, or null without one. */
     private final BoundFollow headline;
@@ -62,7 +63,7 @@ final class PropertyFollows {
     private PropertyFollows(ModelSet models, Abstraction abstraction, List<Property> properties, FollowContext c) {
         this.c = c;
         this.checker = new PropertyChecker(properties, (i, p, v) -> { });
-        this.follows = new PropertyFollow[properties.size()];
+        this.follows = new FollowBase[properties.size()];
         ForecastModel forecast = models.forecast();
         BoundFollow head = null;
         TriggerInputs began = null;
@@ -102,25 +103,25 @@ final class PropertyFollows {
         if (triggers != null) {
             triggers.record(checker, r);
         }
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.record(checker, r);
         }
     }
 
     /** A compacted pair: every forecast after it, then the matching's warning, then the forecasts' own warnings. */
     void pair(IoPair pair, Matching.Step step, LogRecord trigger) {
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.pair(pair, step, trigger);
         }
         matching(step, trigger);
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.decide(pair, step, trigger);
         }
     }
 
     /** A gap in the trace at {@code line}. */
     void gap(long line) {
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.gap(line);
         }
     }
@@ -131,7 +132,7 @@ final class PropertyFollows {
      */
     void ending(LogRecord first) {
         checker.overdue(first);
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.overdue(checker, first);
         }
     }
@@ -141,7 +142,7 @@ final class PropertyFollows {
         if (last == null) {
             return;
         }
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.runEnded(last, why);
         }
     }
@@ -153,14 +154,14 @@ final class PropertyFollows {
             triggers.reset();
         }
         matchingSpent = false;
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.reset();
         }
     }
 
     void countTicksAs(TickSeconds t) {
         checker.countTicksAs(t.seconds());
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             f.countTicksAs(t);
         }
     }
@@ -178,7 +179,7 @@ final class PropertyFollows {
     /** Every property now, in the abstraction's order. */
     List<PropertyStatus> statuses() {
         List<PropertyStatus> all = new ArrayList<>(follows.length);
-        for (PropertyFollow f : follows) {
+        for (FollowBase f : follows) {
             all.add(f.status(checker));
         }
         return all;

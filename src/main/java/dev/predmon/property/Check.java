@@ -10,6 +10,15 @@ abstract class Check {
 
     /** The value this record gave a {@link Bound}, NaN for any other record or kind. */
     double reading = Double.NaN;
+    /**
+     * Whether the checker will keep nothing of a violation this record makes but that it made one (the property is
+     * violated already, and its first violation is its verdict): a bound then answers {@link #AGAIN} instead of
+     * putting the reading in words at every reading of a long violation. Set by the checker.
+     */
+    boolean wordless;
+
+    /** A violation the checker keeps nothing of but that it happened ({@link #wordless}). */
+    static final Verdict.Violated AGAIN = new Verdict.Violated(0, Double.NaN, null, null, "violated again");
 
     /**
      * The next record of the segment.
@@ -147,6 +156,9 @@ abstract class Check {
             last = v;
             if (!p.violatedBy(v)) {
                 return null;
+            }
+            if (wordless) {
+                return AGAIN;
             }
             return new Verdict.Violated(r.line(), r.time(), v, Double.isNaN(before) ? null : before, p.violation(v));
         }

@@ -124,6 +124,7 @@ public final class PropertyChecker implements PropertyView {
             c.reading = Double.NaN;
             c.opened = -1;
             c.triggered = -1;
+            c.wordless = now[i] && violated[i] != null; // judge keeps no violation it makes: neither made nor first
             made[i] = null;
             again[i] = false;
             if (violated[i] != null && !reads[i]) {
