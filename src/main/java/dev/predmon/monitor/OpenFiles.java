@@ -5,8 +5,8 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.OperatingSystemMXBean;
 import java.nio.file.FileSystemException;
 import java.util.Iterator;
-import java.util.LinkedHashSet;
-import java.util.Set;
+import java.util.LinkedHashMap;
+import java.util.Map;
 
 /**
  * The files a {@link Fleet}'s logs hold open, kept within what the process may open ({@code ulimit -n}): a fleet
@@ -26,8 +26,11 @@ final class OpenFiles {
 
     private int budget;
     private int open;
-    /** The logs holding files open, the one active longest ago first. */
-    private final Set<WatchedLog> byActivity = new LinkedHashSet<>();
+    /**
+     * The logs holding files open, the one active longest ago first: in access order, so that a log that had
+     * something new moves to the end in one lookup, without a new entry (a remove and an add per record read).
+     */
+    private final Map<WatchedLog, Boolean> byActivity = new LinkedHashMap<>(16, 0.75f, true);
     private boolean told;
 
     OpenFiles(int budget) {
@@ -73,9 +76,8 @@ final class OpenFiles {
         log.openFiles = now;
         if (now == 0) {
             byActivity.remove(log);
-        } else if (active || !byActivity.contains(log)) {
-            byActivity.remove(log);
-            byActivity.add(log);
+        } else if (active || !byActivity.containsKey(log)) {
+            byActivity.put(log, Boolean.TRUE); // to the end
         }
     }
 
@@ -104,7 +106,7 @@ final class OpenFiles {
      */
     boolean relieve(WatchedLog keep) throws IOException {
         int target = budget - budget / 10;
-        for (Iterator<WatchedLog> i = byActivity.iterator(); i.hasNext() && open > target; ) {
+        for (Iterator<WatchedLog> i = byActivity.keySet().iterator(); i.hasNext() && open > target; ) {
             WatchedLog log = i.next();
             if (log != keep && !log.watcher().replacing() && log.watcher().release()) {
                 open -= log.openFiles;
