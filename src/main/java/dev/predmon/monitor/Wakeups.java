@@ -66,9 +66,11 @@ final class Wakeups implements AutoCloseable {
     private final BiConsumer<Path, String> unwatched;
     private final Set<Path> toldUnwatched = new HashSet<>();
     private long nextPass = System.nanoTime();
-    /** When changes were last taken, and the logs of the last {@link #due} that were only announced as written. */
+    /**
+     * When changes were last taken. Which logs of the last {@link #due} were only announced as written is each log's
+     * {@link WatchedLog#onlyWritten} (a set of them cost two lookups per log polled at robot pace).
+     */
     private long lastTaken = System.nanoTime() - GATHER_NANOS;
-    private final Set<WatchedLog> written = new HashSet<>();
     /** What the last {@link #due} gave: one set, cleared at each call, not one per wakeup. */
     private final Set<WatchedLog> due = new LinkedHashSet<>();
     private boolean rescan;
@@ -184,8 +186,10 @@ final class Wakeups implements AutoCloseable {
             wait = Math.min(wait, at - now);
         }
         Set<WatchedLog> out = due;
+        for (WatchedLog log : out) {
+            log.onlyWritten = false;
+        }
         out.clear();
-        written.clear();
         if (watch == null) {
             TimeUnit.NANOSECONDS.sleep(Math.max(0, wait));
         } else {
@@ -241,7 +245,7 @@ final class Wakeups implements AutoCloseable {
         } else if (c.kind() == DirectoryWatch.Kind.MODIFIED) {
             for (WatchedLog log : named) {
                 if (out.add(log)) {
-                    written.add(log);
+                    log.onlyWritten = true;
                 }
             }
         } else {
@@ -266,7 +270,7 @@ final class Wakeups implements AutoCloseable {
         }
         for (WatchedLog log : logs) {
             out.add(log);
-            written.remove(log);
+            log.onlyWritten = false;
         }
     }
 
@@ -275,7 +279,7 @@ final class Wakeups implements AutoCloseable {
      * or deleted at its path, so its poll need not look at the path ({@link LogWatcher#pollWritten()}).
      */
     boolean onlyWritten(WatchedLog log) {
-        return written.contains(log);
+        return log.onlyWritten;
     }
 
     /** Stops watching {@code w}; its logs go back to {@link #add}, where they are watched again or polled. */
