@@ -63,7 +63,7 @@ final class Listing {
     }
 
     /**
-     * The log files directly in {@code dir}, sorted: its {@code *.log} and {@code *.txt} files and its ROS 2
+     * The log files directly in {@code dir}, in the order listed: its {@code *.log} and {@code *.txt} files and its ROS 2
      * recordings; none for a directory that is gone.
      */
     List<Entry> directory(Path dir) throws IOException {
@@ -71,8 +71,9 @@ final class Listing {
         Path dirKey = dir.toAbsolutePath().normalize();
         try (DirectoryStream<Path> entries = Files.newDirectoryStream(dir)) {
             for (Path p : entries) {
-                Path key = dirKey.resolve(p.getFileName());
-                boolean logName = LogSources.isLogName(p);
+                Path name = p.getFileName();
+                Path key = dirKey.resolve(name);
+                boolean logName = LogSources.isLogName(name.toString());
                 Object id = logName ? known.get(key) : null;
                 if (id != null) {
                     out.add(new Entry(p, key, id, true)); // a log file at the last look: no stat
@@ -86,8 +87,12 @@ final class Listing {
         } catch (NoSuchFileException | NotDirectoryException gone) {
             return List.of(); // moved away or replaced: its logs are looked for again at the next rescan
         }
-        out.sort(BY_PATH);
-        return out;
+        return out; // unsorted: sorted only when the look found something other than the last one
+    }
+
+    /** Sorts a name's files by path, as they are listed. */
+    static void sort(List<Entry> entries) {
+        entries.sort(BY_PATH);
     }
 
     /** The files below the glob's fixed leading directories whose path from there matches the rest of the glob. */

@@ -96,7 +96,7 @@ public final class LogSources {
      * by its first name. A directory's log listed by the last look is not looked at again ({@link Listing}).
      */
     public synchronized List<Path> find() throws IOException {
-        return look(new ArrayList<>()).stream().map(Listing.Entry::path).toList();
+        return look(new ArrayList<>(), true).stream().map(Listing.Entry::path).toList();
     }
 
     /**
@@ -105,7 +105,7 @@ public final class LogSources {
      */
     public synchronized List<Path> findNew() throws IOException {
         List<Path> fresh = new ArrayList<>();
-        look(fresh);
+        look(fresh, false);
         return fresh;
     }
 
@@ -119,11 +119,23 @@ public final class LogSources {
         return listing.stats();
     }
 
-    /** The files the names stand for now; those the last look did not list also go to {@code fresh}. */
-    private List<Listing.Entry> look(List<Path> fresh) throws IOException {
-        Map<Path, Listing.Entry> found = new LinkedHashMap<>();
+    /**
+     * The files the names stand for now, in order if {@code ordered}; those the last look did not list also go to
+     * {@code fresh}.
+     */
+    private List<Listing.Entry> look(List<Path> fresh, boolean ordered) throws IOException {
+        List<List<Listing.Entry>> expanded = new ArrayList<>();
         for (Name name : names) {
-            for (Listing.Entry e : expand(name, listing)) {
+            expanded.add(expand(name, listing));
+        }
+        if (expanded.size() == 1 && expanded.get(0).size() == listed.size()
+                && expanded.get(0).stream().allMatch(Listing.Entry::remembered)) {
+            // one directory holding just the files of the last look: it chose among them then, and none is fresh
+            return ordered ? sorted(expanded.get(0)) : expanded.get(0);
+        }
+        Map<Path, Listing.Entry> found = new LinkedHashMap<>();
+        for (List<Listing.Entry> files : expanded) {
+            for (Listing.Entry e : sorted(files)) {
                 found.putIfAbsent(e.key(), e);
             }
         }
@@ -144,6 +156,12 @@ public final class LogSources {
         out.stream().filter(e -> !listed.containsKey(e.key())).forEach(e -> fresh.add(e.path()));
         listed.clear();
         out.stream().filter(e -> e.id() != null).forEach(e -> listed.put(e.key(), e.id()));
+        return out;
+    }
+
+    private static List<Listing.Entry> sorted(List<Listing.Entry> files) {
+        List<Listing.Entry> out = new ArrayList<>(files);
+        Listing.sort(out);
         return out;
     }
 
@@ -249,8 +267,11 @@ public final class LogSources {
      * recordings are its logs too, see {@link Recordings#isRecording}).
      */
     static boolean isLogName(Path p) {
-        String n = p.getFileName().toString();
-        return n.endsWith(".log") || n.endsWith(".txt");
+        return isLogName(p.getFileName().toString());
+    }
+
+    static boolean isLogName(String name) {
+        return name.endsWith(".log") || name.endsWith(".txt");
     }
 
     /**

@@ -148,6 +148,10 @@ class LogSourcesTest {
         assertEquals(List.of(c), s.findNew());
         assertEquals(first + 3, s.stats(), "c.log and notes.md");
         assertEquals(List.of(a, b, c), s.find(), "a full look still lists every log");
+        Files.delete(b);
+        assertEquals(List.of(), s.findNew());
+        file("d/b.log");
+        assertEquals(List.of(b), s.findNew(), "a log deleted and created again between two looks is new");
     }
 
     /** A rotation renames a followed log to another log's name and creates a new one: two files, two logs. */
