@@ -151,7 +151,7 @@ class LogSourcesTest {
         Files.delete(b);
         assertEquals(List.of(), s.findNew());
         file("d/b.log");
-        assertEquals(List.of(b), s.findNew(), "a log deleted and created again between two looks is new");
+        assertEquals(List.of(b), s.findNew(), "a log gone at one look and back at the next is new");
     }
 
     /** A rotation renames a followed log to another log's name and creates a new one: two files, two logs. */
