@@ -68,6 +68,8 @@ abstract class DirectoryWatch implements AutoCloseable {
     /** The writes and overflows among {@link #queued}: each once. */
     private final Set<Change> modified = new HashSet<>();
     private final List<Key> queuedInvalid = new ArrayList<>();
+    /** How many times {@link #take} took the queue: a write marked as queued since the last take is queued. */
+    private volatile long takes;
     /** Whether {@link #take} waits for a change. */
     private boolean waiting;
     private RuntimeException failure;
@@ -177,6 +179,7 @@ abstract class DirectoryWatch implements AutoCloseable {
             }
             List<Change> out = queued;
             queued = new ArrayList<>();
+            takes++;
             modified.clear();
             invalid.addAll(queuedInvalid);
             queuedInvalid.clear();
@@ -185,14 +188,30 @@ abstract class DirectoryWatch implements AutoCloseable {
     }
 
     /**
+     * How many times the queue was taken. A reading thread that read a write after its file's last write was queued
+     * while this count has not changed since, need not queue it again: the earlier one is not taken yet (or is in
+     * its own batch), and the file is read after this write in any case, since the count changes before the take
+     * returns.
+     */
+    final long takes() {
+        return takes;
+    }
+
+    /**
      * Queues what the reading thread read for {@link #take}: a write to a file already queued as written counted
      * once, and beyond {@link #MAX_QUEUED} changes (the following thread lagging far behind) a directory's further
      * creations and deletions as one overflow, after which every log of it is looked at.
+     *
+     * @param unique the batch's writes are not queued already (the reading thread saw to it with {@link #takes})
      */
-    final void queue(List<Change> batch, List<? extends Key> gone) {
+    final void queue(List<Change> batch, List<? extends Key> gone, boolean unique) {
         synchronized (lock) {
             boolean was = queued.isEmpty() && queuedInvalid.isEmpty();
             for (Change c : batch) {
+                if (c.kind() == Kind.MODIFIED && unique) {
+                    queued.add(c);
+                    continue;
+                }
                 if (c.kind() == Kind.MODIFIED || c.kind() == Kind.OVERFLOW) {
                     if (!modified.add(c)) {
                         continue; // queued already: one read takes both writes

@@ -1,8 +1,7 @@
 package dev.predmon.monitor;
 
-import com.sun.jna.Library;
 import com.sun.jna.Native;
-import com.sun.jna.NativeLong;
+import com.sun.jna.NativeLibrary;
 import com.sun.jna.Platform;
 import com.sun.jna.Pointer;
 
@@ -19,26 +18,28 @@ import java.util.Set;
 /** Linux's inotify calls, through JNA, and what their errors mean. */
 final class Inotify {
 
-    /** The C library's calls that inotify takes. */
-    interface LibC extends Library {
-        int inotify_init1(int flags);
+    /** The library these calls are bound to, once bound (JNA binds a class once); guarded by the class. */
+    private static String bound;
 
-        int inotify_add_watch(int fd, byte[] path, int mask);
+    // The C library's calls that inotify takes, bound directly (JNA's direct mapping: a fraction of a microsecond
+    // per call, where an interface's proxy takes several). size_t and ssize_t are longs: 64-bit platforms only.
+    static native int inotify_init1(int flags);
 
-        int inotify_rm_watch(int fd, int wd);
+    static native int inotify_add_watch(int fd, byte[] path, int mask);
 
-        NativeLong read(int fd, Pointer buf, NativeLong count);
+    static native int inotify_rm_watch(int fd, int wd);
 
-        NativeLong write(int fd, Pointer buf, NativeLong count);
+    static native long read(int fd, Pointer buf, long count);
 
-        int poll(Pointer fds, NativeLong nfds, int timeout);
+    static native long write(int fd, Pointer buf, long count);
 
-        int eventfd(int initval, int flags);
+    static native int poll(Pointer fds, long nfds, int timeout);
 
-        int close(int fd);
+    static native int eventfd(int initval, int flags);
 
-        String strerror(int errnum);
-    }
+    static native int close(int fd);
+
+    static native Pointer strerror(int errnum);
 
     static final int IN_MODIFY = 0x2;
     static final int IN_ATTRIB = 0x4;
@@ -64,8 +65,8 @@ final class Inotify {
     private static final int ENOTDIR = 20;
     private static final int ENOSPC = 28;
     /** Where those flag values hold (asm-generic): not alpha, mips, parisc, sparc. */
-    private static final Set<String> ARCHITECTURES = Set.of("x86-64", "x86", "aarch64", "arm", "ppc64le", "riscv64",
-            "s390x", "loongarch64");
+    private static final Set<String> ARCHITECTURES = Set.of("x86-64", "aarch64", "ppc64le", "riscv64", "s390x",
+            "loongarch64");
     /** How the JDK spells a path for the system, so that a directory is the one its Path names. */
     private static final Charset PATHS = Charset.forName(System.getProperty("sun.jnu.encoding",
             Charset.defaultCharset().name()));
@@ -73,16 +74,30 @@ final class Inotify {
     private Inotify() {
     }
 
-    /** The C library through JNA, or null where inotify cannot be had this way (another system, JNA not loadable). */
-    static LibC load(String library) {
-        try {
-            if (!Platform.isLinux() || !ARCHITECTURES.contains(Platform.ARCH)) {
-                return null;
-            }
-            return Native.load(library, LibC.class);
-        } catch (LinkageError | RuntimeException e) {
-            return null; // no native library for this platform, or none by that name: the JDK's watch service
+    /**
+     * Binds inotify's calls to the C library {@code library} through JNA, if not done yet; false where inotify cannot
+     * be had this way (another system, a 32-bit one, JNA or the library not loadable, bound to another library).
+     */
+    static synchronized boolean bind(String library) {
+        if (bound != null) {
+            return bound.equals(library);
         }
+        try {
+            if (!Platform.isLinux() || !Platform.is64Bit() || !ARCHITECTURES.contains(Platform.ARCH)) {
+                return false;
+            }
+            Native.register(Inotify.class, NativeLibrary.getInstance(library));
+            bound = library;
+            return true;
+        } catch (LinkageError | RuntimeException e) {
+            return false; // no native library for this platform, or none by that name: the JDK's watch service
+        }
+    }
+
+    /** What the system says error {@code errno} is. */
+    static String message(int errno) {
+        Pointer p = strerror(errno);
+        return p != null ? p.getString(0) : "error " + errno;
     }
 
     /** {@code path} as the system takes it: the JDK's spelling, ended by a NUL. */
@@ -104,13 +119,13 @@ final class Inotify {
     }
 
     /** Why inotify_add_watch failed for {@code dir}, as the JDK's watch service would say it. */
-    static IOException registerFailed(LibC c, Path dir, int errno) {
+    static IOException registerFailed(Path dir, int errno) {
         return switch (errno) {
             case ENOSPC -> new IOException("User limit of inotify watches reached");
             case EACCES -> new AccessDeniedException(dir.toString());
             case ENOENT -> new NoSuchFileException(dir.toString());
             case ENOTDIR -> new NotDirectoryException(dir.toString());
-            default -> new FileSystemException(dir.toString(), null, c.strerror(errno));
+            default -> new FileSystemException(dir.toString(), null, message(errno));
         };
     }
 }

@@ -1,7 +1,6 @@
 package dev.predmon.monitor;
 
 import com.sun.jna.Memory;
-import com.sun.jna.NativeLong;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -52,7 +51,6 @@ final class InotifyWatch extends DirectoryWatch {
     /** The largest event: its 16-byte header and a name of 255 bytes with its NUL. */
     private static final int LARGEST_EVENT = 16 + 256;
 
-    private final Inotify.LibC c;
     private final int fd;
     /** An eventfd that {@link #close} writes to, to end the reading thread's poll(). */
     private final int wake;
@@ -63,8 +61,7 @@ final class InotifyWatch extends DirectoryWatch {
     /** While set, the reading thread reads nothing (tests let the kernel's queue fill). */
     private volatile boolean held;
 
-    private InotifyWatch(Inotify.LibC c, int fd, int wake) {
-        this.c = c;
+    private InotifyWatch(int fd, int wake) {
         this.fd = fd;
         this.wake = wake;
         reader = new Thread(this::read, "predmon-notify");
@@ -77,21 +74,20 @@ final class InotifyWatch extends DirectoryWatch {
      * or no inotify instance (the JDK's watch service then says why, or works where this failed).
      */
     static DirectoryWatch open(String library) {
-        Inotify.LibC c = Inotify.load(library);
-        if (c == null) {
+        if (!Inotify.bind(library)) {
             return null;
         }
         try {
-            int fd = c.inotify_init1(NONBLOCK | CLOEXEC);
+            int fd = Inotify.inotify_init1(NONBLOCK | CLOEXEC);
             if (fd < 0) {
                 return null;
             }
-            int wake = c.eventfd(0, NONBLOCK | CLOEXEC);
+            int wake = Inotify.eventfd(0, NONBLOCK | CLOEXEC);
             if (wake < 0) {
-                c.close(fd);
+                Inotify.close(fd);
                 return null;
             }
-            return new InotifyWatch(c, fd, wake);
+            return new InotifyWatch(fd, wake);
         } catch (LinkageError | RuntimeException e) {
             return null; // a C library without inotify's calls
         }
@@ -103,9 +99,9 @@ final class InotifyWatch extends DirectoryWatch {
             throw new IOException("the notification is closed");
         }
         synchronized (byWd) {
-            int wd = c.inotify_add_watch(fd, Inotify.spelling(dir), Inotify.MASK);
+            int wd = Inotify.inotify_add_watch(fd, Inotify.spelling(dir), Inotify.MASK);
             if (wd < 0) {
-                throw Inotify.registerFailed(c, dir, Inotify.errno());
+                throw Inotify.registerFailed(dir, Inotify.errno());
             }
             // The same directory under another spelling is the same watch descriptor: the same key.
             InotifyDirectory d = byWd.get(wd);
@@ -121,7 +117,7 @@ final class InotifyWatch extends DirectoryWatch {
     void cancel(InotifyDirectory d) {
         synchronized (byWd) {
             if (!closed) {
-                c.inotify_rm_watch(fd, d.wd);
+                Inotify.inotify_rm_watch(fd, d.wd);
             }
         }
     }
@@ -134,13 +130,11 @@ final class InotifyWatch extends DirectoryWatch {
     private void read() {
         Memory buffer = new Memory(BUFFER);
         ByteBuffer events = buffer.getByteBuffer(0, BUFFER).order(ByteOrder.nativeOrder());
-        NativeLong size = new NativeLong(BUFFER);
         Memory fds = new Memory(16);
         fds.setInt(0, fd);
         fds.setShort(4, POLLIN);
         fds.setInt(8, wake);
         fds.setShort(12, POLLIN);
-        NativeLong two = new NativeLong(2);
         Events parsed = new Events();
         try {
             while (!closed) {
@@ -150,14 +144,14 @@ final class InotifyWatch extends DirectoryWatch {
                 }
                 boolean any = false;
                 while (true) {
-                    long n = c.read(fd, buffer, size).longValue();
+                    long n = Inotify.read(fd, buffer, BUFFER);
                     if (n < 0) {
                         int errno = Inotify.errno();
                         if (errno == EINTR) {
                             continue;
                         }
                         if (errno != EAGAIN) {
-                            throw new IllegalStateException("reading inotify: " + c.strerror(errno));
+                            throw new IllegalStateException("reading inotify: " + Inotify.message(errno));
                         }
                         break;
                     }
@@ -168,13 +162,13 @@ final class InotifyWatch extends DirectoryWatch {
                     }
                 }
                 if (any) {
-                    queue(parsed.batch, parsed.gone);
+                    queue(parsed.batch, parsed.gone, true);
                     parsed.batch.clear();
                     parsed.gone.clear();
                     // The events of the next millisecond gather in the kernel's queue: one read for all of them.
                     TimeUnit.NANOSECONDS.sleep(READ_PAUSE_NANOS);
-                } else if (c.poll(fds, two, -1) < 0 && Inotify.errno() != EINTR) {
-                    throw new IllegalStateException("waiting for inotify: " + c.strerror(Inotify.errno()));
+                } else if (Inotify.poll(fds, 2, -1) < 0 && Inotify.errno() != EINTR) {
+                    throw new IllegalStateException("waiting for inotify: " + Inotify.message(Inotify.errno()));
                 }
             }
         } catch (InterruptedException stop) {
@@ -190,10 +184,11 @@ final class InotifyWatch extends DirectoryWatch {
     private final class Events {
         final List<Change> batch = new ArrayList<>();
         final List<Key> gone = new ArrayList<>();
-        private final byte[] name = new byte[256];
         private InotifyDirectory last;
+        private long takes;
 
         void parse(ByteBuffer events, int n) {
+            takes = takes(); // read after the events: see takes()
             int p = 0;
             while (p + 16 <= n) {
                 int wd = events.getInt(p);
@@ -228,21 +223,18 @@ final class InotifyWatch extends DirectoryWatch {
         }
 
         private void named(InotifyDirectory d, int mask, ByteBuffer events, int at, int len) {
-            events.get(at, name, 0, len);
-            int length = 0;
-            while (length < len && name[length] != 0) {
-                length++;
-            }
-            InotifyDirectory.Name n = d.name(name, length);
+            InotifyDirectory.Name n = d.name(events, at, len);
             if (n == null) {
                 batch.add(d.overflow); // a name no Path spells: every log of the directory is looked at
             } else if ((mask & (IN_MODIFY | IN_ATTRIB)) != 0) {
-                batch.add(n.written());
+                if (n.queued != takes) { // else queued already, not taken yet: one read takes both writes
+                    n.queued = takes;
+                    batch.add(n.written);
+                }
             } else if ((mask & (IN_CREATE | IN_MOVED_TO)) != 0) {
-                batch.add(new Change(d, Kind.CREATED, n.path()));
+                batch.add(new Change(d, Kind.CREATED, n.path));
             } else if ((mask & (IN_DELETE | IN_MOVED_FROM)) != 0) {
-                batch.add(new Change(d, Kind.DELETED, n.path()));
-                d.forget(name, length);
+                batch.add(new Change(d, Kind.DELETED, n.path));
             }
         }
 
@@ -261,7 +253,7 @@ final class InotifyWatch extends DirectoryWatch {
         closed = true;
         Memory one = new Memory(8);
         one.setLong(0, 1);
-        c.write(wake, one, new NativeLong(8));
+        Inotify.write(wake, one, 8);
         reader.interrupt();
         // Closing is how following ends, often on an interrupted thread: the join waits all the same (the reader
         // is ending within a millisecond), and the interrupt status is kept.
@@ -279,8 +271,8 @@ final class InotifyWatch extends DirectoryWatch {
         }
         if (!reader.isAlive()) { // else its descriptors stay open rather than be closed under it
             synchronized (byWd) {
-                c.close(fd);
-                c.close(wake);
+                Inotify.close(fd);
+                Inotify.close(wake);
             }
         }
     }

@@ -106,7 +106,7 @@ final class JdkWatch extends DirectoryWatch {
                     }
                     key = service.poll();
                 }
-                queue(batch, gone);
+                queue(batch, gone, false);
                 batch.clear();
                 gone.clear();
                 // The changes of the next millisecond gather in the JDK's lists (far from 512 per directory at
