@@ -26,6 +26,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -102,6 +103,25 @@ class InotifyWatchTest {
         drain(w, invalid);
         assertEquals(List.of(key), invalid);
         assertFalse(key.isValid());
+    }
+
+    /**
+     * A directory that cannot be watched is polled, with why on stderr: said as the JDK's watch service says it, a
+     * watch limit reached included (which a test cannot reach: the limit is the machine's).
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"own", "jdk"})
+    void whatCannotBeWatchedSaysWhy(String kind) throws Exception {
+        DirectoryWatch w = open(kind);
+        IOException missing = assertThrows(IOException.class, () -> w.register(dir.resolve("later")));
+        assertEquals("NoSuchFileException", DirectoryWatch.why(missing));
+        Path file = Files.createFile(dir.resolve("robot.log"));
+        IOException notDirectory = assertThrows(IOException.class, () -> w.register(file));
+        assertEquals("NotDirectoryException", DirectoryWatch.why(notDirectory));
+        assertEquals("User limit of inotify watches reached", DirectoryWatch.why(Inotify.registerFailed(dir, 28)));
+        w.close();
+        assertEquals("the notification is closed",
+                DirectoryWatch.why(assertThrows(IOException.class, () -> w.register(dir))));
     }
 
     /** The watch would follow a directory moved away from its logs' paths: it ends at once instead. */
