@@ -5,7 +5,6 @@ import dev.predmon.parse.LogFollower;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.WatchKey;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
@@ -51,7 +50,7 @@ final class Wakeups implements AutoCloseable {
 
     private final DirectoryWatch watch;
     private final long pauseNanos;
-    private final Map<WatchKey, WatchedDirectory> byKey = new HashMap<>();
+    private final Map<DirectoryWatch.Key, WatchedDirectory> byKey = new HashMap<>();
     private final Map<Path, WatchedDirectory> byDir = new HashMap<>();
     /** Per directory, whether its file system is one whose changes are not notified: asked once each. */
     private final Map<Path, Boolean> remote = new HashMap<>();
@@ -61,7 +60,7 @@ final class Wakeups implements AutoCloseable {
     private final Set<WatchedLog> pending = new LinkedHashSet<>();
     /** Logs in the middle of a rename rotation, each with when to poll it next. */
     private final Map<WatchedLog, Long> replacing = new HashMap<>();
-    private final List<WatchKey> invalid = new ArrayList<>();
+    private final List<DirectoryWatch.Key> invalid = new ArrayList<>();
     /** Told of each directory whose logs are polled because it cannot be watched, with why, once each. */
     private final BiConsumer<Path, String> unwatched;
     private final Set<Path> toldUnwatched = new HashSet<>();
@@ -208,7 +207,7 @@ final class Wakeups implements AutoCloseable {
                     changed(w, c, out);
                 }
             }
-            for (WatchKey k : invalid) {
+            for (DirectoryWatch.Key k : invalid) {
                 WatchedDirectory w = byKey.get(k);
                 if (w != null) {
                     full(drop(w), out); // a last look at each, now polled
@@ -309,7 +308,7 @@ final class Wakeups implements AutoCloseable {
             tellUnwatched(dir, "network or FUSE file system, whose changes on other hosts are not notified");
             return null;
         }
-        WatchKey key;
+        DirectoryWatch.Key key;
         try {
             key = watch.register(dir);
         } catch (IOException e) {
