@@ -3,6 +3,7 @@ package dev.predmon.matching;
 import dev.predmon.mealy.MealyMapping;
 import dev.predmon.mealy.MealySteps;
 import dev.predmon.model.LearnedModel;
+import net.automatalib.automaton.CompactTransition;
 import net.automatalib.automaton.transducer.CompactMealy;
 
 /**
@@ -39,7 +40,7 @@ public final class ModelTracker implements MealySteps<ModelTracker.Outcome> {
 
     private final LearnedModel model;
     private final int tolerance;
-    private Integer state;
+    private int state;
     private int steps;
     private int discrepancies;
     private Failure firstDiscrepancy;
@@ -54,7 +55,7 @@ public final class ModelTracker implements MealySteps<ModelTracker.Outcome> {
 
     /** Back to the initial state, alive, no discrepancy. */
     public void reset() {
-        state = model.machine().getInitialState();
+        state = model.machine().getIntInitialState();
         steps = 0;
         discrepancies = 0;
         firstDiscrepancy = null;
@@ -69,13 +70,13 @@ public final class ModelTracker implements MealySteps<ModelTracker.Outcome> {
         }
         int at = steps++;
         CompactMealy<String, String> m = model.machine();
-        Integer next = model.alphabet().containsSymbol(input) ? m.getSuccessor(state, input) : null;
-        if (next == null) {
+        CompactTransition<String> t = model.alphabet().containsSymbol(input) ? m.getTransition(state, input) : null;
+        if (t == null) {
             elimination = new Failure(at, input, null, observed);
             return Outcome.UNDEFINED;
         }
-        String expected = m.getOutput(state, input);
-        state = next;
+        String expected = m.getTransitionOutput(t);
+        state = m.getIntSuccessor(t);
         if (observed.equals(expected)) {
             return Outcome.MATCH;
         }

@@ -2,11 +2,10 @@ package dev.predmon.mealy;
 
 import dev.predmon.abstraction.Abstraction;
 import net.automatalib.alphabet.Alphabet;
-import net.automatalib.alphabet.Alphabets;
+import net.automatalib.alphabet.MapAlphabet;
 
 import java.util.ArrayList;
 import java.util.HashSet;
-import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
@@ -32,8 +31,9 @@ public final class MealyAlphabet {
             }
         }
         symbols.add(MealyMapping.DELTA);
-        List<String> sorted = new ArrayList<>(symbols);
-        return Alphabets.fromList(sorted);
+        // indexed by a map: every step of every model looks its input up (a list's linear search was 5% of
+        // following 10,000 logs at robot pace)
+        return new MapAlphabet<>(new ArrayList<>(symbols));
     }
 
     /** Every output a model over {@code abstraction} may give: the abstraction's output symbols and {@value MealyMapping#OK}. */

@@ -1,6 +1,7 @@
 package dev.predmon.mealy;
 
 import dev.predmon.compact.IoPair;
+import net.automatalib.automaton.CompactTransition;
 import net.automatalib.automaton.transducer.CompactMealy;
 import net.automatalib.word.Word;
 import net.automatalib.word.WordBuilder;
@@ -30,15 +31,16 @@ public final class MealyMapping {
         if (!machine.getInputAlphabet().containsSymbol(input)) {
             return -1;
         }
-        Integer mid = machine.getSuccessor(state, input);
-        if (mid == null || !OK.equals(machine.getOutput(state, input))) {
+        // one transition object per step, read for both successor and output (each lookup makes one)
+        CompactTransition<String> step = machine.getTransition(state, input);
+        if (step == null || !OK.equals(machine.getTransitionOutput(step))) {
             return -1;
         }
-        Integer next = machine.getSuccessor(mid, DELTA);
-        if (next == null || !output.equals(machine.getOutput(mid, DELTA))) {
+        CompactTransition<String> answer = machine.getTransition(machine.getIntSuccessor(step), DELTA);
+        if (answer == null || !output.equals(machine.getTransitionOutput(answer))) {
             return -1;
         }
-        return next;
+        return machine.getIntSuccessor(answer);
     }
 
     /**

@@ -310,6 +310,7 @@ public final class Fleet implements AutoCloseable {
     private void forget(LogSources sources, Wakeups w) {
         for (WatchedLog log : deleted.due(logs.values(), l -> sources.named(l.path()), System.nanoTime())) {
             logs.remove(log.path().toAbsolutePath().normalize());
+            sources.forget(log.path()); // found again by the next look if it is back
             w.remove(log);
             backstop.forget(log);
             openFiles.closed(log);

@@ -5,20 +5,13 @@ import dev.predmon.ros2.Recordings;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.file.FileSystemException;
-import java.nio.file.FileSystems;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
-import java.nio.file.NotDirectoryException;
 import java.nio.file.Path;
-import java.nio.file.PathMatcher;
-import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.regex.PatternSyntaxException;
 import java.util.stream.Stream;
 
 /**
@@ -46,6 +39,10 @@ public final class LogSources {
     private final List<Name> names = new ArrayList<>();
     /** The name each file with several names was listed by at the latest {@link #find()}, by its identity. */
     private final Map<Object, Path> chosen = new HashMap<>();
+    /** The files the latest look listed, by absolute normal path, with their identities then. */
+    private final Map<Path, Object> listed = new HashMap<>();
+    /** How the looks list directories: without a stat for a file {@link #listed} as a log already. */
+    private final Listing listing = new Listing(listed);
 
     /** @param names files, directories or globs; at least one */
     /** No log at all: what a watch of a source that is no file ({@code --rosbridge}) follows beside it. */
@@ -96,41 +93,106 @@ public final class LogSources {
      * The files the names stand for now: files named as such whether or not they exist, plus what matches. A file with
      * several names (a {@code latest.log} link beside the file it points to, a hard link) is listed once, so that
      * one robot is not watched twice: by the name given as a file, else by a name that is not a symbolic link, else
-     * by its first name.
+     * by its first name. A directory's log listed by the last look is not looked at again ({@link Listing}).
      */
-    public List<Path> find() throws IOException {
-        Map<Path, Path> found = new LinkedHashMap<>();
+    public synchronized List<Path> find() throws IOException {
+        return look(new ArrayList<>(), true).stream().map(Listing.Entry::path).toList();
+    }
+
+    /**
+     * As {@link #find()}, only the files the last look did not list (all of them at the first look): what a fleet
+     * already following the others has to add. A file the fleet let go of is listed again once {@link #forget}ten.
+     */
+    public synchronized List<Path> findNew() throws IOException {
+        List<Path> fresh = new ArrayList<>();
+        look(fresh, false);
+        return fresh;
+    }
+
+    /** {@code file} is no longer followed: when it is there again, {@link #findNew()} lists it. */
+    public synchronized void forget(Path file) {
+        listed.remove(file.toAbsolutePath().normalize());
+    }
+
+    /** Stats made by the looks so far: a look at logs listed by the last one makes none for them. */
+    synchronized long stats() {
+        return listing.stats();
+    }
+
+    /**
+     * The files the names stand for now, in order if {@code ordered}; those the last look did not list also go to
+     * {@code fresh}.
+     */
+    private List<Listing.Entry> look(List<Path> fresh, boolean ordered) throws IOException {
+        List<List<Listing.Entry>> expanded = new ArrayList<>();
         for (Name name : names) {
-            for (Path p : expand(name)) {
-                found.putIfAbsent(p.toAbsolutePath().normalize(), p);
+            expanded.add(expand(name, listing));
+        }
+        if (expanded.size() == 1 && expanded.get(0).size() == listed.size()
+                && expanded.get(0).stream().allMatch(Listing.Entry::remembered)) {
+            // one directory holding just the files of the last look: it chose among them then, and none is fresh
+            return ordered ? sorted(expanded.get(0)) : expanded.get(0);
+        }
+        Map<Path, Listing.Entry> found = new LinkedHashMap<>();
+        for (List<Listing.Entry> files : expanded) {
+            for (Listing.Entry e : sorted(files)) {
+                found.putIfAbsent(e.key(), e);
             }
         }
-        Map<Object, Path> byFile = new HashMap<>(); // a file's identity (device and inode) to the name it is kept by
-        Map<Path, Object> ids = new HashMap<>();
-        for (Path p : found.values()) {
-            Object id = identity(p);
-            if (id != null) {
-                ids.put(p, id);
-                byFile.merge(id, p, (kept, other) -> rank(other) < rank(kept) ? other : kept);
-            }
-        }
+        List<Listing.Entry> all = new ArrayList<>(found.values());
+        Map<Object, Path> byFile = byFile(all);
         // a name chosen at an earlier look stays chosen while it names the same file: a second name given to a
         // watched log later (a hard link) does not start a second watch of it
+        Map<Path, Object> ids = new HashMap<>();
+        all.forEach(e -> ids.put(e.path(), e.id()));
         byFile.replaceAll((id, p) -> {
             Path before = chosen.get(id);
             return before != null && id.equals(ids.get(before)) ? before : p;
         });
         chosen.clear();
         chosen.putAll(byFile);
-        return found.values().stream().filter(p -> !ids.containsKey(p) || byFile.get(ids.get(p)).equals(p)).toList();
+        List<Listing.Entry> out = all.stream().filter(e -> e.id() == null || byFile.get(e.id()).equals(e.path()))
+                .toList();
+        out.stream().filter(e -> !listed.containsKey(e.key())).forEach(e -> fresh.add(e.path()));
+        listed.clear();
+        out.stream().filter(e -> e.id() != null).forEach(e -> listed.put(e.key(), e.id()));
+        return out;
     }
 
-    /** The identity of the file at {@code p}, links followed; null when there is none to be had. */
-    private static Object identity(Path p) {
-        try {
-            return Files.readAttributes(p, BasicFileAttributes.class).fileKey();
-        } catch (IOException | UnsupportedOperationException e) {
-            return null; // not there (yet), or gone between the listing and now: it is its own
+    private static List<Listing.Entry> sorted(List<Listing.Entry> files) {
+        List<Listing.Entry> out = new ArrayList<>(files);
+        Listing.sort(out);
+        return out;
+    }
+
+    /**
+     * The name each file is kept by, by its identity. An identity the last look had is taken as it is unless another
+     * file has it now: then both are read again, as one of them may have been renamed since (a rotation).
+     */
+    private Map<Object, Path> byFile(List<Listing.Entry> all) {
+        while (true) {
+            Map<Object, Path> byFile = new HashMap<>();
+            Map<Object, Integer> first = new HashMap<>();
+            boolean refreshed = false;
+            for (int i = 0; i < all.size(); i++) {
+                Listing.Entry e = all.get(i);
+                if (e.id() == null) {
+                    continue;
+                }
+                Integer other = first.putIfAbsent(e.id(), i);
+                if (other != null) {
+                    for (int k : new int[] {other, i}) {
+                        if (all.get(k).remembered()) {
+                            all.set(k, all.get(k).refreshed(listing));
+                            refreshed = true;
+                        }
+                    }
+                }
+                byFile.merge(e.id(), e.path(), (kept, p) -> rank(p) < rank(kept) ? p : kept);
+            }
+            if (!refreshed) {
+                return byFile;
+            }
         }
     }
 
@@ -180,19 +242,17 @@ public final class LogSources {
         };
     }
 
-    /** The files one name stands for now (none for a directory that is gone). */
+    /** The files one name stands for now (none for a directory that is gone), each looked at. */
     private static List<Path> expand(Name name) throws IOException {
+        return expand(name, new Listing(Map.of())).stream().map(Listing.Entry::path).toList();
+    }
+
+    /** The files one name stands for now (none for a directory that is gone), looked at through {@code listing}. */
+    private static List<Listing.Entry> expand(Name name, Listing listing) throws IOException {
         return switch (name.kind()) {
-            case GLOB -> glob(name.path());
-            case DIRECTORY -> {
-                try (Stream<Path> files = Files.list(name.path())) {
-                    yield files.filter(p -> (Files.isRegularFile(p) && isLogName(p)) || Recordings.isRecording(p))
-                            .sorted().toList();
-                } catch (NoSuchFileException | NotDirectoryException gone) {
-                    yield List.of(); // moved away or replaced: its logs are looked for again at the next rescan
-                }
-            }
-            case FILE -> List.of(name.path());
+            case GLOB -> listing.glob(name.path(), GlobRoot.of(name.path()));
+            case DIRECTORY -> listing.directory(name.path());
+            case FILE -> List.of(listing.file(name.path()));
         };
     }
 
@@ -207,8 +267,11 @@ public final class LogSources {
      * recordings are its logs too, see {@link Recordings#isRecording}).
      */
     static boolean isLogName(Path p) {
-        String n = p.getFileName().toString();
-        return n.endsWith(".log") || n.endsWith(".txt");
+        return isLogName(p.getFileName().toString());
+    }
+
+    static boolean isLogName(String name) {
+        return name.endsWith(".log") || name.endsWith(".txt");
     }
 
     /**
@@ -216,7 +279,7 @@ public final class LogSources {
      * {@code depth} and match each path from there against {@code rest}; {@code base} is what found paths are
      * resolved against (null for a relative glob with no fixed directory).
      */
-    private record GlobRoot(Path base, Path from, Path rest, int depth) {
+    record GlobRoot(Path base, Path from, Path rest, int depth) {
 
         static GlobRoot of(Path name) {
             int fixed = 0;
@@ -230,34 +293,6 @@ public final class LogSources {
             int depth = rest.toString().contains("**") ? Integer.MAX_VALUE : rest.getNameCount();
             return new GlobRoot(base, base == null ? Path.of(".") : base, rest, depth);
         }
-    }
-
-    /** Files below the glob's fixed leading directories whose path from there matches the rest of the glob. */
-    private static List<Path> glob(Path name) throws IOException {
-        GlobRoot g = GlobRoot.of(name);
-        if (!Files.isDirectory(g.from())) {
-            return List.of();
-        }
-        PathMatcher matcher;
-        try {
-            matcher = FileSystems.getDefault().getPathMatcher("glob:" + g.rest());
-        } catch (PatternSyntaxException e) {
-            // the JDK's description of the syntax error is garbled ("Missing '])"): the pattern itself says more
-            throw new FileSystemException(name.toString(), null, "no such file, and not a valid glob");
-        }
-        List<Path> out = new ArrayList<>();
-        try (Stream<Path> walk = Files.walk(g.from(), g.depth())) {
-            walk.filter(Files::isRegularFile).forEach(p -> {
-                Path relative = g.from().relativize(p);
-                if (matcher.matches(relative)) {
-                    out.add(g.base() == null ? relative : g.base().resolve(relative));
-                }
-            });
-        } catch (UncheckedIOException e) {
-            throw e.getCause(); // a directory that went away or cannot be read while walking
-        }
-        out.sort(null);
-        return out;
     }
 
     /**

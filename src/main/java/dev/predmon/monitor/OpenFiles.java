@@ -5,7 +5,10 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.OperatingSystemMXBean;
 import java.nio.file.FileSystemException;
 import java.util.Iterator;
-import java.util.LinkedHashSet;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 
 /**
@@ -26,8 +29,14 @@ final class OpenFiles {
 
     private int budget;
     private int open;
-    /** The logs holding files open, the one active longest ago first. */
-    private final Set<WatchedLog> byActivity = new LinkedHashSet<>();
+    /**
+     * The logs holding files open. When each was last active is its {@link WatchedLog#active} stamp, and the logs are
+     * ordered by it only when some must be closed: keeping them in order moved a log in a linked set at every poll
+     * that read something (a remove and an add per record read, at robot pace).
+     */
+    private final Set<WatchedLog> holding = new HashSet<>();
+    /** The last activity stamp given. */
+    private long stamp;
     private boolean told;
 
     OpenFiles(int budget) {
@@ -69,13 +78,19 @@ final class OpenFiles {
     /** After {@code log} was polled: counts what it holds open now; {@code active} when it had something new. */
     void polled(WatchedLog log, boolean active) {
         int now = log.watcher().openFiles();
-        open += now - log.openFiles;
-        log.openFiles = now;
-        if (now == 0) {
-            byActivity.remove(log);
-        } else if (active || !byActivity.contains(log)) {
-            byActivity.remove(log);
-            byActivity.add(log);
+        int before = log.openFiles;
+        if (now != before) {
+            open += now - before;
+            log.openFiles = now;
+            if (now == 0) {
+                holding.remove(log);
+            } else if (before == 0) {
+                holding.add(log);
+                active = true; // opened now: the latest active
+            }
+        }
+        if (active) {
+            log.active = ++stamp;
         }
     }
 
@@ -83,7 +98,7 @@ final class OpenFiles {
     void closed(WatchedLog log) {
         open -= log.openFiles;
         log.openFiles = 0;
-        byActivity.remove(log);
+        holding.remove(log);
     }
 
     /** Whether more files are open than the budget allows. */
@@ -104,6 +119,8 @@ final class OpenFiles {
      */
     boolean relieve(WatchedLog keep) throws IOException {
         int target = budget - budget / 10;
+        List<WatchedLog> byActivity = new ArrayList<>(holding);
+        byActivity.sort(Comparator.comparingLong(l -> l.active)); // the one active longest ago first
         for (Iterator<WatchedLog> i = byActivity.iterator(); i.hasNext() && open > target; ) {
             WatchedLog log = i.next();
             if (log != keep && !log.watcher().replacing() && log.watcher().release()) {
@@ -111,7 +128,7 @@ final class OpenFiles {
                 log.openFiles = log.watcher().openFiles();
                 open += log.openFiles;
                 if (log.openFiles == 0) {
-                    i.remove();
+                    holding.remove(log);
                 }
             }
         }

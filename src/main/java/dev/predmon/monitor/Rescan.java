@@ -17,7 +17,10 @@ import java.util.concurrent.Future;
  */
 final class Rescan implements AutoCloseable {
 
-    /** What one look found: the files the names stand for, and the directories new logs may appear in. */
+    /**
+     * What one look found: the files the names stand for that the look before did not list (every one at the first
+     * look), and the directories new logs may appear in.
+     */
     record Found(List<Path> files, List<Path> directories) {
     }
 
@@ -30,9 +33,9 @@ final class Rescan implements AutoCloseable {
     private ExecutorService thread;
     private Future<Found> running;
 
-    /** Looks at what {@code sources} stand for. */
+    /** Looks at what {@code sources} stand for: a look costs a listing, and a stat only for what is new. */
     Rescan(LogSources sources) {
-        this(() -> new Found(sources.find(), sources.directories()));
+        this(() -> new Found(sources.findNew(), sources.directories()));
     }
 
     Rescan(Look look) {

@@ -5,7 +5,6 @@ import dev.predmon.parse.LogFollower;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.WatchKey;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
@@ -51,7 +50,7 @@ final class Wakeups implements AutoCloseable {
 
     private final DirectoryWatch watch;
     private final long pauseNanos;
-    private final Map<WatchKey, WatchedDirectory> byKey = new HashMap<>();
+    private final Map<DirectoryWatch.Key, WatchedDirectory> byKey = new HashMap<>();
     private final Map<Path, WatchedDirectory> byDir = new HashMap<>();
     /** Per directory, whether its file system is one whose changes are not notified: asked once each. */
     private final Map<Path, Boolean> remote = new HashMap<>();
@@ -61,14 +60,16 @@ final class Wakeups implements AutoCloseable {
     private final Set<WatchedLog> pending = new LinkedHashSet<>();
     /** Logs in the middle of a rename rotation, each with when to poll it next. */
     private final Map<WatchedLog, Long> replacing = new HashMap<>();
-    private final List<WatchKey> invalid = new ArrayList<>();
+    private final List<DirectoryWatch.Key> invalid = new ArrayList<>();
     /** Told of each directory whose logs are polled because it cannot be watched, with why, once each. */
     private final BiConsumer<Path, String> unwatched;
     private final Set<Path> toldUnwatched = new HashSet<>();
     private long nextPass = System.nanoTime();
-    /** When changes were last taken, and the logs of the last {@link #due} that were only announced as written. */
+    /**
+     * When changes were last taken. Which logs of the last {@link #due} were only announced as written is each log's
+     * {@link WatchedLog#onlyWritten} (a set of them cost two lookups per log polled at robot pace).
+     */
     private long lastTaken = System.nanoTime() - GATHER_NANOS;
-    private final Set<WatchedLog> written = new HashSet<>();
     /** What the last {@link #due} gave: one set, cleared at each call, not one per wakeup. */
     private final Set<WatchedLog> due = new LinkedHashSet<>();
     private boolean rescan;
@@ -184,8 +185,10 @@ final class Wakeups implements AutoCloseable {
             wait = Math.min(wait, at - now);
         }
         Set<WatchedLog> out = due;
+        for (WatchedLog log : out) {
+            log.onlyWritten = false;
+        }
         out.clear();
-        written.clear();
         if (watch == null) {
             TimeUnit.NANOSECONDS.sleep(Math.max(0, wait));
         } else {
@@ -204,7 +207,7 @@ final class Wakeups implements AutoCloseable {
                     changed(w, c, out);
                 }
             }
-            for (WatchKey k : invalid) {
+            for (DirectoryWatch.Key k : invalid) {
                 WatchedDirectory w = byKey.get(k);
                 if (w != null) {
                     full(drop(w), out); // a last look at each, now polled
@@ -241,7 +244,7 @@ final class Wakeups implements AutoCloseable {
         } else if (c.kind() == DirectoryWatch.Kind.MODIFIED) {
             for (WatchedLog log : named) {
                 if (out.add(log)) {
-                    written.add(log);
+                    log.onlyWritten = true;
                 }
             }
         } else {
@@ -266,7 +269,7 @@ final class Wakeups implements AutoCloseable {
         }
         for (WatchedLog log : logs) {
             out.add(log);
-            written.remove(log);
+            log.onlyWritten = false;
         }
     }
 
@@ -275,7 +278,7 @@ final class Wakeups implements AutoCloseable {
      * or deleted at its path, so its poll need not look at the path ({@link LogWatcher#pollWritten()}).
      */
     boolean onlyWritten(WatchedLog log) {
-        return written.contains(log);
+        return log.onlyWritten;
     }
 
     /** Stops watching {@code w}; its logs go back to {@link #add}, where they are watched again or polled. */
@@ -305,7 +308,7 @@ final class Wakeups implements AutoCloseable {
             tellUnwatched(dir, "network or FUSE file system, whose changes on other hosts are not notified");
             return null;
         }
-        WatchKey key;
+        DirectoryWatch.Key key;
         try {
             key = watch.register(dir);
         } catch (IOException e) {

@@ -1,7 +1,6 @@
 package dev.predmon.monitor;
 
 import java.nio.file.Path;
-import java.nio.file.WatchKey;
 import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -11,13 +10,13 @@ import java.util.Set;
 /** A watched directory: its logs by file name, and whether a new file in it may be a new log. */
 final class WatchedDirectory {
     final Path dir;
-    final WatchKey key;
+    final DirectoryWatch.Key key;
     final Object identity;
     final Map<Path, List<WatchedLog>> logs = new HashMap<>();
     final Set<WatchedLog> orphans = new LinkedHashSet<>();
     boolean source;
 
-    WatchedDirectory(Path dir, WatchKey key) {
+    WatchedDirectory(Path dir, DirectoryWatch.Key key) {
         this.dir = dir;
         this.key = key;
         this.identity = DirectoryWatch.identity(dir);

@@ -18,6 +18,10 @@ public final class WatchedLog {
     private final boolean file;
     /** Files its watcher held open after its last poll, as {@link OpenFiles} counted them. */
     int openFiles;
+    /** When it last had something new, as a stamp of its fleet's {@link OpenFiles}: higher is later. */
+    long active;
+    /** Whether the last {@link Wakeups#due} gave it only because it was written ({@link Wakeups#onlyWritten}). */
+    boolean onlyWritten;
     /** What the user was last told about it (something not a file at its path, a read that failed), or null. */
     String told;
 

@@ -178,7 +178,7 @@ final class ColumnsLayout extends RecordLayout {
         }
         int t = n == 5 ? 1 : 0;
         double time = decimal(b, starts[t], ends[t]);
-        String level = AsciiStrings.local().of(b, starts[levelAt], ends[levelAt] - starts[levelAt]);
+        String level = strings().of(b, starts[levelAt], ends[levelAt] - starts[levelAt]);
         startDraft(lineNumber, time, level, kind);
         if (n == 4) {
             rememberTail(b, ends[0], end, level, kind);

@@ -27,6 +27,9 @@ abstract class RecordLayout implements LogLayout {
     private final byte[][] prefixes = new byte[6][];
     /** The number of the line being read. */
     long lineNumber;
+    /** The thread that read the last field line, and its table of strings: one thread-local look-up per thread. */
+    private Thread reader;
+    private AsciiStrings strings;
 
     RecordLayout(Consumer<LogRecord> records, Consumer<ParseProblem> problems) {
         this.records = Objects.requireNonNull(records, "records");
@@ -119,7 +122,7 @@ abstract class RecordLayout implements LogLayout {
     /**
      * The fast path for a field line of the record in progress: a well-formed ASCII field line with the label
      * expected next is taken straight from the bytes (decoding each into a string, cutting label and value out of
-     * it and trimming the value was most of the parser's time). False, having done nothing, for anything else.
+     * it and trimming the value was most of the parser's time.. False, having done nothing, for anything else.
      */
     final boolean fastField(byte[] b, int offset, int len) {
         int end = offset + len;
@@ -164,7 +167,7 @@ abstract class RecordLayout implements LogLayout {
             valueEnd--;
         }
         // Non-ASCII, a save-file marker or a colour code: the general path decides (null).
-        String value = AsciiStrings.local().ofPlain(b, valueStart, valueEnd - valueStart);
+        String value = strings().ofPlain(b, valueStart, valueEnd - valueStart);
         if (value == null) {
             return false;
         }
@@ -176,6 +179,19 @@ abstract class RecordLayout implements LogLayout {
             spare = done;
         }
         return true;
+    }
+
+    /**
+     * This thread's {@link AsciiStrings}, looked up again only when another thread reads this log: a table is never
+     * shared between threads, and a thread-local look-up per field line was a visible share of the parser's time.
+     */
+    final AsciiStrings strings() {
+        Thread t = Thread.currentThread();
+        if (t != reader) {
+            reader = t;
+            strings = AsciiStrings.local();
+        }
+        return strings;
     }
 
     final void brokenRecord(String message) {

@@ -13,6 +13,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Queue;
@@ -137,6 +138,38 @@ class FleetDescriptorsTest {
             }
             Thread.sleep(10);
         }
+    }
+
+    /**
+     * Over the budget, the log whose last new record is oldest is closed first: a log read again since it was opened
+     * is kept, one opened before it and idle since is closed.
+     */
+    @Test
+    void theLogIdleLongestIsClosedFirst() throws Exception {
+        Path robots = Files.createDirectories(dir.resolve("robots"));
+        List<Path> paths = new ArrayList<>();
+        for (int i = 0; i <= BUDGET; i++) {
+            paths.add(robots.resolve("robot-" + i + ".log"));
+            FleetFollowTest.append(paths.get(i), 0, 1);
+        }
+        try (Fleet fleet = new Fleet(LearnedModels.modelSet(List.of(), ABSTRACTION), ABSTRACTION, 0, 0, (l, e) -> { })) {
+            fleet.limits(Duration.ofMinutes(1), BUDGET);
+            paths.forEach(fleet::add);
+            List<WatchedLog> logs = fleet.logs();
+            fleet.poll(); // nine opened in turn: robot-0, read first, is closed
+            assertEquals(List.of(0, 1, 1), openFiles(logs.subList(0, 3)));
+            FleetFollowTest.append(paths.get(1), 1, 2);
+            fleet.poll(); // robot-1 has something new
+            FleetFollowTest.append(paths.get(0), 1, 2);
+            fleet.poll(); // robot-0 is opened again: one must go
+            assertEquals(List.of(1, 1, 0), openFiles(logs.subList(0, 3)),
+                    "robot-2, idle since it was opened, goes; robot-1, opened before it but read since, stays");
+            assertEquals(BUDGET, fleet.openFiles());
+        }
+    }
+
+    private static List<Integer> openFiles(List<WatchedLog> logs) {
+        return logs.stream().map(l -> l.watcher().openFiles()).toList();
     }
 
     @Test

@@ -128,4 +128,53 @@ class LogSourcesTest {
         assertEquals(Set.of(robots, robots.resolve("r1"), robots.resolve("r2"), robots.resolve("r2/x")),
                 Set.copyOf(new LogSources(List.of(robots.resolve("**/monitor.log"))).directories()));
     }
+
+    /**
+     * A look at a directory of 10,000 followed logs was a stat of each (15% of a core at robot pace): a log the last
+     * look listed is taken from the listing as it is, and only a new file is looked at.
+     */
+    @Test
+    void aLookStatsOnlyTheFilesTheLastLookDidNotList() throws Exception {
+        Path a = file("d/a.log");
+        Path b = file("d/b.log");
+        file("d/notes.md");
+        LogSources s = new LogSources(List.of(dir.resolve("d")));
+        assertEquals(List.of(a, b), s.findNew());
+        long first = s.stats();
+        assertEquals(3, first, "each entry once: a.log, b.log, notes.md");
+        assertEquals(List.of(), s.findNew(), "nothing new");
+        assertEquals(first + 1, s.stats(), "notes.md is no log yet and looked at again; a.log and b.log are not");
+        Path c = file("d/c.log");
+        assertEquals(List.of(c), s.findNew());
+        assertEquals(first + 3, s.stats(), "c.log and notes.md");
+        assertEquals(List.of(a, b, c), s.find(), "a full look still lists every log");
+        Files.delete(b);
+        assertEquals(List.of(), s.findNew());
+        file("d/b.log");
+        assertEquals(List.of(b), s.findNew(), "a log gone at one look and back at the next is new");
+    }
+
+    /** A rotation renames a followed log to another log's name and creates a new one: two files, two logs. */
+    @Test
+    void aLogRenamedAwayAndCreatedAgainIsTwoFiles() throws Exception {
+        Path log = file("d/robot.log");
+        LogSources s = new LogSources(List.of(dir.resolve("d")));
+        assertEquals(List.of(log), s.findNew());
+        Path old = dir.resolve("d/robot-1.log");
+        Files.move(log, old);
+        file("d/robot.log");
+        assertEquals(List.of(old), s.findNew(), "robot-1.log holds the file robot.log was: robot.log is looked at"
+                + " again, and is another file now");
+        assertEquals(List.of(old, log), s.find());
+    }
+
+    @Test
+    void aLogTheFleetForgotIsNewAgain() throws Exception {
+        Path a = file("d/a.log");
+        LogSources s = new LogSources(List.of(dir.resolve("d")));
+        assertEquals(List.of(a), s.findNew());
+        assertEquals(List.of(), s.findNew());
+        s.forget(a);
+        assertEquals(List.of(a), s.findNew());
+    }
 }

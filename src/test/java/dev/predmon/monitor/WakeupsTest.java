@@ -55,8 +55,9 @@ class WakeupsTest {
     }
 
     /**
-     * The JDK holds at most 512 changes per directory until they are taken and turns the rest into an overflow,
-     * after which every log of the directory is looked at as if anything had happened to it. 2,000 logs of one
+     * Java's watch service holds at most 512 changes per directory until they are taken and turns the rest into an
+     * overflow, after which every log of the directory is looked at as if anything had happened to it (the own inotify
+     * reader, {@link InotifyWatchTest}, has the kernel's queue of 16,384 for all directories). 2,000 logs of one
      * directory, each written once while the following thread takes nothing (as when it reads what the last wakeup
      * brought), are each given as written, none as lost.
      */
