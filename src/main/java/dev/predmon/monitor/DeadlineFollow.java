@@ -153,12 +153,8 @@ final class DeadlineFollow extends FollowBase {
      * of a miss in whole percent ({@code <1%} and {@code >99%} at the ends, never 0% or 100% for what is not certain).
      */
     static String shown(Survival.Estimate e) {
-        if (e.novel()) {
-            return "novel";
-        }
-        double p = e.probability();
-        long v = Math.round(p * 100);
-        return p > 0 && v == 0 ? "<1%" : p < 1 && v == 100 ? ">99%" : v + "%";
+        int code = shownCode(e);
+        return code == NOVEL ? "novel" : code == BELOW_1 ? "<1%" : code == ABOVE_99 ? ">99%" : code + "%";
     }
 
     /**

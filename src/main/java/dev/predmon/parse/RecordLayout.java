@@ -122,7 +122,7 @@ abstract class RecordLayout implements LogLayout {
     /**
      * The fast path for a field line of the record in progress: a well-formed ASCII field line with the label
      * expected next is taken straight from the bytes (decoding each into a string, cutting label and value out of
-     * it and trimming the value was most of the parser's time.. False, having done nothing, for anything else.
+     * it and trimming the value was most of the parser's time). False, having done nothing, for anything else.
      */
     final boolean fastField(byte[] b, int offset, int len) {
         int end = offset + len;

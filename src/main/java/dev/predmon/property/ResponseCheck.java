@@ -94,24 +94,10 @@ final class ResponseCheck extends Check {
                 }
             }
             now = now(r, ticks);
-            if (open.size() == 1) {
-                Obligation o = first(); // the only one, found once while it is open
-                if (at(o) > o.deadline) {
-                    open.clear();
-                    edits++;
-                    obligations.closed(o.line, elapsed(o), false);
-                    return new Verdict.Violated(r.line(), r.time(), null, null, missed(o));
-                }
-            } else {
-                for (Iterator<Obligation> it = open.values().iterator(); it.hasNext(); ) {
-                    Obligation o = it.next();
-                    if (at(o) > o.deadline) {
-                        it.remove();
-                        edits++;
-                        obligations.closed(o.line, elapsed(o), false);
-                        return new Verdict.Violated(r.line(), r.time(), null, null, missed(o));
-                    }
-                }
+            Obligation late = removeOverdue();
+            if (late != null) {
+                obligations.closed(late.line, elapsed(late), false);
+                return new Verdict.Violated(r.line(), r.time(), null, null, missed(late));
             }
             responds = p.response().matches(r);
             if (responds) {
@@ -168,6 +154,33 @@ final class ResponseCheck extends Check {
     /** How long {@code o} has been pending, in its deadline's unit: occurrences count from none. */
     private double elapsed(Obligation o) {
         return scaled(o, at(o) - (d.unit() == Deadline.Unit.OCCURRENCES ? 0 : o.since));
+    }
+
+    /**
+     * Removes and gives the first open obligation whose deadline has passed at {@link #now}, or null: a single open
+     * one is {@link #first()}, found once while it is open, without an iterator per record.
+     */
+    private Obligation removeOverdue() {
+        Obligation late = null;
+        if (open.size() == 1) {
+            Obligation o = first();
+            if (at(o) > o.deadline) {
+                open.clear();
+                late = o;
+            }
+        } else {
+            for (Iterator<Obligation> it = open.values().iterator(); it.hasNext() && late == null; ) {
+                Obligation o = it.next();
+                if (at(o) > o.deadline) {
+                    it.remove();
+                    late = o;
+                }
+            }
+        }
+        if (late != null) {
+            edits++;
+        }
+        return late;
     }
 
     /** The open obligation nearest its deadline (the earliest opened among equals), or null. */
